@@ -1,0 +1,22 @@
+# Installs prism-shaderc, the catalogue types, the modules with their binding contract
+# and the CMake helper, so that another project can `find_package(Prism)` and call
+# prism_add_shaders(). Prism_MODULE_DIR and Prism_CONTRACT point at the installed modules.
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+set_target_properties(prism-shaderc PROPERTIES EXPORT_NAME shaderc)
+set_target_properties(prism_catalog PROPERTIES EXPORT_NAME catalog)
+install(TARGETS prism-shaderc prism_catalog EXPORT PrismTargets
+        RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/shaderc_tool/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/modules/ DESTINATION ${CMAKE_INSTALL_DATADIR}/prism/modules)
+
+set(PRISM_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/Prism)
+install(EXPORT PrismTargets NAMESPACE Prism:: DESTINATION ${PRISM_CMAKE_DIR})
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/PrismConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/PrismConfig.cmake INSTALL_DESTINATION ${PRISM_CMAKE_DIR})
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/PrismConfigVersion.cmake
+  COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/PrismConfig.cmake ${PROJECT_BINARY_DIR}/PrismConfigVersion.cmake
+              ${PROJECT_SOURCE_DIR}/cmake/PrismShaders.cmake
+        DESTINATION ${PRISM_CMAKE_DIR})

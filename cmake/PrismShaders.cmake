@@ -1,0 +1,88 @@
+# prism_add_shaders(): runs prism-shaderc at build time and makes an INTERFACE library
+# target carrying the generated catalogue header.
+#
+#   prism_add_shaders(<target>
+#     SOURCES <stage files...>          # .vert/.geom/.frag/.comp (or directories)
+#     MODULE_DIRS <dirs...>             # -I, searched in order
+#     [HEADER <name.hpp>]               # default <target>.hpp; may contain a subdirectory
+#     [NAMESPACE <ns>]                  # default prism::shaders
+#     [CONTRACT <json files...>]        # binding contract(s)
+#     [DEFINES NAME[=VALUE]...]         # -D for every stage
+#     [VARIANTS SHADER:NAME=VALUE,...]  # emit only these variants of those shaders
+#     [GLSL_VERSION <n>])               # default 330
+#
+#   target_link_libraries(app PRIVATE <target>)   # then #include "<name.hpp>"
+#
+# The command's primary output is a stamp file; the header is a byproduct that the tool
+# rewrites only when its content changes, so touching a module re-runs the tool (and
+# only for the catalogues that include it, via the depfile) without recompiling code
+# whose header did not change. Works with Ninja and Unix Makefiles (CMake >= 3.20).
+include_guard(GLOBAL)
+
+function(prism_add_shaders target)
+  cmake_parse_arguments(PARSE_ARGV 1 PAS "" "HEADER;NAMESPACE;GLSL_VERSION"
+                        "SOURCES;MODULE_DIRS;DEFINES;CONTRACT;VARIANTS")
+  if(PAS_UNPARSED_ARGUMENTS)
+    message(FATAL_ERROR "prism_add_shaders(${target}): unknown arguments: ${PAS_UNPARSED_ARGUMENTS}")
+  endif()
+  if(NOT PAS_SOURCES)
+    message(FATAL_ERROR "prism_add_shaders(${target}): give the shader stage files with SOURCES")
+  endif()
+  if(NOT TARGET Prism::shaderc)
+    message(FATAL_ERROR "prism_add_shaders(${target}): Prism::shaderc is unknown; add_subdirectory(prism) "
+                        "or find_package(Prism) first")
+  endif()
+  if(NOT PAS_HEADER)
+    set(PAS_HEADER ${target}.hpp)
+  endif()
+  if(NOT PAS_NAMESPACE)
+    set(PAS_NAMESPACE prism::shaders)
+  endif()
+
+  set(gen_dir ${CMAKE_CURRENT_BINARY_DIR}/${target}_generated)
+  set(header ${gen_dir}/${PAS_HEADER})
+  set(stamp ${CMAKE_CURRENT_BINARY_DIR}/${target}.stamp)
+  set(depfile ${CMAKE_CURRENT_BINARY_DIR}/${target}.d)
+
+  set(args -o ${header} --depfile ${depfile} --stamp ${stamp} --namespace ${PAS_NAMESPACE}
+           --base-dir ${CMAKE_SOURCE_DIR})
+  set(depends Prism::shaderc)
+  foreach(src IN LISTS PAS_SOURCES)
+    get_filename_component(abs ${src} ABSOLUTE)
+    list(APPEND sources ${abs})
+    list(APPEND depends ${abs})
+  endforeach()
+  foreach(dir IN LISTS PAS_MODULE_DIRS)
+    get_filename_component(abs ${dir} ABSOLUTE)
+    list(APPEND args -I ${abs})
+  endforeach()
+  foreach(contract IN LISTS PAS_CONTRACT)
+    get_filename_component(abs ${contract} ABSOLUTE)
+    list(APPEND args --contract ${abs})
+    list(APPEND depends ${abs})
+  endforeach()
+  foreach(def IN LISTS PAS_DEFINES)
+    list(APPEND args -D ${def})
+  endforeach()
+  foreach(variant IN LISTS PAS_VARIANTS)
+    list(APPEND args --variant ${variant})
+  endforeach()
+  if(PAS_GLSL_VERSION)
+    list(APPEND args --glsl-version ${PAS_GLSL_VERSION})
+  endif()
+
+  add_custom_command(
+    OUTPUT ${stamp}
+    BYPRODUCTS ${header}
+    COMMAND Prism::shaderc ${args} ${sources}
+    DEPENDS ${depends}
+    DEPFILE ${depfile}
+    COMMENT "prism-shaderc: generating ${PAS_HEADER}"
+    VERBATIM)
+  add_custom_target(${target}_generate DEPENDS ${stamp})
+  add_library(${target} INTERFACE)
+  add_dependencies(${target} ${target}_generate)
+  target_include_directories(${target} INTERFACE $<BUILD_INTERFACE:${gen_dir}>)
+  target_link_libraries(${target} INTERFACE Prism::catalog)
+  set_target_properties(${target} PROPERTIES PRISM_HEADER ${header})
+endfunction()

@@ -1,0 +1,17 @@
+// Flat: one colour per triangle. The mesh carries face normals (vertices split per
+// face); the lit colour of the provoking vertex is passed on `flat`, unchanged over
+// the triangle. Diffuse only, as the FUDGE seed's flat shader.
+#include <version.glsl>
+#include <transforms.glsl>
+#include <normals.glsl>
+#include <lighting.glsl>
+
+in vec3 a_position;
+in vec3 a_normal;
+flat out vec4 v_color;
+
+void main() {
+    vec4 eye = eyePosition(a_position);
+    v_color = vec4(shade(eye.xyz, eyeNormal(a_normal), false), 1.0);
+    gl_Position = clipPosition(eye);
+}

@@ -1,0 +1,18 @@
+// Gouraud: diffuse and specular lighting per vertex, interpolated. It cannot show a
+// highlight that falls inside a triangle; see docs/tradeoffs.md for what that costs.
+// Unlike the seed, the position (not the normal) is transformed and the view vector
+// comes from the camera.
+#include <version.glsl>
+#include <transforms.glsl>
+#include <normals.glsl>
+#include <lighting.glsl>
+
+in vec3 a_position;
+in vec3 a_normal;
+out vec4 v_color;
+
+void main() {
+    vec4 eye = eyePosition(a_position);
+    v_color = vec4(shade(eye.xyz, eyeNormal(a_normal), true), 1.0);
+    gl_Position = clipPosition(eye);
+}

@@ -1,0 +1,16 @@
+// Smooth: diffuse lighting per vertex from area-weighted vertex normals; the colour
+// is interpolated over the triangle.
+#include <version.glsl>
+#include <transforms.glsl>
+#include <normals.glsl>
+#include <lighting.glsl>
+
+in vec3 a_position;
+in vec3 a_normal;
+out vec4 v_color;
+
+void main() {
+    vec4 eye = eyePosition(a_position);
+    v_color = vec4(shade(eye.xyz, eyeNormal(a_normal), false), 1.0);
+    gl_Position = clipPosition(eye);
+}

@@ -1,0 +1,9 @@
+// Unicolor: positions only; every fragment gets the material colour.
+#include <version.glsl>
+#include <transforms.glsl>
+
+in vec3 a_position;
+
+void main() {
+    gl_Position = clipPosition(eyePosition(a_position));
+}

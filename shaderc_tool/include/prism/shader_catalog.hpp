@@ -1,0 +1,167 @@
+// Types of the shader catalogue that prism-shaderc generates: the contract between
+// the build-time tool and the runtime.
+//
+// A generated header (see docs/shaderc.md) defines, in the namespace it was given:
+//
+//     enum class ShaderId : std::uint32_t { unicolor, phong, ..., };
+//     enum class ModuleId : std::uint32_t { lights, transforms, ..., };
+//     inline constexpr prism::catalog::Catalog kCatalog{...};
+//     constexpr const prism::catalog::Shader& shaderInfo(ShaderId);
+//     constexpr const prism::catalog::Module& moduleInfo(ModuleId);
+//
+// Everything below is constexpr data pointing into string literals and arrays of
+// static storage, so a header costs nothing at start-up. Use:
+//
+//     #include "prism/shaders.hpp"          // generated
+//     const auto& s = prism::shaders::shaderInfo(prism::shaders::ShaderId::phong);
+//     const auto* v = prism::catalog::findVariant(s, {{"BLINN", "1"}});
+//     std::string vert = prism::catalog::joinChunks(v->stages[0].chunks);
+#pragma once
+
+#include <cstdint>
+#include <initializer_list>
+#include <span>
+#include <string>
+#include <string_view>
+#include <utility>
+
+namespace prism::catalog {
+
+enum class Stage : std::uint8_t { Vertex, Geometry, Fragment, Compute };
+
+constexpr std::string_view stageName(Stage s) {
+    switch (s) {
+    case Stage::Vertex: return "vert";
+    case Stage::Geometry: return "geom";
+    case Stage::Fragment: return "frag";
+    case Stage::Compute: return "comp";
+    }
+    return "?";
+}
+
+// One row of a line table: `#line L <number>` in an embedded source means line L
+// of `path`. Source number 0 is always the stage file itself.
+struct SourceFile {
+    std::uint32_t number;
+    std::string_view path;
+};
+
+// One stage of one variant: driver-safe GLSL (version on line 1, integer #line only)
+// split into chunks of at most 16 KB (MSVC's string-literal limit); concatenate them.
+struct StageSource {
+    Stage stage;
+    std::span<const std::string_view> chunks;
+    std::span<const SourceFile> files;
+};
+
+// An active vertex attribute. `location` comes from the binding contract, so the
+// runtime binds it with glBindAttribLocation before linking.
+struct Attribute {
+    std::string_view name;
+    std::uint32_t glType;  // GL_FLOAT_VEC3 etc.
+    std::int32_t location;
+};
+
+// An active uniform; arraySize is 1 for non-arrays.
+struct Uniform {
+    std::string_view name;
+    std::uint32_t glType;
+    std::int32_t arraySize;
+};
+
+struct Define {
+    std::string_view name;
+    std::string_view value;
+};
+
+// One axis declared with `#pragma prism variant NAME [values...]`.
+struct VariantAxis {
+    std::string_view name;
+    std::span<const std::string_view> values;
+};
+
+// One validated combination of axis values.
+struct Variant {
+    std::string_view name;               // e.g. "FOG=1,DIRECTIONAL_LIGHTS=4" or "default"
+    std::span<const Define> defines;     // one per axis, in axis order
+    std::span<const StageSource> stages; // in pipeline order
+    std::span<const Attribute> attributes;
+    std::span<const Uniform> uniforms;
+};
+
+struct Shader {
+    std::string_view name;
+    std::span<const VariantAxis> axes;
+    std::span<const Variant> variants;
+    std::span<const std::uint32_t> modules;  // ModuleId values of every module any variant uses
+};
+
+// A reusable GLSL module (the FUDGE SHADER_MODULE). `chunks` hold the module's own
+// text with its #include, #version and #pragma once lines blanked (line numbers kept);
+// `dependencies` are its direct includes (ModuleId values) in include order.
+struct Module {
+    std::string_view name;
+    std::string_view path;
+    std::string_view description;
+    std::span<const std::string_view> chunks;
+    std::span<const std::uint32_t> dependencies;
+};
+
+// A whole generated catalogue.
+struct Catalog {
+    std::span<const Shader> shaders;
+    std::span<const Module> modules;
+    std::span<const Attribute> contractAttributes;  // everything the runtime supplies
+    std::span<const Uniform> contractUniforms;
+    std::string_view versionDirective;               // e.g. "#version 330 core"
+};
+
+inline std::string joinChunks(std::span<const std::string_view> chunks) {
+    std::string out;
+    std::size_t n = 0;
+    for (auto c : chunks) n += c.size();
+    out.reserve(n);
+    for (auto c : chunks) out.append(c);
+    return out;
+}
+
+constexpr const Shader* findShader(const Catalog& c, std::string_view name) {
+    for (const auto& s : c.shaders)
+        if (s.name == name) return &s;
+    return nullptr;
+}
+
+constexpr const Module* findModule(const Catalog& c, std::string_view name) {
+    for (const auto& m : c.modules)
+        if (m.name == name) return &m;
+    return nullptr;
+}
+
+// The variant whose axis values equal `wanted`; axes not named in `wanted` take
+// their first declared value. Returns nullptr when no such variant was generated.
+inline const Variant* findVariant(const Shader& s, std::initializer_list<Define> wanted) {
+    for (const auto& v : s.variants) {
+        bool match = true;
+        for (std::size_t a = 0; a < s.axes.size() && match; ++a) {
+            std::string_view want = s.axes[a].values.empty() ? std::string_view{} : s.axes[a].values[0];
+            for (const auto& w : wanted)
+                if (w.name == s.axes[a].name) want = w.value;
+            match = v.defines.size() > a && v.defines[a].value == want;
+        }
+        for (const auto& w : wanted) {  // a name that is no axis never matches
+            bool known = false;
+            for (const auto& ax : s.axes) known = known || ax.name == w.name;
+            match = match && known;
+        }
+        if (match) return &v;
+    }
+    return nullptr;
+}
+
+constexpr const SourceFile* findSourceFile(const StageSource& s, std::uint32_t number) {
+    for (const auto& f : s.files)
+        if (f.number == number) return &f;
+    return nullptr;
+}
+
+}  // namespace prism::catalog

@@ -1,0 +1,96 @@
+// Command-line parsing for prism-shaderc (see docs/shaderc.md for the contract).
+#include "args.hpp"
+#include "source_reader.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <filesystem>
+#include <iostream>
+#include <thread>
+
+namespace prism::shaderc {
+namespace {
+
+std::pair<std::string, std::string> splitDefine(const std::string& text) {
+    auto eq = text.find('=');
+    if (eq == std::string::npos) return {text, "1"};
+    return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
+bool isIdentifier(const std::string& s) {
+    if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) return false;
+    for (char c : s)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
+    return true;
+}
+
+// The command line for the banner, with absolute paths made relative to the base
+// directory so the header is the same on every machine.
+std::string joinCommandLine(int argc, char** argv, const std::string& baseDir) {
+    std::string out = "prism-shaderc";
+    for (int i = 1; i < argc; ++i) {
+        std::string arg = argv[i];
+        out += ' ';
+        out += !arg.empty() && arg[0] == '/' ? embeddedPath(arg, baseDir) : arg;
+    }
+    return out;
+}
+
+}  // namespace
+
+ArgsResult parseArgs(int argc, char** argv) {
+    Options o;
+    std::vector<std::string> defines;
+    std::string errfmt = "gcc";
+    CLI::App app{"prism-shaderc: resolve #includes, validate GLSL with glslang and embed it in a C++ header",
+                 "prism-shaderc"};
+    app.set_version_flag("--version", std::string("prism-shaderc ") + PRISM_VERSION);
+    app.add_option("inputs", o.inputs, "shader stage files (.vert .geom .frag .comp) or directories")
+        ->required();
+    app.add_option("-I", o.includeDirs, "module search directory (repeatable, searched in order)");
+    app.add_option("-o", o.output, "generated C++ header");
+    app.add_option("--depfile", o.depfile, "Make-style depfile listing every file read");
+    app.add_option("--stamp", o.stamp, "file touched on every successful run (build-system output)");
+    app.add_option("--emit-glsl", o.emitGlslDir, "also write each flattened stage as DIR/<shader>[.<variant>].<stage>");
+    app.add_flag("--check", o.checkOnly, "validate only, write nothing");
+    app.add_option("-D", defines, "define a macro for every stage: NAME[=VALUE]");
+    app.add_option("--glsl-version", o.glslVersion, "default #version when a shader has none")
+        ->capture_default_str();
+    app.add_option("--namespace", o.nameSpace, "C++ namespace of the generated code")->capture_default_str();
+    app.add_option("--contract", o.contracts, "binding contract JSON (attributes and uniforms the runtime provides)");
+    app.add_option("--variant", o.variantFilters,
+                   "emit only this variant of a shader: SHADER:NAME=VALUE,NAME=VALUE (repeatable)");
+    app.add_option("--base-dir", o.baseDir, "paths embedded in the header are made relative to this directory");
+    app.add_option("--errfmt", errfmt, "diagnostic format")->check(CLI::IsMember({"gcc", "msvc"}));
+    app.add_option("-j", o.jobs, "parallel jobs (default: all cores)")->check(CLI::NonNegativeNumber);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        int code = app.exit(e);
+        return {std::nullopt, e.get_exit_code() == 0 ? 0 : (code == 0 ? 0 : 2)};
+    }
+    for (const auto& d : defines) {
+        auto nv = splitDefine(d);
+        if (!isIdentifier(nv.first)) {
+            std::cerr << "prism-shaderc: error: -D " << d << ": '" << nv.first
+                      << "' is not a macro name; use -D NAME or -D NAME=VALUE\n";
+            return {std::nullopt, 2};
+        }
+        o.defines.push_back(nv);
+    }
+    o.errorFormat = errfmt == "msvc" ? ErrorFormat::Msvc : ErrorFormat::Gcc;
+    if (o.jobs == 0) o.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    if (o.glslVersion >= 150 && o.glslVersion < 300) o.glslProfile = "core";
+    if (o.glslVersion < 150) o.glslProfile.clear();
+    if (!o.checkOnly && o.output.empty() && o.emitGlslDir.empty()) {
+        std::cerr << "prism-shaderc: error: nothing to write: give -o <header>, --emit-glsl <dir> or --check\n";
+        return {std::nullopt, 2};
+    }
+    if (o.baseDir.empty()) o.baseDir = std::filesystem::current_path().string();
+    o.baseDir = std::filesystem::absolute(o.baseDir).lexically_normal().string();
+    o.commandLine = joinCommandLine(argc, argv, o.baseDir);
+    return {std::move(o), 0};
+}
+
+}  // namespace prism::shaderc

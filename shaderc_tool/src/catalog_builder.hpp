@@ -1,0 +1,36 @@
+// Builds the catalogue: for every shader, resolves its stages, derives its variant
+// axes, then resolves and validates every chosen variant (in parallel, -j), and
+// gathers the modules of the include directories with their dependencies.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "args.hpp"
+#include "catalog_model.hpp"
+#include "diagnostics.hpp"
+#include "shader_inputs.hpp"
+#include "source_reader.hpp"
+
+namespace prism::shaderc {
+
+// Resolved (not yet validated) catalogue: cheap to compute, and enough to know
+// whether anything changed since the header was last written.
+struct ResolvedCatalog {
+    CatalogData data;              // variants without reflection yet
+    std::vector<std::string> filesRead;  // for the depfile (display paths)
+    std::vector<std::vector<std::vector<ResolvedStage>>> resolved;  // [shader][variant][stage]
+    std::vector<std::vector<std::string>> stagePaths;                // [shader][stage]
+};
+
+ResolvedCatalog resolveCatalog(const Options& options, const std::vector<ShaderInput>& shaders,
+                               const Contract& contract, const SourceReader& reader, DiagnosticSink& sink);
+
+// Runs glslang on every variant and fills in the reflection tables.
+void validateCatalog(ResolvedCatalog& catalog, const Contract& contract, int jobs, DiagnosticSink& sink);
+
+// A stable fingerprint of everything that determines the header's content.
+std::string fingerprint(const ResolvedCatalog& catalog);
+
+
+}  // namespace prism::shaderc

@@ -1,0 +1,56 @@
+// The in-memory catalogue the pipeline assembles and the header writer prints: every
+// shader with its validated variants, every module, and the binding contract.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <prism/shader_catalog.hpp>
+
+#include "contract.hpp"
+#include "reflection.hpp"
+#include "variants.hpp"
+
+namespace prism::shaderc {
+
+struct CatalogStage {
+    catalog::Stage stage;
+    std::string text;                // flattened, driver-safe GLSL
+    std::vector<std::string> files;  // index = source number; paths as embedded
+};
+
+struct CatalogVariant {
+    std::string name;
+    std::vector<std::pair<std::string, std::string>> defines;
+    std::vector<CatalogStage> stages;
+    ProgramReflection reflection;
+};
+
+struct CatalogShader {
+    std::string name;
+    std::vector<Axis> axes;
+    std::vector<CatalogVariant> variants;
+    std::vector<std::uint32_t> modules;  // indices into CatalogData::modules, sorted
+};
+
+struct CatalogModule {
+    std::string identifier;  // ModuleId enumerator, e.g. "lights" or "lighting_phong"
+    std::string path;        // as embedded
+    std::string description;
+    std::string text;        // own text, #include/#version/#pragma once blanked
+    std::vector<std::uint32_t> dependencies;  // direct includes, in order
+};
+
+struct CatalogData {
+    std::string nameSpace;
+    std::string commandLine;
+    std::string fingerprint;  // of every input; lets an unchanged run skip validation
+    std::string versionDirective;
+    std::vector<CatalogShader> shaders;  // sorted by name
+    std::vector<CatalogModule> modules;  // sorted by identifier
+    Contract contract;
+};
+
+}  // namespace prism::shaderc

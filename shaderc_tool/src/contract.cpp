@@ -1,0 +1,211 @@
+// Loading of the binding contract and the check of shaders against it.
+#include "contract.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <map>
+
+namespace prism::shaderc {
+namespace {
+
+using nlohmann::json;
+
+// Line and column of a byte offset, for JSON syntax errors.
+std::pair<int, int> lineColumnOf(const std::string& text, std::size_t offset) {
+    int line = 1, col = 1;
+    for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
+        if (text[i] == '\n') { ++line; col = 1; } else { ++col; }
+    }
+    return {line, col};
+}
+
+struct Field {
+    const std::string& file;
+    std::vector<Diagnostic>& out;
+    bool ok = true;
+
+    void fail(const std::string& pointer, const std::string& expected) {
+        out.push_back(makeError(file, 0, 0, pointer + ": expected " + expected));
+        ok = false;
+    }
+    std::string string(const json& obj, const std::string& key, const std::string& at) {
+        if (!obj.contains(key) || !obj[key].is_string()) { fail(at + "/" + key, "a string"); return {}; }
+        return obj[key].get<std::string>();
+    }
+    int integer(const json& obj, const std::string& key, const std::string& at, bool required) {
+        if (!obj.contains(key)) { if (required) fail(at + "/" + key, "an integer"); return 0; }
+        if (!obj[key].is_number_integer() || obj[key].get<long long>() < 0) {
+            fail(at + "/" + key, "a non-negative integer");
+            return 0;
+        }
+        return obj[key].get<int>();
+    }
+};
+
+void loadOne(const std::string& path, const std::string& text, Contract& c, std::vector<Diagnostic>& out) {
+    json doc;
+    try {
+        doc = json::parse(text);
+    } catch (const json::parse_error& e) {
+        auto [line, col] = lineColumnOf(text, e.byte > 0 ? e.byte - 1 : 0);
+        std::string what = e.what();
+        auto pos = what.find("syntax error");
+        out.push_back(makeError(path, line, col,
+                                "malformed contract JSON: " + (pos == std::string::npos ? what : what.substr(pos))));
+        return;
+    }
+    Field f{path, out};
+    if (!doc.is_object()) { f.fail("/", "an object with \"attributes\" and \"uniforms\""); return; }
+    if (doc.contains("attributes")) {
+        if (!doc["attributes"].is_array()) f.fail("/attributes", "an array");
+        else for (std::size_t i = 0; i < doc["attributes"].size(); ++i) {
+            std::string at = "/attributes/" + std::to_string(i);
+            const json& a = doc["attributes"][i];
+            if (!a.is_object()) { f.fail(at, "an object {name, type, location}"); continue; }
+            ContractAttribute attr{f.string(a, "name", at), f.string(a, "type", at), f.integer(a, "location", at, true)};
+            if (!attr.type.empty() && glTypeOf(attr.type) == 0) f.fail(at + "/type", "a GLSL type such as vec3");
+            c.attributes.push_back(std::move(attr));
+        }
+    }
+    if (doc.contains("uniforms")) {
+        if (!doc["uniforms"].is_array()) f.fail("/uniforms", "an array");
+        else for (std::size_t i = 0; i < doc["uniforms"].size(); ++i) {
+            std::string at = "/uniforms/" + std::to_string(i);
+            const json& u = doc["uniforms"][i];
+            if (!u.is_object()) { f.fail(at, "an object {name, type[, array]}"); continue; }
+            ContractUniform uni{f.string(u, "name", at), f.string(u, "type", at), f.integer(u, "array", at, false)};
+            if (!uni.type.empty() && glTypeOf(uni.type) == 0) f.fail(at + "/type", "a GLSL type such as mat4");
+            c.uniforms.push_back(std::move(uni));
+        }
+    }
+}
+
+// Levenshtein distance, for "did you mean" hints.
+std::size_t editDistance(const std::string& a, const std::string& b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diag = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            std::size_t up = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            diag = up;
+        }
+    }
+    return row[b.size()];
+}
+
+template <class T>
+std::string suggestion(const std::string& name, const std::vector<T>& known) {
+    std::string best;
+    std::size_t bestDistance = 4;
+    for (const auto& k : known) {
+        auto d = editDistance(name, k.name);
+        if (d < bestDistance) { bestDistance = d; best = k.name; }
+    }
+    return best.empty() ? std::string() : "; did you mean '" + best + "'?";
+}
+
+std::string contractFiles(const Contract& c) {
+    std::string s;
+    for (const auto& f : c.files) s += (s.empty() ? "" : ", ") + f;
+    return s;
+}
+
+}  // namespace
+
+std::uint32_t glTypeOf(const std::string& t) {
+    static const std::map<std::string, std::uint32_t> types = {
+        {"float", 0x1406}, {"vec2", 0x8B50}, {"vec3", 0x8B51}, {"vec4", 0x8B52},
+        {"int", 0x1404}, {"ivec2", 0x8B53}, {"ivec3", 0x8B54}, {"ivec4", 0x8B55},
+        {"uint", 0x1405}, {"uvec2", 0x8DC6}, {"uvec3", 0x8DC7}, {"uvec4", 0x8DC8},
+        {"bool", 0x8B56}, {"bvec2", 0x8B57}, {"bvec3", 0x8B58}, {"bvec4", 0x8B59},
+        {"mat2", 0x8B5A}, {"mat3", 0x8B5B}, {"mat4", 0x8B5C},
+        {"mat2x3", 0x8B65}, {"mat2x4", 0x8B66}, {"mat3x2", 0x8B67}, {"mat3x4", 0x8B68},
+        {"mat4x2", 0x8B69}, {"mat4x3", 0x8B6A},
+        {"sampler2D", 0x8B5E}, {"sampler3D", 0x8B5F}, {"samplerCube", 0x8B60},
+        {"sampler2DShadow", 0x8B62}, {"sampler2DArray", 0x8DC1}, {"isampler2D", 0x8DCA},
+        {"usampler2D", 0x8DD2}, {"image2D", 0x904D}, {"image2DArray", 0x9053},
+    };
+    auto it = types.find(t);
+    return it == types.end() ? 0 : it->second;
+}
+
+ContractLoadResult loadContracts(const std::vector<std::string>& paths, const SourceReader& reader) {
+    ContractLoadResult r;
+    for (const auto& p : paths) {
+        auto text = reader.read(p);
+        if (!text) {
+            r.diagnostics.push_back(makeError(p, 0, 0, "cannot read the contract file; check the --contract path"));
+            continue;
+        }
+        r.contract.files.push_back(p);
+        loadOne(p, *text, r.contract, r.diagnostics);
+    }
+    std::stable_sort(r.contract.attributes.begin(), r.contract.attributes.end(),
+                     [](const auto& a, const auto& b) { return a.location < b.location; });
+    std::stable_sort(r.contract.uniforms.begin(), r.contract.uniforms.end(),
+                     [](const auto& a, const auto& b) { return a.name < b.name; });
+    for (std::size_t i = 1; i < r.contract.attributes.size(); ++i) {
+        const auto& a = r.contract.attributes[i - 1];
+        const auto& b = r.contract.attributes[i];
+        if (a.location == b.location)
+            r.diagnostics.push_back(makeError(r.contract.files.back(), 0, 0,
+                                              "attributes '" + a.name + "' and '" + b.name + "' share location " +
+                                                  std::to_string(a.location) + "; give each its own"));
+    }
+    return r;
+}
+
+std::vector<Diagnostic> checkContract(const Contract& contract, const std::vector<StageInterface>& stages,
+                                      const SourceLocator& locate) {
+    std::vector<Diagnostic> out;
+    if (contract.empty()) return out;
+    const std::string files = contractFiles(contract);
+    for (std::size_t s = 0; s < stages.size(); ++s) {
+        for (const auto& v : stages[s].variables) {
+            if (v.storage == StorageKind::In && stages[s].stage == catalog::Stage::Vertex) {
+                auto it = std::find_if(contract.attributes.begin(), contract.attributes.end(),
+                                       [&](const auto& a) { return a.name == v.name; });
+                if (it == contract.attributes.end()) {
+                    out.push_back(diagnosticAt(locate, s, v, Severity::Error,
+                                               "vertex attribute '" + v.name +
+                                                   "' is not in the binding contract (" + files +
+                                                   "), so the runtime would never feed it" +
+                                                   suggestion(v.name, contract.attributes) +
+                                                   "; fix the name or add it to the contract"));
+                } else if (it->type != glslTypeWithArray(v)) {
+                    out.push_back(diagnosticAt(locate, s, v, Severity::Error,
+                                               "vertex attribute '" + v.name + "' is `" + glslTypeWithArray(v) +
+                                                   "` but the contract (" + files + ") supplies `" + it->type + "`"));
+                }
+            } else if (v.storage == StorageKind::Uniform && !v.isBlock) {
+                auto it = std::find_if(contract.uniforms.begin(), contract.uniforms.end(),
+                                       [&](const auto& u) { return u.name == v.name; });
+                if (it == contract.uniforms.end()) {
+                    out.push_back(diagnosticAt(locate, s, v, Severity::Error,
+                                               "uniform '" + v.name + "' is not in the binding contract (" + files +
+                                                   "), so the runtime never sets it" +
+                                                   suggestion(v.name, contract.uniforms) +
+                                                   "; fix the name or add it to the contract"));
+                } else if (it->type != v.type) {
+                    out.push_back(diagnosticAt(locate, s, v, Severity::Error,
+                                               "uniform '" + v.name + "' is `" + glslTypeWithArray(v) +
+                                                   "` but the contract (" + files + ") supplies `" + it->type +
+                                                   (it->array ? "[" + std::to_string(it->array) + "]" : "") + "`"));
+                } else if ((v.arraySize != 0) != (it->array != 0) || v.arraySize > it->array || v.arraySize < 0) {
+                    out.push_back(diagnosticAt(locate, s, v, Severity::Error,
+                                               "uniform '" + v.name + "' is `" + glslTypeWithArray(v) +
+                                                   "` but the contract (" + files + ") supplies " +
+                                                   (it->array ? "at most " + std::to_string(it->array) + " elements"
+                                                              : "a single value")));
+                }
+            }
+        }
+    }
+    return out;
+}
+
+}  // namespace prism::shaderc

@@ -1,0 +1,14 @@
+// --emit-glsl: writes each flattened, driver-safe stage as
+// DIR/<shader>.<stage> (DIR/<shader>.<variant>.<stage> for shaders with variants),
+// so the exact text a driver will see can be inspected or fed to other tools.
+#pragma once
+
+#include <string>
+
+#include "catalog_model.hpp"
+
+namespace prism::shaderc {
+
+bool emitGlsl(const std::string& dir, const CatalogData& catalog, std::string& error);
+
+}  // namespace prism::shaderc

@@ -1,0 +1,27 @@
+// The cross-stage interface check that glslang 12 lacks: every input of a stage after
+// the vertex stage must match an output of the previous stage in name, type, array
+// size and interpolation qualifier (flat / smooth / noperspective).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "diagnostics.hpp"
+#include "stage_interface.hpp"
+
+namespace prism::shaderc {
+
+// Maps (index of the stage in `stages`, source number) to a file:line location.
+struct SourceLocator {
+    std::function<std::string(std::size_t stage, std::uint32_t sourceNumber)> path;
+    std::function<std::vector<IncludeSite>(std::size_t stage, std::uint32_t sourceNumber)> chain;
+};
+
+std::vector<Diagnostic> checkStageInterfaces(const std::vector<StageInterface>& stages,
+                                             const SourceLocator& locate);
+
+Diagnostic diagnosticAt(const SourceLocator& locate, std::size_t stage, const InterfaceVariable& v,
+                        Severity severity, std::string message);
+
+}  // namespace prism::shaderc

@@ -1,0 +1,31 @@
+// Turns the command line's files and directories into shaders: the stage files that
+// share a base name (`phong.vert` + `phong.frag` [+ `phong.geom`], or `rain.comp` alone).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <prism/shader_catalog.hpp>
+
+#include "diagnostics.hpp"
+
+namespace prism::shaderc {
+
+struct StageFile {
+    catalog::Stage stage;
+    std::string path;
+};
+
+struct ShaderInput {
+    std::string name;               // base name, a C++ identifier
+    std::vector<StageFile> stages;  // in pipeline order
+};
+
+struct ShaderInputsResult {
+    std::vector<ShaderInput> shaders;  // sorted by name
+    std::vector<Diagnostic> diagnostics;
+};
+
+ShaderInputsResult collectShaderInputs(const std::vector<std::string>& inputs);
+
+}  // namespace prism::shaderc

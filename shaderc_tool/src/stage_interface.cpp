@@ -1,0 +1,105 @@
+// Extraction of a stage's declared globals from glslang's intermediate tree.
+#include "stage_interface.hpp"
+
+#include <glslang/MachineIndependent/localintermediate.h>
+#include <glslang/Public/ShaderLang.h>
+
+namespace prism::shaderc {
+namespace {
+
+std::string vectorName(const char* scalar, const char* prefix, int size) {
+    if (size <= 1) return scalar;
+    return std::string(prefix) + "vec" + std::to_string(size);
+}
+
+std::string typeSpelling(const glslang::TType& t) {
+    using namespace glslang;
+    if (t.isStruct()) return std::string(t.getTypeName().c_str());
+    if (t.getBasicType() == EbtSampler) return std::string(t.getSampler().getString().c_str());
+    if (t.isMatrix()) {
+        std::string base = t.getBasicType() == EbtDouble ? "dmat" : "mat";
+        int c = t.getMatrixCols(), r = t.getMatrixRows();
+        return c == r ? base + std::to_string(c) : base + std::to_string(c) + "x" + std::to_string(r);
+    }
+    int n = t.getVectorSize();
+    switch (t.getBasicType()) {
+    case EbtFloat: return vectorName("float", "", n);
+    case EbtDouble: return vectorName("double", "d", n);
+    case EbtInt: return vectorName("int", "i", n);
+    case EbtUint: return vectorName("uint", "u", n);
+    case EbtBool: return vectorName("bool", "b", n);
+    default: return std::string(t.getBasicTypeString().c_str());
+    }
+}
+
+class LinkerObjectCollector : public glslang::TIntermTraverser {
+public:
+    explicit LinkerObjectCollector(StageInterface& out) : out_(out) {}
+
+    bool visitAggregate(glslang::TVisit, glslang::TIntermAggregate* node) override {
+        if (node->getOp() != glslang::EOpLinkerObjects) return true;
+        for (auto* child : node->getSequence())
+            if (auto* sym = child->getAsSymbolNode()) add(*sym);
+        return false;
+    }
+
+private:
+    void add(const glslang::TIntermSymbol& sym) {
+        using namespace glslang;
+        const TType& type = sym.getType();
+        const TQualifier& q = type.getQualifier();
+        if (q.builtIn != EbvNone) return;
+        std::string name = sym.getName().c_str();
+        if (name.rfind("gl_", 0) == 0) return;
+        InterfaceVariable v;
+        switch (q.storage) {
+        case EvqVaryingIn: v.storage = StorageKind::In; break;
+        case EvqVaryingOut: v.storage = StorageKind::Out; break;
+        case EvqUniform: v.storage = StorageKind::Uniform; break;
+        case EvqBuffer: v.storage = StorageKind::Buffer; break;
+        default: return;
+        }
+        v.isBlock = type.getBasicType() == EbtBlock;
+        v.name = v.isBlock ? std::string(type.getTypeName().c_str()) : name;
+        v.type = typeSpelling(type);
+        if (type.isArray()) v.arraySize = type.isUnsizedArray() ? -1 : type.getOuterArraySize();
+        v.interpolation = q.flat ? Interpolation::Flat : q.nopersp ? Interpolation::NoPerspective
+                                                                    : Interpolation::Smooth;
+        const TSourceLoc& loc = sym.getLoc();
+        v.sourceNumber = static_cast<std::uint32_t>(loc.string < 0 ? 0 : loc.string);
+        v.line = loc.line;
+        v.column = loc.column;
+        out_.variables.push_back(std::move(v));
+    }
+
+    StageInterface& out_;
+};
+
+}  // namespace
+
+StageInterface extractStageInterface(catalog::Stage stage, const glslang::TShader& shader) {
+    StageInterface result;
+    result.stage = stage;
+    const glslang::TIntermediate* im = shader.getIntermediate();
+    if (!im || !im->getTreeRoot()) return result;
+    LinkerObjectCollector collector(result);
+    im->getTreeRoot()->traverse(&collector);
+    return result;
+}
+
+std::string glslTypeWithArray(const InterfaceVariable& v) {
+    if (v.arraySize == 0) return v.type;
+    if (v.arraySize < 0) return v.type + "[]";
+    return v.type + "[" + std::to_string(v.arraySize) + "]";
+}
+
+std::string_view interpolationName(Interpolation i) {
+    switch (i) {
+    case Interpolation::Smooth: return "smooth";
+    case Interpolation::Flat: return "flat";
+    case Interpolation::NoPerspective: return "noperspective";
+    }
+    return "smooth";
+}
+
+}  // namespace prism::shaderc

@@ -1,0 +1,44 @@
+// The global interface of one compiled stage (its ins, outs and uniforms), extracted
+// from glslang's AST into plain structs so the interface and contract checks are
+// testable without glslang.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <prism/shader_catalog.hpp>
+
+namespace glslang {
+class TShader;
+}
+
+namespace prism::shaderc {
+
+enum class StorageKind { In, Out, Uniform, Buffer };
+enum class Interpolation { Smooth, Flat, NoPerspective };
+
+struct InterfaceVariable {
+    std::string name;      // block name for interface blocks
+    StorageKind storage = StorageKind::In;
+    std::string type;      // GLSL spelling without array: "vec3", "mat4", "sampler2D", struct name
+    int arraySize = 0;     // 0 = not an array, -1 = unsized, else the (outer) size
+    Interpolation interpolation = Interpolation::Smooth;
+    bool isBlock = false;
+    std::uint32_t sourceNumber = 0;  // from the #line directives
+    int line = 0;
+    int column = 0;
+};
+
+struct StageInterface {
+    catalog::Stage stage = catalog::Stage::Vertex;
+    std::vector<InterfaceVariable> variables;  // user-declared globals only (no gl_*)
+};
+
+// Walks the linker objects of a successfully parsed shader.
+StageInterface extractStageInterface(catalog::Stage stage, const glslang::TShader& shader);
+
+std::string glslTypeWithArray(const InterfaceVariable& v);
+std::string_view interpolationName(Interpolation i);
+
+}  // namespace prism::shaderc

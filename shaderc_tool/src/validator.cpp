@@ -1,0 +1,207 @@
+// glslang compilation, linking and message mapping for one program variant.
+#include "validator.hpp"
+
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+
+#include <map>
+#include <memory>
+#include <regex>
+#include <sstream>
+
+#include "interface_check.hpp"
+#include "stage_interface.hpp"
+
+namespace prism::shaderc {
+namespace {
+
+EShLanguage glslangStage(catalog::Stage s) {
+    switch (s) {
+    case catalog::Stage::Vertex: return EShLangVertex;
+    case catalog::Stage::Geometry: return EShLangGeometry;
+    case catalog::Stage::Fragment: return EShLangFragment;
+    case catalog::Stage::Compute: return EShLangCompute;
+    }
+    return EShLangVertex;
+}
+
+EProfile profileOf(const std::string& versionDirective) {
+    if (versionDirective.find(" es") != std::string::npos) return EEsProfile;
+    if (versionDirective.find("compatibility") != std::string::npos) return ECompatibilityProfile;
+    if (versionDirective.find("core") != std::string::npos) return ECoreProfile;
+    return ENoProfile;
+}
+
+// The text of every (source number, line) in a flattened stage, recovered from its
+// `#line N S` directives, so a message's token can be given a column.
+class SourceLines {
+public:
+    SourceLines(const ResolvedStage& stage) {
+        std::istringstream in(stage.text);
+        std::string line;
+        std::uint32_t source = 0;
+        int next = 1;
+        const int lineOffset = stage.versionNumber >= 330 ? 0 : 1;
+        bool first = true;
+        while (std::getline(in, line)) {
+            if (!line.empty() && line.back() == '\r') line.pop_back();
+            unsigned n = 0, s = 0;
+            if (std::sscanf(line.c_str(), " #line %u %u", &n, &s) == 2) {
+                next = static_cast<int>(n) + lineOffset;
+                source = s;
+                first = false;
+                continue;
+            }
+            if (!first) lines_[{source, next}] = line;
+            ++next;
+        }
+    }
+    const std::string* find(std::uint32_t source, int line) const {
+        auto it = lines_.find({source, line});
+        return it == lines_.end() ? nullptr : &it->second;
+    }
+
+private:
+    std::map<std::pair<std::uint32_t, int>, std::string> lines_;
+};
+
+struct StageMaps {
+    const StageToValidate* stage;
+    SourceLines lines;
+};
+
+std::string pathOf(const StageToValidate& s, std::uint32_t number) {
+    if (number < s.resolved.files.size()) return s.resolved.files[number].path;
+    return s.path;
+}
+
+std::vector<IncludeSite> chainOf(const StageToValidate& s, std::uint32_t number) {
+    if (number < s.resolved.files.size()) return s.resolved.files[number].chain;
+    return {};
+}
+
+// Turns glslang's info log ("ERROR: 2:15: 'u_colr' : undeclared identifier") into
+// diagnostics at the module's own file:line:col. Later errors on a line that already
+// has one are glslang's follow-ons: they are counted into a note, not printed.
+std::vector<Diagnostic> mapInfoLog(const std::string& log, const StageMaps& maps) {
+    static const std::regex located(R"(^(ERROR|WARNING): (\d+):(\d+): (.*)$)");
+    static const std::regex token(R"(^'([^']*)' : (.*)$)");
+    std::vector<Diagnostic> out;
+    std::map<std::pair<std::uint32_t, int>, std::size_t> firstOnLine;
+    std::map<std::size_t, int> followOns;
+    std::istringstream in(log);
+    std::string line;
+    while (std::getline(in, line)) {
+        std::smatch m;
+        if (!std::regex_match(line, m, located)) {
+            if (line.rfind("ERROR: ", 0) == 0 && line.find("compilation errors") == std::string::npos &&
+                line.find("No code generated") == std::string::npos)
+                out.push_back(makeError(maps.stage->path, 0, 0, line.substr(7)));
+            continue;
+        }
+        auto source = static_cast<std::uint32_t>(std::stoul(m[2]));
+        int lineNo = std::stoi(m[3]);
+        std::string message = m[4];
+        if (message.find("compilation terminated") != std::string::npos) continue;
+        int column = 0;
+        std::smatch t;
+        if (std::regex_match(message, t, token)) {
+            std::string tok = t[1];
+            message = tok.empty() ? std::string(t[2]) : "'" + tok + "': " + std::string(t[2]);
+            if (const auto* text = maps.lines.find(source, lineNo); text && !tok.empty()) {
+                auto pos = text->find(tok);
+                if (pos != std::string::npos) column = static_cast<int>(pos) + 1;
+            }
+        }
+        Diagnostic d = makeError(pathOf(*maps.stage, source), lineNo, column, message);
+        d.severity = m[1] == "ERROR" ? Severity::Error : Severity::Warning;
+        d.includedFrom = chainOf(*maps.stage, source);
+        if (d.severity == Severity::Error) {
+            auto [it, fresh] = firstOnLine.try_emplace({source, lineNo}, out.size());
+            if (!fresh) {
+                ++followOns[it->second];
+                continue;
+            }
+        }
+        out.push_back(std::move(d));
+    }
+    for (auto [index, count] : followOns) {
+        auto& d = out[index];
+        d.notes.push_back({Severity::Note, d.file, d.line, d.column,
+                           std::to_string(count) + " follow-on error" + (count > 1 ? "s" : "") +
+                               " on the same line suppressed",
+                           {}, {}});
+    }
+    return out;
+}
+
+}  // namespace
+
+void initializeValidator() { glslang::InitializeProcess(); }
+void finalizeValidator() { glslang::FinalizeProcess(); }
+
+ValidatedVariant validateProgram(const std::vector<StageToValidate>& stages, const Contract& contract) {
+    ValidatedVariant result;
+    std::vector<std::unique_ptr<glslang::TShader>> shaders;
+    std::vector<StageMaps> maps;
+    maps.reserve(stages.size());
+    bool compiled = true;
+
+    for (const auto& s : stages) {
+        maps.push_back({&s, SourceLines(s.resolved)});
+        if (s.stage == catalog::Stage::Compute && s.resolved.versionNumber < 430) {
+            result.diagnostics.push_back(makeError(
+                s.path, 1, 1,
+                "compute shaders need GLSL 430 or newer, this stage is " + std::to_string(s.resolved.versionNumber) +
+                    "; add `#version 430 core` or pass --glsl-version 430"));
+            compiled = false;
+            shaders.push_back(nullptr);
+            continue;
+        }
+        auto shader = std::make_unique<glslang::TShader>(glslangStage(s.stage));
+        const char* text = s.resolved.text.c_str();
+        shader->setStrings(&text, 1);
+        const bool ok = shader->parse(GetDefaultResources(), s.resolved.versionNumber,
+                                      profileOf(s.resolved.versionDirective), false, false, EShMsgDefault);
+        auto mapped = mapInfoLog(shader->getInfoLog(), maps.back());
+        result.diagnostics.insert(result.diagnostics.end(), mapped.begin(), mapped.end());
+        if (!ok) {
+            compiled = false;
+            bool hasError = false;
+            for (const auto& d : mapped) hasError = hasError || d.severity == Severity::Error;
+            if (!hasError) result.diagnostics.push_back(makeError(s.path, 0, 0, "glslang rejected this stage"));
+        }
+        shaders.push_back(std::move(shader));
+    }
+    if (!compiled) return result;
+
+    SourceLocator locate;
+    locate.path = [&](std::size_t stage, std::uint32_t number) { return pathOf(stages[stage], number); };
+    locate.chain = [&](std::size_t stage, std::uint32_t number) { return chainOf(stages[stage], number); };
+    std::vector<StageInterface> interfaces;
+    for (std::size_t i = 0; i < stages.size(); ++i)
+        interfaces.push_back(extractStageInterface(stages[i].stage, *shaders[i]));
+    auto io = checkStageInterfaces(interfaces, locate);
+    auto bound = checkContract(contract, interfaces, locate);
+    result.diagnostics.insert(result.diagnostics.end(), io.begin(), io.end());
+    result.diagnostics.insert(result.diagnostics.end(), bound.begin(), bound.end());
+
+    glslang::TProgram program;
+    for (auto& sh : shaders) program.addShader(sh.get());
+    if (!program.link(EShMsgDefault)) {
+        std::istringstream log(program.getInfoLog());
+        std::string line;
+        while (std::getline(log, line))
+            if (line.rfind("ERROR: ", 0) == 0)
+                result.diagnostics.push_back(makeError(stages.front().path, 0, 0, "link: " + line.substr(7)));
+        if (result.diagnostics.empty())
+            result.diagnostics.push_back(makeError(stages.front().path, 0, 0, "glslang could not link the program"));
+        return result;
+    }
+    result.reflection = reflectProgram(program, contract);
+    result.ok = true;
+    for (const auto& d : result.diagnostics) result.ok = result.ok && d.severity != Severity::Error;
+    return result;
+}
+
+}  // namespace prism::shaderc
