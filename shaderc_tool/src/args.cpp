@@ -25,11 +25,16 @@ bool isIdentifier(const std::string& s) {
 }
 
 // The command line for the banner, with absolute paths made relative to the base
-// directory so the header is the same on every machine.
+// directory and without -j, so the header is the same on every machine.
 std::string joinCommandLine(int argc, char** argv, const std::string& baseDir) {
     std::string out = "prism-shaderc";
     for (int i = 1; i < argc; ++i) {
         std::string arg = argv[i];
+        if (arg == "-j" && i + 1 < argc) {  // the job count never changes the output
+            ++i;
+            continue;
+        }
+        if (arg.rfind("-j", 0) == 0) continue;
         out += ' ';
         out += !arg.empty() && arg[0] == '/' ? embeddedPath(arg, baseDir) : arg;
     }
@@ -47,19 +52,22 @@ ArgsResult parseArgs(int argc, char** argv) {
     app.set_version_flag("--version", std::string("prism-shaderc ") + PRISM_VERSION);
     app.add_option("inputs", o.inputs, "shader stage files (.vert .geom .frag .comp) or directories")
         ->required();
-    app.add_option("-I", o.includeDirs, "module search directory (repeatable, searched in order)");
+    app.add_option("-I", o.includeDirs, "module search directory (repeatable, searched in order)")
+        ->allow_extra_args(false);
     app.add_option("-o", o.output, "generated C++ header");
     app.add_option("--depfile", o.depfile, "Make-style depfile listing every file read");
     app.add_option("--stamp", o.stamp, "file touched on every successful run (build-system output)");
     app.add_option("--emit-glsl", o.emitGlslDir, "also write each flattened stage as DIR/<shader>[.<variant>].<stage>");
     app.add_flag("--check", o.checkOnly, "validate only, write nothing");
-    app.add_option("-D", defines, "define a macro for every stage: NAME[=VALUE]");
+    app.add_option("-D", defines, "define a macro for every stage: NAME[=VALUE]")->allow_extra_args(false);
     app.add_option("--glsl-version", o.glslVersion, "default #version when a shader has none")
         ->capture_default_str();
     app.add_option("--namespace", o.nameSpace, "C++ namespace of the generated code")->capture_default_str();
-    app.add_option("--contract", o.contracts, "binding contract JSON (attributes and uniforms the runtime provides)");
+    app.add_option("--contract", o.contracts, "binding contract JSON (attributes and uniforms the runtime provides)")
+        ->allow_extra_args(false);
     app.add_option("--variant", o.variantFilters,
-                   "emit only this variant of a shader: SHADER:NAME=VALUE,NAME=VALUE (repeatable)");
+                   "emit only this variant of a shader: SHADER:NAME=VALUE,NAME=VALUE (repeatable)")
+        ->allow_extra_args(false);
     app.add_option("--base-dir", o.baseDir, "paths embedded in the header are made relative to this directory");
     app.add_option("--errfmt", errfmt, "diagnostic format")->check(CLI::IsMember({"gcc", "msvc"}));
     app.add_option("-j", o.jobs, "parallel jobs (default: all cores)")->check(CLI::NonNegativeNumber);

@@ -211,7 +211,7 @@ std::string fingerprint(const ResolvedCatalog& rc) {
         h ^= 0xff; h *= 1099511628211ull;
     };
     const auto& d = rc.data;
-    mix(PRISM_VERSION); mix(d.nameSpace); mix(d.commandLine); mix(d.versionDirective);
+    mix(PRISM_VERSION); mix(d.nameSpace); mix(d.commandLine); mix(d.versionDirective);  // the banner shows the command
     for (const auto& s : d.shaders) {
         mix(s.name);
         for (const auto& a : s.axes) { mix(a.name); for (const auto& v : a.values) mix(v); }

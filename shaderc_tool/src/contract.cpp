@@ -105,7 +105,7 @@ std::string suggestion(const std::string& name, const std::vector<T>& known) {
         auto d = editDistance(name, k.name);
         if (d < bestDistance) { bestDistance = d; best = k.name; }
     }
-    return best.empty() ? std::string() : "; did you mean '" + best + "'?";
+    return best.empty() ? std::string() : " (did you mean '" + best + "'?)";
 }
 
 std::string contractFiles(const Contract& c) {
@@ -139,6 +139,7 @@ ContractLoadResult loadContracts(const std::vector<std::string>& paths, const So
         auto text = reader.read(p);
         if (!text) {
             r.diagnostics.push_back(makeError(p, 0, 0, "cannot read the contract file; check the --contract path"));
+            r.ioError = true;
             continue;
         }
         r.contract.files.push_back(p);

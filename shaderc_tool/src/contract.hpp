@@ -39,6 +39,7 @@ struct Contract {
 struct ContractLoadResult {
     Contract contract;
     std::vector<Diagnostic> diagnostics;
+    bool ioError = false;  // a contract file that cannot be read
 };
 
 // Reads and merges the contract files; a malformed file gives `file:line:col` and the

@@ -78,6 +78,11 @@ int main(int argc, char** argv) {
     auto contract = loadContracts(o.contracts, disk);
     sink.reportAll(contract.diagnostics);
 
+    if (inputs.ioError || contract.ioError) {
+        sink.print(std::cerr, o.errorFormat);
+        return kExitUsageOrIo;
+    }
+
     auto catalog = resolveCatalog(o, inputs.shaders, contract.contract, disk, sink);
     catalog.data.commandLine = o.commandLine;
     catalog.data.fingerprint = fingerprint(catalog);

@@ -66,6 +66,7 @@ ShaderInputsResult collectShaderInputs(const std::vector<std::string>& inputs) {
             files.insert(files.end(), found.begin(), found.end());
         } else if (!fs::exists(in, ec)) {
             result.diagnostics.push_back(makeError(in, 0, 0, "no such file or directory"));
+            result.ioError = true;
         } else if (!stageOf(in)) {
             result.diagnostics.push_back(
                 makeError(in, 0, 0, "unknown stage extension; use .vert, .geom, .frag or .comp"));

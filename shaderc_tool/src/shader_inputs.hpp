@@ -24,6 +24,7 @@ struct ShaderInput {
 struct ShaderInputsResult {
     std::vector<ShaderInput> shaders;  // sorted by name
     std::vector<Diagnostic> diagnostics;
+    bool ioError = false;  // an input that does not exist (exit status 2, not 1)
 };
 
 ShaderInputsResult collectShaderInputs(const std::vector<std::string>& inputs);

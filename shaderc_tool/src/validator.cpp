@@ -61,6 +61,23 @@ public:
         return it == lines_.end() ? nullptr : &it->second;
     }
 
+    // glslang's linker objects carry no source location, so a global's declaration is
+    // found in the text: the first line declaring `name` with a storage qualifier.
+    void locateDeclaration(InterfaceVariable& v) const {
+        if (v.line > 0) return;
+        static const std::regex qualifier(R"(\b(in|out|uniform|buffer)\b)");
+        const std::regex name("\\b" + v.name + "\\b");
+        for (const auto& [key, text] : lines_) {
+            auto code = text.substr(0, text.find("//"));
+            std::smatch m;
+            if (!std::regex_search(code, qualifier) || !std::regex_search(code, m, name)) continue;
+            v.sourceNumber = key.first;
+            v.line = key.second;
+            v.column = static_cast<int>(m.position(0)) + 1;
+            return;
+        }
+    }
+
 private:
     std::map<std::pair<std::uint32_t, int>, std::string> lines_;
 };
@@ -102,6 +119,7 @@ std::vector<Diagnostic> mapInfoLog(const std::string& log, const StageMaps& maps
         auto source = static_cast<std::uint32_t>(std::stoul(m[2]));
         int lineNo = std::stoi(m[3]);
         std::string message = m[4];
+        while (!message.empty() && message.back() == ' ') message.pop_back();
         if (message.find("compilation terminated") != std::string::npos) continue;
         int column = 0;
         std::smatch t;
@@ -179,12 +197,16 @@ ValidatedVariant validateProgram(const std::vector<StageToValidate>& stages, con
     locate.path = [&](std::size_t stage, std::uint32_t number) { return pathOf(stages[stage], number); };
     locate.chain = [&](std::size_t stage, std::uint32_t number) { return chainOf(stages[stage], number); };
     std::vector<StageInterface> interfaces;
-    for (std::size_t i = 0; i < stages.size(); ++i)
+    for (std::size_t i = 0; i < stages.size(); ++i) {
         interfaces.push_back(extractStageInterface(stages[i].stage, *shaders[i]));
+        for (auto& v : interfaces.back().variables) maps[i].lines.locateDeclaration(v);
+    }
     auto io = checkStageInterfaces(interfaces, locate);
     auto bound = checkContract(contract, interfaces, locate);
     result.diagnostics.insert(result.diagnostics.end(), io.begin(), io.end());
     result.diagnostics.insert(result.diagnostics.end(), bound.begin(), bound.end());
+    // glslang's own link check would only repeat these, with less detail.
+    if (!io.empty() || !bound.empty()) return result;
 
     glslang::TProgram program;
     for (auto& sh : shaders) program.addShader(sh.get());

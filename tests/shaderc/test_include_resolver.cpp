@@ -1,0 +1,710 @@
+// Unit tests of the include resolver (stage 2 of prism-shaderc) on in-memory files,
+// plus glslang checks that the emitted #line directives give true line numbers.
+#include <gtest/gtest.h>
+
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "include_resolver.hpp"
+#include "source_reader.hpp"
+
+namespace prism::shaderc {
+namespace {
+
+// Substring checks that print both strings on failure (gmock is not linked).
+::testing::AssertionResult contains(const std::string& text, const std::string& needle) {
+    if (text.find(needle) != std::string::npos) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << "\"" << needle << "\" not found in:\n" << text;
+}
+
+::testing::AssertionResult lacks(const std::string& text, const std::string& needle) {
+    if (text.find(needle) == std::string::npos) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << "\"" << needle << "\" unexpectedly found in:\n" << text;
+}
+
+ResolveResult resolve(const MemoryReader& reader, const std::string& stage, const ResolveOptions& options = {}) {
+    return resolveStage(stage, options, reader);
+}
+
+std::string allMessages(const std::vector<Diagnostic>& diagnostics) {
+    std::string text;
+    for (const auto& d : diagnostics) text += formatDiagnostic(d, ErrorFormat::Gcc);
+    return text;
+}
+
+std::size_t countOf(const std::string& text, const std::string& needle) {
+    std::size_t count = 0;
+    for (auto at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++count;
+    return count;
+}
+
+Diagnostic onlyError(const ResolveResult& result) {
+    EXPECT_FALSE(result.ok);
+    EXPECT_EQ(result.diagnostics.size(), 1u) << allMessages(result.diagnostics);
+    return result.diagnostics.at(0);
+}
+
+// ---- paths -----------------------------------------------------------------------------
+
+TEST(SourcePaths, JoinAndParentAreLexical) {
+    EXPECT_EQ(joinPath("shaders", "../modules/x.glsl"), "modules/x.glsl");
+    EXPECT_EQ(joinPath("shaders/", "./x.glsl"), "shaders/x.glsl");
+    EXPECT_EQ(joinPath("", "a/./b/../c.glsl"), "a/c.glsl");
+    EXPECT_EQ(joinPath("dir", "/abs/x.glsl"), "/abs/x.glsl");
+    EXPECT_EQ(joinPath("a\\b", "c.glsl"), "a/b/c.glsl");
+    EXPECT_EQ(parentDir("shaders/main.frag"), "shaders");
+    EXPECT_EQ(parentDir("main.frag"), "");
+    EXPECT_EQ(parentDir("/main.frag"), "/");
+}
+
+TEST(SourcePaths, MemoryReaderNormalisesKeys) {
+    MemoryReader reader{{"a/./b/../c.glsl", "x"}};
+    EXPECT_EQ(reader.canonical("a/c.glsl"), "a/c.glsl");
+    EXPECT_EQ(reader.read("./a/c.glsl"), "x");
+    EXPECT_FALSE(reader.canonical("a/b/c.glsl"));
+}
+
+// ---- include once, diamonds, cycles ----------------------------------------------------
+
+TEST(IncludeResolver, IncludeOnceSkipsRepeats) {
+    MemoryReader reader{{"main.frag", "#include \"a.glsl\"\n#include \"a.glsl\"\nvoid main() {}\n"},
+                        {"a.glsl", "float aFunction() { return 1.0; }\n"}};
+    const auto result = resolve(reader, "main.frag");
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    EXPECT_EQ(countOf(result.stage.text, "aFunction"), 1u);
+    EXPECT_EQ(result.stage.files.size(), 2u);
+    EXPECT_EQ(result.stage.filesRead, (std::vector<std::string>{"main.frag", "a.glsl"}));
+}
+
+TEST(IncludeResolver, DiamondIncludesSharedModuleOnce) {
+    MemoryReader reader{{"a.frag", "#include \"b.glsl\"\n#include \"c.glsl\"\nvoid main() {}\n"},
+                        {"b.glsl", "#include \"d.glsl\"\nfloat bFn() { return dFn(); }\n"},
+                        {"c.glsl", "#include \"d.glsl\"\nfloat cFn() { return dFn(); }\n"},
+                        {"d.glsl", "float dFn() { return 1.0; }\n"}};
+    const auto result = resolve(reader, "a.frag");
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    EXPECT_EQ(countOf(result.stage.text, "float dFn()"), 1u);
+    EXPECT_LT(result.stage.text.find("float dFn()"), result.stage.text.find("float bFn()"));
+    EXPECT_LT(result.stage.text.find("float bFn()"), result.stage.text.find("float cFn()"));
+    EXPECT_EQ(result.stage.filesRead, (std::vector<std::string>{"a.frag", "b.glsl", "d.glsl", "c.glsl"}));
+    ASSERT_EQ(result.stage.files.size(), 4u);
+    EXPECT_EQ(result.stage.files[2].path, "d.glsl");
+    EXPECT_EQ(result.stage.files[2].number, 2u);
+    EXPECT_EQ(result.stage.files[2].chain, (std::vector<IncludeSite>{{"b.glsl", 1}, {"a.frag", 1}}));
+}
+
+TEST(IncludeResolver, CycleIsAnErrorWithTheChain) {
+    MemoryReader reader{{"main.frag", "#include \"a.glsl\"\nvoid main() {}\n"},
+                        {"a.glsl", "// a\n#include \"b.glsl\"\n"},
+                        {"b.glsl", "// b\n\n#include \"a.glsl\"\n"}};
+    const auto started = std::chrono::steady_clock::now();
+    const auto result = resolve(reader, "main.frag");
+    EXPECT_LT(std::chrono::steady_clock::now() - started, std::chrono::seconds(2));
+    const Diagnostic& error = onlyError(result);
+    EXPECT_EQ(error.message, "include cycle: a.glsl -> b.glsl -> a.glsl");
+    EXPECT_EQ(error.file, "b.glsl");
+    EXPECT_EQ(error.line, 3);
+    EXPECT_EQ(error.column, 10);
+    EXPECT_EQ(error.includedFrom, (std::vector<IncludeSite>{{"a.glsl", 2}, {"main.frag", 1}}));
+}
+
+TEST(IncludeResolver, SelfIncludeIsACycle) {
+    MemoryReader reader{{"main.frag", "#include \"self.glsl\"\n"}, {"self.glsl", "#include \"self.glsl\"\n"}};
+    EXPECT_EQ(onlyError(resolve(reader, "main.frag")).message, "include cycle: self.glsl -> self.glsl");
+
+    MemoryReader stageOnly{{"main.frag", "#include \"main.frag\"\n"}};
+    EXPECT_EQ(onlyError(resolve(stageOnly, "main.frag")).message, "include cycle: main.frag -> main.frag");
+}
+
+TEST(IncludeResolver, CycleCheckedBeforeIncludeOnce) {
+    // b.glsl is entered (and still open) when c.glsl includes it again.
+    MemoryReader reader{{"main.frag", "#include \"b.glsl\"\n"},
+                        {"b.glsl", "#include \"c.glsl\"\n"},
+                        {"c.glsl", "#include \"b.glsl\"\n"}};
+    EXPECT_TRUE(contains(onlyError(resolve(reader, "main.frag")).message, "include cycle"));
+}
+
+std::string chainFileName(int index) {
+    return std::string("f").append(std::to_string(index)).append(".glsl");
+}
+
+TEST(IncludeResolver, DepthIsLimited) {
+    MemoryReader reader{{"main.frag", "#include \"f0.glsl\"\n"}};
+    for (int i = 0; i < 100; ++i)
+        reader.add(chainFileName(i), std::string("#include \"").append(chainFileName(i + 1)).append("\"\n"));
+    reader.add(chainFileName(100), "float deepest;\n");
+    const Diagnostic& error = onlyError(resolve(reader, "main.frag"));
+    EXPECT_TRUE(contains(error.message, "nested more than 64 deep"));
+}
+
+// ---- missing and malformed includes ----------------------------------------------------
+
+TEST(IncludeResolver, MissingIncludeNamesFileLineAndSearchedDirs) {
+    MemoryReader reader{{"shaders/main.frag", "#version 330 core\n\n  #include \"lighting.glsl\"\n"}};
+    ResolveOptions options;
+    options.includeDirs = {"modules", "third_party/glsl"};
+    const Diagnostic& error = onlyError(resolve(reader, "shaders/main.frag", options));
+    EXPECT_EQ(error.file, "shaders/main.frag");
+    EXPECT_EQ(error.line, 3);
+    EXPECT_EQ(error.column, 12);
+    EXPECT_TRUE(contains(error.message, "\"lighting.glsl\""));
+    const auto own = error.message.find("shaders (the including file's directory)");
+    const auto first = error.message.find("modules");
+    const auto second = error.message.find("third_party/glsl");
+    EXPECT_NE(own, std::string::npos);
+    EXPECT_LT(own, first);
+    EXPECT_LT(first, second);
+    EXPECT_NE(second, std::string::npos);
+    EXPECT_TRUE(contains(error.message, "add a -I directory or fix the path"));
+}
+
+TEST(IncludeResolver, MissingAngleIncludeDoesNotSearchIncluderDir) {
+    MemoryReader reader{{"shaders/main.frag", "#include <x.glsl>\n"}, {"shaders/x.glsl", "float x;\n"}};
+    ResolveOptions options;
+    options.includeDirs = {"inc"};
+    const Diagnostic& error = onlyError(resolve(reader, "shaders/main.frag", options));
+    EXPECT_TRUE(contains(error.message, "searched: inc;"));
+    EXPECT_TRUE(lacks(error.message, "including file's directory"));
+}
+
+TEST(IncludeResolver, MalformedIncludeIsAnErrorAtItsLine) {
+    for (const char* line : {"#include lighting.glsl", "#include \"unterminated.glsl", "#include",
+                             "#include \"\"", "#include \"a.glsl\" junk"}) {
+        MemoryReader reader{{"main.frag", std::string("// x\n") + line + "\n"}, {"a.glsl", ""}};
+        const Diagnostic& error = onlyError(resolve(reader, "main.frag"));
+        EXPECT_EQ(error.line, 2) << line;
+        EXPECT_TRUE(contains(error.message, "malformed #include")) << line;
+    }
+}
+
+TEST(IncludeResolver, ErrorInsideIncludeCarriesIncludedFrom) {
+    MemoryReader reader{{"main.frag", "\n#include \"a.glsl\"\n"}, {"a.glsl", "#include \"gone.glsl\"\n"}};
+    const Diagnostic& error = onlyError(resolve(reader, "main.frag"));
+    EXPECT_EQ(error.file, "a.glsl");
+    EXPECT_EQ(error.line, 1);
+    EXPECT_EQ(error.includedFrom, (std::vector<IncludeSite>{{"main.frag", 2}}));
+}
+
+// ---- conditionals ----------------------------------------------------------------------
+
+const char* kFogStage =
+    "#version 330 core\n"
+    "#ifdef USE_FOG\n"
+    "#include \"fog.glsl\"\n"
+    "#endif\n"
+    "void main() {}\n";
+
+TEST(IncludeResolver, IncludeInDisabledBranchIsNotFollowed) {
+    MemoryReader reader{{"main.frag", kFogStage}};  // fog.glsl does not exist
+    const auto result = resolve(reader, "main.frag");
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    EXPECT_EQ(result.stage.filesRead, std::vector<std::string>{"main.frag"});
+    EXPECT_TRUE(contains(result.stage.text, "#ifdef USE_FOG\n\n#endif\n"));
+    EXPECT_TRUE(lacks(result.stage.text, "#include"));
+}
+
+TEST(IncludeResolver, IncludeFollowedWhenEnabledByOptionDefine) {
+    MemoryReader reader{{"main.frag", kFogStage}, {"fog.glsl", "float fogFactor() { return 0.5; }\n"}};
+    ResolveOptions options;
+    options.defines = {{"USE_FOG", ""}};
+    const auto result = resolve(reader, "main.frag", options);
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    EXPECT_TRUE(contains(result.stage.text, "fogFactor"));
+    EXPECT_TRUE(contains(result.stage.text, "#define USE_FOG\n"));
+}
+
+TEST(IncludeResolver, IncludeFollowedWhenEnabledByEarlierDefine) {
+    MemoryReader reader{{"main.frag", std::string("#define USE_FOG 1\n") + kFogStage},
+                        {"fog.glsl", "float fogFactor() { return 0.5; }\n"}};
+    const auto result = resolve(reader, "main.frag");
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    EXPECT_TRUE(contains(result.stage.text, "fogFactor"));
+}
+
+TEST(IncludeResolver, UndefDisablesLaterInclude) {
+    MemoryReader reader{{"main.frag", std::string("#define USE_FOG\n#undef USE_FOG\n") + kFogStage}};
+    EXPECT_TRUE(resolve(reader, "main.frag").ok);
+}
+
+TEST(IncludeResolver, DefinesInIncludedFileAffectLaterConditions) {
+    MemoryReader reader{{"main.frag", "#include \"config.glsl\"\n#if SHADOWS > 1\n#include \"pcf.glsl\"\n#endif\n"},
+                        {"config.glsl", "#define SHADOWS 2\n"},
+                        {"pcf.glsl", "float pcf;\n"}};
+    const auto result = resolve(reader, "main.frag");
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    EXPECT_TRUE(contains(result.stage.text, "float pcf;"));
+}
+
+TEST(IncludeResolver, ElifChainFollowsOnlyTheTakenBranch) {
+    const std::string stage =
+        "#if QUALITY == 0\n#include \"low.glsl\"\n"
+        "#elif QUALITY == 1\n#include \"mid.glsl\"\n"
+        "#else\n#include \"high.glsl\"\n#endif\n";
+    MemoryReader reader{{"main.frag", stage}, {"low.glsl", "int low;\n"},
+                        {"mid.glsl", "int mid;\n"}, {"high.glsl", "int high;\n"}};
+    for (const auto& [quality, expected] :
+         std::vector<std::pair<std::string, std::string>>{{"0", "low.glsl"}, {"1", "mid.glsl"}, {"7", "high.glsl"}}) {
+        ResolveOptions options;
+        options.defines = {{"QUALITY", quality}};
+        const auto result = resolve(reader, "main.frag", options);
+        ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+        EXPECT_EQ(result.stage.filesRead, (std::vector<std::string>{"main.frag", expected})) << quality;
+    }
+}
+
+TEST(IncludeResolver, VersionMacrosUsableInConditions) {
+    MemoryReader reader{{"main.frag", "#version 450 core\n#if __VERSION__ >= 450 && GL_core_profile\n"
+                                      "#include \"modern.glsl\"\n#endif\n"},
+                        {"modern.glsl", "int modern;\n"}};
+    const auto result = resolve(reader, "main.frag");
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    EXPECT_TRUE(contains(result.stage.text, "int modern;"));
+}
+
+TEST(IncludeResolver, UnterminatedIfNamesItsLine) {
+    MemoryReader reader{{"main.frag", "#include \"a.glsl\"\n"}, {"a.glsl", "\n\n#ifdef X\nint a;\n"}};
+    const Diagnostic& error = onlyError(resolve(reader, "main.frag"));
+    EXPECT_EQ(error.file, "a.glsl");
+    EXPECT_EQ(error.line, 3);
+    EXPECT_TRUE(contains(error.message, "unterminated #ifdef"));
+}
+
+TEST(IncludeResolver, UnbalancedEndifAndElseAreErrors) {
+    MemoryReader reader{{"main.frag", "int a;\n#endif\n"}};
+    const Diagnostic& error = onlyError(resolve(reader, "main.frag"));
+    EXPECT_EQ(error.line, 2);
+    EXPECT_EQ(error.message, "#endif without #if");
+
+    MemoryReader elseReader{{"main.frag", "#else\n"}};
+    EXPECT_EQ(onlyError(resolve(elseReader, "main.frag")).message, "#else without #if");
+}
+
+TEST(IncludeResolver, DivisionByZeroInConditionIsAnError) {
+    MemoryReader reader{{"main.frag", "#if 4 / (2 - 2)\n#endif\n"}};
+    const Diagnostic& error = onlyError(resolve(reader, "main.frag"));
+    EXPECT_EQ(error.message, "#if: division by zero");
+    EXPECT_EQ(error.line, 1);
+}
+
+// ---- search order ----------------------------------------------------------------------
+
+TEST(IncludeResolver, QuotedSearchesIncluderDirFirstAngleOnlyIncludeDirs) {
+    MemoryReader reader{{"shaders/quoted.frag", "#include \"common.glsl\"\n"},
+                        {"shaders/angled.frag", "#include <common.glsl>\n"},
+                        {"shaders/common.glsl", "int fromShaders;\n"},
+                        {"inc/common.glsl", "int fromInc;\n"}};
+    ResolveOptions options;
+    options.includeDirs = {"inc"};
+    const auto quoted = resolve(reader, "shaders/quoted.frag", options);
+    const auto angled = resolve(reader, "shaders/angled.frag", options);
+    ASSERT_TRUE(quoted.ok && angled.ok);
+    EXPECT_EQ(quoted.stage.files.at(1).path, "shaders/common.glsl");
+    EXPECT_TRUE(contains(quoted.stage.text, "fromShaders"));
+    EXPECT_EQ(angled.stage.files.at(1).path, "inc/common.glsl");
+    EXPECT_TRUE(contains(angled.stage.text, "fromInc"));
+}
+
+TEST(IncludeResolver, IncludeDirsSearchedInOrderAndRelativeToIncluder) {
+    MemoryReader reader{{"s/main.frag", "#include <lib/a.glsl>\n"},
+                        {"first/lib/a.glsl", "#include \"b.glsl\"\n"},
+                        {"first/lib/b.glsl", "int firstB;\n"},
+                        {"second/lib/a.glsl", "int secondA;\n"}};
+    ResolveOptions options;
+    options.includeDirs = {"first", "second"};
+    const auto result = resolve(reader, "s/main.frag", options);
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    EXPECT_EQ(result.stage.filesRead,
+              (std::vector<std::string>{"s/main.frag", "first/lib/a.glsl", "first/lib/b.glsl"}));
+}
+
+TEST(IncludeResolver, SameFileThroughDifferentSpellingsEntersOnce) {
+    MemoryReader reader{{"s/main.frag", "#include \"../m/a.glsl\"\n#include <a.glsl>\n"},
+                        {"m/a.glsl", "int once;\n"}};
+    ResolveOptions options;
+    options.includeDirs = {"m"};
+    const auto result = resolve(reader, "s/main.frag", options);
+    ASSERT_TRUE(result.ok);
+    EXPECT_EQ(countOf(result.stage.text, "int once;"), 1u);
+    EXPECT_EQ(result.stage.files.at(1).path, "m/a.glsl");
+}
+
+// ---- pragmas, extensions, versions -----------------------------------------------------
+
+TEST(IncludeResolver, PragmaOnceAcceptedAndBlanked) {
+    MemoryReader reader{{"main.frag", "#include \"a.glsl\"\n#include \"a.glsl\"\n"},
+                        {"a.glsl", "#pragma once\nint a;\n"}};
+    const auto result = resolve(reader, "main.frag");
+    ASSERT_TRUE(result.ok);
+    EXPECT_EQ(countOf(result.stage.text, "int a;"), 1u);
+    EXPECT_TRUE(lacks(result.stage.text, "#pragma once"));
+}
+
+TEST(IncludeResolver, IncludeExtensionLinesAreBlanked) {
+    MemoryReader reader{{"main.frag",
+                         "#version 330 core\n#extension GL_GOOGLE_include_directive : require\n"
+                         "#extension GL_ARB_shading_language_include: enable\n"
+                         "#extension GL_GOOGLE_cpp_style_line_directive : enable\n"
+                         "#extension GL_ARB_separate_shader_objects : enable\n"}};
+    const auto result = resolve(reader, "main.frag");
+    ASSERT_TRUE(result.ok);
+    EXPECT_TRUE(lacks(result.stage.text, "GL_GOOGLE"));
+    EXPECT_TRUE(lacks(result.stage.text, "GL_ARB_shading_language_include"));
+    EXPECT_TRUE(contains(result.stage.text, "#extension GL_ARB_separate_shader_objects : enable\n"));
+}
+
+TEST(IncludeResolver, VersionHoistedFromIncludeWhenStageHasNone) {
+    MemoryReader reader{{"main.frag", "#include \"v.glsl\"\nvoid main() {}\n"},
+                        {"v.glsl", "#version 450 core\nint v;\n"}};
+    const auto result = resolve(reader, "main.frag");
+    ASSERT_TRUE(result.ok);
+    EXPECT_EQ(result.stage.versionDirective, "#version 450 core");
+    EXPECT_EQ(result.stage.versionNumber, 450);
+    EXPECT_TRUE(result.stage.text.starts_with("#version 450 core\n"));
+    EXPECT_EQ(countOf(result.stage.text, "#version"), 1u);
+}
+
+TEST(IncludeResolver, DefaultVersionWhenNoneFound) {
+    MemoryReader reader{{"main.frag", "void main() {}\n"}};
+    ResolveOptions options;
+    options.defaultVersion = "#version 410 core";
+    const auto result = resolve(reader, "main.frag", options);
+    ASSERT_TRUE(result.ok);
+    EXPECT_EQ(result.stage.versionNumber, 410);
+    EXPECT_TRUE(result.stage.text.starts_with("#version 410 core\n#line 1 0\n"));
+}
+
+TEST(IncludeResolver, EquivalentVersionsAgree) {
+    MemoryReader reader{{"main.frag", "#version 330\n#include \"a.glsl\"\n"}, {"a.glsl", "#version 330 core\n"}};
+    const auto result = resolve(reader, "main.frag");
+    EXPECT_TRUE(result.ok) << allMessages(result.diagnostics);
+    EXPECT_EQ(result.stage.versionDirective, "#version 330");
+}
+
+TEST(IncludeResolver, ConflictingVersionsNameBothPlaces) {
+    MemoryReader reader{{"main.frag", "#version 330 core\n#include \"a.glsl\"\n"},
+                        {"a.glsl", "// a\n#version 450 core\n"}};
+    const Diagnostic& error = onlyError(resolve(reader, "main.frag"));
+    EXPECT_EQ(error.file, "a.glsl");
+    EXPECT_EQ(error.line, 2);
+    EXPECT_TRUE(contains(error.message, "#version 450 core conflicts with #version 330 core at main.frag:1"));
+    ASSERT_EQ(error.notes.size(), 1u);
+    EXPECT_EQ(error.notes[0].file, "main.frag");
+    EXPECT_EQ(error.notes[0].line, 1);
+}
+
+TEST(IncludeResolver, MalformedVersionIsAnError) {
+    MemoryReader reader{{"main.frag", "#version three\n"}};
+    EXPECT_TRUE(contains(onlyError(resolve(reader, "main.frag")).message, "malformed #version"));
+}
+
+// ---- output layout ---------------------------------------------------------------------
+
+MemoryReader layoutReader(const std::string& version) {
+    return MemoryReader{{"main.frag", "#version " + version + "\n#include \"lib.glsl\"\nvoid main() {}\n"},
+                        {"lib.glsl", "float f() { return 1.0; }\n"}};
+}
+
+TEST(IncludeResolver, LineLayoutFor330) {
+    ResolveOptions options;
+    options.defines = {{"FOO", "1"}, {"BAR", ""}};
+    const auto result = resolve(layoutReader("330 core"), "main.frag", options);
+    ASSERT_TRUE(result.ok);
+    EXPECT_EQ(result.stage.text,
+              "#version 330 core\n"
+              "#define FOO 1\n"
+              "#define BAR\n"
+              "#line 1 0\n"
+              "\n"
+              "#line 1 1\n"
+              "float f() { return 1.0; }\n"
+              "#line 3 0\n"
+              "void main() {}\n");
+    ASSERT_EQ(result.stage.files.size(), 2u);
+    EXPECT_EQ(result.stage.files[1].path, "lib.glsl");
+    EXPECT_EQ(result.stage.files[1].chain, (std::vector<IncludeSite>{{"main.frag", 2}}));
+}
+
+TEST(IncludeResolver, LineLayoutBefore330NamesThePreviousLine) {
+    const auto result = resolve(layoutReader("150"), "main.frag");
+    ASSERT_TRUE(result.ok);
+    EXPECT_EQ(result.stage.text,
+              "#version 150\n"
+              "#line 0 0\n"
+              "\n"
+              "#line 0 1\n"
+              "float f() { return 1.0; }\n"
+              "#line 2 0\n"
+              "void main() {}\n");
+}
+
+TEST(IncludeResolver, ContinuedIncludeKeepsLineNumbers) {
+    MemoryReader reader{{"main.frag", "#include \\\n  \"lib.glsl\"\nint after;\n"}, {"lib.glsl", "int lib;"}};
+    const auto result = resolve(reader, "main.frag");
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    EXPECT_TRUE(contains(result.stage.text, "#line 1 1\nint lib;\n#line 3 0\nint after;\n"));
+}
+
+TEST(IncludeResolver, CrlfAndNoTrailingNewlineAndEmptyFiles) {
+    MemoryReader reader{{"main.frag", "#version 330 core\r\n#include \"empty.glsl\"\r\nint x;"},
+                        {"empty.glsl", ""}};
+    const auto result = resolve(reader, "main.frag");
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    EXPECT_EQ(result.stage.text, "#version 330 core\n#line 1 0\n\n#line 1 1\n#line 3 0\nint x;\n");
+}
+
+TEST(IncludeResolver, IncludeInsideCommentsIsIgnored) {
+    MemoryReader reader{{"main.frag",
+                         "/* disabled:\n#include \"gone.glsl\"\n*/\n"
+                         "// #include \"gone.glsl\"\n"
+                         "int a; /* #include \"gone.glsl\" */\n"}};
+    const auto result = resolve(reader, "main.frag");
+    EXPECT_TRUE(result.ok) << allMessages(result.diagnostics);
+    EXPECT_EQ(result.stage.filesRead, std::vector<std::string>{"main.frag"});
+}
+
+TEST(IncludeResolver, MissingStageFileIsAnError) {
+    MemoryReader reader;
+    const Diagnostic& error = onlyError(resolve(reader, "nope.frag"));
+    EXPECT_EQ(error.file, "nope.frag");
+    EXPECT_TRUE(contains(error.message, "not found"));
+}
+
+TEST(IncludeResolver, InvalidDefineNameIsAnError) {
+    MemoryReader reader{{"main.frag", "int a;\n"}};
+    ResolveOptions options;
+    options.defines = {{"1BAD", "1"}};
+    EXPECT_TRUE(contains(onlyError(resolve(reader, "main.frag", options)).message, "invalid define"));
+}
+
+// ---- variant pragmas -------------------------------------------------------------------
+
+TEST(IncludeResolver, VariantPragmasCollectedAndBlanked) {
+    MemoryReader reader{{"main.frag", "#pragma prism variant SHADOWS\n#include \"a.glsl\"\n"},
+                        {"a.glsl", "\n#pragma prism variant QUALITY LOW MEDIUM HIGH\n"
+                                   "#if 0\n#pragma prism variant IGNORED\n#endif\n"}};
+    const auto result = resolve(reader, "main.frag");
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    ASSERT_EQ(result.stage.variantPragmas.size(), 2u);
+    EXPECT_EQ(result.stage.variantPragmas[0].name, "SHADOWS");
+    EXPECT_TRUE(result.stage.variantPragmas[0].values.empty());
+    EXPECT_EQ(result.stage.variantPragmas[0].file, "main.frag");
+    EXPECT_EQ(result.stage.variantPragmas[0].line, 1);
+    EXPECT_EQ(result.stage.variantPragmas[1].name, "QUALITY");
+    EXPECT_EQ(result.stage.variantPragmas[1].values, (std::vector<std::string>{"LOW", "MEDIUM", "HIGH"}));
+    EXPECT_EQ(result.stage.variantPragmas[1].file, "a.glsl");
+    EXPECT_EQ(result.stage.variantPragmas[1].line, 2);
+    EXPECT_TRUE(lacks(result.stage.text, "prism"));
+}
+
+TEST(IncludeResolver, IdenticalVariantDeclarationsMerge) {
+    MemoryReader reader{{"main.frag", "#pragma prism variant LIGHTS 1 2 4\n#include \"a.glsl\"\n"},
+                        {"a.glsl", "#pragma prism variant LIGHTS 1 2 4\n"}};
+    const auto result = resolve(reader, "main.frag");
+    ASSERT_TRUE(result.ok);
+    ASSERT_EQ(result.stage.variantPragmas.size(), 1u);
+    EXPECT_EQ(result.stage.variantPragmas[0].file, "main.frag");
+}
+
+TEST(IncludeResolver, ConflictingVariantDeclarationsNameBothPlaces) {
+    MemoryReader reader{{"main.frag", "#pragma prism variant LIGHTS 1 2 4\n#include \"a.glsl\"\n"},
+                        {"a.glsl", "\n#pragma prism variant LIGHTS 1 2\n"}};
+    const Diagnostic& error = onlyError(resolve(reader, "main.frag"));
+    EXPECT_EQ(error.file, "a.glsl");
+    EXPECT_EQ(error.line, 2);
+    EXPECT_TRUE(contains(error.message, "LIGHTS"));
+    EXPECT_TRUE(contains(error.message, "main.frag:1"));
+    ASSERT_EQ(error.notes.size(), 1u);
+    EXPECT_EQ(error.notes[0].line, 1);
+}
+
+TEST(IncludeResolver, InvalidVariantPragmasAreErrors) {
+    for (const char* pragma : {"#pragma prism variant", "#pragma prism variant 9LIVES",
+                               "#pragma prism variant MODE a+b", "#pragma prism variant MODE A A"}) {
+        MemoryReader reader{{"main.frag", std::string("int x;\n") + pragma + "\n"}};
+        const Diagnostic& error = onlyError(resolve(reader, "main.frag"));
+        EXPECT_EQ(error.line, 2) << pragma;
+        EXPECT_EQ(error.file, "main.frag") << pragma;
+    }
+}
+
+TEST(IncludeResolver, OtherPragmasPassThrough) {
+    MemoryReader reader{{"main.frag", "#pragma optimize(off)\n"}};
+    const auto result = resolve(reader, "main.frag");
+    ASSERT_TRUE(result.ok);
+    EXPECT_TRUE(contains(result.stage.text, "#pragma optimize(off)\n"));
+}
+
+// ---- scanModule ------------------------------------------------------------------------
+
+TEST(ScanModule, BlanksDirectivesKeepsLinesAndReadsDescription) {
+    MemoryReader reader{{"m/lighting.glsl",
+                         "// Blinn-Phong lighting:\n//   diffuse and specular terms.\n"
+                         "#pragma once\n#version 330 core\n#include \"math.glsl\"\n"
+                         "#ifdef SHADOWS\n#include \"shadow.glsl\"\n#endif\n"
+                         "vec3 light() { return vec3(1.0); }"},
+                        {"m/math.glsl", "// math\n"}};
+    const auto result = scanModule("m/lighting.glsl", {}, reader);
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    EXPECT_TRUE(result.diagnostics.empty());
+    EXPECT_EQ(result.module.path, "m/lighting.glsl");
+    EXPECT_EQ(result.module.canonical, "m/lighting.glsl");
+    EXPECT_EQ(result.module.description, "Blinn-Phong lighting: diffuse and specular terms.");
+    EXPECT_EQ(result.module.text,
+              "// Blinn-Phong lighting:\n//   diffuse and specular terms.\n\n\n\n"
+              "#ifdef SHADOWS\n\n#endif\n"
+              "vec3 light() { return vec3(1.0); }\n");
+    EXPECT_EQ(result.module.includes, std::vector<std::string>{"m/math.glsl"});
+}
+
+TEST(ScanModule, ActiveConditionalIncludesAreListed) {
+    MemoryReader reader{{"m/a.glsl", "/* A. */\n#ifdef SHADOWS\n#include <shadow.glsl>\n#endif\n"},
+                        {"inc/shadow.glsl", ""}};
+    ResolveOptions options;
+    options.includeDirs = {"inc"};
+    options.defines = {{"SHADOWS", "1"}};
+    const auto result = scanModule("m/a.glsl", options, reader);
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    EXPECT_EQ(result.module.includes, std::vector<std::string>{"inc/shadow.glsl"});
+}
+
+TEST(ScanModule, BlockCommentDescription) {
+    MemoryReader reader{{"a.glsl", "\n/**\n * Tone mapping\n * operators.\n */\nvec3 tone(vec3 c);\n"}};
+    const auto result = scanModule("a.glsl", {}, reader);
+    ASSERT_TRUE(result.ok);
+    EXPECT_EQ(result.module.description, "Tone mapping operators.");
+}
+
+TEST(ScanModule, MissingDescriptionIsAWarning) {
+    MemoryReader reader{{"a.glsl", "vec3 tone(vec3 c);\n// late comment\n"}};
+    const auto result = scanModule("a.glsl", {}, reader);
+    EXPECT_TRUE(result.ok);
+    ASSERT_EQ(result.diagnostics.size(), 1u);
+    EXPECT_EQ(result.diagnostics[0].severity, Severity::Warning);
+    EXPECT_EQ(result.diagnostics[0].message, "module has no leading comment saying what it provides");
+}
+
+TEST(ScanModule, MissingIncludeIsAnError) {
+    MemoryReader reader{{"a.glsl", "// A\n#include \"gone.glsl\"\n"}};
+    const auto result = scanModule("a.glsl", {}, reader);
+    EXPECT_FALSE(result.ok);
+    ASSERT_EQ(result.diagnostics.size(), 1u);
+    EXPECT_EQ(result.diagnostics[0].line, 2);
+    EXPECT_TRUE(contains(result.diagnostics[0].message, "gone.glsl"));
+}
+
+// ---- DiskReader ------------------------------------------------------------------------
+
+class IncludeResolverOnDisk : public ::testing::Test {
+protected:
+    void SetUp() override {
+        root_ = std::filesystem::temp_directory_path() /
+                ("prism_resolver_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
+                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        std::filesystem::remove_all(root_);
+        std::filesystem::create_directories(root_ / "shaders");
+        std::filesystem::create_directories(root_ / "modules");
+    }
+    void TearDown() override { std::filesystem::remove_all(root_); }
+
+    void write(const std::string& relative, const std::string& text) {
+        std::ofstream(root_ / relative, std::ios::binary) << text;
+    }
+    std::string path(const std::string& relative) const { return (root_ / relative).generic_string(); }
+
+    std::filesystem::path root_;
+};
+
+TEST_F(IncludeResolverOnDisk, ResolvesFromDiskAndSymlinksShareIdentity) {
+    write("shaders/main.frag", "#include \"../modules/a.glsl\"\n#include <link.glsl>\n");
+    write("modules/a.glsl", "int a;\n");
+    std::filesystem::create_symlink(root_ / "modules" / "a.glsl", root_ / "modules" / "link.glsl");
+    ResolveOptions options;
+    options.includeDirs = {path("modules")};
+    const auto result = resolveStage(path("shaders/main.frag"), options, DiskReader{});
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    EXPECT_EQ(countOf(result.stage.text, "int a;"), 1u);
+    EXPECT_EQ(result.stage.filesRead, (std::vector<std::string>{path("shaders/main.frag"), path("modules/a.glsl")}));
+}
+
+TEST_F(IncludeResolverOnDisk, DirectoryIsNotAnInclude) {
+    write("shaders/main.frag", "#include \"modules\"\n");
+    ResolveOptions options;
+    options.includeDirs = {root_.generic_string()};
+    EXPECT_TRUE(contains(onlyError(resolveStage(path("shaders/main.frag"), options, DiskReader{})).message,
+                         "cannot find include"));
+}
+
+// ---- glslang pins the #line semantics ----------------------------------------------------
+
+std::string glslangInfoLog(const std::string& text) {
+    static const bool initialised = glslang::InitializeProcess();
+    EXPECT_TRUE(initialised);
+    glslang::TShader shader(EShLangFragment);
+    const char* strings[] = {text.c_str()};
+    shader.setStrings(strings, 1);
+    shader.parse(GetDefaultResources(), 330, ECoreProfile, false, false, EShMsgDefault);
+    return shader.getInfoLog();
+}
+
+MemoryReader glslangReader(const std::string& version, const std::string& moduleBody,
+                           const std::string& mainBody) {
+    return MemoryReader{
+        {"shaders/main.frag", "#version " + version + "\n"   // 1
+                              "#include \"lighting.glsl\"\n"  // 2
+                              "out vec4 color;\n"             // 3
+                              "void main() {\n"               // 4
+                              "    " + mainBody + "\n"        // 5
+                              "}\n"},
+        {"shaders/lighting.glsl", "// Lighting helpers.\n"        // 1
+                                  "#include \"util.glsl\"\n"      // 2
+                                  "vec3 light() {\n"              // 3
+                                  "    " + moduleBody + "\n"      // 4
+                                  "}\n"},
+        {"shaders/util.glsl", "// Utilities.\n\nfloat unit() { return 1.0; }\n"}};
+}
+
+class IncludeResolverLineNumbers : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(IncludeResolverLineNumbers, ErrorInIncludedModuleReportedAtItsTrueLine) {
+    const auto result = resolve(glslangReader(GetParam(), "return undefined_in_module;",
+                                              "color = vec4(light(), 1.0);"),
+                                "shaders/main.frag");
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    ASSERT_EQ(result.stage.files.at(1).path, "shaders/lighting.glsl");
+    const std::string log = glslangInfoLog(result.stage.text);
+    EXPECT_TRUE(contains(log, "1:4: 'undefined_in_module'")) << result.stage.text;
+}
+
+TEST_P(IncludeResolverLineNumbers, ErrorInStageAfterIncludesReportedAtItsTrueLine) {
+    const auto result = resolve(glslangReader(GetParam(), "return vec3(unit());",
+                                              "color = vec4(undefined_in_main);"),
+                                "shaders/main.frag");
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    const std::string log = glslangInfoLog(result.stage.text);
+    EXPECT_TRUE(contains(log, "0:5: 'undefined_in_main'")) << result.stage.text;
+}
+
+TEST_P(IncludeResolverLineNumbers, ErrorInNestedModuleReportedAtItsTrueLine) {
+    MemoryReader reader = glslangReader(GetParam(), "return vec3(unit());", "color = vec4(light(), 1.0);");
+    reader.add("shaders/util.glsl", "// Utilities.\n\nfloat unit() { return undefined_in_util; }\n");
+    const auto result = resolve(reader, "shaders/main.frag");
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    ASSERT_EQ(result.stage.files.at(2).path, "shaders/util.glsl");
+    EXPECT_TRUE(contains(glslangInfoLog(result.stage.text), "2:3: 'undefined_in_util'")) << result.stage.text;
+}
+
+INSTANTIATE_TEST_SUITE_P(Versions, IncludeResolverLineNumbers, ::testing::Values("330 core", "150", "410 core"),
+                         [](const auto& info) {
+                             std::string name = info.param;
+                             std::replace(name.begin(), name.end(), ' ', '_');
+                             return "v" + name;
+                         });
+
+}  // namespace
+}  // namespace prism::shaderc
