@@ -63,7 +63,7 @@ ModuleIndex indexModules(const Options& o, const std::set<std::string>& extraFil
     for (const auto& [identifier, path] : found) {
         auto scan = scanModule(path, ro, reader);
         sink.reportAll(scan.diagnostics);
-        CatalogModule m{identifier, embeddedPath(path, o.baseDir), scan.module.description, scan.module.text, {}};
+        CatalogModule m{identifier, embeddedPath(path, o.baseDir), scan.module.description, scan.module.text, {}, path};
         index.byCanonical[*reader.canonical(path)] = static_cast<std::uint32_t>(index.modules.size());
         index.modules.push_back(std::move(m));
         includes.push_back(scan.module.includes);
@@ -151,6 +151,7 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
         if (!inDirs) extra.insert(path);
     }
     auto modules = indexModules(o, extra, reader, sink);
+    for (const auto& m : modules.modules) rc.filesRead.push_back(m.sourcePath);
     for (std::size_t s = 0; s < rc.data.shaders.size(); ++s) {
         std::set<std::uint32_t> used;
         for (const auto& variant : rc.resolved[s])

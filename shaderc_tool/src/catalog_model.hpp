@@ -41,6 +41,7 @@ struct CatalogModule {
     std::string description;
     std::string text;        // own text, #include/#version/#pragma once blanked
     std::vector<std::uint32_t> dependencies;  // direct includes, in order
+    std::string sourcePath;  // as read (for the depfile), not embedded
 };
 
 struct CatalogData {
