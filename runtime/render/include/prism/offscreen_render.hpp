@@ -1,0 +1,54 @@
+// One image of one mesh with one catalogue shader, rendered off-screen: the building
+// block of prism-render, prism-gallery, the golden-image tests and the benchmarks.
+//
+//     prism::ProgramCache cache(prism::shaders::kCatalog);
+//     prism::RenderJob job;
+//     job.shader = "phong";
+//     job.mesh = prism::meshForShader("phong", prism::namedMesh("torus"));
+//     prism::Image8 image = prism::renderImage8(cache, job);
+//     prism::ImageF hdr = prism::renderImageF(cache, job);    // RGBA32F, for finiteness checks
+//
+// The mesh is framed by the default camera (eye at (0, 0.6, 3.2) looking at the origin)
+// with the default lights unless the job says otherwise. Needs a current context.
+#pragma once
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+
+#include <string>
+
+#include "prism/camera.hpp"
+#include "prism/framebuffer.hpp"
+#include "prism/image.hpp"
+#include "prism/mesh.hpp"
+#include "prism/program_cache.hpp"
+#include "prism/scene_lighting.hpp"
+
+namespace prism {
+
+// A key light from the upper left front and a weaker fill light, plus ambient.
+Lights defaultLights();
+Camera defaultCamera();
+
+struct RenderJob {
+    std::string shader = "phong";
+    VariantValues variant;
+    geometry::Mesh mesh;  // already prepared with meshForShader()
+    glm::mat4 world{1.0f};
+    Material material;
+    Lights lights = defaultLights();
+    Camera camera = defaultCamera();
+    int width = 512;
+    int height = 512;
+    glm::vec4 background{0.05f, 0.06f, 0.08f, 1.0f};
+};
+
+Image8 renderImage8(ProgramCache& cache, const RenderJob& job);
+ImageF renderImageF(ProgramCache& cache, const RenderJob& job);
+
+// Draws into whatever framebuffer is bound (viewport already set); for repeated
+// frames in benchmarks and the viewer, with the mesh already uploaded.
+class GpuMesh;
+void drawJob(ProgramCache& cache, const RenderJob& job, const GpuMesh& mesh);
+
+}  // namespace prism

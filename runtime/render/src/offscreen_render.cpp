@@ -1,0 +1,69 @@
+// Off-screen rendering of a RenderJob (see prism/offscreen_render.hpp).
+#include "prism/offscreen_render.hpp"
+
+#include <stdexcept>
+
+#include "prism/frame_uniforms.hpp"
+#include "prism/gl.hpp"
+#include "prism/gpu_mesh.hpp"
+
+namespace prism {
+
+Lights defaultLights() {
+    Lights l;
+    l.ambient = glm::vec3(0.12f);
+    l.directional.push_back({glm::vec3(-0.5f, -0.6f, -0.65f), glm::vec3(0.85f)});
+    l.directional.push_back({glm::vec3(0.7f, 0.2f, -0.4f), glm::vec3(0.2f, 0.22f, 0.3f)});
+    return l;
+}
+
+Camera defaultCamera() {
+    Camera c;
+    c.eye = {0.0f, 0.6f, 3.2f};
+    c.target = {0.0f, 0.0f, 0.0f};
+    c.fovYDegrees = 45.0f;
+    c.nearPlane = 0.1f;
+    c.farPlane = 50.0f;
+    return c;
+}
+
+void drawJob(ProgramCache& cache, const RenderJob& job, const GpuMesh& mesh) {
+    gl::Program& program = cache.get(job.shader, job.variant);
+    program.use();
+    setFrameUniforms(program, job.camera, static_cast<float>(job.width) / static_cast<float>(job.height), job.lights,
+                     job.world, job.material);
+    mesh.draw();
+}
+
+namespace {
+
+void renderInto(gl::Framebuffer& fb, ProgramCache& cache, const RenderJob& job) {
+    if (job.width <= 0 || job.height <= 0 || job.width > 16384 || job.height > 16384)
+        throw std::invalid_argument("render size must be between 1x1 and 16384x16384");
+    GpuMesh mesh(job.mesh, cache.catalog().contractAttributes);
+    fb.bind();
+    fb.clear({job.background.r, job.background.g, job.background.b, job.background.a});
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+    drawJob(cache, job, mesh);
+    glFinish();
+    gl::throwIfGlError("rendering " + job.shader);
+}
+
+}  // namespace
+
+Image8 renderImage8(ProgramCache& cache, const RenderJob& job) {
+    gl::Framebuffer fb(job.width, job.height, gl::ColorFormat::Rgba8);
+    renderInto(fb, cache, job);
+    return fb.readImage8();
+}
+
+ImageF renderImageF(ProgramCache& cache, const RenderJob& job) {
+    gl::Framebuffer fb(job.width, job.height, gl::ColorFormat::Rgba32F);
+    renderInto(fb, cache, job);
+    return fb.readImageF();
+}
+
+}  // namespace prism

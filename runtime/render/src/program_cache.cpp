@@ -1,0 +1,54 @@
+// Lazily built, shared programs (see prism/program_cache.hpp).
+#include "prism/program_cache.hpp"
+
+namespace prism {
+
+std::vector<std::string> ProgramCache::shaderNames() const {
+    std::vector<std::string> names;
+    for (const auto& s : catalog_.shaders) names.emplace_back(s.name);
+    return names;
+}
+
+const catalog::Variant& ProgramCache::variantOf(std::string_view shader, const VariantValues& values) const {
+    const auto* s = catalog::findShader(catalog_, shader);
+    if (!s) {
+        std::string known;
+        for (const auto& n : shaderNames()) known += (known.empty() ? "" : ", ") + n;
+        throw UnknownShaderError("unknown shader '" + std::string(shader) + "'; known shaders: " + known);
+    }
+    for (const auto& v : s->variants) {
+        bool match = true;
+        for (std::size_t a = 0; a < s->axes.size() && match; ++a) {
+            std::string_view want = s->axes[a].values.empty() ? std::string_view{} : s->axes[a].values[0];
+            for (const auto& [n, val] : values)
+                if (n == s->axes[a].name) want = val;
+            match = v.defines[a].value == want;
+        }
+        for (const auto& [n, val] : values) {
+            bool known = false;
+            for (const auto& ax : s->axes) known = known || ax.name == n;
+            match = match && known;
+        }
+        if (match) return v;
+    }
+    std::string known;
+    for (const auto& v : s->variants) known += (known.empty() ? "" : "; ") + std::string(v.name);
+    std::string asked;
+    for (const auto& [n, val] : values) asked += (asked.empty() ? "" : ",") + n + "=" + val;
+    throw UnknownShaderError("shader '" + std::string(shader) + "' has no variant '" + asked +
+                             "'; generated variants: " + known);
+}
+
+gl::Program& ProgramCache::get(std::string_view shader, const VariantValues& values) {
+    const auto& variant = variantOf(shader, values);
+    auto key = std::make_pair(std::string(shader), std::string(variant.name));
+    auto it = programs_.find(key);
+    if (it == programs_.end()) {
+        auto program = std::make_unique<gl::Program>(variant, catalog_.contractAttributes,
+                                                     std::string(shader) + " (" + std::string(variant.name) + ")");
+        it = programs_.emplace(std::move(key), std::move(program)).first;
+    }
+    return *it->second;
+}
+
+}  // namespace prism
