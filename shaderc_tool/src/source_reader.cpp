@@ -39,19 +39,29 @@ std::string parentDir(const std::string& path) {
 }
 
 std::optional<std::string> DiskReader::canonical(const std::string& path) const {
+    std::lock_guard lock(mutex_);
+    if (auto it = canonicalCache_.find(path); it != canonicalCache_.end()) return it->second;
+    std::optional<std::string> result;
     std::error_code error;
-    if (!fs::is_regular_file(path, error)) return std::nullopt;
-    const fs::path resolved = fs::canonical(path, error);
-    if (error) return std::nullopt;
-    return resolved.generic_string();
+    if (fs::is_regular_file(path, error)) {
+        const fs::path resolved = fs::canonical(path, error);
+        if (!error) result = resolved.generic_string();
+    }
+    canonicalCache_.emplace(path, result);
+    return result;
 }
 
 std::optional<std::string> DiskReader::read(const std::string& path) const {
+    std::lock_guard lock(mutex_);
+    if (auto it = textCache_.find(path); it != textCache_.end()) return it->second;
+    std::optional<std::string> result;
     std::ifstream in(path, std::ios::binary);
-    if (!in) return std::nullopt;
-    std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    if (in.bad()) return std::nullopt;
-    return text;
+    if (in) {
+        std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+        if (!in.bad()) result = std::move(text);
+    }
+    textCache_.emplace(path, result);
+    return result;
 }
 
 MemoryReader::MemoryReader(std::initializer_list<std::pair<const std::string, std::string>> files) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <map>
+#include <mutex>
 #include <optional>
 #include <string>
 
@@ -18,10 +19,17 @@ public:
     virtual std::optional<std::string> read(const std::string& path) const = 0;
 };
 
+// Reads each file and resolves each path once per run: a catalogue's stages include
+// the same modules again and again (thread-safe).
 class DiskReader final : public SourceReader {
 public:
     std::optional<std::string> canonical(const std::string& path) const override;
     std::optional<std::string> read(const std::string& path) const override;
+
+private:
+    mutable std::mutex mutex_;
+    mutable std::map<std::string, std::optional<std::string>> canonicalCache_;
+    mutable std::map<std::string, std::optional<std::string>> textCache_;
 };
 
 // Paths are normalised lexically ("a/./b/../c" == "a/c"); no symlinks.

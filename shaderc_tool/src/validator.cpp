@@ -32,6 +32,18 @@ EProfile profileOf(const std::string& versionDirective) {
     return ENoProfile;
 }
 
+bool isIdentifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// Position of `word` in `text` as a whole identifier, or npos.
+std::size_t findWord(std::string_view text, std::string_view word) {
+    for (auto pos = text.find(word); pos != std::string_view::npos; pos = text.find(word, pos + 1)) {
+        const bool startOk = pos == 0 || !isIdentifierChar(text[pos - 1]);
+        const bool endOk = pos + word.size() == text.size() || !isIdentifierChar(text[pos + word.size()]);
+        if (startOk && endOk) return pos;
+    }
+    return std::string_view::npos;
+}
+
 // The text of every (source number, line) in a flattened stage, recovered from its
 // `#line N S` directives, so a message's token can be given a column.
 class SourceLines {
@@ -65,15 +77,16 @@ public:
     // found in the text: the first line declaring `name` with a storage qualifier.
     void locateDeclaration(InterfaceVariable& v) const {
         if (v.line > 0) return;
-        static const std::regex qualifier(R"(\b(in|out|uniform|buffer)\b)");
-        const std::regex name("\\b" + v.name + "\\b");
         for (const auto& [key, text] : lines_) {
-            auto code = text.substr(0, text.find("//"));
-            std::smatch m;
-            if (!std::regex_search(code, qualifier) || !std::regex_search(code, m, name)) continue;
+            const std::string_view code = std::string_view(text).substr(0, text.find("//"));
+            const auto column = findWord(code, v.name);
+            if (column == std::string_view::npos) continue;
+            if (findWord(code, "in") == std::string_view::npos && findWord(code, "out") == std::string_view::npos &&
+                findWord(code, "uniform") == std::string_view::npos && findWord(code, "buffer") == std::string_view::npos)
+                continue;
             v.sourceNumber = key.first;
             v.line = key.second;
-            v.column = static_cast<int>(m.position(0)) + 1;
+            v.column = static_cast<int>(column) + 1;
             return;
         }
     }

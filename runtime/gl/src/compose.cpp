@@ -1,0 +1,145 @@
+// Module dependency ordering and source layout for run-time composed programs.
+#include "prism/compose.hpp"
+
+#include <cctype>
+
+namespace prism::gl {
+namespace {
+
+constexpr std::string_view kDefaultVersion = "#version 330 core";
+
+std::string_view versionDirectiveOf(const catalog::Catalog& c) {
+    return c.versionDirective.empty() ? kDefaultVersion : c.versionDirective;
+}
+
+// The number in "#version 330 core"; 0 when it cannot be read.
+int versionNumber(std::string_view directive) {
+    std::size_t p = directive.find_first_of("0123456789");
+    int v = 0;
+    while (p < directive.size() && std::isdigit(static_cast<unsigned char>(directive[p]))) v = v * 10 + (directive[p++] - '0');
+    return v;
+}
+
+const catalog::Module& moduleAt(const catalog::Catalog& c, std::uint32_t id) {
+    if (id >= c.modules.size())
+        throw CompositionError("prism compose: module id " + std::to_string(id) + " is not in the catalogue (it has " +
+                               std::to_string(c.modules.size()) + " modules)");
+    return c.modules[id];
+}
+
+void visit(const catalog::Catalog& c, std::uint32_t id, std::vector<std::uint32_t>& path, std::vector<char>& done,
+           std::vector<std::uint32_t>& out) {
+    const catalog::Module& m = moduleAt(c, id);
+    if (done[id]) return;
+    for (std::size_t i = 0; i < path.size(); ++i)
+        if (path[i] == id) {
+            std::string chain;
+            for (std::size_t j = i; j < path.size(); ++j) chain += std::string(c.modules[path[j]].name) + " -> ";
+            throw CompositionError("prism compose: module dependency cycle: " + chain + std::string(m.name));
+        }
+    path.push_back(id);
+    for (std::uint32_t dep : m.dependencies) visit(c, dep, path, done, out);
+    path.pop_back();
+    done[id] = 1;
+    out.push_back(id);
+}
+
+std::string_view trimmedStart(std::string_view line) {
+    std::size_t p = 0;
+    while (p < line.size() && (line[p] == ' ' || line[p] == '\t')) ++p;
+    return line.substr(p);
+}
+
+// True when `line` is a preprocessor directive named `name` ("# version" allowed).
+bool isDirective(std::string_view line, std::string_view name) {
+    std::string_view t = trimmedStart(line);
+    if (t.empty() || t[0] != '#') return false;
+    t = trimmedStart(t.substr(1));
+    return t.substr(0, name.size()) == name &&
+           (t.size() == name.size() || !std::isalnum(static_cast<unsigned char>(t[name.size()])));
+}
+
+// The user's source with #version lines blanked; throws on #include.
+std::string userText(std::string_view source, const std::string& name) {
+    std::string out;
+    std::size_t start = 0, lineNumber = 1;
+    while (start <= source.size()) {
+        std::size_t end = source.find('\n', start);
+        if (end == std::string_view::npos) end = source.size();
+        const std::string_view line = source.substr(start, end - start);
+        if (isDirective(line, "include"))
+            throw CompositionError(name + ":" + std::to_string(lineNumber) +
+                                   ": #include is not resolved at run time; list the module's id in "
+                                   "ComposeStage::modules instead");
+        if (!isDirective(line, "version")) out.append(line);
+        if (end < source.size()) out += '\n';
+        start = end + 1;
+        ++lineNumber;
+    }
+    if (!out.empty() && out.back() != '\n') out += '\n';
+    return out;
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> moduleOrder(const catalog::Catalog& catalog, std::span<const std::uint32_t> wanted) {
+    std::vector<std::uint32_t> out, path;
+    std::vector<char> done(catalog.modules.size(), 0);
+    for (std::uint32_t id : wanted) visit(catalog, id, path, done, out);
+    return out;
+}
+
+StageText composeStage(const catalog::Catalog& catalog, const ComposeStage& stage,
+                       std::span<const catalog::Define> defines) {
+    StageText text;
+    text.stage = stage.stage;
+    const std::string userName =
+        stage.sourceName.empty() ? "<composed " + std::string(catalog::stageName(stage.stage)) + ">" : stage.sourceName;
+    // GLSL 3.30+: `#line L N` numbers the next line L; before 3.30 it numbers it L + 1.
+    const int firstLine = versionNumber(versionDirectiveOf(catalog)) >= 330 ? 1 : 0;
+    const std::string lineOne = "#line " + std::to_string(firstLine) + " ";
+
+    std::string& src = text.source;
+    src.append(versionDirectiveOf(catalog));
+    src += '\n';
+    for (const auto& d : defines) {
+        src += "#define ";
+        src.append(d.name);
+        if (!d.value.empty()) {
+            src += ' ';
+            src.append(d.value);
+        }
+        src += '\n';
+    }
+    text.files.push_back({0, userName});
+
+    std::uint32_t number = 1;
+    for (std::uint32_t id : moduleOrder(catalog, stage.modules)) {
+        const catalog::Module& m = catalog.modules[id];
+        src += lineOne + std::to_string(number) + '\n';
+        std::string body = catalog::joinChunks(m.chunks);
+        if (!body.empty() && body.back() != '\n') body += '\n';
+        src += body;
+        text.files.push_back({number, m.path.empty() ? std::string(m.name) : std::string(m.path)});
+        ++number;
+    }
+    src += lineOne + "0\n";
+    src += userText(stage.source, userName);
+    return text;
+}
+
+ProgramSources composeSources(const catalog::Catalog& catalog, std::span<const ComposeStage> stages, std::string label,
+                              std::span<const catalog::Define> defines) {
+    ProgramSources out;
+    out.label = std::move(label);
+    for (const auto& s : stages) out.stages.push_back(composeStage(catalog, s, defines));
+    for (const auto& a : catalog.contractAttributes) out.attributes.push_back({std::string(a.name), a.location});
+    return out;
+}
+
+Program composeProgram(const catalog::Catalog& catalog, std::span<const ComposeStage> stages, std::string label,
+                       std::span<const catalog::Define> defines) {
+    return Program(composeSources(catalog, stages, std::move(label), defines));
+}
+
+}  // namespace prism::gl

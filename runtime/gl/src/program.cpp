@@ -1,0 +1,202 @@
+// Compiling stages, binding contract attributes and linking a Program; compile and
+// link failures become ShaderBuildError with file:line messages.
+#include "prism/program.hpp"
+
+#include <iostream>
+#include <mutex>
+#include <utility>
+
+#include "prism/gl.hpp"
+
+namespace prism::gl {
+namespace {
+
+constexpr GLenum kComputeShader = 0x91B9;  // GL_COMPUTE_SHADER (GL 4.3)
+
+std::mutex gHandlerMutex;
+WarningHandler gDefaultHandler;
+
+WarningHandler defaultHandler() {
+    std::lock_guard lock(gHandlerMutex);
+    return gDefaultHandler;
+}
+
+GLenum shaderType(catalog::Stage stage) {
+    switch (stage) {
+    case catalog::Stage::Vertex: return GL_VERTEX_SHADER;
+    case catalog::Stage::Geometry: return GL_GEOMETRY_SHADER;
+    case catalog::Stage::Fragment: return GL_FRAGMENT_SHADER;
+    case catalog::Stage::Compute: return kComputeShader;
+    }
+    return GL_VERTEX_SHADER;
+}
+
+std::string_view stageWord(catalog::Stage stage) {
+    switch (stage) {
+    case catalog::Stage::Vertex: return "vertex";
+    case catalog::Stage::Geometry: return "geometry";
+    case catalog::Stage::Fragment: return "fragment";
+    case catalog::Stage::Compute: return "compute";
+    }
+    return "?";
+}
+
+std::string shaderLog(GLuint shader) {
+    GLint length = 0;
+    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<std::size_t>(std::max(length, 0)), '\0');
+    if (length > 0) glGetShaderInfoLog(shader, length, nullptr, log.data());
+    while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
+    return log;
+}
+
+std::string programLog(GLuint program) {
+    GLint length = 0;
+    glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<std::size_t>(std::max(length, 0)), '\0');
+    if (length > 0) glGetProgramInfoLog(program, length, nullptr, log.data());
+    while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
+    return log;
+}
+
+std::string programName(const std::string& label) { return label.empty() ? "program" : "program '" + label + "'"; }
+
+}  // namespace
+
+void setDefaultWarningHandler(WarningHandler handler) {
+    std::lock_guard lock(gHandlerMutex);
+    gDefaultHandler = std::move(handler);
+}
+
+ProgramSources sourcesFromVariant(const catalog::Variant& variant,
+                                  std::span<const catalog::Attribute> contractAttributes, std::string label) {
+    ProgramSources out;
+    out.label = label.empty() ? std::string(variant.name) : std::move(label);
+    for (const auto& stage : variant.stages) {
+        StageText text;
+        text.stage = stage.stage;
+        text.source = catalog::joinChunks(stage.chunks);
+        for (const auto& f : stage.files) text.files.push_back({f.number, std::string(f.path)});
+        out.stages.push_back(std::move(text));
+    }
+    for (const auto& a : contractAttributes) out.attributes.push_back({std::string(a.name), a.location});
+    std::vector<UniformDecl> uniforms;
+    for (const auto& u : variant.uniforms) uniforms.push_back({std::string(u.name), u.glType, u.arraySize});
+    out.uniforms = std::move(uniforms);
+    return out;
+}
+
+Program::Program(const catalog::Variant& variant, std::span<const catalog::Attribute> contractAttributes,
+                 std::string label) {
+    build(sourcesFromVariant(variant, contractAttributes, std::move(label)));
+}
+
+Program::Program(ProgramSources sources) { build(std::move(sources)); }
+
+Program::~Program() { release(); }
+
+Program::Program(Program&& other) noexcept
+    : program_(std::exchange(other.program_, 0u)),
+      label_(std::move(other.label_)),
+      uniforms_(std::move(other.uniforms_)),
+      reported_(std::move(other.reported_)),
+      unknownReports_(std::move(other.unknownReports_)),
+      mismatchReports_(std::move(other.mismatchReports_)),
+      warningHandler_(std::move(other.warningHandler_)) {}
+
+Program& Program::operator=(Program&& other) noexcept {
+    if (this != &other) {
+        release();
+        program_ = std::exchange(other.program_, 0u);
+        label_ = std::move(other.label_);
+        uniforms_ = std::move(other.uniforms_);
+        reported_ = std::move(other.reported_);
+        unknownReports_ = std::move(other.unknownReports_);
+        mismatchReports_ = std::move(other.mismatchReports_);
+        warningHandler_ = std::move(other.warningHandler_);
+    }
+    return *this;
+}
+
+void Program::release() noexcept {
+    if (program_) glDeleteProgram(program_);
+    program_ = 0;
+}
+
+void Program::use() const { glUseProgram(program_); }
+
+void Program::setWarningHandler(WarningHandler handler) { warningHandler_ = std::move(handler); }
+
+void Program::warn(const std::string& message) const {
+    const std::string text = programName(label_) + ": " + message;
+    if (warningHandler_) {
+        warningHandler_(text);
+    } else if (WarningHandler fallback = defaultHandler()) {
+        fallback(text);
+    } else {
+        std::cerr << "prism: warning: " << text << std::endl;
+    }
+}
+
+void Program::build(ProgramSources sources) {
+    label_ = std::move(sources.label);
+    if (sources.stages.empty()) throw ShaderBuildError(programName(label_) + " has no stages", "");
+
+    std::vector<GLuint> shaders;
+    auto deleteShaders = [&] {
+        for (GLuint s : shaders) glDeleteShader(s);
+        shaders.clear();
+    };
+
+    for (const StageText& stage : sources.stages) {
+        const GLuint shader = glCreateShader(shaderType(stage.stage));
+        if (shader == 0) {
+            deleteShaders();
+            throw ShaderBuildError("prism: cannot create a " + std::string(stageWord(stage.stage)) + " shader for " +
+                                       programName(label_) + " (is a GL context current, and does it support this stage?)",
+                                   "");
+        }
+        shaders.push_back(shader);
+        const GLchar* text = stage.source.c_str();
+        const GLint length = static_cast<GLint>(stage.source.size());
+        glShaderSource(shader, 1, &text, &length);
+        glCompileShader(shader);
+        GLint ok = GL_FALSE;
+        glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+        const std::string log = shaderLog(shader);
+        if (!ok) {
+            deleteShaders();
+            throw ShaderBuildError("prism: cannot compile the " + std::string(stageWord(stage.stage)) + " shader of " +
+                                       programName(label_) + ":\n" + translateDriverLog(log, stage.files),
+                                   log);
+        }
+        if (!log.empty())
+            warn(std::string(stageWord(stage.stage)) + " shader compiled with messages:\n" +
+                 translateDriverLog(log, stage.files));
+    }
+
+    program_ = glCreateProgram();
+    for (GLuint s : shaders) glAttachShader(program_, s);
+    for (const auto& a : sources.attributes)
+        if (a.location >= 0) glBindAttribLocation(program_, static_cast<GLuint>(a.location), a.name.c_str());
+    glLinkProgram(program_);
+    for (GLuint s : shaders) glDetachShader(program_, s);
+    deleteShaders();
+
+    GLint linked = GL_FALSE;
+    glGetProgramiv(program_, GL_LINK_STATUS, &linked);
+    if (!linked) {
+        const std::string log = programLog(program_);
+        release();
+        throw ShaderBuildError("prism: cannot link " + programName(label_) + ":\n" + log, log);
+    }
+    try {
+        throwIfGlError("building " + programName(label_));
+    } catch (const GlError& e) {
+        release();
+        throw ShaderBuildError(e.what(), "");
+    }
+    buildUniformTable(sources.uniforms);
+}
+
+}  // namespace prism::gl
