@@ -8,9 +8,15 @@
 in vec3 a_position;
 in vec3 a_normal;
 out vec4 v_color;
+#if FOG
+out float v_fogDistance;
+#endif
 
 void main() {
     vec4 eye = eyePosition(a_position);
     v_color = vec4(shade(eye.xyz, eyeNormal(a_normal), false), 1.0);
+#if FOG
+    v_fogDistance = length(eye.xyz);
+#endif
     gl_Position = clipPosition(eye);
 }

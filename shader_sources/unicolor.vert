@@ -3,7 +3,14 @@
 #include <transforms.glsl>
 
 in vec3 a_position;
+#if FOG
+out float v_fogDistance;
+#endif
 
 void main() {
-    gl_Position = clipPosition(eyePosition(a_position));
+    vec4 eye = eyePosition(a_position);
+#if FOG
+    v_fogDistance = length(eye.xyz);
+#endif
+    gl_Position = clipPosition(eye);
 }

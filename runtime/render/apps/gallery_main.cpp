@@ -1,4 +1,4 @@
-// prism-gallery: the main job. Renders every catalogue shader (and every extra variant)
+// prism-gallery: the main job. Renders every catalogue shader (and its one-axis variants)
 // on a sphere, a torus, a cube and a trefoil knot at 512x512, headlessly, and writes
 // DIR/<shader>-<mesh>.png plus a labelled contact sheet DIR/gallery.png.
 //   prism-gallery --out gallery [--size 512] [--backend egl|osmesa]
@@ -25,26 +25,33 @@ struct GalleryEntry {
     std::string label;     // "phong" or "phong BLINN=1"
 };
 
-// The default variant of every shader, then each other variant of it.
+// The default variant of every shader, then each variant that differs from it in one
+// axis (phong BLINN=1, every FOG=1): one row each.
 std::vector<GalleryEntry> galleryEntries() {
     std::vector<GalleryEntry> entries;
     for (const auto& s : prism::shaders::kCatalog.shaders) {
-        for (std::size_t v = 0; v < s.variants.size(); ++v) {
+        for (const auto& variant : s.variants) {
             GalleryEntry e{std::string(s.name), {}, std::string(s.name), std::string(s.name)};
-            bool isDefault = true;
+            int changedAxes = 0;
             for (std::size_t a = 0; a < s.axes.size(); ++a) {
-                const auto& d = s.variants[v].defines[a];
+                const auto& d = variant.defines[a];
                 e.variant.emplace_back(d.name, d.value);
                 if (d.value != s.axes[a].values[0]) {
-                    isDefault = false;
+                    ++changedAxes;
                     e.fileStem += "." + std::string(d.name) + "-" + std::string(d.value);
                     e.label += " " + std::string(d.name) + "=" + std::string(d.value);
                 }
             }
-            if (isDefault || v > 0) entries.push_back(std::move(e));
+            if (changedAxes <= 1) entries.push_back(std::move(e));
         }
     }
     return entries;
+}
+
+bool wantsFog(const GalleryEntry& e) {
+    for (const auto& [name, value] : e.variant)
+        if (name == "FOG" && value == "1") return true;
+    return false;
 }
 
 }  // namespace
@@ -79,6 +86,7 @@ int main(int argc, char** argv) {
                 job.material.color = {0.85f, 0.42f, 0.25f, 1.0f};
                 job.material.shininess = 48.0f;
                 job.material.specular = 0.6f;
+                if (wantsFog(entry)) job.fog = prism::Fog{};
                 auto image = prism::renderImage8(cache, job);
                 const auto path = std::filesystem::path(outDir) / (entry.fileStem + "-" + meshName + ".png");
                 prism::writePng(path, image);

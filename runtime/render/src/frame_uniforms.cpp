@@ -42,7 +42,7 @@ void setLightArray(gl::Program& p, std::string_view countName, std::string_view 
 }  // namespace
 
 void setFrameUniforms(gl::Program& p, const Camera& camera, float aspect, const Lights& lights,
-                      const glm::mat4& world, const Material& material) {
+                      const glm::mat4& world, const Material& material, const Fog* fog) {
     const glm::mat4 view = camera.view();
     setIfPresent(p, "u_world", world);
     setIfPresent(p, "u_view", view);
@@ -52,6 +52,10 @@ void setFrameUniforms(gl::Program& p, const Camera& camera, float aspect, const 
     setIfPresent(p, "u_shininess", material.shininess);
     setIfPresent(p, "u_specular", material.specular);
     setIfPresent(p, "u_ambient", lights.ambient);
+    if (fog && !(fog->density >= 0.0f))
+        throw std::invalid_argument(p.label() + ": fog density must be a number >= 0");
+    setIfPresent(p, "u_fogColor", fog ? fog->color : glm::vec3(0.0f));
+    setIfPresent(p, "u_fogDensity", fog ? fog->density : 0.0f);
 
     std::vector<glm::vec3> directions, colors, positions, pointColors;
     for (const auto& l : lights.directional) {

@@ -27,11 +27,22 @@ Camera defaultCamera() {
     return c;
 }
 
+VariantValues variantForJob(const ProgramCache& cache, const RenderJob& job) {
+    VariantValues values = job.variant;
+    const auto* shader = catalog::findShader(cache.catalog(), job.shader);
+    if (!shader || !job.fog) return values;
+    bool hasFogAxis = false, fogGiven = false;
+    for (const auto& axis : shader->axes) hasFogAxis = hasFogAxis || axis.name == "FOG";
+    for (const auto& [name, value] : values) fogGiven = fogGiven || name == "FOG";
+    if (hasFogAxis && !fogGiven) values.emplace_back("FOG", "1");
+    return values;
+}
+
 void drawJob(ProgramCache& cache, const RenderJob& job, const GpuMesh& mesh) {
-    gl::Program& program = cache.get(job.shader, job.variant);
+    gl::Program& program = cache.get(job.shader, variantForJob(cache, job));
     program.use();
     setFrameUniforms(program, job.camera, static_cast<float>(job.width) / static_cast<float>(job.height), job.lights,
-                     job.world, job.material);
+                     job.world, job.material, job.fog ? &*job.fog : nullptr);
     mesh.draw();
 }
 

@@ -1,6 +1,6 @@
 // Sets the engine-provided uniforms of the binding contract (modules/contract.json)
 // on a program: transforms from the camera and world matrix, the eye-space normal
-// matrix, lights and material. Only uniforms the program actually has are set.
+// matrix, lights, material and (for FOG variants) fog. Only uniforms the program actually has are set.
 //
 //     prism::setFrameUniforms(program, camera, aspect, lights, world, material);
 //     gpuMesh.draw();
@@ -18,6 +18,6 @@
 namespace prism {
 
 void setFrameUniforms(gl::Program& program, const Camera& camera, float aspect, const Lights& lights,
-                      const glm::mat4& world, const Material& material);
+                      const glm::mat4& world, const Material& material, const Fog* fog = nullptr);
 
 }  // namespace prism

@@ -15,6 +15,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
 
+#include <optional>
 #include <string>
 
 #include "prism/camera.hpp"
@@ -37,6 +38,7 @@ struct RenderJob {
     glm::mat4 world{1.0f};
     Material material;
     Lights lights = defaultLights();
+    std::optional<Fog> fog;  // with fog, a shader that has a FOG axis runs its FOG=1 variant
     Camera camera = defaultCamera();
     int width = 512;
     int height = 512;
@@ -45,6 +47,10 @@ struct RenderJob {
 
 Image8 renderImage8(ProgramCache& cache, const RenderJob& job);
 ImageF renderImageF(ProgramCache& cache, const RenderJob& job);
+
+// The variant a job runs: its own values, plus FOG=1 when it has fog and the shader
+// declares FOG (FOG=0, the default, otherwise: no fog code without fog).
+VariantValues variantForJob(const ProgramCache& cache, const RenderJob& job);
 
 // Draws into whatever framebuffer is bound (viewport already set); for repeated
 // frames in benchmarks and the viewer, with the mesh already uploaded.

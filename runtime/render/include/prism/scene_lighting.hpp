@@ -1,5 +1,5 @@
-// Lights and materials as the catalogue shaders see them (modules/lights.glsl,
-// modules/material.glsl): ambient + directional lights + point lights, and a material
+// Lights, fog and materials as the catalogue shaders see them (modules/lights.glsl,
+// modules/fog.glsl, modules/material.glsl): ambient + directional lights + point lights, and a material
 // with colour, shininess (Phong exponent) and specular strength.
 //
 //     prism::Lights lights;
@@ -33,6 +33,12 @@ struct Lights {
     glm::vec3 ambient{0.1f};
     std::vector<DirectionalLight> directional;
     std::vector<PointLight> points;
+};
+
+// Exponential distance fog (modules/fog.glsl); used only by a shader's FOG=1 variant.
+struct Fog {
+    glm::vec3 color{0.62f, 0.66f, 0.72f};
+    float density = 0.15f;  // per unit of eye distance; >= 0
 };
 
 struct Material {
