@@ -33,11 +33,13 @@ TEST(GeneratedCatalogue, EveryStageStartsWithVersionAndHasNoIncludeExtensions) {
 
 TEST(GeneratedCatalogue, PhongHasTheBlinnVariantAndReflection) {
     const auto& phong = shaders::shaderInfo(shaders::ShaderId::phong);
-    ASSERT_EQ(phong.axes.size(), 1u);
+    ASSERT_EQ(phong.axes.size(), 2u);
     EXPECT_EQ(phong.axes[0].name, "BLINN");
+    EXPECT_EQ(phong.axes[1].name, "FOG");
+    EXPECT_EQ(phong.variants.size(), 4u);
     const auto* blinn = prism::catalog::findVariant(phong, {{"BLINN", "1"}});
     ASSERT_NE(blinn, nullptr);
-    EXPECT_EQ(blinn->name, "BLINN=1");
+    EXPECT_EQ(blinn->name, "BLINN=1,FOG=0");
     EXPECT_NE(joinChunks(blinn->stages[1].chunks).find("#define BLINN 1"), std::string::npos);
     EXPECT_EQ(prism::catalog::findVariant(phong, {{"NOPE", "1"}}), nullptr);
     auto hasUniform = [&](std::string_view n) {
@@ -45,6 +47,11 @@ TEST(GeneratedCatalogue, PhongHasTheBlinnVariantAndReflection) {
     };
     EXPECT_TRUE(hasUniform("u_shininess"));
     EXPECT_TRUE(hasUniform("u_normal"));
+    EXPECT_FALSE(hasUniform("u_fogDensity"));  // FOG=0: no fog code, no fog uniforms
+    const auto* foggy = prism::catalog::findVariant(phong, {{"BLINN", "1"}, {"FOG", "1"}});
+    ASSERT_NE(foggy, nullptr);
+    EXPECT_TRUE(std::any_of(foggy->uniforms.begin(), foggy->uniforms.end(),
+                            [](const auto& u) { return u.name == "u_fogDensity"; }));
     ASSERT_EQ(blinn->attributes.size(), 2u);
     EXPECT_EQ(blinn->attributes[0].name, "a_position");
     EXPECT_EQ(blinn->attributes[0].location, 0);
