@@ -13,8 +13,11 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/modules/ DESTINATION ${CMAKE_INSTALL_DAT
 
 set(PRISM_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/Prism)
 install(EXPORT PrismTargets NAMESPACE Prism:: DESTINATION ${PRISM_CMAKE_DIR})
+# PATH_VARS: PrismConfig.cmake.in uses @PACKAGE_CMAKE_INSTALL_DATADIR@, which is empty
+# (Prism_MODULE_DIR = "/prism/modules") unless the variable is listed here.
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/PrismConfig.cmake.in
-  ${PROJECT_BINARY_DIR}/PrismConfig.cmake INSTALL_DESTINATION ${PRISM_CMAKE_DIR})
+  ${PROJECT_BINARY_DIR}/PrismConfig.cmake INSTALL_DESTINATION ${PRISM_CMAKE_DIR}
+  PATH_VARS CMAKE_INSTALL_DATADIR)
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/PrismConfigVersion.cmake
   COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/PrismConfig.cmake ${PROJECT_BINARY_DIR}/PrismConfigVersion.cmake

@@ -15,9 +15,20 @@
 #
 # The command's primary output is a stamp file; the header is a byproduct that the tool
 # rewrites only when its content changes, so touching a module re-runs the tool (and
-# only for the catalogues that include it, via the depfile) without recompiling code
+# only for the catalogues that read it, via the depfile) without recompiling code
 # whose header did not change. Works with Ninja and Unix Makefiles (CMake >= 3.20).
 include_guard(GLOBAL)
+if(CMAKE_VERSION VERSION_LESS 3.20)
+  message(FATAL_ERROR "prism_add_shaders() needs CMake 3.20 or newer (DEPFILE with Makefile generators)")
+endif()
+
+# A function runs with the policies recorded where it is defined, not those of the
+# caller: pin them so that a consumer with an older cmake_minimum_required() still gets
+# CMP0116 NEW. With OLD, Ninja reads the depfile untransformed; its target is then the
+# stamp's absolute path, which does not match the build.ninja output, so Ninja treats
+# the stamp as always dirty and re-runs prism-shaderc on every build.
+cmake_policy(PUSH)
+cmake_policy(VERSION 3.20...3.25)
 
 function(prism_add_shaders target)
   cmake_parse_arguments(PARSE_ARGV 1 PAS "" "HEADER;NAMESPACE;GLSL_VERSION"
@@ -45,7 +56,7 @@ function(prism_add_shaders target)
   set(depfile ${CMAKE_CURRENT_BINARY_DIR}/${target}.d)
 
   set(args -o ${header} --depfile ${depfile} --stamp ${stamp} --namespace ${PAS_NAMESPACE}
-           --base-dir ${CMAKE_SOURCE_DIR})
+           --base-dir ${PROJECT_SOURCE_DIR})
   set(depends Prism::shaderc)
   foreach(src IN LISTS PAS_SOURCES)
     get_filename_component(abs ${src} ABSOLUTE)
@@ -55,6 +66,12 @@ function(prism_add_shaders target)
   foreach(dir IN LISTS PAS_MODULE_DIRS)
     get_filename_component(abs ${dir} ABSOLUTE)
     list(APPEND args -I ${abs})
+    # The catalogue lists every .glsl below each module dir, but the depfile names files
+    # only: depend on the directory too, whose mtime changes when a module is added,
+    # removed or renamed in it, so the module list in the header cannot go stale.
+    # (Not its sub-directories: a module dir may hold a build tree, whose directories
+    # change on every build.)
+    list(APPEND depends ${abs})
   endforeach()
   foreach(contract IN LISTS PAS_CONTRACT)
     get_filename_component(abs ${contract} ABSOLUTE)
@@ -86,3 +103,5 @@ function(prism_add_shaders target)
   target_link_libraries(${target} INTERFACE Prism::catalog)
   set_target_properties(${target} PROPERTIES PRISM_HEADER ${header})
 endfunction()
+
+cmake_policy(POP)

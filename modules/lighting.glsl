@@ -29,12 +29,14 @@ vec3 lightContribution(vec3 toLight, vec3 radiance, vec3 toEye, vec3 normal, boo
 vec3 shade(vec3 eyePos, vec3 normal, bool withSpecular) {
     vec3 toEye = safeNormalize(-eyePos, vec3(0.0, 0.0, 1.0));
     vec3 color = u_ambient * u_color.rgb;
-    for (int i = 0; i < PRISM_DIRECTIONAL_LIGHTS; ++i) {
+#if DIRECTIONAL_LIGHTS > 0
+    for (int i = 0; i < DIRECTIONAL_LIGHTS; ++i) {
         if (i >= u_directionalLightCount) break;
         color += lightContribution(directionToLight(i), u_lightColor[i], toEye, normal, withSpecular);
     }
-#if PRISM_POINT_LIGHTS > 0
-    for (int i = 0; i < PRISM_POINT_LIGHTS; ++i) {
+#endif
+#if POINT_LIGHTS > 0
+    for (int i = 0; i < POINT_LIGHTS; ++i) {
         if (i >= u_pointLightCount) break;
         vec3 lightEye = (u_view * vec4(u_pointLightPosition[i], 1.0)).xyz;
         vec3 toLight = safeNormalize(lightEye - eyePos, normal);

@@ -33,7 +33,7 @@ void main() {
     vec4 eye = eyePosition(a_position);
     vec3 n = eyeNormal(a_normal);
     vec3 c = u_ambient;
-    for (int i = 0; i < PRISM_DIRECTIONAL_LIGHTS; ++i) {
+    for (int i = 0; i < DIRECTIONAL_LIGHTS; ++i) {
         if (i >= u_directionalLightCount) break;
         c += max(dot(n, directionToLight(i)), 0.0) * u_lightColor[i];
     }

@@ -33,13 +33,16 @@ TEST(GeneratedCatalogue, EveryStageStartsWithVersionAndHasNoIncludeExtensions) {
 
 TEST(GeneratedCatalogue, PhongHasTheBlinnVariantAndReflection) {
     const auto& phong = shaders::shaderInfo(shaders::ShaderId::phong);
-    ASSERT_EQ(phong.axes.size(), 2u);
+    ASSERT_EQ(phong.axes.size(), 4u);
     EXPECT_EQ(phong.axes[0].name, "BLINN");
     EXPECT_EQ(phong.axes[1].name, "FOG");
-    EXPECT_EQ(phong.variants.size(), 4u);
-    const auto* blinn = prism::catalog::findVariant(phong, {{"BLINN", "1"}});
+    EXPECT_EQ(phong.axes[2].name, "DIRECTIONAL_LIGHTS");
+    EXPECT_EQ(phong.axes[3].name, "POINT_LIGHTS");
+    EXPECT_EQ(phong.variants.size(), 2u * 2u * 5u * 3u);
+    const auto* blinn =
+        prism::catalog::findVariant(phong, {{"BLINN", "1"}, {"DIRECTIONAL_LIGHTS", "2"}, {"POINT_LIGHTS", "1"}});
     ASSERT_NE(blinn, nullptr);
-    EXPECT_EQ(blinn->name, "BLINN=1,FOG=0");
+    EXPECT_EQ(blinn->name, "BLINN=1,FOG=0,DIRECTIONAL_LIGHTS=2,POINT_LIGHTS=1");
     EXPECT_NE(joinChunks(blinn->stages[1].chunks).find("#define BLINN 1"), std::string::npos);
     EXPECT_EQ(prism::catalog::findVariant(phong, {{"NOPE", "1"}}), nullptr);
     auto hasUniform = [&](std::string_view n) {
@@ -48,13 +51,25 @@ TEST(GeneratedCatalogue, PhongHasTheBlinnVariantAndReflection) {
     EXPECT_TRUE(hasUniform("u_shininess"));
     EXPECT_TRUE(hasUniform("u_normal"));
     EXPECT_FALSE(hasUniform("u_fogDensity"));  // FOG=0: no fog code, no fog uniforms
-    const auto* foggy = prism::catalog::findVariant(phong, {{"BLINN", "1"}, {"FOG", "1"}});
+    const auto* foggy = prism::catalog::findVariant(phong, {{"BLINN", "1"}, {"FOG", "1"}, {"DIRECTIONAL_LIGHTS", "1"}});
     ASSERT_NE(foggy, nullptr);
     EXPECT_TRUE(std::any_of(foggy->uniforms.begin(), foggy->uniforms.end(),
                             [](const auto& u) { return u.name == "u_fogDensity"; }));
     ASSERT_EQ(blinn->attributes.size(), 2u);
     EXPECT_EQ(blinn->attributes[0].name, "a_position");
     EXPECT_EQ(blinn->attributes[0].location, 0);
+}
+
+TEST(GeneratedCatalogue, LightCountsBoundTheLoopsAndDropUnusedLights) {
+    const auto& phong = shaders::shaderInfo(shaders::ShaderId::phong);
+    const auto* one = prism::catalog::findVariant(phong, {{"DIRECTIONAL_LIGHTS", "1"}, {"POINT_LIGHTS", "0"}});
+    ASSERT_NE(one, nullptr);
+    const auto text = joinChunks(one->stages[1].chunks);
+    EXPECT_NE(text.find("#define DIRECTIONAL_LIGHTS 1\n"), std::string::npos);
+    for (const auto& u : one->uniforms) {
+        EXPECT_NE(u.name, "u_pointLightColor") << "no point lights, no point-light uniforms";
+        if (u.name == "u_lightDirection") EXPECT_EQ(u.arraySize, 1);
+    }
 }
 
 TEST(GeneratedCatalogue, UnicolorUsesNoLightingModules) {

@@ -1,4 +1,4 @@
-// prism-gallery: the main job. Renders every catalogue shader (and its one-axis variants)
+// prism-gallery: the main job. Renders every catalogue shader (and its BLINN/FOG variants)
 // on a sphere, a torus, a cube and a trefoil knot at 512x512, headlessly, and writes
 // DIR/<shader>-<mesh>.png plus a labelled contact sheet DIR/gallery.png.
 //   prism-gallery --out gallery [--size 512] [--backend egl|osmesa]
@@ -25,24 +25,18 @@ struct GalleryEntry {
     std::string label;     // "phong" or "phong BLINN=1"
 };
 
-// The default variant of every shader, then each variant that differs from it in one
-// axis (phong BLINN=1, every FOG=1): one row each.
+// One row per shader with the variant its lights need (derived by the renderer), then
+// one row per other boolean axis switched on (phong BLINN=1, every FOG=1).
 std::vector<GalleryEntry> galleryEntries() {
     std::vector<GalleryEntry> entries;
     for (const auto& s : prism::shaders::kCatalog.shaders) {
-        for (const auto& variant : s.variants) {
-            GalleryEntry e{std::string(s.name), {}, std::string(s.name), std::string(s.name)};
-            int changedAxes = 0;
-            for (std::size_t a = 0; a < s.axes.size(); ++a) {
-                const auto& d = variant.defines[a];
-                e.variant.emplace_back(d.name, d.value);
-                if (d.value != s.axes[a].values[0]) {
-                    ++changedAxes;
-                    e.fileStem += "." + std::string(d.name) + "-" + std::string(d.value);
-                    e.label += " " + std::string(d.name) + "=" + std::string(d.value);
-                }
-            }
-            if (changedAxes <= 1) entries.push_back(std::move(e));
+        const std::string name(s.name);
+        entries.push_back({name, {}, name, name});
+        for (const auto& axis : s.axes) {
+            const bool boolean = axis.values.size() == 2 && axis.values[0] == "0" && axis.values[1] == "1";
+            if (!boolean) continue;  // light counts follow the scene
+            const std::string a(axis.name);
+            entries.push_back({name, {{a, "1"}}, name + "." + a + "-1", name + " " + a + "=1"});
         }
     }
     return entries;

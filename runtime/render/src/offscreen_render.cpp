@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 
+#include "prism/feature_variants.hpp"
 #include "prism/frame_uniforms.hpp"
 #include "prism/gl.hpp"
 #include "prism/gpu_mesh.hpp"
@@ -28,14 +29,9 @@ Camera defaultCamera() {
 }
 
 VariantValues variantForJob(const ProgramCache& cache, const RenderJob& job) {
-    VariantValues values = job.variant;
     const auto* shader = catalog::findShader(cache.catalog(), job.shader);
-    if (!shader || !job.fog) return values;
-    bool hasFogAxis = false, fogGiven = false;
-    for (const auto& axis : shader->axes) hasFogAxis = hasFogAxis || axis.name == "FOG";
-    for (const auto& [name, value] : values) fogGiven = fogGiven || name == "FOG";
-    if (hasFogAxis && !fogGiven) values.emplace_back("FOG", "1");
-    return values;
+    if (!shader) return job.variant;  // the cache reports the unknown shader
+    return variantFor(*shader, featuresOf(job.lights, job.fog.has_value()), job.variant);
 }
 
 void drawJob(ProgramCache& cache, const RenderJob& job, const GpuMesh& mesh) {

@@ -39,6 +39,8 @@ struct RenderJob {
     Material material;
     Lights lights = defaultLights();
     std::optional<Fog> fog;  // with fog, a shader that has a FOG axis runs its FOG=1 variant
+    // The variant is derived from lights and fog (prism/feature_variants.hpp); `variant`
+    // fixes other axes (BLINN) or overrides the derived ones.
     Camera camera = defaultCamera();
     int width = 512;
     int height = 512;
@@ -48,8 +50,8 @@ struct RenderJob {
 Image8 renderImage8(ProgramCache& cache, const RenderJob& job);
 ImageF renderImageF(ProgramCache& cache, const RenderJob& job);
 
-// The variant a job runs: its own values, plus FOG=1 when it has fog and the shader
-// declares FOG (FOG=0, the default, otherwise: no fog code without fog).
+// The variant a job runs: derived from its lights and fog (the smallest light loops
+// that hold its lights, FOG only with fog), with the job's own values on top.
 VariantValues variantForJob(const ProgramCache& cache, const RenderJob& job);
 
 // Draws into whatever framebuffer is bound (viewport already set); for repeated

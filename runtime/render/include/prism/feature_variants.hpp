@@ -1,0 +1,34 @@
+// From what a scene needs to the shader variant that has exactly that: the "model only
+// what the scene requires" rule. The feature set of a draw is the number of
+// directional and point lights and whether there is fog; a shader's axes
+// DIRECTIONAL_LIGHTS, POINT_LIGHTS (numeric: the smallest generated value that holds
+// the scene's count, so the light loop is bounded by it) and FOG (0/1) are set from it.
+// Other axes keep the values asked for, else their first value.
+//
+//     prism::FeatureSet f = prism::featuresOf(lights, fog.has_value());
+//     prism::VariantValues v = prism::variantFor(*catalog::findShader(cat, "phong"), f, {{"BLINN", "1"}});
+//     // v == {BLINN=1, FOG=0, DIRECTIONAL_LIGHTS=1, POINT_LIGHTS=0} for one light, no fog
+//
+// Throws std::invalid_argument when a scene needs more lights than any variant holds.
+#pragma once
+
+#include <string>
+
+#include "prism/program_cache.hpp"
+#include "prism/scene_lighting.hpp"
+#include "prism/shader_catalog.hpp"
+
+namespace prism {
+
+struct FeatureSet {
+    int directionalLights = 0;
+    int pointLights = 0;
+    bool fog = false;
+    bool operator==(const FeatureSet&) const = default;
+};
+
+FeatureSet featuresOf(const Lights& lights, bool fog);
+
+VariantValues variantFor(const catalog::Shader& shader, const FeatureSet& features, const VariantValues& requested = {});
+
+}  // namespace prism
