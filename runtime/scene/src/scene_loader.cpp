@@ -1,0 +1,263 @@
+// JSON scene reading with path-precise errors (see prism/scene_loader.hpp).
+#include "prism/scene_loader.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <initializer_list>
+#include <limits>
+#include <set>
+#include <sstream>
+
+namespace prism {
+namespace {
+
+using nlohmann::json;
+
+class Reader {
+public:
+    explicit Reader(std::string file) : file_(std::move(file)) {}
+
+    [[noreturn]] void fail(const std::string& pointer, const std::string& expected) const {
+        throw SceneError(file_ + ": " + (pointer.empty() ? "/" : pointer) + ": expected " + expected);
+    }
+
+    void object(const json& j, const std::string& at, std::initializer_list<const char*> allowed) const {
+        if (!j.is_object()) fail(at, "an object");
+        const std::set<std::string> keys(allowed.begin(), allowed.end());
+        for (const auto& [key, value] : j.items()) {
+            if (keys.count(key)) continue;
+            std::string list;
+            for (const auto& k : allowed) list += (list.empty() ? "" : ", ") + std::string(k);
+            fail(at + "/" + key, "no such key here; known keys: " + list);
+        }
+    }
+
+    double number(const json& j, const std::string& at, double min = -std::numeric_limits<double>::max(),
+                  double max = std::numeric_limits<double>::max()) const {
+        if (!j.is_number()) fail(at, "a number");
+        const double v = j.get<double>();
+        if (!std::isfinite(v) || v < min || v > max) {
+            std::ostringstream range;
+            range << "a number in [" << min << ", " << max << "]";
+            fail(at, range.str());
+        }
+        return v;
+    }
+
+    unsigned whole(const json& j, const std::string& at, unsigned min, unsigned max) const {
+        if (!j.is_number_integer() || j.get<long long>() < min || j.get<long long>() > max)
+            fail(at, "a whole number from " + std::to_string(min) + " to " + std::to_string(max));
+        return static_cast<unsigned>(j.get<long long>());
+    }
+
+    glm::vec3 vec3(const json& j, const std::string& at) const {
+        if (!j.is_array() || j.size() != 3) fail(at, "3 numbers");
+        glm::vec3 v;
+        for (int i = 0; i < 3; ++i) {
+            if (!j[static_cast<std::size_t>(i)].is_number()) fail(at, "3 numbers");
+            v[i] = static_cast<float>(number(j[static_cast<std::size_t>(i)], at + "/" + std::to_string(i)));
+        }
+        return v;
+    }
+
+    glm::vec3 color(const json& j, const std::string& at) const {
+        glm::vec3 c = vec3(j, at);
+        for (int i = 0; i < 3; ++i)
+            if (c[i] < 0.0f) fail(at + "/" + std::to_string(i), "a colour component >= 0");
+        return c;
+    }
+
+    std::string string(const json& j, const std::string& at) const {
+        if (!j.is_string()) fail(at, "a string");
+        return j.get<std::string>();
+    }
+
+private:
+    std::string file_;
+};
+
+Camera readCamera(const Reader& r, const json& j) {
+    r.object(j, "/camera", {"eye", "target", "up", "fovY", "near", "far"});
+    Camera c;
+    if (j.contains("eye")) c.eye = r.vec3(j["eye"], "/camera/eye");
+    if (j.contains("target")) c.target = r.vec3(j["target"], "/camera/target");
+    if (j.contains("up")) c.up = r.vec3(j["up"], "/camera/up");
+    if (j.contains("fovY")) c.fovYDegrees = static_cast<float>(r.number(j["fovY"], "/camera/fovY", 1e-3, 179.0));
+    if (j.contains("near")) c.nearPlane = static_cast<float>(r.number(j["near"], "/camera/near", 1e-9));
+    if (j.contains("far")) c.farPlane = static_cast<float>(r.number(j["far"], "/camera/far", 1e-9));
+    if (!(c.farPlane > c.nearPlane)) r.fail("/camera/far", "a value greater than /camera/near");
+    const glm::vec3 d = c.target - c.eye;
+    if (glm::dot(d, d) < 1e-20f) r.fail("/camera/target", "a point other than /camera/eye");
+    return c;
+}
+
+void readLights(const Reader& r, const json& j, Lights& lights) {
+    if (!j.is_array()) r.fail("/lights", "an array of lights");
+    lights.ambient = glm::vec3(0.0f);
+    for (std::size_t i = 0; i < j.size(); ++i) {
+        const std::string at = "/lights/" + std::to_string(i);
+        const json& l = j[i];
+        if (!l.is_object() || !l.contains("type")) r.fail(at, "an object with \"type\": ambient, directional or point");
+        const std::string type = r.string(l["type"], at + "/type");
+        if (type == "ambient") {
+            r.object(l, at, {"type", "color"});
+            lights.ambient += r.color(l.value("color", json::array({0.1, 0.1, 0.1})), at + "/color");
+        } else if (type == "directional") {
+            r.object(l, at, {"type", "direction", "color"});
+            if (!l.contains("direction")) r.fail(at + "/direction", "3 numbers");
+            DirectionalLight d{r.vec3(l["direction"], at + "/direction"), glm::vec3(1.0f)};
+            if (glm::dot(d.direction, d.direction) < 1e-20f) r.fail(at + "/direction", "a non-zero direction");
+            if (l.contains("color")) d.color = r.color(l["color"], at + "/color");
+            lights.directional.push_back(d);
+        } else if (type == "point") {
+            r.object(l, at, {"type", "position", "color"});
+            if (!l.contains("position")) r.fail(at + "/position", "3 numbers");
+            PointLight p{r.vec3(l["position"], at + "/position"), glm::vec3(1.0f)};
+            if (l.contains("color")) p.color = r.color(l["color"], at + "/color");
+            lights.points.push_back(p);
+        } else {
+            r.fail(at + "/type", "ambient, directional or point");
+        }
+    }
+}
+
+glm::mat4 readTransform(const Reader& r, const json& j, const std::string& at) {
+    r.object(j, at, {"translate", "rotateDegrees", "scale"});
+    glm::mat4 m(1.0f);
+    if (j.contains("translate")) m = glm::translate(m, r.vec3(j["translate"], at + "/translate"));
+    if (j.contains("rotateDegrees")) {
+        const glm::vec3 deg = r.vec3(j["rotateDegrees"], at + "/rotateDegrees");
+        m = glm::rotate(m, glm::radians(deg.y), glm::vec3(0, 1, 0));
+        m = glm::rotate(m, glm::radians(deg.x), glm::vec3(1, 0, 0));
+        m = glm::rotate(m, glm::radians(deg.z), glm::vec3(0, 0, 1));
+    }
+    if (j.contains("scale")) {
+        const json& s = j["scale"];
+        m = glm::scale(m, s.is_number() ? glm::vec3(static_cast<float>(r.number(s, at + "/scale")))
+                                        : r.vec3(s, at + "/scale"));
+    }
+    return m;
+}
+
+SceneObject readObject(const Reader& r, const json& j, const std::string& at) {
+    r.object(j, at, {"mesh", "subdivision", "transform", "material"});
+    SceneObject o;
+    if (j.contains("mesh")) o.mesh = r.string(j["mesh"], at + "/mesh");
+    if (j.contains("subdivision")) o.subdivision = r.whole(j["subdivision"], at + "/subdivision", 0, 7);
+    if (j.contains("transform")) o.world = readTransform(r, j["transform"], at + "/transform");
+    if (j.contains("material")) {
+        const std::string m = at + "/material";
+        const json& mj = j["material"];
+        r.object(mj, m, {"shader", "color", "shininess", "specular", "variant"});
+        if (mj.contains("shader")) o.shader = r.string(mj["shader"], m + "/shader");
+        if (mj.contains("color")) o.material.color = glm::vec4(r.color(mj["color"], m + "/color"), 1.0f);
+        if (mj.contains("shininess"))
+            o.material.shininess = static_cast<float>(r.number(mj["shininess"], m + "/shininess", 0.0));
+        if (mj.contains("specular"))
+            o.material.specular = static_cast<float>(r.number(mj["specular"], m + "/specular", 0.0));
+        if (mj.contains("variant")) {
+            if (!mj["variant"].is_object()) r.fail(m + "/variant", "an object of NAME: \"VALUE\" pairs");
+            for (const auto& [name, value] : mj["variant"].items())
+                o.variantOverrides.emplace_back(
+                    name, value.is_string() ? value.get<std::string>()
+                                            : std::to_string(r.whole(value, m + "/variant/" + name, 0, 1u << 20)));
+        }
+    }
+    return o;
+}
+
+RainSettings readRain(const Reader& r, const json& j) {
+    r.object(j, "/rain", {"intensity", "rateMmPerHour", "wind", "seed", "radius", "height", "budget"});
+    RainSettings s;
+    if (j.contains("intensity")) {
+        s.intensityClass = r.string(j["intensity"], "/rain/intensity");
+        static const std::set<std::string> classes = {"drizzle", "light", "moderate", "heavy", "excessive", "cloudburst"};
+        if (!classes.count(s.intensityClass))
+            r.fail("/rain/intensity", "one of drizzle, light, moderate, heavy, excessive, cloudburst");
+    }
+    if (j.contains("rateMmPerHour")) s.rateMillimetresPerHour = r.number(j["rateMmPerHour"], "/rain/rateMmPerHour", 0.0);
+    if (j.contains("wind")) s.wind = r.vec3(j["wind"], "/rain/wind");
+    if (j.contains("seed")) s.seed = r.whole(j["seed"], "/rain/seed", 0, 0xffffffffu);
+    if (j.contains("radius")) s.cylinderRadius = static_cast<float>(r.number(j["radius"], "/rain/radius", 0.1, 1e4));
+    if (j.contains("height")) s.cylinderHeight = static_cast<float>(r.number(j["height"], "/rain/height", 0.1, 1e4));
+    if (j.contains("budget")) s.particleBudget = r.whole(j["budget"], "/rain/budget", 0, 1u << 24);
+    return s;
+}
+
+WaterSettings readWater(const Reader& r, const json& j) {
+    r.object(j, "/water", {"grid", "cellSize", "rainMmPerHour", "steps", "permeability"});
+    WaterSettings s;
+    if (j.contains("grid")) s.gridSize = r.whole(j["grid"], "/water/grid", 1, 4096);
+    if (j.contains("cellSize")) s.cellSize = static_cast<float>(r.number(j["cellSize"], "/water/cellSize", 1e-4, 1e3));
+    if (j.contains("rainMmPerHour"))
+        s.rainRateMillimetresPerHour = r.number(j["rainMmPerHour"], "/water/rainMmPerHour", 0.0, 1e4);
+    if (j.contains("steps")) s.steps = r.whole(j["steps"], "/water/steps", 0, 1000000);
+    if (j.contains("permeability"))
+        s.permeability = static_cast<float>(r.number(j["permeability"], "/water/permeability", 0.0, 1.0));
+    return s;
+}
+
+std::pair<int, int> lineColumn(const std::string& text, std::size_t byte) {
+    int line = 1, col = 1;
+    for (std::size_t i = 0; i + 1 < byte && i < text.size(); ++i) {
+        if (text[i] == '\n') { ++line; col = 1; } else { ++col; }
+    }
+    return {line, col};
+}
+
+}  // namespace
+
+Scene parseScene(const std::string& text, const std::string& fileName) {
+    json j;
+    try {
+        j = json::parse(text);
+    } catch (const json::parse_error& e) {
+        auto [line, col] = lineColumn(text, e.byte);
+        std::string what = e.what();
+        auto pos = what.find("syntax error");
+        throw SceneError(fileName + ":" + std::to_string(line) + ":" + std::to_string(col) + ": " +
+                         (pos == std::string::npos ? what : what.substr(pos)));
+    }
+    Reader r(fileName);
+    r.object(j, "", {"camera", "image", "lights", "fog", "objects", "rain", "water", "comment"});
+    Scene s;
+    s.file = fileName;
+    if (j.contains("camera")) s.camera = readCamera(r, j["camera"]);
+    if (j.contains("image")) {
+        const json& im = j["image"];
+        r.object(im, "/image", {"width", "height", "background"});
+        if (im.contains("width")) s.width = static_cast<int>(r.whole(im["width"], "/image/width", 1, 16384));
+        if (im.contains("height")) s.height = static_cast<int>(r.whole(im["height"], "/image/height", 1, 16384));
+        if (im.contains("background")) s.background = glm::vec4(r.color(im["background"], "/image/background"), 1.0f);
+    }
+    if (j.contains("lights")) readLights(r, j["lights"], s.lights);
+    if (j.contains("fog")) {
+        r.object(j["fog"], "/fog", {"color", "density"});
+        Fog f;
+        if (j["fog"].contains("color")) f.color = r.color(j["fog"]["color"], "/fog/color");
+        if (j["fog"].contains("density"))
+            f.density = static_cast<float>(r.number(j["fog"]["density"], "/fog/density", 0.0, 1e6));
+        s.fog = f;
+    }
+    if (j.contains("objects")) {
+        if (!j["objects"].is_array()) r.fail("/objects", "an array of objects");
+        for (std::size_t i = 0; i < j["objects"].size(); ++i)
+            s.objects.push_back(readObject(r, j["objects"][i], "/objects/" + std::to_string(i)));
+    }
+    if (j.contains("rain")) s.rain = readRain(r, j["rain"]);
+    if (j.contains("water")) s.water = readWater(r, j["water"]);
+    return s;
+}
+
+Scene loadScene(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw SceneError(path + ": cannot open the scene file; check the path");
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return parseScene(ss.str(), path);
+}
+
+}  // namespace prism

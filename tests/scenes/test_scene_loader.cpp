@@ -1,0 +1,108 @@
+// Scene files: the documented format parses, and malformed scenes give the file, the
+// JSON path and what was expected (or file:line:col for syntax errors).
+#include <gtest/gtest.h>
+
+#include "prism/scene_loader.hpp"
+
+using prism::parseScene;
+using prism::SceneError;
+
+namespace {
+
+std::string errorOf(const std::string& text) {
+    try {
+        parseScene(text, "scene.json");
+    } catch (const SceneError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+}  // namespace
+
+TEST(SceneLoader, ReadsTheExampleScenes) {
+    for (const char* name : {"one_light", "four_lights", "fog"}) {
+        auto scene = prism::loadScene(std::string(PRISM_SCENES_DIR) + "/" + name + ".json");
+        EXPECT_FALSE(scene.objects.empty()) << name;
+        EXPECT_FALSE(scene.lights.directional.empty()) << name;
+    }
+    auto fog = prism::loadScene(std::string(PRISM_SCENES_DIR) + "/fog.json");
+    ASSERT_TRUE(fog.fog.has_value());
+    EXPECT_FLOAT_EQ(fog.fog->density, 0.12f);
+    auto four = prism::loadScene(std::string(PRISM_SCENES_DIR) + "/four_lights.json");
+    EXPECT_EQ(four.lights.directional.size(), 4u);
+    EXPECT_EQ(four.lights.points.size(), 1u);
+}
+
+TEST(SceneLoader, FullObjectSyntax) {
+    auto s = parseScene(R"({
+      "camera": {"eye": [1, 2, 3], "target": [0, 0, 0], "fovY": 50, "near": 0.5, "far": 20},
+      "lights": [{"type": "ambient", "color": [0.2, 0.2, 0.2]},
+                 {"type": "point", "position": [0, 3, 0]}],
+      "objects": [{"mesh": "torus", "subdivision": 2,
+                   "transform": {"translate": [1, 0, 0], "rotateDegrees": [0, 90, 0], "scale": 2},
+                   "material": {"shader": "phong", "color": [1, 0, 0], "shininess": 8, "specular": 0.1,
+                                "variant": {"BLINN": "1"}}}],
+      "rain": {"intensity": "heavy", "wind": [1, 0, 0]},
+      "water": {"grid": 128}
+    })", "s.json");
+    EXPECT_EQ(s.camera.eye, glm::vec3(1, 2, 3));
+    EXPECT_FLOAT_EQ(s.lights.ambient.x, 0.2f);
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(s.objects[0].variantOverrides.front(), std::make_pair(std::string("BLINN"), std::string("1")));
+    EXPECT_NEAR(s.objects[0].world[3][0], 1.0f, 1e-6f);
+    ASSERT_TRUE(s.rain.has_value());
+    EXPECT_EQ(s.rain->intensityClass, "heavy");
+    ASSERT_TRUE(s.water.has_value());
+    EXPECT_EQ(s.water->gridSize, 128u);
+}
+
+TEST(SceneLoader, DirectionWithTwoNumbers) {
+    EXPECT_EQ(errorOf(R"({"lights": [{"type": "ambient"}, {"type": "ambient"},
+                                     {"type": "directional", "direction": [1, 2]}]})"),
+              "scene.json: /lights/2/direction: expected 3 numbers");
+}
+
+TEST(SceneLoader, MisspelledKeyIsAnError) {
+    EXPECT_EQ(errorOf(R"({"fogg": {}})").rfind("scene.json: /fogg: expected no such key here; known keys: camera", 0),
+              0u)
+        << errorOf(R"({"fogg": {}})");
+}
+
+TEST(SceneLoader, WrongTypes) {
+    EXPECT_EQ(errorOf(R"({"camera": {"fovY": "wide"}})"), "scene.json: /camera/fovY: expected a number");
+    EXPECT_EQ(errorOf(R"({"objects": {"mesh": "sphere"}})"), "scene.json: /objects: expected an array of objects");
+    EXPECT_EQ(errorOf(R"({"objects": [{"material": {"shininess": -1}}]})").rfind(
+                  "scene.json: /objects/0/material/shininess: expected a number in [0", 0),
+              0u);
+    EXPECT_EQ(errorOf(R"({"lights": [{"type": "spot"}]})"),
+              "scene.json: /lights/0/type: expected ambient, directional or point");
+    EXPECT_EQ(errorOf(R"({"rain": {"intensity": "monsoon"}})"),
+              "scene.json: /rain/intensity: expected one of drizzle, light, moderate, heavy, excessive, cloudburst");
+    EXPECT_EQ(errorOf(R"({"lights": [{"type": "ambient", "color": [1, -1, 0]}]})"),
+              "scene.json: /lights/0/color/1: expected a colour component >= 0");
+    EXPECT_EQ(errorOf("[]"), "scene.json: /: expected an object");
+}
+
+TEST(SceneLoader, DegenerateCameraAndLights) {
+    EXPECT_EQ(errorOf(R"({"camera": {"eye": [0, 0, 0], "target": [0, 0, 0]}})"),
+              "scene.json: /camera/target: expected a point other than /camera/eye");
+    EXPECT_EQ(errorOf(R"({"camera": {"near": 5, "far": 1}})"),
+              "scene.json: /camera/far: expected a value greater than /camera/near");
+    EXPECT_EQ(errorOf(R"({"lights": [{"type": "directional", "direction": [0, 0, 0]}]})"),
+              "scene.json: /lights/0/direction: expected a non-zero direction");
+}
+
+TEST(SceneLoader, SyntaxErrorHasLineAndColumn) {
+    auto e = errorOf("{\n  \"camera\": {\n    \"eye\": [0, 0, 1],\n  }\n}\n");
+    EXPECT_EQ(e.rfind("scene.json:4:3: syntax error", 0), 0u) << e;
+}
+
+TEST(SceneLoader, MissingFile) {
+    try {
+        prism::loadScene("/nonexistent/scene.json");
+        FAIL() << "no error";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(std::string(e.what()), "/nonexistent/scene.json: cannot open the scene file; check the path");
+    }
+}

@@ -1,0 +1,134 @@
+// Scenes rendered with minimal variants: a one-light, no-fog scene's programs have no
+// fog uniforms and a light loop bound of 1; draws with the same feature set share a
+// program; the example scenes match their golden images (tests/golden/scenes/,
+// PRISM_UPDATE_GOLDENS=1 rewrites them, failures write actual and diff images).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+
+#include "prism/feature_variants.hpp"
+#include "prism/gl_context.hpp"
+#include "prism/image_compare.hpp"
+#include "prism/png_io.hpp"
+#include "prism/scene_loader.hpp"
+#include "prism/scene_renderer.hpp"
+#include "prism/shaders.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::unique_ptr<prism::gl::Context> gContext;
+
+class ContextEnvironment : public ::testing::Environment {
+public:
+    void SetUp() override { gContext = prism::gl::createContext(); }
+    void TearDown() override { gContext.reset(); }
+};
+const auto* const kEnv = ::testing::AddGlobalTestEnvironment(new ContextEnvironment);
+
+prism::Scene exampleScene(const std::string& name) {
+    return prism::loadScene(std::string(PRISM_SCENES_DIR) + "/" + name + ".json");
+}
+
+bool envFlag(const char* name) {
+    const char* v = std::getenv(name);
+    return v && *v && std::string(v) != "0";
+}
+
+// Golden thresholds: llvmpipe renders byte-identically run to run, so these only absorb
+// driver or technique changes (ANCHORS.md): a pixel counts as different above 3/255 in
+// a channel; at most 0.1 % of pixels may, and the mean error must stay <= 0.5/255.
+const prism::Thresholds kThresholds{3, 0.001, 0.5};
+
+}  // namespace
+
+TEST(SceneRendering, OneLightNoFogProgramHasNoFogUniformsAndLoopBoundOne) {
+    prism::SceneRenderer renderer(prism::shaders::kCatalog);
+    auto scene = exampleScene("one_light");
+    scene.width = scene.height = 64;
+    renderer.render(scene);
+    ASSERT_EQ(renderer.lastFrame().draws, scene.objects.size());
+    for (const auto& object : scene.objects) {
+        const auto* shader = prism::catalog::findShader(prism::shaders::kCatalog, object.shader);
+        ASSERT_NE(shader, nullptr);
+        const auto& variant = renderer.programs().variantOf(
+            object.shader, prism::variantFor(*shader, prism::featuresOf(scene.lights, false)));
+        for (const auto& d : variant.defines) {
+            if (d.name == "DIRECTIONAL_LIGHTS") EXPECT_EQ(d.value, "1");
+            if (d.name == "FOG") EXPECT_EQ(d.value, "0");
+        }
+        const auto text = prism::catalog::joinChunks(variant.stages.back().chunks);
+        EXPECT_NE(text.find("#define DIRECTIONAL_LIGHTS 1\n"), std::string::npos);
+        // The fog module is not even included (its call sites sit under #if FOG).
+        EXPECT_EQ(text.find("vec3 applyFog("), std::string::npos) << "no fog code without fog";
+        EXPECT_EQ(text.find("uniform float u_fogDensity"), std::string::npos);
+        for (const auto& u : variant.uniforms) {
+            EXPECT_EQ(std::string(u.name).find("u_fog"), std::string::npos) << object.shader;
+            EXPECT_EQ(std::string(u.name).find("u_pointLight"), std::string::npos) << object.shader;
+            if (u.name == "u_lightDirection") EXPECT_EQ(u.arraySize, 1) << object.shader;
+        }
+    }
+}
+
+TEST(SceneRendering, DrawsWithTheSameFeatureSetShareOneProgram) {
+    prism::SceneRenderer renderer(prism::shaders::kCatalog);
+    auto scene = exampleScene("four_lights");  // two phong spheres and a flat floor
+    scene.width = scene.height = 64;
+    renderer.render(scene);
+    EXPECT_EQ(renderer.lastFrame().draws, 3u);
+    EXPECT_EQ(renderer.programs().size(), 2u);
+    EXPECT_EQ(renderer.lastFrame().variants[0], renderer.lastFrame().variants[1]);
+    renderer.render(scene);  // a second frame builds nothing new
+    EXPECT_EQ(renderer.programs().size(), 2u);
+}
+
+TEST(SceneRendering, FogSceneUsesFogVariantsOnly) {
+    prism::SceneRenderer renderer(prism::shaders::kCatalog);
+    auto scene = exampleScene("fog");
+    scene.width = scene.height = 64;
+    renderer.render(scene);
+    for (const auto& v : renderer.lastFrame().variants) EXPECT_NE(v.find("FOG=1"), std::string::npos) << v;
+}
+
+TEST(SceneRendering, UnknownShaderListsTheKnownOnes) {
+    prism::SceneRenderer renderer(prism::shaders::kCatalog);
+    auto scene = prism::parseScene(R"({"objects": [{"material": {"shader": "toon"}}]})", "toon.json");
+    try {
+        renderer.render(scene);
+        FAIL() << "no error";
+    } catch (const prism::UnknownShaderError& e) {
+        EXPECT_NE(std::string(e.what()).find("unknown shader 'toon'; known shaders: flat, gouraud, phong"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
+class SceneGolden : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(SceneGolden, MatchesTheGoldenImage) {
+    auto scene = exampleScene(GetParam());
+    scene.width /= 2;  // 256x192: small goldens, same framing
+    scene.height /= 2;
+    prism::SceneRenderer renderer(prism::shaders::kCatalog);
+    const auto actual = renderer.render(scene);
+    const fs::path golden = fs::path(PRISM_GOLDEN_DIR) / "scenes" / (GetParam() + ".png");
+    if (envFlag("PRISM_UPDATE_GOLDENS")) {
+        prism::writePng(golden, actual);
+        GTEST_SKIP() << "rewrote " << golden;
+    }
+    ASSERT_TRUE(fs::exists(golden)) << golden << " missing; run with PRISM_UPDATE_GOLDENS=1";
+    const auto stats = prism::compareImages(actual, prism::readPng(golden), kThresholds.maxChannelDiff);
+    const bool ok = prism::passes(stats, kThresholds);
+    if (!ok || envFlag("PRISM_SAVE_ACTUAL")) {
+        const fs::path out = fs::path(PRISM_GOLDEN_FAILURE_DIR) / "scenes";
+        prism::writePng(out / (GetParam() + ".actual.png"), actual);
+        prism::writePng(out / (GetParam() + ".diff.png"), stats.diff);
+    }
+    EXPECT_TRUE(ok) << prism::describe(stats, kThresholds);
+}
+
+INSTANTIATE_TEST_SUITE_P(ExampleScenes, SceneGolden, ::testing::Values("one_light", "four_lights", "fog"));
