@@ -1,7 +1,7 @@
 // prism-render: renders one catalogue shader on one mesh, or a JSON scene
 // (--scene FILE.json, docs/scenes.md), into a PNG, headlessly.
-//   prism-render --shader phong --mesh torus --subdiv 3 --shininess 64 \
-//                --light-dir -1,-1,-1 --size 512x512 --out phong.png [--backend egl|osmesa]
+//   prism-render --shader phong --mesh torus --subdiv 3 --shininess 64
+//                --light-dir -1,-1,-1 --size 512x512 --out phong.png [--backend egl or osmesa]
 // --check-finite renders to RGBA32F and exits 3, printing the count, if any pixel is
 // NaN or Inf. Bad input exits 2 with a message and writes no image.
 #include <CLI/CLI.hpp>

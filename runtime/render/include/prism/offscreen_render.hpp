@@ -27,7 +27,7 @@
 
 namespace prism {
 
-// A key light from the upper left front and a weaker fill light, plus ambient.
+// A key light from the upper right front and a weaker fill light from the left, plus ambient.
 Lights defaultLights();
 Camera defaultCamera();
 

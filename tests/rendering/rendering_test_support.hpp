@@ -1,0 +1,82 @@
+// Shared pieces of the rendering-tier tests: the one GL context and program cache of
+// the test binary (a gtest Environment), the catalogue shaders as the tests iterate
+// them (phong twice: plain and BLINN=1), the brightest value each shader may write,
+// and small image helpers (coverage, largest channel, environment flags).
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "prism/gl_context.hpp"
+#include "prism/image.hpp"
+#include "prism/offscreen_render.hpp"
+#include "prism/program_cache.hpp"
+#include "prism/scene_lighting.hpp"
+
+namespace prism::rendering_test {
+
+// One catalogue shader as the tests see it. `label` names it in test output and is the
+// directory of its golden images (tests/golden/<label>/).
+struct ShaderSpec {
+    std::string label;      // "phong-blinn"
+    std::string shader;     // "phong"
+    VariantValues variant;  // {{"BLINN", "1"}}
+    bool lit = true;        // false: unicolor writes the material colour
+    bool specular = true;   // false: flat and smooth are diffuse only
+};
+
+// unicolor, flat, smooth, gouraud, phong, phong-blinn.
+const std::vector<ShaderSpec>& catalogueShaders();
+const ShaderSpec& shaderSpec(const std::string& label);
+
+// The brightest value `spec` may write per channel: the material colour for the unlit
+// shader, maxRadiance(lights, material) for the specular ones, and maxRadiance with the
+// specular strength zeroed for the diffuse-only ones (a tighter bound that also catches
+// a specular term leaking into flat or smooth shading).
+glm::vec3 brightestAllowed(const ShaderSpec& spec, const Lights& lights, const Material& material);
+
+// The process-wide context and program cache, created once by the environment.
+class GlEnvironment : public ::testing::Environment {
+public:
+    void SetUp() override;
+    void TearDown() override;
+};
+gl::Context* context();            // nullptr when creation failed
+const std::string& contextError(); // why it failed
+ProgramCache& programCache();
+
+// Base fixture of every test that renders: fails (not skips) without a context, since a
+// rendering tier that silently skips would hide a broken headless setup.
+class RenderingTest : public ::testing::Test {
+protected:
+    void SetUp() override;
+};
+
+// A RenderJob for `spec` with the mesh prepared for its shader.
+RenderJob jobFor(const ShaderSpec& spec, const geometry::Mesh& mesh, int width, int height);
+
+// Pixels whose RGB differs from `background` by more than `tolerance` in any channel.
+std::size_t coveredPixels(const ImageF& image, const glm::vec4& background, float tolerance = 1e-4f);
+std::size_t coveredPixels(const Image8& image, const glm::vec4& background, int tolerance = 1);
+
+// What a render must never contain, counted over all pixels of an RGBA32F image.
+struct PixelInspection {
+    std::size_t nonFinite = 0;   // a channel is NaN or Inf
+    std::size_t overBright = 0;  // an RGB channel above bound + epsilon, or alpha above 1 + epsilon
+    std::size_t negative = 0;    // a channel below -1e-6
+    std::string firstOverBright; // "pixel (x, y) channel c = v > limit", for messages
+    std::string firstNegative;
+};
+PixelInspection inspectPixels(const ImageF& image, const glm::vec3& bound, float epsilon);
+
+// True when the environment variable is set to something other than "", "0" or "false".
+bool envFlag(const char* name);
+
+}  // namespace prism::rendering_test

@@ -1,0 +1,234 @@
+// Tests of the prism-render command line, run as a real process (the path comes from
+// CMake as PRISM_RENDER_EXECUTABLE): bad shader names, unreadable and malformed OBJ
+// files and bad numbers must exit non-zero with a message and write no image;
+// --check-finite and a normal render must succeed, the latter with a PNG of the
+// requested size.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "prism/png_io.hpp"
+#include "prism/shaders.hpp"
+#include "rendering_test_support.hpp"
+
+namespace prism::rendering_test {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kExitBadInput = 2;
+
+struct CliResult {
+    int exitCode = -1;  // -1 when killed by a signal
+    std::string out;    // stdout
+    std::string err;    // stderr
+};
+
+std::string shellQuote(const std::string& s) {
+    std::string q(1, '\'');
+    for (char c : s) {
+        if (c == '\'')
+            q.append("'\\''");  // close, escaped quote, reopen
+        else
+            q.push_back(c);
+    }
+    q.push_back('\'');
+    return q;
+}
+
+std::string readText(const fs::path& path) {
+    std::ifstream in(path);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// A fresh, empty directory for the current test.
+fs::path testDir() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    fs::path dir = fs::path(PRISM_RENDERING_TEMP_DIR) / (std::string(info->test_suite_name()) + "." + info->name());
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+CliResult runPrismRender(const std::vector<std::string>& args, const fs::path& dir) {
+    const fs::path errFile = dir / "stderr.txt";
+    std::string cmd = shellQuote(PRISM_RENDER_EXECUTABLE);
+    for (const auto& a : args) cmd.append(" ").append(shellQuote(a));
+    cmd.append(" 2>").append(shellQuote(errFile.string()));
+    CliResult r;
+    FILE* pipe = popen(cmd.c_str(), "r");
+    if (!pipe) return r;
+    char buffer[4096];
+    while (std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) r.out.append(buffer, n);
+    const int status = pclose(pipe);
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.err = readText(errFile);
+    return r;
+}
+
+fs::path writeFile(const fs::path& path, const std::string& text) {
+    std::ofstream(path) << text;
+    return path;
+}
+
+// Files in `dir` other than the captured stderr: a failed run must leave none.
+std::vector<std::string> imagesIn(const fs::path& dir) {
+    std::vector<std::string> found;
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+        if (e.path().extension() == ".png" || e.path().string().find(".png.tmp") != std::string::npos)
+            found.push_back(e.path().string());
+    return found;
+}
+
+TEST(PrismRenderCli, UnknownShaderExitsNonZeroListsKnownShadersWritesNothing) {
+    const fs::path dir = testDir();
+    const auto r = runPrismRender({"--shader", "phongg", "--size", "32x32", "--out", (dir / "out.png").string()}, dir);
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_EQ(r.exitCode, kExitBadInput);
+    EXPECT_NE(r.err.find("phongg"), std::string::npos) << r.err;
+    for (const auto& s : shaders::kCatalog.shaders)
+        EXPECT_NE(r.err.find(std::string(s.name)), std::string::npos) << "known shader " << s.name << " not listed: " << r.err;
+    EXPECT_TRUE(imagesIn(dir).empty());
+}
+
+TEST(PrismRenderCli, UnknownVariantExitsWithBadInputWritesNothing) {
+    const fs::path dir = testDir();
+    const auto r = runPrismRender({"--shader", "phong", "--variant", "BLINN=7", "--size", "32x32", "--out",
+                                   (dir / "out.png").string()},
+                                  dir);
+    EXPECT_EQ(r.exitCode, kExitBadInput) << r.err;
+    EXPECT_NE(r.err.find("BLINN"), std::string::npos) << r.err;
+    EXPECT_TRUE(imagesIn(dir).empty());
+}
+
+TEST(PrismRenderCli, MissingObjFileNamesTheFileWritesNothing) {
+    const fs::path dir = testDir();
+    const fs::path obj = dir / "no-such-mesh.obj";
+    const auto r = runPrismRender({"--shader", "phong", "--mesh", obj.string(), "--out", (dir / "out.png").string()}, dir);
+    EXPECT_EQ(r.exitCode, kExitBadInput) << r.err;
+    EXPECT_NE(r.err.find(obj.string()), std::string::npos) << r.err;
+    EXPECT_TRUE(imagesIn(dir).empty());
+}
+
+TEST(PrismRenderCli, ObjPathThatIsADirectoryNamesTheFileWritesNothing) {
+    // Unreadable even for root (which file permissions do not stop).
+    const fs::path dir = testDir();
+    const fs::path obj = dir / "folder.obj";
+    fs::create_directories(obj);
+    const auto r = runPrismRender({"--shader", "phong", "--mesh", obj.string(), "--out", (dir / "out.png").string()}, dir);
+    EXPECT_EQ(r.exitCode, kExitBadInput) << r.err;
+    EXPECT_NE(r.err.find(obj.string()), std::string::npos) << r.err;
+    EXPECT_TRUE(imagesIn(dir).empty());
+}
+
+TEST(PrismRenderCli, UnreadableObjFileNamesTheFileWritesNothing) {
+    if (::geteuid() == 0) GTEST_SKIP() << "running as root: file permissions do not stop reading";
+    const fs::path dir = testDir();
+    const fs::path obj = writeFile(dir / "locked.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    fs::permissions(obj, fs::perms::none);
+    const auto r = runPrismRender({"--shader", "phong", "--mesh", obj.string(), "--out", (dir / "out.png").string()}, dir);
+    fs::permissions(obj, fs::perms::owner_all);
+    EXPECT_EQ(r.exitCode, kExitBadInput) << r.err;
+    EXPECT_NE(r.err.find(obj.string()), std::string::npos) << r.err;
+    EXPECT_TRUE(imagesIn(dir).empty());
+}
+
+TEST(PrismRenderCli, ObjFaceIndexOutOfRangeNamesFileAndLineWritesNothing) {
+    const fs::path dir = testDir();
+    const fs::path obj = writeFile(dir / "bad-face.obj", "# a triangle that points past the vertex list\n"
+                                                         "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
+    const auto r = runPrismRender({"--shader", "phong", "--mesh", obj.string(), "--out", (dir / "out.png").string()}, dir);
+    EXPECT_EQ(r.exitCode, kExitBadInput) << r.err;
+    EXPECT_NE(r.err.find(obj.string() + ":5"), std::string::npos) << "expected file:line " << obj << ":5 in: " << r.err;
+    EXPECT_TRUE(imagesIn(dir).empty());
+}
+
+TEST(PrismRenderCli, ObjVertexWithNonNumberNamesFileAndLineWritesNothing) {
+    const fs::path dir = testDir();
+    const fs::path obj = writeFile(dir / "bad-vertex.obj", "v 0 0 0\nv 1 abc 0\nv 0 1 0\nf 1 2 3\n");
+    const auto r = runPrismRender({"--shader", "phong", "--mesh", obj.string(), "--out", (dir / "out.png").string()}, dir);
+    EXPECT_EQ(r.exitCode, kExitBadInput) << r.err;
+    EXPECT_NE(r.err.find(obj.string() + ":2"), std::string::npos) << "expected file:line " << obj << ":2 in: " << r.err;
+    EXPECT_TRUE(imagesIn(dir).empty());
+}
+
+// --- Bad numbers: exit 2, a message naming the option, no image ---------------------
+
+struct BadNumber {
+    std::string option, value, testName;
+};
+
+class PrismRenderCliBadNumber : public ::testing::TestWithParam<BadNumber> {};
+
+TEST_P(PrismRenderCliBadNumber, ExitsWithBadInputNamesOptionWritesNothing) {
+    const BadNumber& p = GetParam();
+    const fs::path dir = testDir();
+    const auto r = runPrismRender({"--shader", "phong", "--subdiv", "0", p.option, p.value, "--out",
+                                   (dir / "out.png").string()},
+                                  dir);
+    EXPECT_EQ(r.exitCode, kExitBadInput) << r.err;
+    EXPECT_NE(r.err.find(p.option), std::string::npos) << "message should name " << p.option << ": " << r.err;
+    EXPECT_TRUE(imagesIn(dir).empty());
+}
+
+INSTANTIATE_TEST_SUITE_P(Options, PrismRenderCliBadNumber,
+                         ::testing::Values(BadNumber{"--shininess", "abc", "ShininessNotANumber"},
+                                           BadNumber{"--shininess", "-1", "ShininessNegative"},
+                                           BadNumber{"--shininess", "inf", "ShininessInfinite"},
+                                           BadNumber{"--light-dir", "1,2", "LightDirTwoComponents"},
+                                           BadNumber{"--light-dir", "1,nan,2", "LightDirNaN"},
+                                           BadNumber{"--size", "0x5", "SizeZeroWidth"},
+                                           BadNumber{"--size", "64", "SizeWithoutHeight"}),
+                         [](const ::testing::TestParamInfo<BadNumber>& info) { return info.param.testName; });
+
+// --- Successful runs -----------------------------------------------------------------
+
+TEST(PrismRenderCli, CheckFiniteOnNormalRenderExitsZero) {
+    const fs::path dir = testDir();
+    const auto r = runPrismRender({"--shader", "phong", "--mesh", "sphere", "--subdiv", "1", "--size", "48x48",
+                                   "--check-finite"},
+                                  dir);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("finite"), std::string::npos) << r.out;
+    EXPECT_TRUE(imagesIn(dir).empty()) << "--check-finite without --out writes no image";
+}
+
+TEST(PrismRenderCli, SuccessfulRenderWritesPngOfRequestedSize) {
+    const fs::path dir = testDir();
+    const fs::path out = dir / "phong-blinn.png";
+    const auto r = runPrismRender({"--shader", "phong", "--variant", "BLINN=1", "--mesh", "torus", "--subdiv", "1",
+                                   "--shininess", "64", "--light-dir", "-1,-1,-1", "--size", "96x64", "--out",
+                                   out.string()},
+                                  dir);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    ASSERT_TRUE(fs::exists(out));
+    const Image8 image = readPng(out);
+    EXPECT_EQ(image.width, 96);
+    EXPECT_EQ(image.height, 64);
+    EXPECT_GT(coveredPixels(image, RenderJob{}.background), image.pixelCount() / 20) << "the image is (almost) blank";
+}
+
+TEST(PrismRenderCli, CheckFiniteWithOutWritesPng) {
+    const fs::path dir = testDir();
+    const fs::path out = dir / "gouraud.png";
+    const auto r = runPrismRender({"--shader", "gouraud", "--mesh", "icosphere", "--subdiv", "1", "--size", "40x30",
+                                   "--check-finite", "--out", out.string()},
+                                  dir);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const Image8 image = readPng(out);
+    EXPECT_EQ(image.width, 40);
+    EXPECT_EQ(image.height, 30);
+}
+
+}  // namespace
+}  // namespace prism::rendering_test
