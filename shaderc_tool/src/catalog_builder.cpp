@@ -30,8 +30,8 @@ std::string moduleIdentifier(const fs::path& relative) {
     return id;
 }
 
-// Every .glsl below the include dirs (first directory wins for a shadowed name),
-// plus any included file outside them.
+// Every .glsl directly in the include dirs (not in subdirectories; the first directory
+// wins for a shadowed name), plus any included file outside them.
 ModuleIndex indexModules(const Options& o, const std::set<std::string>& extraFiles, const SourceReader& reader,
                          DiagnosticSink& sink) {
     ModuleIndex index;
@@ -50,7 +50,7 @@ ModuleIndex indexModules(const Options& o, const std::set<std::string>& extraFil
     for (const auto& dir : o.includeDirs) {
         std::error_code ec;
         std::vector<fs::path> files;
-        for (auto it = fs::recursive_directory_iterator(dir, ec); !ec && it != fs::recursive_directory_iterator(); ++it)
+        for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator(); ++it)
             if (it->is_regular_file() && it->path().extension() == ".glsl") files.push_back(it->path());
         std::sort(files.begin(), files.end());
         for (const auto& f : files) add(moduleIdentifier(f.lexically_relative(dir)), f.string());
