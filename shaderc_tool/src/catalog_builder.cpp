@@ -142,6 +142,19 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
         rc.stagePaths.push_back(std::move(stagePaths));
     }
 
+    // A "*" filter must name axes that some shader declares, or it is a typo.
+    for (const auto& f : filters.filters) {
+        if (f.shader != "*") continue;
+        for (const auto& [name, value] : f.fixed) {
+            bool declared = false;
+            for (const auto& cs : rc.data.shaders)
+                for (const auto& axis : cs.axes) declared = declared || axis.name == name;
+            if (!declared)
+                sink.report(makeError("", 0, 0, "--variant *:" + name + "=" + value + ": no shader declares a variant '" +
+                                                     name + "'"));
+        }
+    }
+
     // Modules: the include dirs' .glsl files plus anything included from elsewhere.
     std::set<std::string> extra;
     for (const auto& [canonical, path] : includedPath) {

@@ -78,8 +78,16 @@ bool matches(const VariantFilter& f, const std::vector<std::pair<std::string, st
 ChoicesResult variantChoices(const std::string& shader, const std::vector<Axis>& axes,
                              const std::vector<VariantFilter>& filters) {
     ChoicesResult r;
-    std::vector<const VariantFilter*> mine;
+    std::vector<VariantFilter> mine;
     for (const auto& f : filters) {
+        if (f.shader == "*") {  // every shader: only the axes it declares
+            VariantFilter own{shader, {}};
+            for (const auto& fixed : f.fixed)
+                if (std::any_of(axes.begin(), axes.end(), [&](const Axis& a) { return a.name == fixed.first; }))
+                    own.fixed.push_back(fixed);
+            mine.push_back(std::move(own));
+            continue;
+        }
         if (f.shader != shader) continue;
         for (const auto& [name, value] : f.fixed) {
             auto ax = std::find_if(axes.begin(), axes.end(), [&](const Axis& a) { return a.name == name; });
@@ -90,7 +98,7 @@ ChoicesResult variantChoices(const std::string& shader, const std::vector<Axis>&
                 r.diagnostics.push_back(makeError("", 0, 0, "--variant " + shader + ": '" + name +
                                                                "' has no value '" + value + "'"));
         }
-        mine.push_back(&f);
+        mine.push_back(f);
     }
     if (!r.diagnostics.empty()) return r;
 
@@ -99,7 +107,7 @@ ChoicesResult variantChoices(const std::string& shader, const std::vector<Axis>&
         std::vector<std::pair<std::string, std::string>> defines;
         for (std::size_t a = 0; a < axes.size(); ++a) defines.emplace_back(axes[a].name, axes[a].values[index[a]]);
         bool wanted = mine.empty() ||
-                      std::any_of(mine.begin(), mine.end(), [&](const VariantFilter* f) { return matches(*f, defines); });
+                      std::any_of(mine.begin(), mine.end(), [&](const VariantFilter& f) { return matches(f, defines); });
         if (wanted) r.choices.push_back({variantName(defines), defines});
         // Odometer increment, last axis fastest.
         std::size_t a = axes.size();

@@ -43,7 +43,9 @@ struct FilterParseResult {
 FilterParseResult parseVariantFilters(const std::vector<std::string>& specs);
 
 // Every combination (first axis varies slowest), restricted to the filters that name
-// `shader` when there are any. Filters naming unknown axes or values are errors.
+// `shader` when there are any. Filters naming unknown axes or values are errors. A
+// filter for shader "*" applies to every shader, with only the axes that shader declares
+// (`--variant '*:DIRECTIONAL_LIGHTS=2'` builds just the two-light variants everywhere).
 struct ChoicesResult {
     std::vector<VariantChoice> choices;
     std::vector<Diagnostic> diagnostics;

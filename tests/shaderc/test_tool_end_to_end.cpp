@@ -26,10 +26,7 @@ const std::string kBaseResults = kSource + "/tests/shaderc/baseResults";
 // The project catalogue with the light counts pinned (2 directional, 1 point), so the
 // baseline stays small: the other light variants differ only in their #defines.
 std::string catalogueArgs() {
-    std::string pinned;
-    for (const char* s : {"flat", "smooth", "gouraud", "phong"})
-        pinned += std::string(" --variant ") + s + ":DIRECTIONAL_LIGHTS=2,POINT_LIGHTS=1";
-    return "--base-dir " + kSource + pinned + " -I " + kSource + "/modules --contract " + kSource +
+    return "--base-dir " + kSource + " --variant '*:DIRECTIONAL_LIGHTS=2,POINT_LIGHTS=1' -I " + kSource + "/modules --contract " + kSource +
            "/modules/contract.json " + kSource + "/shader_sources";
 }
 
@@ -205,4 +202,16 @@ TEST(ToolVariants, FilterEmitsOnlyTheAskedVariants) {
     EXPECT_NE(header.find("\"FOG=1,LIGHTS=2\""), std::string::npos);
     EXPECT_EQ(header.find("\"FOG=0,LIGHTS=1\""), std::string::npos);
     EXPECT_EQ(runShaderc("--check --variant tinted:FOG=7 " + fixtureArgs(), dir.str()).exitCode, 1);
+}
+
+TEST(ToolVariants, WildcardFilterAndItsTypoCheck) {
+    ScratchDir dir("wildcard");
+    auto run = runShaderc("--variant '*:LIGHTS=2' -o w.hpp " + fixtureArgs(), dir.str());
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    auto header = readFile(dir.path() / "w.hpp");
+    EXPECT_NE(header.find("\"FOG=1,LIGHTS=2\""), std::string::npos);
+    EXPECT_EQ(header.find("LIGHTS=1\""), std::string::npos);
+    auto typo = runShaderc("--check --variant '*:LIGTHS=2' " + fixtureArgs(), dir.str());
+    EXPECT_EQ(typo.exitCode, 1);
+    EXPECT_NE(typo.output.find("no shader declares a variant 'LIGTHS'"), std::string::npos) << typo.output;
 }

@@ -60,3 +60,17 @@ TEST(Variants, MalformedFilterSpec) {
     EXPECT_EQ(f.diagnostics.size(), 3u);
     EXPECT_TRUE(f.filters.empty());
 }
+
+TEST(Variants, WildcardFilterAppliesToEveryShaderWithThatAxis) {
+    auto f = parseVariantFilters({"*:LIGHTS=2"});
+    ASSERT_TRUE(f.diagnostics.empty());
+    std::vector<Axis> withLights{{"FOG", {"0", "1"}}, {"LIGHTS", {"1", "2", "4"}}};
+    auto c = variantChoices("lit", withLights, f.filters);
+    ASSERT_TRUE(c.diagnostics.empty());
+    ASSERT_EQ(c.choices.size(), 2u);
+    EXPECT_EQ(c.choices[0].name, "FOG=0,LIGHTS=2");
+    std::vector<Axis> unlit{{"FOG", {"0", "1"}}};
+    auto u = variantChoices("unlit", unlit, f.filters);
+    EXPECT_TRUE(u.diagnostics.empty());
+    EXPECT_EQ(u.choices.size(), 2u);  // the axis it lacks is ignored
+}
