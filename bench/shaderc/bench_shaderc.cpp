@@ -79,6 +79,9 @@ struct Settings {
     std::string workDir;  // empty: mkdtemp under $TMPDIR or /tmp
     bool keep = false;
     bool cmakeStep = true;
+    // The light-count axes multiply the catalogue 15-fold; by default the bench builds
+    // the variants an application with two directional and one point light uses.
+    bool allVariants = false;
 };
 
 [[noreturn]] void usage(const std::string& problem) {
@@ -86,14 +89,15 @@ struct Settings {
                  "prism_bench_shaderc: %s\n"
                  "usage: prism_bench_shaderc [--runs N] [--shaders N] [--jobs N] [--csv FILE]\n"
                  "         [--shaderc PATH] [--glslang PATH] [--source-dir DIR] [--work-dir DIR]\n"
-                 "         [--keep] [--no-cmake]\n"
+                 "         [--keep] [--no-cmake] [--all-variants]\n"
                  "  --runs N      timed runs per case, after one warm-up round (default 15)\n"
                  "  --shaders N   shaders in the synthetic catalogue, copies of the project's (default 40)\n"
                  "  --jobs N      -j of the parallel prism-shaderc --check (default: all cores)\n"
                  "  --csv FILE    where the CSV goes (default shaderc_bench.csv)\n"
                  "  --work-dir D  scratch directory (default: a new one under $TMPDIR, removed at exit)\n"
                  "  --keep        keep the scratch directory\n"
-                 "  --no-cmake    skip the CMake/ninja cases (e) and (f)\n",
+                 "  --no-cmake    skip the CMake/ninja cases (e) and (f)\n"
+                 "  --all-variants  every light-count variant (default: '*:DIRECTIONAL_LIGHTS=2,POINT_LIGHTS=1')\n",
                  problem.c_str());
     std::exit(problem.empty() ? 0 : 2);
 }
@@ -113,6 +117,7 @@ Settings parseArguments(int argc, char** argv) {
         if (flag == "-h" || flag == "--help") usage("");
         if (flag == "--keep") { s.keep = true; continue; }
         if (flag == "--no-cmake") { s.cmakeStep = false; continue; }
+        if (flag == "--all-variants") { s.allVariants = true; continue; }
         if (i + 1 >= argc) usage("missing value after " + flag);
         const char* value = argv[++i];
         if (flag == "--runs") s.runs = parsePositive(flag, value);
@@ -326,6 +331,10 @@ int countProjectShaders(const Settings& s) {
 Command shadercCommand(const Settings& s, const Catalogue& c, std::initializer_list<std::string> extra) {
     Command cmd{s.shaderc};
     cmd.insert(cmd.end(), extra.begin(), extra.end());
+    if (!s.allVariants) {
+        cmd.push_back("--variant");
+        cmd.push_back("*:DIRECTIONAL_LIGHTS=2,POINT_LIGHTS=1");
+    }
     for (std::string a : {std::string("-I"), c.modules.string(), std::string("--contract"), c.contract.string(),
                           c.sources.string()})
         cmd.push_back(a);
@@ -465,7 +474,8 @@ void addCases(const Settings& s, const Catalogue& cat, bool withCmake, std::vect
             << "/*.frag\")\n"
                "prism_add_shaders(bench_shaders SOURCES ${sources} MODULE_DIRS \""
             << cat.modules.string() << "\" CONTRACT \"" << cat.contract.string()
-            << "\" HEADER bench/shaders.hpp)\n"
+            << "\" HEADER bench/shaders.hpp"
+            << (s.allVariants ? "" : " VARIANTS \"*:DIRECTIONAL_LIGHTS=2,POINT_LIGHTS=1\"") << ")\n"
                "add_custom_target(bench_all ALL)\n"
                "add_dependencies(bench_all bench_shaders_generate)\n";
     }
