@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 BUILD_DIR=${BUILD_DIR:-build}
 OUT_DIR=${1:-gallery}
-cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPRISM_BUILD_TESTS=OFF -DPRISM_BUILD_BENCH=OFF
+cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPRISM_BUILD_RUNTIME=ON
 cmake --build "$BUILD_DIR" -j "$(nproc)" --target prism-gallery
 "$BUILD_DIR"/runtime/render/prism-gallery --out "$OUT_DIR"
 echo "gallery written to $OUT_DIR/gallery.png"
