@@ -1,0 +1,44 @@
+// GL drawing of the fog billboards (prism/rain/fog_billboards.hpp): one small vertex
+// buffer of billboard centres, the animated noise texture array and the
+// fog_billboards program (geometry shader). Created by RainScene only when the scene's
+// fog has billboards (strength > 0).
+//
+//     prism::rain::FogSystem fog(programs, sceneFog, camera.eye);
+//     fog.update(dt, camera.eye, wind);
+//     fog.draw(camera, aspect, &sceneFog.distance, time);
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include "prism/camera.hpp"
+#include "prism/rain/rain_programs.hpp"
+#include "prism/rain/fog_billboards.hpp"
+#include "prism/rain/gl_resources.hpp"
+
+namespace prism::rain {
+
+class FogSystem {
+public:
+    FogSystem(RainPrograms& programs, const SceneFog& fog, const glm::vec3& eye);
+    FogSystem(const FogSystem&) = delete;
+    FogSystem& operator=(const FogSystem&) = delete;
+
+    void update(float dt, const glm::vec3& eye, const glm::vec3& wind);
+    // Premultiplied blending, depth test on, depth writes off; `distanceFog` non-null
+    // selects the FOG=1 variant.
+    void draw(const Camera& camera, float aspect, const Fog* distanceFog, float timeSeconds);
+    void setStrength(float strength);  // [0, 1]
+    float strength() const { return params_.strength; }
+    const FogBillboardSimulation& simulation() const { return simulation_; }
+
+private:
+    RainPrograms& programs_;
+    FogBillboardParams params_;
+    FogBillboardSimulation simulation_;
+    FogNoiseArray noise_;
+    GlBuffer buffer_;
+    GlVertexArray vao_;
+    GlTexture noiseTexture_;
+};
+
+}  // namespace prism::rain

@@ -1,0 +1,112 @@
+// The GPU rain: particles in one GL buffer, seeded and stepped by compute shaders
+// (rain_init.comp, rain_update.comp), drawn as light-dependent streaks with one of
+// three techniques. Create one only when a scene has rain (see prism/rain/rain_scene.hpp):
+// nothing is allocated or built before the first particle needs it.
+//
+//     prism::rain::RainPrograms programs;
+//     prism::rain::RainSystem rain(programs, params, camera.eye);
+//     rain.update(1.0f / 60.0f, camera.eye);              // compute dispatch
+//     rain.draw({.camera = camera, .aspect = 1.f, .viewportHeight = 800, .lights = lights});
+//     std::vector<prism::rain::Particle> ps = rain.readParticles();   // tests
+//
+// Needs a current GL >= 4.3 context (compute shaders) for its whole life; throws
+// ComputeUnavailableError otherwise. Memory: 48 bytes per particle (the simulation
+// buffer is also the vertex buffer of every technique) plus the 450-layer streak
+// texture array (460 KB).
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "prism/camera.hpp"
+#include "prism/rain/rain_programs.hpp"
+#include "prism/rain/compute.hpp"
+#include "prism/rain/gl_resources.hpp"
+#include "prism/rain/rain_params.hpp"
+#include "prism/rain/rain_simulation.hpp"
+#include "prism/scene_lighting.hpp"
+
+namespace prism::rain {
+
+enum class StreakTechnique { GeometryShader, Instanced, PointSprites };
+std::string_view techniqueName(StreakTechnique t);  // "gs-quads", "instanced-quads", "point-sprites"
+std::optional<StreakTechnique> parseTechnique(std::string_view name);  // also "gs", "instanced", "points"
+std::string_view techniqueShader(StreakTechnique t);  // rain_streaks, rain_instanced, rain_points
+
+// The rain scene's lights: ambient, a directional sun and a lamp with falloff
+// (modules/rain/drop_lights.glsl).
+struct RainLights {
+    glm::vec3 ambient{0.13f, 0.14f, 0.16f};
+    DirectionalLight sun{glm::vec3(-0.3f, -0.8f, -0.5f), glm::vec3(0.42f, 0.42f, 0.48f)};
+    PointLight lamp{glm::vec3(2.0f, 3.2f, -6.0f), glm::vec3(8.0f, 6.2f, 3.8f)};
+    float lampRange = 1.5f;  // m: the lamp's light halves at this distance
+};
+
+struct RainDrawInputs {
+    Camera camera;
+    float aspect = 1.0f;
+    int viewportHeight = 512;        // pixels (minimum streak width)
+    RainLights lights;
+    const Fog* fog = nullptr;        // non-null: the FOG=1 variant
+    StreakTechnique technique = StreakTechnique::GeometryShader;
+};
+
+class RainSystem {
+public:
+    static constexpr std::size_t kBytesPerParticle = sizeof(Particle);
+
+    RainSystem(RainPrograms& programs, const RainParams& params, const glm::vec3& eye);
+    RainSystem(const RainSystem&) = delete;
+    RainSystem& operator=(const RainSystem&) = delete;
+
+    // One step of clampStep(dt) around the camera at `eye` (finite).
+    void update(float dt, const glm::vec3& eye);
+    // Draws into the bound framebuffer with blending, depth test on, depth writes off.
+    void draw(const RainDrawInputs& in);
+
+    // The count follows particleCountFor(); more particles are seeded around the last
+    // camera (the buffer grows, keeping the old ones), fewer just stop being drawn.
+    void setIntensity(float intensity);
+    void setWind(const WindParams& wind);
+
+    std::uint32_t particleCount() const { return count_; }
+    std::uint32_t capacity() const { return capacity_; }
+    const RainParams& params() const { return params_; }
+    glm::vec3 wind() const { return wind_; }
+    glm::vec3 center() const { return center_; }
+    float fallSpeed() const { return rate_.fallSpeed; }
+    std::uint64_t steps() const { return steps_; }
+    // Bytes of GPU memory: particle buffer + streak texture (0 before the first particle).
+    std::size_t gpuBytes() const;
+    unsigned particleBuffer() const { return particles_.id(); }
+
+    // The first particleCount() particles, read back from the GPU.
+    std::vector<Particle> readParticles() const;
+
+private:
+    void resize(std::uint32_t count);
+    void seedRange(std::uint32_t first, std::uint32_t end);
+    void ensureStreakTexture();
+    void bindAttributes(GlVertexArray& vao, unsigned divisor);
+
+    RainPrograms& programs_;
+    ComputeFunctions gl43_;
+    RainParams params_;
+    RainRate rate_;
+    glm::vec3 wind_{0.0f};
+    glm::vec3 center_{0.0f};
+    std::uint32_t count_ = 0;
+    std::uint32_t capacity_ = 0;
+    std::uint64_t steps_ = 0;
+    GlBuffer particles_;
+    std::optional<GlVertexArray> pointsVao_;     // GS and point sprites: one vertex per particle
+    std::optional<GlVertexArray> instancedVao_;  // instanced quads: divisor 1
+    std::optional<GlTexture> streakTexture_;
+    std::size_t streakTextureBytes_ = 0;
+};
+
+}  // namespace prism::rain

@@ -1,0 +1,183 @@
+// Table 2, the rate interpolation, validation and the particle-count formula
+// (see prism/rain/rain_params.hpp).
+#include "prism/rain/rain_params.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <sstream>
+
+#include "prism/rain/random.hpp"
+#include "prism/rain/rain_simulation.hpp"
+
+namespace prism::rain {
+namespace {
+
+// The seed's Table 2 (intensity cm/h, "Menge" mm, fall speed m/s, drops per m^2 per s).
+constexpr std::array<RainClassInfo, 6> kClasses = {{
+    {RainClass::Drizzle, "drizzle", 0.025f, 0.96f, 4.1f, 151.0f},
+    {RainClass::Light, "light", 0.102f, 1.24f, 4.8f, 280.0f},
+    {RainClass::Moderate, "moderate", 1.381f, 1.60f, 5.7f, 495.0f},
+    {RainClass::Heavy, "heavy", 1.520f, 2.05f, 6.7f, 495.0f},
+    {RainClass::Excessive, "excessive", 4.064f, 2.40f, 7.3f, 818.0f},
+    {RainClass::Cloudburst, "cloudburst", 10.160f, 2.85f, 7.9f, 1216.0f},
+}};
+
+std::string str(float v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+
+[[noreturn]] void fail(const std::string& what) { throw RainParameterError("rain: " + what); }
+
+void requireFinite(float v, const char* name, const char* range) {
+    if (!std::isfinite(v)) fail(std::string(name) + " must be a finite number " + range + " (got " + str(v) + ")");
+}
+
+}  // namespace
+
+std::span<const RainClassInfo> rainClasses() { return kClasses; }
+
+const RainClassInfo& rainClassInfo(RainClass id) {
+    for (const auto& c : kClasses)
+        if (c.id == id) return c;
+    throw std::invalid_argument("rain: unknown RainClass");
+}
+
+std::optional<RainClass> parseRainClass(std::string_view name) {
+    std::string lower;
+    for (char c : name) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    for (const auto& c : kClasses)
+        if (c.name == lower) return c.id;
+    return std::nullopt;
+}
+
+void validateIntensity(float intensity) {
+    if (!std::isfinite(intensity) || intensity < 0.0f)
+        fail("intensity must be a finite number >= 0 cm/h (Table 2: drizzle 0.025 ... cloudburst 10.16; got " +
+             str(intensity) + ")");
+}
+
+RainClass nearestRainClass(float intensity) {
+    validateIntensity(intensity);
+    const float li = std::log(std::max(intensity, 1e-6f));
+    RainClass best = kClasses.front().id;
+    float bestDistance = INFINITY;
+    for (const auto& c : kClasses) {
+        const float d = std::fabs(std::log(c.intensity) - li);
+        if (d < bestDistance) {
+            bestDistance = d;
+            best = c.id;
+        }
+    }
+    return best;
+}
+
+RainRate rainRateFor(float intensity) {
+    validateIntensity(intensity);
+    const auto& first = kClasses.front();
+    const auto& last = kClasses.back();
+    if (intensity <= first.intensity)
+        return {first.fallSpeed, first.dropsPerSquareMetreSecond * intensity / first.intensity};
+    if (intensity >= last.intensity)
+        return {last.fallSpeed, last.dropsPerSquareMetreSecond * intensity / last.intensity};
+    for (std::size_t i = 0; i + 1 < kClasses.size(); ++i) {
+        const auto& a = kClasses[i];
+        const auto& b = kClasses[i + 1];
+        if (intensity <= b.intensity) {
+            const float t = (std::log(intensity) - std::log(a.intensity)) / (std::log(b.intensity) - std::log(a.intensity));
+            return {a.fallSpeed + t * (b.fallSpeed - a.fallSpeed),
+                    a.dropsPerSquareMetreSecond + t * (b.dropsPerSquareMetreSecond - a.dropsPerSquareMetreSecond)};
+        }
+    }
+    return {last.fallSpeed, last.dropsPerSquareMetreSecond};
+}
+
+void validateWind(const WindParams& wind) {
+    if (!std::isfinite(wind.strength) || wind.strength < 0.0f)
+        fail("wind strength must be a finite number >= 0 m/s (got " + str(wind.strength) + ")");
+    if (wind.directionDegrees && !std::isfinite(*wind.directionDegrees))
+        fail("wind direction must be a finite angle in degrees (got " + str(*wind.directionDegrees) + ")");
+}
+
+void validate(const RainParams& p) {
+    validateIntensity(p.intensity);
+    validateWind(p.wind);
+    requireFinite(p.radius, "radius", "> 0 m");
+    if (p.radius <= 0.0f || p.radius > 1.0e4f) fail("radius must be in (0, 10000] m (got " + str(p.radius) + ")");
+    requireFinite(p.height, "height", "> 0 m");
+    if (p.height <= 0.0f || p.height > 1.0e4f) fail("height must be in (0, 10000] m (got " + str(p.height) + ")");
+    requireFinite(p.below, "below", "in [0, height]");
+    if (p.below < 0.0f || p.below > p.height)
+        fail("below must be in [0, height = " + str(p.height) + "] m (got " + str(p.below) + ")");
+    if (p.lodRings < 1 || p.lodRings > 16) fail("lodRings must be in 1..16 (got " + std::to_string(p.lodRings) + ")");
+    requireFinite(p.lodFalloff, "lodFalloff", "in (0, 1]");
+    if (p.lodFalloff <= 0.0f || p.lodFalloff > 1.0f)
+        fail("lodFalloff must be in (0, 1] (got " + str(p.lodFalloff) + ")");
+    requireFinite(p.particlesPerDrop, "particlesPerDrop", "in (0, 1]");
+    if (p.particlesPerDrop <= 0.0f || p.particlesPerDrop > 1.0f)
+        fail("particlesPerDrop must be in (0, 1] (got " + str(p.particlesPerDrop) + ")");
+    if (p.budget > kMaxParticles)
+        fail("budget must be at most 2^24 = " + std::to_string(kMaxParticles) + " particles (got " +
+             std::to_string(p.budget) + ")");
+    if (p.fixedCount && *p.fixedCount > kMaxParticles)
+        fail("fixedCount must be at most 2^24 = " + std::to_string(kMaxParticles) + " particles (got " +
+             std::to_string(*p.fixedCount) + ")");
+    requireFinite(p.jitter, "jitter", ">= 0 m/s");
+    if (p.jitter < 0.0f || p.jitter > 100.0f) fail("jitter must be in [0, 100] m/s (got " + str(p.jitter) + ")");
+    const auto& s = p.streaks;
+    requireFinite(s.exposure, "streaks.exposure", "> 0 s");
+    if (s.exposure <= 0.0f || s.exposure > 1.0f) fail("streaks.exposure must be in (0, 1] s (got " + str(s.exposure) + ")");
+    requireFinite(s.width, "streaks.width", "> 0 m");
+    requireFinite(s.widthPerMetre, "streaks.widthPerMetre", ">= 0");
+    if (s.width <= 0.0f || s.widthPerMetre < 0.0f)
+        fail("streaks.width must be > 0 and streaks.widthPerMetre >= 0 (got " + str(s.width) + ", " +
+             str(s.widthPerMetre) + ")");
+    requireFinite(s.opacity, "streaks.opacity", "in [0, 1]");
+    if (s.opacity < 0.0f || s.opacity > 1.0f) fail("streaks.opacity must be in [0, 1] (got " + str(s.opacity) + ")");
+    requireFinite(s.falloffDistance, "streaks.falloffDistance", "> 0 m");
+    if (s.falloffDistance <= 0.0f) fail("streaks.falloffDistance must be > 0 m (got " + str(s.falloffDistance) + ")");
+}
+
+double lodWeightedArea(float radius, int rings, float falloff) {
+    const double ringWidth = static_cast<double>(radius) / rings;
+    double area = 0.0, w = 1.0;
+    for (int k = 0; k < rings; ++k) {
+        area += w * 3.14159265358979323846 * ringWidth * ringWidth * (2.0 * k + 1.0);
+        w *= falloff;
+    }
+    return area;
+}
+
+double expectedParticleCount(const RainParams& p) {
+    validate(p);
+    const RainRate rate = rainRateFor(p.intensity);
+    return static_cast<double>(p.particlesPerDrop) * rate.dropsPerCubicMetre() * p.height *
+           lodWeightedArea(p.radius, p.lodRings, p.lodFalloff);
+}
+
+std::uint32_t particleCountFor(const RainParams& p) {
+    const double expected = expectedParticleCount(p);  // validates
+    if (p.fixedCount) return *p.fixedCount;
+    const double capped = std::min<double>(std::round(expected), std::min(p.budget, kMaxParticles));
+    return static_cast<std::uint32_t>(capped);
+}
+
+glm::vec3 windVector(const RainParams& p) {
+    validateWind(p.wind);
+    const float degrees = p.wind.directionDegrees
+                              ? *p.wind.directionDegrees
+                              : 360.0f * rainUniform(p.seed, 0xFFFFFFFFu, kChannelWindDirection);
+    const float radians = degrees * 0.017453292519943295f;
+    return {p.wind.strength * std::cos(radians), 0.0f, p.wind.strength * std::sin(radians)};
+}
+
+glm::vec3 cylinderCenter(const RainParams& p, const glm::vec3& eye) {
+    return {eye.x, eye.y - p.below + 0.5f * p.height, eye.z};
+}
+
+}  // namespace prism::rain

@@ -1,0 +1,244 @@
+// The GPU rain (see prism/rain/rain_system.hpp).
+#include "prism/rain/rain_system.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <string>
+
+#include "prism/gl.hpp"
+#include "prism/rain/streak_texture.hpp"
+
+namespace prism::rain {
+namespace {
+
+constexpr int kStreakTextureUnit = 0;
+
+int locationOf(const catalog::Catalog& c, std::string_view name) {
+    for (const auto& a : c.contractAttributes)
+        if (a.name == name) return a.location;
+    throw std::logic_error("rain: the binding contract has no attribute '" + std::string(name) + "'");
+}
+
+VariantValues fogVariant(const Fog* fog) { return {{"FOG", fog ? "1" : "0"}}; }
+
+}  // namespace
+
+std::string_view techniqueName(StreakTechnique t) {
+    switch (t) {
+    case StreakTechnique::GeometryShader: return "gs-quads";
+    case StreakTechnique::Instanced: return "instanced-quads";
+    case StreakTechnique::PointSprites: return "point-sprites";
+    }
+    return "?";
+}
+
+std::optional<StreakTechnique> parseTechnique(std::string_view name) {
+    std::string n;
+    for (char c : name) n += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (n == "gs" || n == "gs-quads" || n == "geometry") return StreakTechnique::GeometryShader;
+    if (n == "instanced" || n == "instanced-quads") return StreakTechnique::Instanced;
+    if (n == "points" || n == "point-sprites" || n == "sprites") return StreakTechnique::PointSprites;
+    return std::nullopt;
+}
+
+std::string_view techniqueShader(StreakTechnique t) {
+    switch (t) {
+    case StreakTechnique::GeometryShader: return "rain_streaks";
+    case StreakTechnique::Instanced: return "rain_instanced";
+    case StreakTechnique::PointSprites: return "rain_points";
+    }
+    return "rain_streaks";
+}
+
+RainSystem::RainSystem(RainPrograms& programs, const RainParams& params, const glm::vec3& eye)
+    : programs_(programs), gl43_(loadComputeFunctions()), params_(params) {
+    validate(params_);
+    validateEye(eye);
+    rate_ = rainRateFor(params_.intensity);
+    wind_ = windVector(params_);
+    center_ = cylinderCenter(params_, eye);
+    resize(particleCountFor(params_));
+}
+
+std::size_t RainSystem::gpuBytes() const { return particles_.bytes() + streakTextureBytes_; }
+
+void RainSystem::resize(std::uint32_t count) {
+    if (count > capacity_) {
+        // Grow by at least a quarter so a slowly rising intensity does not reallocate
+        // every frame; the old particles are copied, the new ones seeded.
+        std::uint64_t wanted = capacity_ == 0 ? count : std::max<std::uint64_t>(count, capacity_ + capacity_ / 4);
+        wanted = std::min<std::uint64_t>(wanted, kMaxParticles);
+        GlBuffer bigger(static_cast<std::size_t>(wanted) * sizeof(Particle));
+        if (particles_ && count_ > 0) {
+            gl43_.barrier(kBarrierAll);
+            glBindBuffer(GL_COPY_READ_BUFFER, particles_.id());
+            glBindBuffer(GL_COPY_WRITE_BUFFER, bigger.id());
+            glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0,
+                                static_cast<GLsizeiptr>(count_) * static_cast<GLsizeiptr>(sizeof(Particle)));
+            glBindBuffer(GL_COPY_READ_BUFFER, 0);
+            glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+        }
+        particles_ = std::move(bigger);
+        capacity_ = static_cast<std::uint32_t>(wanted);
+        pointsVao_.reset();
+        instancedVao_.reset();
+    }
+    if (count > count_) seedRange(count_, count);
+    count_ = count;
+    gl::throwIfGlError("rain: resizing the particle buffer");
+}
+
+void RainSystem::seedRange(std::uint32_t first, std::uint32_t end) {
+    if (end <= first) return;
+    gl::Program& init = programs_.get("rain_init");
+    init.use();
+    init.set("u_cylinderCenter", center_);
+    init.set("u_cylinder", glm::vec2(params_.radius, params_.height));
+    init.set("u_lod", glm::vec2(static_cast<float>(params_.lodRings), params_.lodFalloff));
+    init.set("u_wind", wind_);
+    init.set("u_fallSpeed", rate_.fallSpeed);
+    init.set("u_jitter", params_.jitter);
+    init.set("u_rainSeed", params_.seed);
+    init.set("u_firstParticle", first);
+    init.set("u_particleCount", end);
+    glBindBufferBase(kShaderStorageBuffer, 0, particles_.id());
+    gl43_.dispatch(end - first);
+    gl43_.barrier(kBarrierAll);
+    glBindBufferBase(kShaderStorageBuffer, 0, 0);
+}
+
+void RainSystem::update(float dt, const glm::vec3& eye) {
+    validateEye(eye);
+    const float step = clampStep(dt);
+    center_ = cylinderCenter(params_, eye);
+    ++steps_;
+    if (count_ == 0) return;
+    gl::Program& update = programs_.get("rain_update");
+    update.use();
+    update.set("u_cylinderCenter", center_);
+    update.set("u_cylinder", glm::vec2(params_.radius, params_.height));
+    update.set("u_dt", step);
+    update.set("u_wind", wind_);
+    update.set("u_fallSpeed", rate_.fallSpeed);
+    update.set("u_particleCount", count_);
+    glBindBufferBase(kShaderStorageBuffer, 0, particles_.id());
+    gl43_.dispatch(count_);
+    gl43_.barrier(kBarrierAll);
+    glBindBufferBase(kShaderStorageBuffer, 0, 0);
+}
+
+void RainSystem::setIntensity(float intensity) {
+    validateIntensity(intensity);
+    params_.intensity = intensity;
+    rate_ = rainRateFor(intensity);
+    resize(particleCountFor(params_));
+}
+
+void RainSystem::setWind(const WindParams& wind) {
+    validateWind(wind);
+    params_.wind = wind;
+    wind_ = windVector(params_);
+}
+
+void RainSystem::ensureStreakTexture() {
+    if (streakTexture_) return;
+    const StreakTextureArray t = generateStreakTextures();
+    streakTexture_ = uploadR8TextureArray(t.width, t.height, t.layers, t.texels.data(), false);
+    streakTextureBytes_ = t.bytes();
+}
+
+void RainSystem::bindAttributes(GlVertexArray& vao, unsigned divisor) {
+    const auto& c = programs_.catalog();
+    glBindVertexArray(vao.id());
+    glBindBuffer(GL_ARRAY_BUFFER, particles_.id());
+    const std::pair<const char*, std::size_t> attributes[] = {
+        {"a_rainSeed", offsetof(Particle, seed)},
+        {"a_rainPosition", offsetof(Particle, position)},
+        {"a_rainVelocity", offsetof(Particle, velocity)},
+    };
+    for (const auto& [name, offset] : attributes) {
+        const auto location = static_cast<GLuint>(locationOf(c, name));
+        glEnableVertexAttribArray(location);
+        glVertexAttribPointer(location, 4, GL_FLOAT, GL_FALSE, sizeof(Particle), reinterpret_cast<const void*>(offset));
+        glVertexAttribDivisor(location, divisor);
+    }
+    glBindVertexArray(0);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+void RainSystem::draw(const RainDrawInputs& in) {
+    if (count_ == 0) return;
+    ensureStreakTexture();
+    const bool instanced = in.technique == StreakTechnique::Instanced;
+    std::optional<GlVertexArray>& vao = instanced ? instancedVao_ : pointsVao_;
+    if (!vao) {
+        vao.emplace();
+        bindAttributes(*vao, instanced ? 1u : 0u);
+    }
+    gl::Program& p = programs_.get(techniqueShader(in.technique), fogVariant(in.fog));
+    p.use();
+    const StreakStyle& s = params_.streaks;
+    p.set("u_view", in.camera.view());
+    p.set("u_projection", in.camera.projection(in.aspect));
+    p.set("u_cameraPosition", in.camera.eye);
+    p.set("u_cylinderCenter", center_);
+    p.set("u_cylinder", glm::vec2(params_.radius, params_.height));
+    p.set("u_wind", wind_);
+    p.set("u_exposure", s.exposure);
+    p.set("u_streakWidth", glm::vec2(s.width, s.widthPerMetre));
+    p.set("u_viewportHeight", static_cast<float>(std::max(in.viewportHeight, 1)));
+    p.set("u_streakOpacity", s.opacity);
+    p.set("u_streakFalloff", s.falloffDistance);
+    p.set("u_streakTexture", kStreakTextureUnit);
+    p.set("u_ambient", in.lights.ambient);
+    p.set("u_sunDirection", glm::normalize(in.lights.sun.direction));
+    p.set("u_sunColor", in.lights.sun.color);
+    p.set("u_lampPosition", in.lights.lamp.position);
+    p.set("u_lampColor", in.lights.lamp.color);
+    p.set("u_lampRange", in.lights.lampRange);
+    if (in.fog) {
+        p.set("u_fogColor", in.fog->color);
+        p.set("u_fogDensity", in.fog->density);
+    }
+    glActiveTexture(GL_TEXTURE0 + kStreakTextureUnit);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, streakTexture_->id());
+
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_FALSE);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    glBindVertexArray(vao->id());
+    switch (in.technique) {
+    case StreakTechnique::GeometryShader: glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count_)); break;
+    case StreakTechnique::Instanced:
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(count_));
+        break;
+    case StreakTechnique::PointSprites:
+        glEnable(GL_PROGRAM_POINT_SIZE);
+        glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count_));
+        glDisable(GL_PROGRAM_POINT_SIZE);
+        break;
+    }
+    glBindVertexArray(0);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
+    gl::throwIfGlError("rain: drawing " + std::string(techniqueName(in.technique)));
+}
+
+std::vector<Particle> RainSystem::readParticles() const {
+    std::vector<Particle> out(count_);
+    if (count_ == 0) return out;
+    gl43_.barrier(kBarrierAll);
+    glBindBuffer(GL_COPY_READ_BUFFER, particles_.id());
+    glGetBufferSubData(GL_COPY_READ_BUFFER, 0, static_cast<GLsizeiptr>(count_) * static_cast<GLsizeiptr>(sizeof(Particle)),
+                       out.data());
+    glBindBuffer(GL_COPY_READ_BUFFER, 0);
+    gl::throwIfGlError("rain: reading the particles back");
+    return out;
+}
+
+}  // namespace prism::rain
