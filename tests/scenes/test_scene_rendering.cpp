@@ -13,6 +13,7 @@
 #include "prism/gl_context.hpp"
 #include "prism/image_compare.hpp"
 #include "prism/png_io.hpp"
+#include "prism/rain/rain_params.hpp"
 #include "prism/scene_loader.hpp"
 #include "prism/scene_renderer.hpp"
 #include "prism/shaders.hpp"
@@ -107,6 +108,47 @@ TEST(SceneRendering, UnknownShaderListsTheKnownOnes) {
     }
 }
 
+TEST(SceneRendering, NoRainNoRainSystemAndNoRainProgram) {
+    prism::SceneRenderer renderer(prism::shaders::kCatalog);
+    auto scene = exampleScene("one_light");
+    scene.width = scene.height = 64;
+    renderer.render(scene);
+    EXPECT_EQ(renderer.rainSystemsCreated(), 0u);
+    EXPECT_EQ(renderer.rainProgramsBuilt(), 0u);
+}
+
+TEST(SceneRendering, RainSceneRunsTheRainSystemOverTheObjects) {
+    prism::SceneRenderer renderer(prism::shaders::kCatalog);
+    auto scene = exampleScene("rain");
+    scene.width = 128;
+    scene.height = 96;
+    auto withRain = renderer.render(scene);
+    EXPECT_EQ(renderer.rainSystemsCreated(), 1u);
+    EXPECT_GT(renderer.rainProgramsBuilt(), 0u);
+    ASSERT_FALSE(renderer.lastFrame().variants.empty());
+    EXPECT_EQ(renderer.lastFrame().variants.back().rfind("rain gs-quads", 0), 0u);
+    auto dry = scene;
+    dry.rain.reset();
+    auto withoutRain = renderer.render(dry);
+    EXPECT_EQ(renderer.rainSystemsCreated(), 1u);  // the dry frame made none
+    auto cmp = prism::compareImages(withRain, withoutRain);
+    EXPECT_GT(cmp.pixelsOver, 100u) << "the streaks must show";
+}
+
+TEST(SceneRendering, RainSettingsMapToRainParameters) {
+    prism::RainSettings s;
+    s.intensityClass = "cloudburst";
+    s.wind = {0.0f, 0.0f, 3.0f};
+    auto p = prism::rainParamsFor(s);
+    EXPECT_NEAR(p.wind.strength, 3.0f, 1e-6f);
+    ASSERT_TRUE(p.wind.directionDegrees.has_value());
+    EXPECT_NEAR(*p.wind.directionDegrees, 90.0f, 1e-4f);
+    s.rateMillimetresPerHour = 13.81;
+    EXPECT_NEAR(prism::rainParamsFor(s).intensity, 1.381f, 1e-5f);  // mm/h -> cm/h
+    s.rateMillimetresPerHour = -1.0;
+    EXPECT_THROW(prism::rainParamsFor(s), std::invalid_argument);
+}
+
 class SceneGolden : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SceneGolden, MatchesTheGoldenImage) {
@@ -131,4 +173,4 @@ TEST_P(SceneGolden, MatchesTheGoldenImage) {
     EXPECT_TRUE(ok) << prism::describe(stats, kThresholds);
 }
 
-INSTANTIATE_TEST_SUITE_P(ExampleScenes, SceneGolden, ::testing::Values("one_light", "four_lights", "fog"));
+INSTANTIATE_TEST_SUITE_P(ExampleScenes, SceneGolden, ::testing::Values("one_light", "four_lights", "fog", "rain"));

@@ -6,9 +6,66 @@
 #include "prism/framebuffer.hpp"
 #include "prism/gl.hpp"
 #include "prism/gpu_mesh.hpp"
+#include "prism/rain/rain_params.hpp"
+#include "prism/rain/rain_programs.hpp"
+#include "prism/rain/rain_system.hpp"
 #include "prism/shader_meshes.hpp"
 
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <cmath>
+
 namespace prism {
+
+rain::RainParams rainParamsFor(const RainSettings& settings) {
+    rain::RainParams p;
+    if (settings.rateMillimetresPerHour) {
+        p.intensity = static_cast<float>(*settings.rateMillimetresPerHour / 10.0);  // mm/h -> cm/h
+    } else {
+        auto cls = rain::parseRainClass(settings.intensityClass);
+        if (!cls) throw rain::RainParameterError("rain intensity class '" + settings.intensityClass + "' is unknown");
+        p.intensity = rain::rainClassInfo(*cls).intensity;
+    }
+    const glm::vec2 horizontal(settings.wind.x, settings.wind.z);
+    p.wind.strength = glm::length(horizontal);
+    if (p.wind.strength > 0.0f)
+        p.wind.directionDegrees = glm::degrees(std::atan2(horizontal.y, horizontal.x));
+    p.seed = settings.seed;
+    p.radius = settings.cylinderRadius;
+    p.height = settings.cylinderHeight;
+    p.below = std::min(p.below, p.height);
+    if (settings.particleBudget) p.budget = *settings.particleBudget;
+    rain::validate(p);
+    return p;
+}
+
+SceneRenderer::SceneRenderer(const catalog::Catalog& catalog) : programs_(catalog) {}
+SceneRenderer::~SceneRenderer() = default;
+
+std::size_t SceneRenderer::rainProgramsBuilt() const { return rainPrograms_ ? rainPrograms_->built() : 0; }
+
+void SceneRenderer::drawRain(const Scene& scene) {
+    const rain::RainParams params = rainParamsFor(*scene.rain);
+    if (!rainPrograms_) rainPrograms_ = std::make_unique<rain::RainPrograms>();
+    rain::RainSystem system(*rainPrograms_, params, scene.camera.eye);
+    ++rainSystemsCreated_;
+    for (int i = 0; i < kRainWarmupSteps; ++i) system.update(kRainStep, scene.camera.eye);
+
+    rain::RainDrawInputs in;
+    in.camera = scene.camera;
+    in.aspect = static_cast<float>(scene.width) / static_cast<float>(scene.height);
+    in.viewportHeight = scene.height;
+    in.lights.ambient = scene.lights.ambient;
+    if (!scene.lights.directional.empty()) in.lights.sun = scene.lights.directional.front();
+    else in.lights.sun.color = glm::vec3(0.0f);
+    if (!scene.lights.points.empty()) in.lights.lamp = scene.lights.points.front();
+    else in.lights.lamp.color = glm::vec3(0.0f);
+    in.fog = scene.fog ? &*scene.fog : nullptr;
+    system.draw(in);
+    lastFrame_.variants.push_back("rain " + std::string(rain::techniqueName(in.technique)) + " (" +
+                                  std::to_string(system.particleCount()) + " particles)");
+}
 
 Image8 SceneRenderer::render(const Scene& scene) {
     const FeatureSet features = featuresOf(scene.lights, scene.fog.has_value());
@@ -38,6 +95,7 @@ Image8 SceneRenderer::render(const Scene& scene) {
         lastFrame_.variants.push_back(object.shader + " " +
                                       std::string(programs_.variantOf(object.shader, variant).name));
     }
+    if (scene.rain) drawRain(scene);
     glFinish();
     gl::throwIfGlError("rendering " + scene.file);
     return fb.readImage8();

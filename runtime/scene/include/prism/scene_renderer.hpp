@@ -1,7 +1,9 @@
 // Draws a Scene with only what it needs: each object's program is the variant of its
 // shader that matches the scene's feature set (light counts, fog; see
 // prism/feature_variants.hpp), programs are built once and shared by every draw with
-// the same shader and feature set, and nothing else is built.
+// the same shader and feature set, and nothing else is built. A scene with `rain` gets
+// a rain system (prism/rain/rain_system.hpp) drawn over the objects; one without gets
+// none: no particle buffer, no compute update, no rain program.
 //
 //     prism::SceneRenderer renderer(prism::shaders::kCatalog);
 //     prism::Image8 image = renderer.render(prism::loadScene("examples/scenes/one_light.json"));
@@ -11,6 +13,7 @@
 // Needs a current context.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -20,6 +23,15 @@
 
 namespace prism {
 
+namespace rain {
+class RainPrograms;
+struct RainParams;
+}  // namespace rain
+
+// The rain system's parameters for a scene's rain settings (intensity class or rate,
+// wind as a world vector, seed, cylinder, budget). Throws rain::RainParameterError.
+rain::RainParams rainParamsFor(const RainSettings& settings);
+
 struct SceneFrameInfo {
     std::size_t draws = 0;
     std::vector<std::string> variants;  // "<shader> <variant name>" of each draw, in order
@@ -27,15 +39,30 @@ struct SceneFrameInfo {
 
 class SceneRenderer {
 public:
-    explicit SceneRenderer(const catalog::Catalog& catalog) : programs_(catalog) {}
+    explicit SceneRenderer(const catalog::Catalog& catalog);
+    ~SceneRenderer();
 
     Image8 render(const Scene& scene);
     ProgramCache& programs() { return programs_; }
     const SceneFrameInfo& lastFrame() const { return lastFrame_; }
+    // Rain systems created so far: one per rendered frame of a scene with rain, none
+    // for scenes without (so no particle buffer, no update and no rain program).
+    std::size_t rainSystemsCreated() const { return rainSystemsCreated_; }
+    // Programs the rain draws used (0 until a scene with rain is rendered).
+    std::size_t rainProgramsBuilt() const;
+
+    // Simulated time before a rain frame is drawn, so drops fill the cylinder as in a
+    // running scene; fixed steps, so the image is the same on every render.
+    static constexpr int kRainWarmupSteps = 30;
+    static constexpr float kRainStep = 1.0f / 60.0f;
 
 private:
+    void drawRain(const Scene& scene);
+
     ProgramCache programs_;
     SceneFrameInfo lastFrame_;
+    std::unique_ptr<rain::RainPrograms> rainPrograms_;
+    std::size_t rainSystemsCreated_ = 0;
 };
 
 }  // namespace prism
