@@ -87,10 +87,10 @@ build() { "$CMAKE" --build "$1" --parallel "$JOBS"; }
 tool_ran() { grep -q "prism-shaderc: generating" "$1"; }
 
 # Counts the catalogue should report, from the copy's files: one shader per stage-file
-# basename; one module per .glsl file under the catalogue's module dirs.
+# basename; one module per .glsl file directly in the catalogue's module dirs.
 count_shaders() { find "$1" -maxdepth 1 -type f \( -name '*.vert' -o -name '*.geom' -o -name '*.frag' -o -name '*.comp' \) \
                     -printf '%f\n' | sed 's/\.[^.]*$//' | sort -u | wc -l; }
-count_modules() { find "$@" -type f -name '*.glsl' | wc -l; }
+count_modules() { find "$@" -maxdepth 1 -type f -name '*.glsl' | wc -l; }
 
 # run_consumer <build dir> <consumer copy> <module dir> <log>: runs the program and
 # checks its summary lines against the catalogue's files.
