@@ -1,0 +1,151 @@
+// A rain-and-water scene: a height-map terrain under a procedural cloudy skybox, with
+// (optionally) a water map fed by rain, drawn with sky reflection, Fresnel transparency
+// and capillary ripples. Only what the scene needs is created: a scene without water
+// has no water map, no simulation and no water program; without rain there are no
+// ripple textures and the water program is the RIPPLES=0 variant.
+//
+//     using namespace prism::water;
+//     WaterSceneDescription d;
+//     d.terrain = proceduralTerrain({.width = 256, .height = 256});   // default: 512 x 512
+//     d.rainMmPerHour = rainRateMmPerHour(RainClass::Heavy);
+//     d.fog = prism::Fog{};
+//     WaterScene scene(std::move(d));
+//     scene.advance(1.0);                                        // one second of rain
+//     auto ctx = prism::gl::createContext({.majorVersion = 4, .minorVersion = 3});
+//     WaterSceneRenderer renderer(scene);
+//     prism::Image8 img = renderer.renderImage(overviewCamera(scene.terrain()), 640, 480);
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "prism/camera.hpp"
+#include "prism/image.hpp"
+#include "prism/program_cache.hpp"
+#include "prism/scene_lighting.hpp"
+#include "prism/water/height_field.hpp"
+#include "prism/water/procedural_textures.hpp"
+#include "prism/water/water_simulation.hpp"
+
+namespace prism::water {
+
+enum class SimulationBackend { Cpu, Gpu };
+
+// How the water surface looks (seed 4.3).
+struct WaterLook {
+    float threshold = 0.001f;         // m: shallower water is not drawn
+    float shoreFadeDepth = 0.006f;    // m: the surface fades in between threshold and this
+    float fresnelF0 = 0.02f;          // reflectance looking straight down (water)
+    glm::vec3 tint{0.15f, 0.19f, 0.18f};  // body colour (rain water over soil)
+    float absorption = 12.0f;         // 1/m: body opacity 1 - exp(-absorption depth)
+    float rippleScale = 1.2f;         // ripple-map repeats per metre
+    float wetDarkening = 0.7f;        // albedo factor of soaked ground
+};
+
+struct WaterSceneDescription {
+    HeightField terrain;              // empty: proceduralTerrain() (the default 512x512 water map)
+    std::vector<float> permeability;  // m/s per cell; empty: proceduralPermeability(terrain)
+    bool water = true;                // false: terrain and sky only
+    double rainMmPerHour = 0.0;       // constant rain rate (see rain_rates.hpp for classes)
+    SimulationBackend backend = SimulationBackend::Cpu;
+    WaterParams params;
+    Lights lights = defaultSun();
+    std::optional<Fog> fog;
+    SkyOptions sky;
+    WaterLook look;
+
+    // A low sun from the upper right with a bluish overcast ambient.
+    static Lights defaultSun();
+};
+
+// The water map with its rain and ripple clock; exists only in scenes with water.
+class WaterSystem {
+public:
+    WaterSystem(const HeightField& terrain, std::vector<float> permeability, const WaterParams& params,
+                SimulationBackend backend, double rainMmPerHour);
+
+    void setRain(double mmPerHour);  // >= 0
+    double rainMmPerHour() const { return rainMmPerHour_; }
+    bool hasRain() const { return rainMmPerHour_ > 0.0; }
+
+    SubstepPlan advance(double dt);
+    // Position in the 16-frame ripple cycle, in [0, 16); advances at
+    // rippleFramesPerSecond(rain), so it stands still without rain.
+    double rippleFrame() const { return rippleFrame_; }
+
+    WaterSimulation& simulation() { return *simulation_; }
+    const WaterSimulation& simulation() const { return *simulation_; }
+
+private:
+    std::unique_ptr<WaterSimulation> simulation_;
+    double rainMmPerHour_ = 0.0;
+    double rippleFrame_ = 0.0;
+};
+
+class WaterScene {
+public:
+    explicit WaterScene(WaterSceneDescription description);
+
+    const WaterSceneDescription& description() const { return description_; }
+    const HeightField& terrain() const { return description_.terrain; }
+    const std::vector<float>& permeability() const { return description_.permeability; }
+    bool hasWater() const { return water_ != nullptr; }
+    WaterSystem* water() { return water_.get(); }
+    const WaterSystem* water() const { return water_.get(); }
+
+    // Fog on or off; the renderer picks the FOG=1 or FOG=0 programs at the next draw.
+    void setFog(std::optional<Fog> fog) { description_.fog = fog; }
+
+    // Advances the water by dt seconds (nothing to do in a scene without water).
+    void advance(double dt);
+    // The model matrix that centres the terrain on the origin.
+    glm::mat4 world() const;
+
+private:
+    WaterSceneDescription description_;
+    std::unique_ptr<WaterSystem> water_;
+};
+
+// Cameras that frame a terrain: from above a corner, and low over the ground looking
+// across towards the centre.
+Camera overviewCamera(const HeightField& terrain);
+Camera groundCamera(const HeightField& terrain);
+
+// GL objects a renderer created: the evidence for "only what the scene needs".
+struct SceneRenderStats {
+    std::size_t programs = 0;      // linked GL programs
+    std::size_t textures = 0;
+    std::size_t buffers = 0;
+    std::size_t vertexArrays = 0;
+    bool waterSurface = false;     // water program, mesh and depth textures exist
+    bool rippleTextures = false;   // the 16-frame ripple array exists
+};
+
+// Draws a WaterScene. Needs a current GL context (3.3 is enough for the drawing; a GPU
+// simulation needs 4.3). Terrain and sky resources are made at construction; the water
+// surface's only when the scene has water; the ripple array when rain first falls.
+class WaterSceneRenderer {
+public:
+    explicit WaterSceneRenderer(const WaterScene& scene);
+    ~WaterSceneRenderer();
+    WaterSceneRenderer(const WaterSceneRenderer&) = delete;
+    WaterSceneRenderer& operator=(const WaterSceneRenderer&) = delete;
+
+    // Draws into the bound framebuffer, setting the viewport to width x height.
+    void draw(const Camera& camera, int width, int height);
+    // Draws into an off-screen RGBA8 target and reads it back (row 0 at the top).
+    Image8 renderImage(const Camera& camera, int width, int height);
+
+    SceneRenderStats stats() const;
+    ProgramCache& programCache();
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace prism::water

@@ -1,0 +1,228 @@
+// The GPU water step (see gpu_water_simulation.hpp): one compute dispatch per pass with
+// a shader-storage barrier between passes, the two water buffers ping-ponged.
+#include "prism/water/gpu_water_simulation.hpp"
+
+#include <array>
+#include <string>
+#include <utility>
+
+#include <glm/vec2.hpp>
+
+#include "gl_compute.hpp"
+#include "prism/program.hpp"
+#include "prism/water_shaders.hpp"
+
+namespace prism::water {
+namespace {
+
+namespace ws = prism::water_shaders;
+
+// Binding points of modules/water/water_grid.glsl.
+enum Binding : GLuint {
+    kTerrain = 0, kPermeability = 1, kWaterIn = 2, kWaterOut = 3, kVelocity = 4,
+    kFlow = 5, kLedgerCells = 6, kLedgerPartials = 7, kLedgerTotals = 8,
+};
+
+enum Pass { kRain, kFlowOut, kFlowGather, kDistributeVelocity, kDistributeApply, kSmooth, kLedgerPartial, kLedgerTotal, kPassCount };
+
+constexpr ws::ShaderId kPassShaders[kPassCount] = {
+    ws::ShaderId::water_rain_infiltrate, ws::ShaderId::water_flow_out,         ws::ShaderId::water_flow_gather,
+    ws::ShaderId::water_distribute_velocity, ws::ShaderId::water_distribute_apply, ws::ShaderId::water_smooth,
+    ws::ShaderId::water_ledger_partial,  ws::ShaderId::water_ledger_total,
+};
+
+template <class T>
+void setIfPresent(gl::Program& p, std::string_view name, const T& value) {
+    if (p.hasUniform(name)) p.set(name, value);
+}
+
+GLuint makeBuffer(GLsizeiptr bytes, const void* data) {
+    GLuint b = 0;
+    glGenBuffers(1, &b);
+    glBindBuffer(detail::kShaderStorageBuffer, b);
+    glBufferData(detail::kShaderStorageBuffer, bytes, data, GL_DYNAMIC_COPY);
+    glBindBuffer(detail::kShaderStorageBuffer, 0);
+    return b;
+}
+
+void fillBuffer(GLuint buffer, GLsizeiptr bytes, const void* data) {
+    glBindBuffer(detail::kShaderStorageBuffer, buffer);
+    glBufferSubData(detail::kShaderStorageBuffer, 0, bytes, data);
+    glBindBuffer(detail::kShaderStorageBuffer, 0);
+}
+
+}  // namespace
+
+struct GpuWaterSimulation::Impl {
+    detail::ComputeFunctions fn;
+    std::vector<gl::Program> programs;
+    GLuint terrain = 0, permeability = 0, water[2] = {0, 0}, velocity = 0, flow = 0, ledgerCells = 0, partials = 0,
+           totals = 0;
+    int current = 0;
+    GLuint groupsX = 1, groupsY = 1, partialCount = 1;
+
+    ~Impl() {
+        GLuint buffers[] = {terrain, permeability, water[0], water[1], velocity, flow, ledgerCells, partials, totals};
+        for (GLuint b : buffers)
+            if (b) glDeleteBuffers(1, &b);
+    }
+
+    void dispatch(Pass pass, GLuint x, GLuint y) {
+        programs[pass].use();
+        fn.dispatchCompute(x, y, 1);
+        fn.memoryBarrier(detail::kShaderStorageBarrier);
+    }
+
+    // A pass that reads the current water and writes the other buffer.
+    void waterPass(Pass pass) {
+        glBindBufferBase(detail::kShaderStorageBuffer, kWaterIn, water[current]);
+        glBindBufferBase(detail::kShaderStorageBuffer, kWaterOut, water[1 - current]);
+        dispatch(pass, groupsX, groupsY);
+        current = 1 - current;
+    }
+
+    void readPass(Pass pass) {
+        glBindBufferBase(detail::kShaderStorageBuffer, kWaterIn, water[current]);
+        dispatch(pass, groupsX, groupsY);
+    }
+};
+
+bool GpuWaterSimulation::isSupported() { return detail::currentGlVersion() >= 43; }
+
+GpuWaterSimulation::GpuWaterSimulation(HeightField terrain, std::vector<float> permeability, WaterParams params)
+    : WaterSimulation(std::move(terrain), std::move(permeability), params), impl_(std::make_unique<Impl>()) {
+    impl_->fn = detail::loadComputeFunctions();
+    for (ws::ShaderId id : kPassShaders) {
+        const auto& shader = ws::shaderInfo(id);
+        impl_->programs.emplace_back(shader.variants[0], ws::kCatalog.contractAttributes, std::string(shader.name));
+    }
+    const std::size_t n = cellCount();
+    impl_->groupsX = static_cast<GLuint>((width() + 15) / 16);
+    impl_->groupsY = static_cast<GLuint>((height() + 15) / 16);
+    impl_->partialCount = static_cast<GLuint>((n + 255) / 256);
+    const auto bytes = [](std::size_t count, std::size_t size) { return static_cast<GLsizeiptr>(count * size); };
+    impl_->terrain = makeBuffer(bytes(n, sizeof(float)), terrain_.heights.data());
+    impl_->permeability = makeBuffer(bytes(n, sizeof(float)), permeability_.data());
+    for (GLuint& w : impl_->water) w = makeBuffer(bytes(n, sizeof(glm::vec2)), nullptr);
+    impl_->velocity = makeBuffer(bytes(n, sizeof(glm::vec2)), nullptr);
+    impl_->flow = makeBuffer(bytes(n, sizeof(glm::vec2)), nullptr);
+    impl_->ledgerCells = makeBuffer(bytes(n, 2 * sizeof(double)), nullptr);
+    impl_->partials = makeBuffer(bytes(impl_->partialCount, 2 * sizeof(double)), nullptr);
+    impl_->totals = makeBuffer(bytes(1, 2 * sizeof(double)), nullptr);
+    gl::throwIfGlError("creating the water simulation's storage buffers");
+    for (auto& p : impl_->programs) {
+        setIfPresent(p, "u_gridSize", glm::ivec2(width(), height()));
+        setIfPresent(p, "u_partialCount", static_cast<int>(impl_->partialCount));
+    }
+    std::vector<glm::vec2> zero(n, glm::vec2(0.0f));
+    resetState(zero);
+}
+
+GpuWaterSimulation::~GpuWaterSimulation() = default;
+
+std::size_t GpuWaterSimulation::programCount() const { return impl_->programs.size(); }
+
+unsigned GpuWaterSimulation::depthBuffer() const { return impl_->water[impl_->current]; }
+
+void GpuWaterSimulation::finish() const { glFinish(); }
+
+void GpuWaterSimulation::resetState(std::span<const glm::vec2> pairs) {
+    const std::size_t n = cellCount();
+    const auto vecBytes = static_cast<GLsizeiptr>(n * sizeof(glm::vec2));
+    std::vector<glm::vec2> zero(n, glm::vec2(0.0f));
+    std::vector<glm::vec2> flowZero(n, glm::vec2(0.0f, 4.0f));
+    impl_->current = 0;
+    fillBuffer(impl_->water[0], vecBytes, pairs.data());
+    fillBuffer(impl_->water[1], vecBytes, zero.data());
+    fillBuffer(impl_->velocity, vecBytes, zero.data());
+    fillBuffer(impl_->flow, vecBytes, flowZero.data());
+    const std::vector<double> ledgerZero(2 * n, 0.0);
+    fillBuffer(impl_->ledgerCells, static_cast<GLsizeiptr>(ledgerZero.size() * sizeof(double)), ledgerZero.data());
+    const double totals[2] = {0.0, 0.0};
+    fillBuffer(impl_->totals, sizeof totals, totals);
+    gl::throwIfGlError("resetting the water simulation");
+}
+
+void GpuWaterSimulation::runSubsteps(const StepConstants& k, long count) {
+    const glm::ivec2 grid(width(), height());
+    for (auto& p : impl_->programs) {
+        setIfPresent(p, "u_gridSize", grid);
+        setIfPresent(p, "u_dt", k.dt);
+        setIfPresent(p, "u_rainDepth", k.rainDepth);
+        setIfPresent(p, "u_openBorder", k.openBorder);
+        setIfPresent(p, "u_invEightCell", k.invEightCell);
+        setIfPresent(p, "u_flowRateDt", k.flowRateDt);
+        setIfPresent(p, "u_maxFlowFraction", k.maxFlowFraction);
+        setIfPresent(p, "u_waveAccelDt", k.waveAccelDt);
+        setIfPresent(p, "u_damping", k.damping);
+        setIfPresent(p, "u_epsilon", k.epsilon);
+        setIfPresent(p, "u_capPerDt", k.capPerDt);
+        setIfPresent(p, "u_smoothRadius", k.smoothRadius);
+        if (p.hasUniform("u_smoothWeights")) p.set("u_smoothWeights", std::span<const float>(k.smoothWeights));
+        setIfPresent(p, "u_partialCount", static_cast<int>(impl_->partialCount));
+    }
+    const GLenum ssbo = detail::kShaderStorageBuffer;
+    glBindBufferBase(ssbo, kTerrain, impl_->terrain);
+    glBindBufferBase(ssbo, kPermeability, impl_->permeability);
+    glBindBufferBase(ssbo, kVelocity, impl_->velocity);
+    glBindBufferBase(ssbo, kFlow, impl_->flow);
+    glBindBufferBase(ssbo, kLedgerCells, impl_->ledgerCells);
+    for (long s = 0; s < count; ++s) {
+        impl_->waterPass(kRain);
+        impl_->readPass(kFlowOut);
+        impl_->waterPass(kFlowGather);
+        impl_->readPass(kDistributeVelocity);
+        impl_->waterPass(kDistributeApply);
+        if (k.smoothRadius > 0) impl_->waterPass(kSmooth);
+    }
+    glUseProgram(0);
+    gl::throwIfGlError("running the water simulation's compute passes");
+}
+
+namespace {
+
+template <class T>
+std::vector<T> readBuffer(const detail::ComputeFunctions& fn, GLuint buffer, std::size_t count) {
+    fn.memoryBarrier(detail::kAllBarriers);
+    std::vector<T> out(count);
+    glBindBuffer(detail::kShaderStorageBuffer, buffer);
+    glGetBufferSubData(detail::kShaderStorageBuffer, 0, static_cast<GLsizeiptr>(count * sizeof(T)), out.data());
+    glBindBuffer(detail::kShaderStorageBuffer, 0);
+    return out;
+}
+
+}  // namespace
+
+std::vector<glm::vec2> GpuWaterSimulation::depthPairs() const {
+    return readBuffer<glm::vec2>(impl_->fn, impl_->water[impl_->current], cellCount());
+}
+
+std::vector<glm::vec2> GpuWaterSimulation::edgeVelocities() const {
+    return readBuffer<glm::vec2>(impl_->fn, impl_->velocity, cellCount());
+}
+
+void GpuWaterSimulation::lossTotals(double& infiltrated, double& lost) const {
+    // Reduce the per-cell double accumulators: one partial per 256 cells, then the total.
+    const GLenum ssbo = detail::kShaderStorageBuffer;
+    glBindBufferBase(ssbo, kLedgerCells, impl_->ledgerCells);
+    glBindBufferBase(ssbo, kLedgerPartials, impl_->partials);
+    glBindBufferBase(ssbo, kLedgerTotals, impl_->totals);
+    impl_->dispatch(kLedgerPartial, impl_->partialCount, 1);
+    impl_->dispatch(kLedgerTotal, 1, 1);
+    glUseProgram(0);
+    const std::vector<double> t = readBuffer<double>(impl_->fn, impl_->totals, 2);
+    infiltrated = t[0];
+    lost = t[1];
+}
+
+void GpuWaterSimulation::uploadDepthTexture(unsigned texture) const {
+    impl_->fn.memoryBarrier(detail::kAllBarriers);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, impl_->water[impl_->current]);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width(), height(), GL_RG, GL_FLOAT, nullptr);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+}
+
+}  // namespace prism::water
