@@ -21,7 +21,7 @@ std::string errorOf(const std::string& text) {
 }  // namespace
 
 TEST(SceneLoader, ReadsTheExampleScenes) {
-    for (const char* name : {"one_light", "four_lights", "fog"}) {
+    for (const char* name : {"one_light", "four_lights", "fog", "rain", "water"}) {
         auto scene = prism::loadScene(std::string(PRISM_SCENES_DIR) + "/" + name + ".json");
         EXPECT_FALSE(scene.objects.empty()) << name;
         EXPECT_FALSE(scene.lights.directional.empty()) << name;
@@ -44,7 +44,7 @@ TEST(SceneLoader, FullObjectSyntax) {
                    "material": {"shader": "phong", "color": [1, 0, 0], "shininess": 8, "specular": 0.1,
                                 "variant": {"BLINN": "1"}}}],
       "rain": {"intensity": "heavy", "wind": [1, 0, 0]},
-      "water": {"grid": 128}
+      "water": {"grid": 128, "cellSize": 0.5, "seconds": 30, "soilMmPerHour": 2, "seed": 4}
     })", "s.json");
     EXPECT_EQ(s.camera.eye, glm::vec3(1, 2, 3));
     EXPECT_FLOAT_EQ(s.lights.ambient.x, 0.2f);
@@ -55,6 +55,8 @@ TEST(SceneLoader, FullObjectSyntax) {
     EXPECT_EQ(s.rain->intensityClass, "heavy");
     ASSERT_TRUE(s.water.has_value());
     EXPECT_EQ(s.water->gridSize, 128u);
+    EXPECT_DOUBLE_EQ(s.water->seconds, 30.0);
+    EXPECT_DOUBLE_EQ(s.water->soilMillimetresPerHour, 2.0);
 }
 
 TEST(SceneLoader, DirectionWithTwoNumbers) {

@@ -115,6 +115,21 @@ TEST(SceneRendering, NoRainNoRainSystemAndNoRainProgram) {
     renderer.render(scene);
     EXPECT_EQ(renderer.rainSystemsCreated(), 0u);
     EXPECT_EQ(renderer.rainProgramsBuilt(), 0u);
+    EXPECT_EQ(renderer.waterSystemsCreated(), 0u);
+}
+
+TEST(SceneRendering, WaterSceneSimulatesAndDrawsTheWaterMap) {
+    prism::SceneRenderer renderer(prism::shaders::kCatalog);
+    auto scene = exampleScene("water");
+    scene.width = 128;
+    scene.height = 96;
+    scene.rain.reset();  // water fed by its own rain rate, no particles drawn
+    scene.water->seconds = 10.0;
+    renderer.render(scene);
+    EXPECT_EQ(renderer.waterSystemsCreated(), 1u);
+    EXPECT_EQ(renderer.rainSystemsCreated(), 0u);
+    ASSERT_FALSE(renderer.lastFrame().variants.empty());
+    EXPECT_EQ(renderer.lastFrame().variants.front().rfind("water 128x128", 0), 0u);
 }
 
 TEST(SceneRendering, RainSceneRunsTheRainSystemOverTheObjects) {
@@ -173,4 +188,4 @@ TEST_P(SceneGolden, MatchesTheGoldenImage) {
     EXPECT_TRUE(ok) << prism::describe(stats, kThresholds);
 }
 
-INSTANTIATE_TEST_SUITE_P(ExampleScenes, SceneGolden, ::testing::Values("one_light", "four_lights", "fog", "rain"));
+INSTANTIATE_TEST_SUITE_P(ExampleScenes, SceneGolden, ::testing::Values("one_light", "four_lights", "fog", "rain", "water"));

@@ -188,15 +188,16 @@ RainSettings readRain(const Reader& r, const json& j) {
 }
 
 WaterSettings readWater(const Reader& r, const json& j) {
-    r.object(j, "/water", {"grid", "cellSize", "rainMmPerHour", "steps", "permeability"});
+    r.object(j, "/water", {"grid", "cellSize", "rainMmPerHour", "seconds", "soilMmPerHour", "seed"});
     WaterSettings s;
-    if (j.contains("grid")) s.gridSize = r.whole(j["grid"], "/water/grid", 1, 4096);
-    if (j.contains("cellSize")) s.cellSize = static_cast<float>(r.number(j["cellSize"], "/water/cellSize", 1e-4, 1e3));
+    if (j.contains("grid")) s.gridSize = r.whole(j["grid"], "/water/grid", 1, 2048);
+    if (j.contains("cellSize")) s.cellSize = static_cast<float>(r.number(j["cellSize"], "/water/cellSize", 1e-3, 1e3));
     if (j.contains("rainMmPerHour"))
         s.rainRateMillimetresPerHour = r.number(j["rainMmPerHour"], "/water/rainMmPerHour", 0.0, 1e4);
-    if (j.contains("steps")) s.steps = r.whole(j["steps"], "/water/steps", 0, 1000000);
-    if (j.contains("permeability"))
-        s.permeability = static_cast<float>(r.number(j["permeability"], "/water/permeability", 0.0, 1.0));
+    if (j.contains("seconds")) s.seconds = r.number(j["seconds"], "/water/seconds", 0.0, 86400.0);
+    if (j.contains("soilMmPerHour"))
+        s.soilMillimetresPerHour = r.number(j["soilMmPerHour"], "/water/soilMmPerHour", 0.0, 1e6);
+    if (j.contains("seed")) s.seed = r.whole(j["seed"], "/water/seed", 0, 0xffffffffu);
     return s;
 }
 

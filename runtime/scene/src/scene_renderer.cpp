@@ -10,6 +10,8 @@
 #include "prism/rain/rain_programs.hpp"
 #include "prism/rain/rain_system.hpp"
 #include "prism/shader_meshes.hpp"
+#include "prism/water/rain_rates.hpp"
+#include "prism/water/water_scene.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -67,6 +69,37 @@ void SceneRenderer::drawRain(const Scene& scene) {
                                   std::to_string(system.particleCount()) + " particles)");
 }
 
+void SceneRenderer::drawWater(const Scene& scene) {
+    const WaterSettings& w = *scene.water;
+    water::WaterSceneDescription d;
+    water::ProceduralTerrainOptions terrain;
+    terrain.width = terrain.height = static_cast<int>(w.gridSize);
+    terrain.cellSize = w.cellSize;
+    terrain.seed = w.seed;
+    d.terrain = water::proceduralTerrain(terrain);
+    water::PermeabilityOptions soil;
+    soil.soilMmPerHour = w.soilMillimetresPerHour;
+    soil.clayMmPerHour = std::min(soil.clayMmPerHour, w.soilMillimetresPerHour);
+    d.permeability = water::proceduralPermeability(d.terrain, soil);
+    d.rainMmPerHour = w.rainRateMillimetresPerHour;
+    if (scene.rain) {  // the scene's rain feeds the water
+        if (scene.rain->rateMillimetresPerHour) {
+            d.rainMmPerHour = *scene.rain->rateMillimetresPerHour;
+        } else if (auto cls = water::parseRainClass(scene.rain->intensityClass)) {
+            d.rainMmPerHour = water::rainRateMmPerHour(*cls);
+        }
+    }
+    d.lights = scene.lights;
+    d.fog = scene.fog;
+    water::WaterScene waterScene(std::move(d));
+    ++waterSystemsCreated_;
+    waterScene.advance(w.seconds);
+    water::WaterSceneRenderer renderer(waterScene);
+    renderer.draw(scene.camera, scene.width, scene.height);
+    lastFrame_.variants.push_back("water " + std::to_string(w.gridSize) + "x" + std::to_string(w.gridSize) + " after " +
+                                  std::to_string(static_cast<int>(w.seconds)) + " s of rain");
+}
+
 Image8 SceneRenderer::render(const Scene& scene) {
     const FeatureSet features = featuresOf(scene.lights, scene.fog.has_value());
     const float aspect = static_cast<float>(scene.width) / static_cast<float>(scene.height);
@@ -76,6 +109,10 @@ Image8 SceneRenderer::render(const Scene& scene) {
     fb.bind();
     const glm::vec4 background = scene.fog ? glm::vec4(scene.fog->color, 1.0f) : scene.background;
     fb.clear({background.r, background.g, background.b, background.a});
+    if (scene.water) {  // terrain, sky and water first; objects stand in them
+        drawWater(scene);
+        fb.bind();
+    }
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);

@@ -38,12 +38,16 @@ struct RainSettings {
     std::optional<unsigned> particleBudget;
 };
 
+// Water as a scene asks for it (docs/water.md): a procedural terrain of gridSize^2
+// cells, the rain rate (the scene's rain, else rainRateMillimetresPerHour), how long it
+// has rained before the frame, and how fast loose soil soaks water up.
 struct WaterSettings {
-    unsigned gridSize = 512;
-    float cellSize = 0.1f;          // metres per cell
+    unsigned gridSize = 128;
+    float cellSize = 0.25f;                    // metres per cell
     double rainRateMillimetresPerHour = 10.0;  // used when the scene has no rain
-    unsigned steps = 200;
-    float permeability = 0.2f;
+    double seconds = 60.0;                     // simulated rain before the frame
+    double soilMillimetresPerHour = 12.0;      // infiltration of loose soil (clay: 0.5)
+    unsigned seed = 1;                         // of the procedural terrain
 };
 
 struct Scene {

@@ -3,7 +3,9 @@
 // prism/feature_variants.hpp), programs are built once and shared by every draw with
 // the same shader and feature set, and nothing else is built. A scene with `rain` gets
 // a rain system (prism/rain/rain_system.hpp) drawn over the objects; one without gets
-// none: no particle buffer, no compute update, no rain program.
+// none: no particle buffer, no compute update, no rain program. A scene with `water`
+// is drawn on a rain-fed water scene (terrain, sky, water map; prism/water/water_scene.hpp)
+// simulated for its `seconds`; one without creates no water map.
 //
 //     prism::SceneRenderer renderer(prism::shaders::kCatalog);
 //     prism::Image8 image = renderer.render(prism::loadScene("examples/scenes/one_light.json"));
@@ -50,6 +52,8 @@ public:
     std::size_t rainSystemsCreated() const { return rainSystemsCreated_; }
     // Programs the rain draws used (0 until a scene with rain is rendered).
     std::size_t rainProgramsBuilt() const;
+    // Water maps created so far: one per rendered frame of a scene with water.
+    std::size_t waterSystemsCreated() const { return waterSystemsCreated_; }
 
     // Simulated time before a rain frame is drawn, so drops fill the cylinder as in a
     // running scene; fixed steps, so the image is the same on every render.
@@ -58,11 +62,13 @@ public:
 
 private:
     void drawRain(const Scene& scene);
+    void drawWater(const Scene& scene);
 
     ProgramCache programs_;
     SceneFrameInfo lastFrame_;
     std::unique_ptr<rain::RainPrograms> rainPrograms_;
     std::size_t rainSystemsCreated_ = 0;
+    std::size_t waterSystemsCreated_ = 0;
 };
 
 }  // namespace prism
