@@ -133,12 +133,9 @@ int main(int argc, char** argv) {
     if (!scale) return badInput("--scale " + a.scale + ": expected three finite numbers x,y,z");
     if (!size) return badInput("--size " + a.size + ": expected WxH with 1 <= W, H <= 16384, e.g. 512x512");
     if (a.out.empty() && !a.checkFinite) return badInput("give --out FILE.png (or --check-finite)");
-    std::optional<prism::gl::Backend> backend;
-    if (!a.backend.empty()) {
-        backend = prism::gl::parseBackend(a.backend);
-        if (!backend || *backend == prism::gl::Backend::Glfw)
-            return badInput("--backend " + a.backend + ": expected egl or osmesa");
-    }
+    bool backendOk = true;
+    const auto backend = backendOf(a, backendOk);
+    if (!backendOk) return badInput("--backend " + a.backend + ": expected egl or osmesa");
     try {
         job.mesh = prism::meshForShader(a.shader, prism::namedMesh(a.mesh, a.subdiv));
     } catch (const prism::geometry::ObjLoadError& e) {
@@ -172,9 +169,7 @@ int main(int argc, char** argv) {
             prism::writePng(a.out, prism::renderImage8(cache, job));
         }
         std::cout << "prism-render: wrote " << a.out << "\n";
-    } catch (const prism::UnknownShaderError& e) {
-        return badInput(e.what());
-    } catch (const std::invalid_argument& e) {
+    } catch (const std::invalid_argument& e) {  // also UnknownShaderError: a bad name or variant
         return badInput(e.what());
     } catch (const std::exception& e) {
         std::cerr << "prism-render: error: " << e.what() << "\n";
