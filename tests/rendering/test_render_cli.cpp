@@ -131,18 +131,6 @@ TEST(PrismRenderCli, ObjPathThatIsADirectoryNamesTheFileWritesNothing) {
     EXPECT_TRUE(imagesIn(dir).empty());
 }
 
-TEST(PrismRenderCli, UnreadableObjFileNamesTheFileWritesNothing) {
-    if (::geteuid() == 0) GTEST_SKIP() << "running as root: file permissions do not stop reading";
-    const fs::path dir = testDir();
-    const fs::path obj = writeFile(dir / "locked.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-    fs::permissions(obj, fs::perms::none);
-    const auto r = runPrismRender({"--shader", "phong", "--mesh", obj.string(), "--out", (dir / "out.png").string()}, dir);
-    fs::permissions(obj, fs::perms::owner_all);
-    EXPECT_EQ(r.exitCode, kExitBadInput) << r.err;
-    EXPECT_NE(r.err.find(obj.string()), std::string::npos) << r.err;
-    EXPECT_TRUE(imagesIn(dir).empty());
-}
-
 TEST(PrismRenderCli, ObjFaceIndexOutOfRangeNamesFileAndLineWritesNothing) {
     const fs::path dir = testDir();
     const fs::path obj = writeFile(dir / "bad-face.obj", "# a triangle that points past the vertex list\n"
