@@ -59,8 +59,12 @@ TEST(SceneRendering, OneLightNoFogProgramHasNoFogUniformsAndLoopBoundOne) {
         const auto& variant = renderer.programs().variantOf(
             object.shader, prism::variantFor(*shader, prism::featuresOf(scene.lights, false)));
         for (const auto& d : variant.defines) {
-            if (d.name == "DIRECTIONAL_LIGHTS") EXPECT_EQ(d.value, "1");
-            if (d.name == "FOG") EXPECT_EQ(d.value, "0");
+            if (d.name == "DIRECTIONAL_LIGHTS") {
+                EXPECT_EQ(d.value, "1");
+            }
+            if (d.name == "FOG") {
+                EXPECT_EQ(d.value, "0");
+            }
         }
         const auto text = prism::catalog::joinChunks(variant.stages.back().chunks);
         EXPECT_NE(text.find("#define DIRECTIONAL_LIGHTS 1\n"), std::string::npos);
@@ -70,7 +74,9 @@ TEST(SceneRendering, OneLightNoFogProgramHasNoFogUniformsAndLoopBoundOne) {
         for (const auto& u : variant.uniforms) {
             EXPECT_EQ(std::string(u.name).find("u_fog"), std::string::npos) << object.shader;
             EXPECT_EQ(std::string(u.name).find("u_pointLight"), std::string::npos) << object.shader;
-            if (u.name == "u_lightDirection") EXPECT_EQ(u.arraySize, 1) << object.shader;
+            if (u.name == "u_lightDirection") {
+                EXPECT_EQ(u.arraySize, 1) << object.shader;
+            }
         }
     }
 }

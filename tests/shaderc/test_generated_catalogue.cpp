@@ -68,7 +68,9 @@ TEST(GeneratedCatalogue, LightCountsBoundTheLoopsAndDropUnusedLights) {
     EXPECT_NE(text.find("#define DIRECTIONAL_LIGHTS 1\n"), std::string::npos);
     for (const auto& u : one->uniforms) {
         EXPECT_NE(u.name, "u_pointLightColor") << "no point lights, no point-light uniforms";
-        if (u.name == "u_lightDirection") EXPECT_EQ(u.arraySize, 1);
+        if (u.name == "u_lightDirection") {
+            EXPECT_EQ(u.arraySize, 1);
+        }
     }
 }
 

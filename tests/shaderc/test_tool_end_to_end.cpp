@@ -124,7 +124,9 @@ TEST(ToolOutputs, EmittedGlslIsDriverSafe) {
         EXPECT_EQ(text.find("#pragma prism"), std::string::npos) << e.path();
         std::istringstream lines(text);
         for (std::string l; std::getline(lines, l);)
-            if (l.rfind("#line", 0) == 0) EXPECT_TRUE(std::regex_match(l, lineDirective)) << l;
+            if (l.rfind("#line", 0) == 0) {
+                EXPECT_TRUE(std::regex_match(l, lineDirective)) << l;
+            }
     }
     EXPECT_EQ(files, 4 * 2 + 3 + 1);  // tinted: 4 variants x 2 stages; sprites: 3 stages; step: 1
 }
