@@ -16,21 +16,7 @@ const catalog::Variant& ProgramCache::variantOf(std::string_view shader, const V
         for (const auto& n : shaderNames()) known += (known.empty() ? "" : ", ") + n;
         throw UnknownShaderError("unknown shader '" + std::string(shader) + "'; known shaders: " + known);
     }
-    for (const auto& v : s->variants) {
-        bool match = true;
-        for (std::size_t a = 0; a < s->axes.size() && match; ++a) {
-            std::string_view want = s->axes[a].values.empty() ? std::string_view{} : s->axes[a].values[0];
-            for (const auto& [n, val] : values)
-                if (n == s->axes[a].name) want = val;
-            match = v.defines[a].value == want;
-        }
-        for (const auto& [n, val] : values) {
-            bool known = false;
-            for (const auto& ax : s->axes) known = known || ax.name == n;
-            match = match && known;
-        }
-        if (match) return v;
-    }
+    if (const auto* v = catalog::findVariant(*s, values)) return *v;
     std::string known;
     for (const auto& v : s->variants) known += (known.empty() ? "" : "; ") + std::string(v.name);
     std::string asked;

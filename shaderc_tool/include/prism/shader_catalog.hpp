@@ -137,25 +137,40 @@ constexpr const Module* findModule(const Catalog& c, std::string_view name) {
     return nullptr;
 }
 
-// The variant whose axis values equal `wanted`; axes not named in `wanted` take
-// their first declared value. Returns nullptr when no such variant was generated.
-inline const Variant* findVariant(const Shader& s, std::initializer_list<Define> wanted) {
+namespace detail {
+inline std::string_view wantedName(const Define& d) { return d.name; }
+inline std::string_view wantedValue(const Define& d) { return d.value; }
+template <class Name, class Value>
+std::string_view wantedName(const std::pair<Name, Value>& p) { return p.first; }
+template <class Name, class Value>
+std::string_view wantedValue(const std::pair<Name, Value>& p) { return p.second; }
+}  // namespace detail
+
+// The variant whose axis values equal `wanted` (Defines, or pairs of strings); axes not
+// named in `wanted` take their first declared value. Returns nullptr when no such
+// variant was generated, or when `wanted` names something that is no axis.
+template <class Range>
+const Variant* findVariant(const Shader& s, const Range& wanted) {
+    for (const auto& w : wanted) {
+        bool known = false;
+        for (const auto& ax : s.axes) known = known || ax.name == detail::wantedName(w);
+        if (!known) return nullptr;
+    }
     for (const auto& v : s.variants) {
         bool match = true;
         for (std::size_t a = 0; a < s.axes.size() && match; ++a) {
             std::string_view want = s.axes[a].values.empty() ? std::string_view{} : s.axes[a].values[0];
             for (const auto& w : wanted)
-                if (w.name == s.axes[a].name) want = w.value;
+                if (detail::wantedName(w) == s.axes[a].name) want = detail::wantedValue(w);
             match = v.defines.size() > a && v.defines[a].value == want;
-        }
-        for (const auto& w : wanted) {  // a name that is no axis never matches
-            bool known = false;
-            for (const auto& ax : s.axes) known = known || ax.name == w.name;
-            match = match && known;
         }
         if (match) return &v;
     }
     return nullptr;
+}
+
+inline const Variant* findVariant(const Shader& s, std::initializer_list<Define> wanted) {
+    return findVariant<std::initializer_list<Define>>(s, wanted);
 }
 
 constexpr const SourceFile* findSourceFile(const StageSource& s, std::uint32_t number) {
