@@ -64,7 +64,8 @@ Settings parseArguments(int argc, char** argv) {
         } else if (flag == "--sizes") {
             settings.triangleCounts.clear();
             std::stringstream list(value);
-            for (std::string item; std::getline(list, item, ',');) settings.triangleCounts.push_back(parseCount(item.c_str()));
+            for (std::string item; std::getline(list, item, ',');)
+                settings.triangleCounts.push_back(parseCount(item.c_str()));
         } else {
             usage(("unknown option " + flag).c_str());
         }
@@ -115,9 +116,10 @@ double medianMilliseconds(int repeats, const std::function<std::size_t()>& work,
 int main(int argc, char** argv) {
     const Settings settings = parseArguments(argc, argv);
     std::printf("Smooth normals for split (OBJ-style) meshes: weld by position + area-weighted normals\n");
-    std::printf("mesh: ribbed trefoil knot split per face; median thread CPU time of %d runs (O(n^2): of up to 3);\n"
-                "O(n^2) measured up to %zu split vertices, extrapolated beyond\n\n",
-                settings.repeats, settings.quadraticMaxVertices);
+    std::printf(
+        "mesh: ribbed trefoil knot split per face; median thread CPU time of %d runs (O(n^2): of up to 3);\n"
+        "O(n^2) measured up to %zu split vertices, extrapolated beyond\n\n",
+        settings.repeats, settings.quadraticMaxVertices);
     std::printf("%10s %10s %9s | %12s %12s | %14s %10s\n", "triangles", "split v.", "welded v.", "normals ms",
                 "O(n) weld ms", "O(n^2) ms", "ratio");
     std::printf("-----------------------------------------------------------------------------------------\n");
@@ -161,12 +163,13 @@ int main(int argc, char** argv) {
         if (quadraticMs > 0.0)
             std::snprintf(ratio, sizeof ratio, "%s%.0fx", vertices <= settings.quadraticMaxVertices ? "" : "~",
                           quadraticMs / hashMs);
-        std::printf("%10zu %10zu %9zu | %12.2f %12.2f | %14s %10s\n", triangleCount(split), vertices, welded,
-                    normalsMs, hashMs, quadratic, ratio);
+        std::printf("%10zu %10zu %9zu | %12.2f %12.2f | %14s %10s\n", triangleCount(split), vertices, welded, normalsMs,
+                    hashMs, quadratic, ratio);
         std::fflush(stdout);
     }
-    std::printf("\nnormals ms: areaWeightedVertexNormals on the welded mesh alone.\n"
-                "O(n) weld ms / O(n^2) ms: weldVertices / weldQuadraticReference, both including the normals.\n"
-                "~: extrapolated as t * (n / n_measured)^2 from the largest measured size, not measured.\n");
+    std::printf(
+        "\nnormals ms: areaWeightedVertexNormals on the welded mesh alone.\n"
+        "O(n) weld ms / O(n^2) ms: weldVertices / weldQuadraticReference, both including the normals.\n"
+        "~: extrapolated as t * (n / n_measured)^2 from the largest measured size, not measured.\n");
     return 0;
 }

@@ -70,7 +70,9 @@ double median(std::vector<double> v) {
     return n == 0 ? 0.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
 }
 
-double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+double msSince(Clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
 
 int framesFor(int exponent, int maxFrames) {
     const int f = exponent <= 16 ? 9 : exponent <= 18 ? 7 : exponent <= 19 ? 5 : exponent <= 22 ? 3 : 1;
@@ -99,8 +101,9 @@ Row measure(RainPrograms& programs, const Options& o, int exponent, bool warmUp)
     params.seed = 2013;
     const prism::Camera camera = rainSceneView(0);
     RainSystem rain(programs, params, camera.eye);
-    row.bytesPerParticle = static_cast<double>(rain.particleBuffer() ? rain.capacity() * RainSystem::kBytesPerParticle : 0) /
-                           row.particles;
+    row.bytesPerParticle =
+        static_cast<double>(rain.particleBuffer() ? rain.capacity() * RainSystem::kBytesPerParticle : 0) /
+        row.particles;
     prism::gl::Framebuffer fb(o.size, o.size);
     RainDrawInputs in;
     in.camera = camera;
@@ -207,8 +210,8 @@ void writeSvg(const std::filesystem::path& path, const std::vector<Row>& rows, c
     for (double d = y0; d <= y1 + 1e-9; d += 1.0) {
         const double y = Y(std::pow(10.0, d));
         s << "<line x1='" << left << "' x2='" << W - right << "' y1='" << y << "' y2='" << y << "' stroke='#ddd'/>\n";
-        s << "<text x='" << left - 8 << "' y='" << y + 4 << "' text-anchor='end'>" << fixed(std::pow(10.0, d), d < 0 ? 1 : 0)
-          << "</text>\n";
+        s << "<text x='" << left - 8 << "' y='" << y + 4 << "' text-anchor='end'>"
+          << fixed(std::pow(10.0, d), d < 0 ? 1 : 0) << "</text>\n";
     }
     for (const auto& r : rows) {
         const double x = X(r.exponent);
@@ -231,7 +234,8 @@ void writeSvg(const std::filesystem::path& path, const std::vector<Row>& rows, c
         s << "<polyline fill='none' stroke='" << color << "' stroke-width='2'" << dash << " points='";
         for (const auto& r : rows) s << X(r.exponent) << "," << Y(value(r)) << " ";
         s << "'/>\n";
-        for (const auto& r : rows) s << "<circle cx='" << X(r.exponent) << "' cy='" << Y(value(r)) << "' r='3' fill='" << color << "'/>\n";
+        for (const auto& r : rows)
+            s << "<circle cx='" << X(r.exponent) << "' cy='" << Y(value(r)) << "' r='3' fill='" << color << "'/>\n";
     };
     for (int t = 0; t < 3; ++t) polyline([t](const Row& r) { return r.update + r.draw[t]; }, colors[t], "");
     polyline([](const Row& r) { return r.update; }, "#777", " stroke-dasharray='6,4'");
@@ -253,10 +257,12 @@ int main(int argc, char** argv) {
     app.add_option("--out", o.out, "directory for rain_bench.csv and rain_bench.svg")->capture_default_str();
     app.add_option("--size", o.size, "framebuffer edge in pixels")->capture_default_str()->check(CLI::Range(16, 4096));
     app.add_option("--min-exp", o.minExp, "smallest count 2^e")->capture_default_str()->check(CLI::Range(0, 24));
-    app.add_option("--max-exp", o.maxExp, "largest count 2^e (24 only when memory allows)")->capture_default_str()->check(
-        CLI::Range(0, 24));
-    app.add_option("--frames", o.frames, "most timed rounds per count (fewer for large counts)")->capture_default_str()->check(
-        CLI::Range(1, 1000));
+    app.add_option("--max-exp", o.maxExp, "largest count 2^e (24 only when memory allows)")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 24));
+    app.add_option("--frames", o.frames, "most timed rounds per count (fewer for large counts)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1000));
     app.add_option("--backend", o.backend, "egl or osmesa (default: PRISM_GL_BACKEND, else egl)");
     app.add_option("--replot", o.replot, "redraw OUT/rain_bench.svg from this CSV, measure nothing");
     app.add_option("--subtitle", o.subtitle, "with --replot: the plot's subtitle (renderer, threads, size)");
@@ -308,11 +314,13 @@ int main(int argc, char** argv) {
                       << std::flush;
         }
         if (rows.empty()) return 0;
-        std::cout << "\n| particles | update ms | GS draw | GS frame | instanced draw | instanced frame | points draw | "
-                     "points frame | bytes/particle | CPU ref. update ms |\n|---|---|---|---|---|---|---|---|---|---|\n";
+        std::cout
+            << "\n| particles | update ms | GS draw | GS frame | instanced draw | instanced frame | points draw | "
+               "points frame | bytes/particle | CPU ref. update ms |\n|---|---|---|---|---|---|---|---|---|---|\n";
         for (const auto& r : rows) {
             std::cout << "| 2^" << r.exponent << " (" << r.particles << ") | " << fixed(r.update, 2);
-            for (int t = 0; t < 3; ++t) std::cout << " | " << fixed(r.draw[t], 1) << " | " << fixed(r.update + r.draw[t], 1);
+            for (int t = 0; t < 3; ++t)
+                std::cout << " | " << fixed(r.draw[t], 1) << " | " << fixed(r.update + r.draw[t], 1);
             std::cout << " | " << fixed(r.bytesPerParticle, 0) << " | "
                       << (r.cpuUpdate < 0 ? std::string("-") : fixed(r.cpuUpdate, 1)) << " |\n";
         }
@@ -321,9 +329,8 @@ int main(int argc, char** argv) {
         const auto svg = std::filesystem::path(o.out) / "rain_bench.svg";
         writeCsv(csv, rows);
         writeSvg(svg, rows, subtitle);
-        std::cout << "\nstreak texture array: 450 layers x 16 x 64 R8 = " << 450 * 16 * 64
-                  << " bytes (once)\nwrote " << csv.string() << " and " << svg.string() << " in "
-                  << fixed(msSince(start) / 1000.0, 0) << " s\n";
+        std::cout << "\nstreak texture array: 450 layers x 16 x 64 R8 = " << 450 * 16 * 64 << " bytes (once)\nwrote "
+                  << csv.string() << " and " << svg.string() << " in " << fixed(msSince(start) / 1000.0, 0) << " s\n";
     } catch (const std::exception& e) {
         std::cerr << "prism_bench_rain: error: " << e.what() << "\n";
         return 1;

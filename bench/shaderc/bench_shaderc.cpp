@@ -115,20 +115,38 @@ Settings parseArguments(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
         const std::string flag = argv[i];
         if (flag == "-h" || flag == "--help") usage("");
-        if (flag == "--keep") { s.keep = true; continue; }
-        if (flag == "--no-cmake") { s.cmakeStep = false; continue; }
-        if (flag == "--all-variants") { s.allVariants = true; continue; }
+        if (flag == "--keep") {
+            s.keep = true;
+            continue;
+        }
+        if (flag == "--no-cmake") {
+            s.cmakeStep = false;
+            continue;
+        }
+        if (flag == "--all-variants") {
+            s.allVariants = true;
+            continue;
+        }
         if (i + 1 >= argc) usage("missing value after " + flag);
         const char* value = argv[++i];
-        if (flag == "--runs") s.runs = parsePositive(flag, value);
-        else if (flag == "--shaders") s.syntheticShaders = parsePositive(flag, value);
-        else if (flag == "--jobs") s.jobs = parsePositive(flag, value);
-        else if (flag == "--csv") s.csv = value;
-        else if (flag == "--shaderc") s.shaderc = value;
-        else if (flag == "--glslang") s.glslang = value;
-        else if (flag == "--source-dir") s.sourceDir = value;
-        else if (flag == "--work-dir") s.workDir = value;
-        else usage("unknown option " + flag);
+        if (flag == "--runs")
+            s.runs = parsePositive(flag, value);
+        else if (flag == "--shaders")
+            s.syntheticShaders = parsePositive(flag, value);
+        else if (flag == "--jobs")
+            s.jobs = parsePositive(flag, value);
+        else if (flag == "--csv")
+            s.csv = value;
+        else if (flag == "--shaderc")
+            s.shaderc = value;
+        else if (flag == "--glslang")
+            s.glslang = value;
+        else if (flag == "--source-dir")
+            s.sourceDir = value;
+        else if (flag == "--work-dir")
+            s.workDir = value;
+        else
+            usage("unknown option " + flag);
     }
     if (s.jobs == 0) s.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     return s;
@@ -205,7 +223,8 @@ std::string joined(const Command& cmd) {
 Sample mustRun(const Command& cmd, const fs::path& cwd) {
     Outcome o = runProcess(cmd, cwd);
     if (o.exitCode != 0) {
-        std::fprintf(stderr, "prism_bench_shaderc: command failed (exit %d) in %s:\n  %s\n%s\n(scratch directory kept: %s)\n",
+        std::fprintf(stderr,
+                     "prism_bench_shaderc: command failed (exit %d) in %s:\n  %s\n%s\n(scratch directory kept: %s)\n",
                      o.exitCode, cwd.c_str(), joined(cmd).c_str(), readFile(g_logPath).c_str(), g_workDir.c_str());
         std::exit(1);
     }
@@ -261,11 +280,11 @@ std::string loadAverage() {
 // ---------------------------------------------------------------- catalogues
 
 struct Catalogue {
-    std::string name;            // "project" or "synthetic-40"
-    fs::path root;               // <work>/<name>
-    fs::path sources;            // stage files
-    fs::path modules;            // -I
-    fs::path contract;           // --contract
+    std::string name;   // "project" or "synthetic-40"
+    fs::path root;      // <work>/<name>
+    fs::path sources;   // stage files
+    fs::path modules;   // -I
+    fs::path contract;  // --contract
     int shaders = 0;
     int stageSourceFiles = 0;
     std::vector<std::string> flattened;  // --emit-glsl output: one file per stage and variant
@@ -286,8 +305,7 @@ std::vector<fs::path> sortedFiles(const fs::path& dir) {
 
 // copies = 1 and suffix false: an exact copy of the project catalogue. Otherwise the
 // project's shaders are copied under new names (<shader>_cNN) until `shaders` exist.
-Catalogue makeCatalogue(const Settings& s, const fs::path& work, const std::string& name, int shaders,
-                        bool rename) {
+Catalogue makeCatalogue(const Settings& s, const fs::path& work, const std::string& name, int shaders, bool rename) {
     Catalogue c;
     c.name = name;
     c.root = work / name;
@@ -335,8 +353,8 @@ Command shadercCommand(const Settings& s, const Catalogue& c, std::initializer_l
         cmd.push_back("--variant");
         cmd.push_back("*:DIRECTIONAL_LIGHTS=2,POINT_LIGHTS=1");
     }
-    for (std::string a : {std::string("-I"), c.modules.string(), std::string("--contract"), c.contract.string(),
-                          c.sources.string()})
+    for (std::string a :
+         {std::string("-I"), c.modules.string(), std::string("--contract"), c.contract.string(), c.sources.string()})
         cmd.push_back(a);
     return cmd;
 }
@@ -348,10 +366,10 @@ struct Case {
     std::string id;
     std::string label;
     int processes = 1;
-    int stages = 0;                    // flattened stage files of the catalogue
-    std::function<void()> prepare;     // untimed, before every run
-    std::function<Sample()> run;       // timed
-    std::function<void()> check;       // untimed, after every run (may flag a problem)
+    int stages = 0;                 // flattened stage files of the catalogue
+    std::function<void()> prepare;  // untimed, before every run
+    std::function<Sample()> run;    // timed
+    std::function<void()> check;    // untimed, after every run (may flag a problem)
     std::vector<Sample> samples;
 };
 
@@ -371,12 +389,12 @@ Stats statsOf(const Case& c) {
         wall.push_back(s.wallMs);
         cpu.push_back(s.cpuMs);
     }
-    return {median(wall), *std::min_element(wall.begin(), wall.end()),
-            *std::max_element(wall.begin(), wall.end()), median(cpu)};
+    return {median(wall), *std::min_element(wall.begin(), wall.end()), *std::max_element(wall.begin(), wall.end()),
+            median(cpu)};
 }
 
 std::int64_t mtimeNs(const fs::path& p) {
-    struct stat st{};
+    struct stat st {};
     if (stat(p.c_str(), &st) != 0) return -1;
     return static_cast<std::int64_t>(st.st_mtim.tv_sec) * 1000000000 + st.st_mtim.tv_nsec;
 }
@@ -444,8 +462,7 @@ void addCases(const Settings& s, const Catalogue& cat, bool withCmake, std::vect
         };
         c.run = [generate, cwd] { return mustRun(generate, cwd); };
         c.check = [header, before, name = cat.name] {
-            if (mtimeNs(header) != *before)
-                g_problems.push_back(name + " (d): the no-op run rewrote the header");
+            if (mtimeNs(header) != *before) g_problems.push_back(name + " (d): the no-op run rewrote the header");
         };
         cases.push_back(std::move(c));
     }
@@ -473,14 +490,13 @@ void addCases(const Settings& s, const Catalogue& cat, bool withCmake, std::vect
             << cat.sources.string() << "/*.vert\" \"" << cat.sources.string()
             << "/*.frag\")\n"
                "prism_add_shaders(bench_shaders SOURCES ${sources} MODULE_DIRS \""
-            << cat.modules.string() << "\" CONTRACT \"" << cat.contract.string()
-            << "\" HEADER bench/shaders.hpp"
-            << (s.allVariants ? "" : " VARIANTS \"*:DIRECTIONAL_LIGHTS=2,POINT_LIGHTS=1\"") << ")\n"
+            << cat.modules.string() << "\" CONTRACT \"" << cat.contract.string() << "\" HEADER bench/shaders.hpp"
+            << (s.allVariants ? "" : " VARIANTS \"*:DIRECTIONAL_LIGHTS=2,POINT_LIGHTS=1\"")
+            << ")\n"
                "add_custom_target(bench_all ALL)\n"
                "add_dependencies(bench_all bench_shaders_generate)\n";
     }
-    mustRun({s.cmake, "-S", project.string(), "-B", build.string(), "-G", "Ninja",
-             "-DCMAKE_MAKE_PROGRAM=" + s.ninja},
+    mustRun({s.cmake, "-S", project.string(), "-B", build.string(), "-G", "Ninja", "-DCMAKE_MAKE_PROGRAM=" + s.ninja},
             cwd);
     mustRun({s.ninja, "-C", build.string()}, cwd);  // the first, real build
 
@@ -598,8 +614,8 @@ int main(int argc, char** argv) {
     }
 
     const std::string loadBefore = loadAverage();
-    std::fprintf(stderr, "prism_bench_shaderc: %d timed runs (+1 warm-up) of %zu cases in %s\n", s.runs,
-                 cases.size(), work.c_str());
+    std::fprintf(stderr, "prism_bench_shaderc: %d timed runs (+1 warm-up) of %zu cases in %s\n", s.runs, cases.size(),
+                 work.c_str());
     // Interleaved rounds, so that a change of machine load hits every case alike.
     for (int round = 0; round <= s.runs; ++round) {
         for (auto& c : cases) {
@@ -615,8 +631,8 @@ int main(int argc, char** argv) {
 
     // ---- Markdown table
     std::printf("## prism-shaderc vs one glslangValidator process per stage file\n\n");
-    std::printf("Machine: %s, %u logical cores (nproc); load average before %s, after %s.\n",
-                cpuModel().c_str(), std::thread::hardware_concurrency(), loadBefore.c_str(), loadAfter.c_str());
+    std::printf("Machine: %s, %u logical cores (nproc); load average before %s, after %s.\n", cpuModel().c_str(),
+                std::thread::hardware_concurrency(), loadBefore.c_str(), loadAfter.c_str());
     std::printf("Tools: %s; %s.\n", firstLineOf({s.shaderc, "--version"}).c_str(),
                 firstLineOf({s.glslang, "--version"}).c_str());
     std::printf("Runs: %d per case (after one warm-up round), interleaved; wall-clock time of the whole case.\n\n",
@@ -624,8 +640,9 @@ int main(int argc, char** argv) {
     for (const auto& cat : catalogues)
         std::printf("- `%s`: %d shaders, %d stage source files, %zu flattened stage files (variants expanded)\n",
                     cat.name.c_str(), cat.shaders, cat.stageSourceFiles, cat.flattened.size());
-    std::printf("\n| catalogue | case | processes | median ms | min ms | CPU ms (median) | median ms per stage file | "
-                "(a) / this |\n|---|---|---:|---:|---:|---:|---:|---:|\n");
+    std::printf(
+        "\n| catalogue | case | processes | median ms | min ms | CPU ms (median) | median ms per stage file | "
+        "(a) / this |\n|---|---|---:|---:|---:|---:|---:|---:|\n");
 
     std::ofstream csv(s.csv);
     csv << "catalogue,case,label,shaders,stage_files,processes,runs,median_wall_ms,min_wall_ms,max_wall_ms,"
@@ -643,17 +660,18 @@ int main(int argc, char** argv) {
                     fixed(speedup, 1).c_str());
         std::string samples;
         for (const auto& x : c.samples) samples += (samples.empty() ? "" : ";") + fixed(x.wallMs, 3);
-        csv << c.catalogue << ',' << c.id << ',' << csvQuote(c.label) << ',' << cat->shaders << ',' << c.stages
-            << ',' << c.processes << ',' << c.samples.size() << ',' << fixed(st.medianWall, 3) << ','
-            << fixed(st.minWall, 3) << ',' << fixed(st.maxWall, 3) << ',' << fixed(st.medianCpu, 3) << ','
-            << fixed(st.medianWall / c.stages, 4) << ',' << fixed(speedup, 3) << ',' << samples << '\n';
+        csv << c.catalogue << ',' << c.id << ',' << csvQuote(c.label) << ',' << cat->shaders << ',' << c.stages << ','
+            << c.processes << ',' << c.samples.size() << ',' << fixed(st.medianWall, 3) << ',' << fixed(st.minWall, 3)
+            << ',' << fixed(st.maxWall, 3) << ',' << fixed(st.medianCpu, 3) << ',' << fixed(st.medianWall / c.stages, 4)
+            << ',' << fixed(speedup, 3) << ',' << samples << '\n';
     }
 
     // ---- targets (wall-clock medians; the CPU-time ratio is the one that load on the
     // machine disturbs least, since every case shares the cores with the same load)
-    std::printf("\n| catalogue | (a) / (b) -j %d | (a) / (b) -j 1 | (a) / (b) -j %d, CPU time | 10× target | "
-                "no-op (d) median | 50 ms target |\n|---|---:|---:|---:|---|---:|---|\n",
-                s.jobs, s.jobs);
+    std::printf(
+        "\n| catalogue | (a) / (b) -j %d | (a) / (b) -j 1 | (a) / (b) -j %d, CPU time | 10× target | "
+        "no-op (d) median | 50 ms target |\n|---|---:|---:|---:|---|---:|---|\n",
+        s.jobs, s.jobs);
     std::vector<std::string> notes;
     for (const auto& cat : catalogues) {
         const Stats a = statsOf(*findCase(cases, cat.name, "a"));
@@ -663,16 +681,17 @@ int main(int argc, char** argv) {
         const std::string rb1 = b1 ? fixed(a.medianWall / statsOf(*b1).medianWall, 1) + "×" : "–";
         const double rcpu = a.medianCpu / b.medianCpu;
         const double td = statsOf(*findCase(cases, cat.name, "d")).medianWall;
-        std::printf("| %s | %s× | %s | %s× | %s | %s ms | %s |\n", cat.name.c_str(), fixed(rb, 1).c_str(),
-                    rb1.c_str(), fixed(rcpu, 1).c_str(), rb >= 10 ? "met" : "**not met**",
-                    fixed(td, 1).c_str(), td < 50 ? "met" : "**not met**");
+        std::printf("| %s | %s× | %s | %s× | %s | %s ms | %s |\n", cat.name.c_str(), fixed(rb, 1).c_str(), rb1.c_str(),
+                    fixed(rcpu, 1).c_str(), rb >= 10 ? "met" : "**not met**", fixed(td, 1).c_str(),
+                    td < 50 ? "met" : "**not met**");
         // (f) re-runs the tool with unchanged inputs: it should cost about a no-op (d),
         // not a full generate (c). If it costs like (c), the fingerprint was not matched.
         const Case* f = findCase(cases, cat.name, "f");
         const double tc = statsOf(*findCase(cases, cat.name, "c")).medianCpu;
         if (f && statsOf(*f).medianCpu > 0.5 * tc)
-            notes.push_back(cat.name + " (f) costs " + fixed(statsOf(*f).medianCpu, 1) + " ms CPU, like a full generate (" +
-                            fixed(tc, 1) + " ms): under prism_add_shaders() the up-to-date header was not recognised, "
+            notes.push_back(cat.name + " (f) costs " + fixed(statsOf(*f).medianCpu, 1) +
+                            " ms CPU, like a full generate (" + fixed(tc, 1) +
+                            " ms): under prism_add_shaders() the up-to-date header was not recognised, "
                             "so glslang ran again");
     }
     for (const auto& n : notes) std::printf("\nNote: %s.\n", n.c_str());
@@ -681,7 +700,9 @@ int main(int argc, char** argv) {
         std::printf("\nProblem: %s\n", p.c_str());
     std::printf("\nCSV: %s\n", fs::absolute(s.csv).c_str());
 
-    if (!s.keep) fs::remove_all(work);
-    else std::fprintf(stderr, "prism_bench_shaderc: kept %s\n", work.c_str());
+    if (!s.keep)
+        fs::remove_all(work);
+    else
+        std::fprintf(stderr, "prism_bench_shaderc: kept %s\n", work.c_str());
     return g_problems.empty() ? 0 : 1;
 }

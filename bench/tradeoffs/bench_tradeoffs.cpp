@@ -93,7 +93,9 @@ Material benchMaterial() {
     return m;
 }
 
-bool isDiffuseOnly(const std::string& shader) { return shader == "flat" || shader == "smooth"; }
+bool isDiffuseOnly(const std::string& shader) {
+    return shader == "flat" || shader == "smooth";
+}
 
 double quantile(std::vector<double> v, double q) {
     std::sort(v.begin(), v.end());
@@ -166,13 +168,19 @@ int main(int argc, char** argv) {
     Options o;
     CLI::App app{"prism_bench_tradeoffs: frame time vs error against the exact sphere, per shader and mesh level"};
     app.add_option("--out", o.out, "directory for tradeoffs.csv and tradeoffs.svg")->capture_default_str();
-    app.add_option("--size", o.size, "framebuffer width and height")->capture_default_str()->check(CLI::Range(16, 4096));
-    app.add_option("--frames", o.frames, "timed frames per configuration")->capture_default_str()->check(CLI::Range(1, 100000));
+    app.add_option("--size", o.size, "framebuffer width and height")
+        ->capture_default_str()
+        ->check(CLI::Range(16, 4096));
+    app.add_option("--frames", o.frames, "timed frames per configuration")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 100000));
     app.add_option("--warmup", o.warmup, "untimed rounds first")->capture_default_str()->check(CLI::Range(0, 1000));
     app.add_option("--burst", o.burst, "frames in a row per visit; the first is not kept")
         ->capture_default_str()
         ->check(CLI::Range(2, 1000));
-    app.add_option("--min-level", o.minLevel, "coarsest icosphere level")->capture_default_str()->check(CLI::Range(0, 7));
+    app.add_option("--min-level", o.minLevel, "coarsest icosphere level")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 7));
     app.add_option("--max-level", o.maxLevel, "finest icosphere level")->capture_default_str()->check(CLI::Range(0, 7));
     app.add_option("--shaders", o.shaders, "lit catalogue shaders to compare")->delimiter(',')->capture_default_str();
     app.add_option("--images", o.images, "also write the renders and references as PNG into this directory");
@@ -302,10 +310,12 @@ int main(int argc, char** argv) {
             const ImageF hdr = renderImageF(cache, job);
             for (int y = 0; y < o.size; ++y)
                 for (int x = 0; x < o.size; ++x) {
-                    const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(o.size) + static_cast<std::size_t>(x);
+                    const std::size_t i =
+                        static_cast<std::size_t>(y) * static_cast<std::size_t>(o.size) + static_cast<std::size_t>(x);
                     if (!fullRef.covered[i] || hdr.at(x, y)[3] != 1.0f) continue;
                     for (int ch = 0; ch < 3; ++ch) {
-                        const double d = std::abs(255.0 * (hdr.at(x, y)[static_cast<std::size_t>(ch)] - fullRef.radiance[i][ch]));
+                        const double d =
+                            std::abs(255.0 * (hdr.at(x, y)[static_cast<std::size_t>(ch)] - fullRef.radiance[i][ch]));
                         floatMean += d;
                         floatMax = std::max(floatMax, d);
                     }
@@ -328,8 +338,8 @@ int main(int argc, char** argv) {
             << "- load average before / after timing: " << loadBefore << " / " << loadAfter << "\n"
             << "- image " << o.size << "x" << o.size << " RGBA8; " << o.frames << " timed frames per configuration, in "
             << "visits of " << o.burst << " frames (first not kept), rounds in random order after " << o.warmup
-            << " warm-up rounds; timing took " << f2(timingSeconds, 1) << " s, whole run "
-            << f2(totalSeconds, 1) << " s\n"
+            << " warm-up rounds; timing took " << f2(timingSeconds, 1) << " s, whole run " << f2(totalSeconds, 1)
+            << " s\n"
             << "- empty frame (bind + clear + glFinish): median " << f2(quantile(emptyTimes, 0.5)) << " ms, min "
             << f2(*std::min_element(emptyTimes.begin(), emptyTimes.end())) << " ms, median CPU "
             << f2(quantile(emptyCpuTimes, 0.5)) << " ms\n"
@@ -350,7 +360,8 @@ int main(int argc, char** argv) {
         out << "\n## Pareto front (median frame time vs mean error against the full reference)\n\n"
             << "| choice | median ms | mean err vs full ref |\n|---|---:|---:|\n";
         for (std::size_t i : front)
-            out << "| " << rowName(rows[i]) << " | " << f2(rows[i].medianMs) << " | " << f2(fullError(rows[i])) << " |\n";
+            out << "| " << rowName(rows[i]) << " | " << f2(rows[i].medianMs) << " | " << f2(fullError(rows[i]))
+                << " |\n";
         out << "\nCheapest choice per error budget (error against the full reference):\n\n";
         printBudgets(out, rows, fullError, budgets);
 
@@ -367,7 +378,8 @@ int main(int argc, char** argv) {
                 for (std::size_t i = 0; i < rows.size(); ++i)
                     if (rows[i].shader == shader) mine.push_back(i);
                 const auto best = cheapestWithin(rows, matchedError, b, mine);
-                out << " " << (best ? "L" + std::to_string(rows[*best].level) + " (" + f2(rows[*best].medianMs) + " ms)" : "-")
+                out << " "
+                    << (best ? "L" + std::to_string(rows[*best].level) + " (" + f2(rows[*best].medianMs) + " ms)" : "-")
                     << " |";
             }
             out << "\n";
@@ -376,7 +388,8 @@ int main(int argc, char** argv) {
         // Gouraud vs Phong per level: the seed's two claims.
         out << "\n## Gouraud vs Phong per level\n\n"
             << "| level | triangles | gouraud ms | phong ms | phong / gouraud | gouraud err | phong err | "
-               "gouraud highlight err px | phong highlight err px | mean abs(gouraud - phong) | max abs(gouraud - phong) |\n"
+               "gouraud highlight err px | phong highlight err px | mean abs(gouraud - phong) | max abs(gouraud - "
+               "phong) |\n"
             << "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
         for (unsigned level = o.minLevel; level <= o.maxLevel; ++level) {
             const Config *g = nullptr, *p = nullptr;
@@ -387,10 +400,11 @@ int main(int argc, char** argv) {
             }
             if (!g || !p) continue;
             const Metrics d = compareWithReference(g->image, p->image);
-            out << "| " << level << " | " << g->row.triangles << " | " << f2(g->row.medianMs) << " | " << f2(p->row.medianMs)
-                << " | " << f2(p->row.medianMs / g->row.medianMs) << " | " << f2(g->row.full.union_.mean) << " | "
-                << f2(p->row.full.union_.mean) << " | " << f2(g->row.full.highlightError, 1) << " | "
-                << f2(p->row.full.highlightError, 1) << " | " << f2(d.union_.mean) << " | " << d.union_.max << " |\n";
+            out << "| " << level << " | " << g->row.triangles << " | " << f2(g->row.medianMs) << " | "
+                << f2(p->row.medianMs) << " | " << f2(p->row.medianMs / g->row.medianMs) << " | "
+                << f2(g->row.full.union_.mean) << " | " << f2(p->row.full.union_.mean) << " | "
+                << f2(g->row.full.highlightError, 1) << " | " << f2(p->row.full.highlightError, 1) << " | "
+                << f2(d.union_.mean) << " | " << d.union_.max << " |\n";
         }
 
         out << "\n## Reference validation\n\n";

@@ -41,7 +41,9 @@ struct Accumulator {
 
 }  // namespace
 
-bool covered(const Image8& image, int x, int y) { return image.data[image.offset(x, y) + 3] == 255; }
+bool covered(const Image8& image, int x, int y) {
+    return image.data[image.offset(x, y) + 3] == 255;
+}
 
 double luma(const Image8& image, int x, int y) {
     const std::size_t o = image.offset(x, y);
@@ -85,7 +87,8 @@ Metrics compareWithReference(const Image8& render, const Image8& reference) {
         }
     m.union_ = all.stats();
     m.interior = both.stats();
-    m.highlightFound = highlightCentroid(render, m.highlightRender) && highlightCentroid(reference, m.highlightReference);
+    m.highlightFound =
+        highlightCentroid(render, m.highlightRender) && highlightCentroid(reference, m.highlightReference);
     if (m.highlightFound) m.highlightError = glm::distance(m.highlightRender, m.highlightReference);
     return m;
 }

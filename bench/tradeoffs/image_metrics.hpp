@@ -37,18 +37,19 @@ struct ErrorStats {
     // Pixels whose largest channel difference is <= 0, 1, 2, 3 units.
     std::array<std::size_t, 4> within{};
     double shareWithin(int units) const {
-        return pixels ? static_cast<double>(within[static_cast<std::size_t>(units)]) / static_cast<double>(pixels) : 0.0;
+        return pixels ? static_cast<double>(within[static_cast<std::size_t>(units)]) / static_cast<double>(pixels)
+                      : 0.0;
     }
 };
 
 struct Metrics {
-    ErrorStats union_;    // pixels covered by the render or the reference (or both)
-    ErrorStats interior;  // pixels covered by both
+    ErrorStats union_;              // pixels covered by the render or the reference (or both)
+    ErrorStats interior;            // pixels covered by both
     std::size_t renderOnly = 0;     // covered by the render only (mesh outside the sphere)
     std::size_t referenceOnly = 0;  // covered by the reference only (mesh inside the sphere)
     bool highlightFound = false;
     glm::dvec2 highlightRender{0.0}, highlightReference{0.0};
-    double highlightError = 0.0;    // distance between the centroids, pixels
+    double highlightError = 0.0;  // distance between the centroids, pixels
 };
 
 bool covered(const Image8& image, int x, int y);

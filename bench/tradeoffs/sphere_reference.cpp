@@ -27,7 +27,9 @@ double safePow(double x, double y) {
 }
 
 // GLSL reflect(I, N) = I - 2 dot(N, I) N.
-glm::dvec3 reflect(const glm::dvec3& i, const glm::dvec3& n) { return i - 2.0 * glm::dot(n, i) * n; }
+glm::dvec3 reflect(const glm::dvec3& i, const glm::dvec3& n) {
+    return i - 2.0 * glm::dot(n, i) * n;
+}
 
 double phongSpecular(const glm::dvec3& toLight, const glm::dvec3& toEye, const glm::dvec3& normal, double shininess) {
     return safePow(std::max(glm::dot(reflect(-toLight, normal), toEye), 0.0), shininess);
@@ -92,7 +94,8 @@ SphereReference renderSphereReference(const SphereScene& scene, bool withSpecula
     SphereReference out;
     out.width = scene.width;
     out.height = scene.height;
-    out.radiance.assign(static_cast<std::size_t>(scene.width) * static_cast<std::size_t>(scene.height), scene.background);
+    out.radiance.assign(static_cast<std::size_t>(scene.width) * static_cast<std::size_t>(scene.height),
+                        scene.background);
     out.covered.assign(out.radiance.size(), 0);
     out.image = Image8(scene.width, scene.height,
                        {toUnorm8(scene.background.r), toUnorm8(scene.background.g), toUnorm8(scene.background.b), 0});
@@ -113,8 +116,8 @@ SphereReference renderSphereReference(const SphereScene& scene, bool withSpecula
             if (-p.z > cam.farPlane) continue;
             const glm::dvec3 n = (p - centre) / r;
             const glm::dvec3 c = shadeEyeSpace(p, n, scene, withSpecular);
-            const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(scene.width) +
-                                  static_cast<std::size_t>(x);
+            const std::size_t i =
+                static_cast<std::size_t>(y) * static_cast<std::size_t>(scene.width) + static_cast<std::size_t>(x);
             out.radiance[i] = c;
             out.covered[i] = 1;
             if (c.r > 1.0 || c.g > 1.0 || c.b > 1.0) ++out.clampedPixels;

@@ -59,10 +59,10 @@ struct SphereScene {
 struct SphereReference {
     int width = 0;
     int height = 0;
-    std::vector<glm::dvec3> radiance;  // unclamped shade() per pixel (background where missed)
-    std::vector<std::uint8_t> covered; // 1 where the ray hits the sphere
-    Image8 image;                      // radiance in 8 bits; alpha 255 covered, 0 background
-    std::size_t clampedPixels = 0;     // covered pixels with a channel above 1 before clamping
+    std::vector<glm::dvec3> radiance;   // unclamped shade() per pixel (background where missed)
+    std::vector<std::uint8_t> covered;  // 1 where the ray hits the sphere
+    Image8 image;                       // radiance in 8 bits; alpha 255 covered, 0 background
+    std::size_t clampedPixels = 0;      // covered pixels with a channel above 1 before clamping
 };
 
 // shade() of modules/lighting.glsl in double, for an eye-space point and unit normal.

@@ -35,7 +35,8 @@ struct LogAxis {
     }
     std::vector<double> ticks() const {
         std::vector<double> out;
-        for (int e = static_cast<int>(std::floor(std::log10(lo))) - 1; e <= static_cast<int>(std::ceil(std::log10(hi))); ++e)
+        for (int e = static_cast<int>(std::floor(std::log10(lo))) - 1; e <= static_cast<int>(std::ceil(std::log10(hi)));
+             ++e)
             for (double m : {1.0, 2.0, 3.0, 5.0}) {
                 const double v = m * std::pow(10.0, e);
                 if (v >= lo * 0.999 && v <= hi * 1.001) out.push_back(v);
@@ -69,7 +70,9 @@ std::string tickLabel(double v) {
 
 }  // namespace
 
-std::string rowName(const Row& row) { return row.shader + " L" + std::to_string(row.level); }
+std::string rowName(const Row& row) {
+    return row.shader + " L" + std::to_string(row.level);
+}
 
 std::vector<std::size_t> paretoFront(const std::vector<Row>& rows, const ErrorOf& error) {
     std::vector<std::size_t> order(rows.size());
@@ -102,16 +105,17 @@ std::optional<std::size_t> cheapestWithin(const std::vector<Row>& rows, const Er
 }
 
 void printTable(std::ostream& out, const std::vector<Row>& rows) {
-    out << "| shader | level | triangles | median ms | min ms | median CPU ms | ref | mean err | max err | interior mean | interior max "
+    out << "| shader | level | triangles | median ms | min ms | median CPU ms | ref | mean err | max err | interior "
+           "mean | interior max "
            "| silhouette px (mesh only + sphere only) | highlight err px | mean err vs full ref |\n"
         << "|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const Row& r : rows) {
         const Metrics& m = r.matched;
         out << "| " << r.shader << " | " << r.level << " | " << r.triangles << " | " << fixed(r.medianMs, 2) << " | "
-            << fixed(r.minMs, 2) << " | " << fixed(r.medianCpuMs, 2) << " | " << (r.diffuseModel ? "diffuse" : "full") << " | " << fixed(m.union_.mean, 2)
-            << " | " << m.union_.max << " | " << fixed(m.interior.mean, 2) << " | " << m.interior.max << " | "
-            << (m.renderOnly + m.referenceOnly) << " (" << m.renderOnly << " + " << m.referenceOnly << ") | "
-            << (m.highlightFound ? fixed(m.highlightError, 1) : std::string("-")) << " | "
+            << fixed(r.minMs, 2) << " | " << fixed(r.medianCpuMs, 2) << " | " << (r.diffuseModel ? "diffuse" : "full")
+            << " | " << fixed(m.union_.mean, 2) << " | " << m.union_.max << " | " << fixed(m.interior.mean, 2) << " | "
+            << m.interior.max << " | " << (m.renderOnly + m.referenceOnly) << " (" << m.renderOnly << " + "
+            << m.referenceOnly << ") | " << (m.highlightFound ? fixed(m.highlightError, 1) : std::string("-")) << " | "
             << fixed(r.full.union_.mean, 2) << " |\n";
     }
 }
@@ -130,9 +134,10 @@ void writeCsv(const std::filesystem::path& path, const std::vector<Row>& rows, c
         const bool onFront = std::find(front.begin(), front.end(), i) != front.end();
         f << r.shader << ',' << r.level << ',' << r.triangles << ',' << r.vertices << ',' << r.frames << ','
           << fixed(r.medianMs, 3) << ',' << fixed(r.minMs, 3) << ',' << fixed(r.p25Ms, 3) << ',' << fixed(r.p75Ms, 3)
-          << ',' << fixed(r.medianCpuMs, 3) << ',' << (r.diffuseModel ? "diffuse" : "full") << ',' << fixed(m.union_.mean, 4) << ',' << m.union_.max
-          << ',' << m.interior.pixels << ',' << fixed(m.interior.mean, 4) << ',' << m.interior.max << ','
-          << fixed(m.interior.shareWithin(2), 4) << ',' << m.renderOnly << ',' << m.referenceOnly << ','
+          << ',' << fixed(r.medianCpuMs, 3) << ',' << (r.diffuseModel ? "diffuse" : "full") << ','
+          << fixed(m.union_.mean, 4) << ',' << m.union_.max << ',' << m.interior.pixels << ','
+          << fixed(m.interior.mean, 4) << ',' << m.interior.max << ',' << fixed(m.interior.shareWithin(2), 4) << ','
+          << m.renderOnly << ',' << m.referenceOnly << ','
           << (m.highlightFound ? fixed(m.highlightError, 2) : std::string()) << ',' << fixed(r.full.union_.mean, 4)
           << ',' << r.full.union_.max << ',' << fixed(r.full.interior.mean, 4) << ','
           << (r.full.highlightFound ? fixed(r.full.highlightError, 2) : std::string()) << ',' << (onFront ? 1 : 0)
@@ -191,8 +196,8 @@ void writeSvg(const std::filesystem::path& path, const std::vector<Row>& rows, c
         const LogAxis y{eLo, eHi, top + panelH, top};
         const ErrorOf err = panel == 0 ? ErrorOf(fullError) : ErrorOf(matchedError);
 
-        s << "<g>\n<text x=\"" << left + panelW / 2 << "\" y=\"" << top - 10 << "\" text-anchor=\"middle\" font-weight=\"bold\">"
-          << titles[panel] << "</text>\n";
+        s << "<g>\n<text x=\"" << left + panelW / 2 << "\" y=\"" << top - 10
+          << "\" text-anchor=\"middle\" font-weight=\"bold\">" << titles[panel] << "</text>\n";
         s << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << panelW << "\" height=\"" << panelH
           << "\" fill=\"none\" stroke=\"#888\"/>\n";
         for (double t : x.ticks())
@@ -212,7 +217,8 @@ void writeSvg(const std::filesystem::path& path, const std::vector<Row>& rows, c
         std::map<std::string, std::vector<std::size_t>> series;
         for (std::size_t i = 0; i < rows.size(); ++i) series[rows[i].shader].push_back(i);
         for (auto& [shader, idx] : series) {
-            std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) { return rows[a].level < rows[b].level; });
+            std::sort(idx.begin(), idx.end(),
+                      [&](std::size_t a, std::size_t b) { return rows[a].level < rows[b].level; });
             s << "<polyline fill=\"none\" stroke=\"" << shaderColour(shader) << "\" stroke-opacity=\"0.45\" points=\"";
             for (std::size_t i : idx) s << fixed(x(rows[i].medianMs), 1) << ',' << fixed(y(err(rows[i])), 1) << ' ';
             s << "\"/>\n";

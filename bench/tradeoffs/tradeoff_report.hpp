@@ -27,7 +27,7 @@ struct Row {
     std::size_t vertices = 0;
     bool diffuseModel = false;  // flat/smooth: `matched` is against the diffuse-only reference
     double medianMs = 0.0, minMs = 0.0, p25Ms = 0.0, p75Ms = 0.0;  // wall time per frame
-    double medianCpuMs = 0.0;  // process CPU time per frame (all threads)
+    double medianCpuMs = 0.0;                                      // process CPU time per frame (all threads)
     int frames = 0;
     Metrics matched;  // against the reference of the shader's own lighting model
     Metrics full;     // against the full (diffuse + Phong specular) reference
@@ -35,8 +35,12 @@ struct Row {
 
 // Which error a front or a budget is about.
 using ErrorOf = std::function<double(const Row&)>;
-inline double fullError(const Row& r) { return r.full.union_.mean; }
-inline double matchedError(const Row& r) { return r.matched.union_.mean; }
+inline double fullError(const Row& r) {
+    return r.full.union_.mean;
+}
+inline double matchedError(const Row& r) {
+    return r.matched.union_.mean;
+}
 
 // Indices of the non-dominated rows (no other row is at least as fast AND at least as
 // accurate, and better in one), fastest first.

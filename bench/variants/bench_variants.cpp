@@ -40,14 +40,20 @@ double median(std::vector<double> v) {
     return v.empty() ? 0.0 : (v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]));
 }
 
-double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+double msSince(Clock::time_point t) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
 
 EShLanguage glslangStage(prism::catalog::Stage s) {
     switch (s) {
-    case prism::catalog::Stage::Vertex: return EShLangVertex;
-    case prism::catalog::Stage::Geometry: return EShLangGeometry;
-    case prism::catalog::Stage::Fragment: return EShLangFragment;
-    default: return EShLangCompute;
+        case prism::catalog::Stage::Vertex:
+            return EShLangVertex;
+        case prism::catalog::Stage::Geometry:
+            return EShLangGeometry;
+        case prism::catalog::Stage::Fragment:
+            return EShLangFragment;
+        default:
+            return EShLangCompute;
     }
 }
 
@@ -96,9 +102,10 @@ ModeResult measure(const prism::Scene& scene, const prism::FeatureSet& features,
         const prism::FeatureSet f = uber ? prism::FeatureSet{8, 4, true} : features;
         const auto& variant = names.variantOf(o.shader, prism::variantFor(*shader, f, o.variantOverrides));
         distinct[o.shader + " " + std::string(variant.name)] = &variant;
-        draws.push_back({&o, &variant,
-                         std::make_unique<prism::GpuMesh>(prism::meshForShader(o.shader, prism::namedMesh(o.mesh, o.subdivision)),
-                                                          prism::shaders::kCatalog.contractAttributes)});
+        draws.push_back(
+            {&o, &variant,
+             std::make_unique<prism::GpuMesh>(prism::meshForShader(o.shader, prism::namedMesh(o.mesh, o.subdivision)),
+                                              prism::shaders::kCatalog.contractAttributes)});
     }
     r.programs = distinct.size();
     // Compile + link of every distinct program, median over runs (shader cache disabled).
@@ -107,7 +114,8 @@ ModeResult measure(const prism::Scene& scene, const prism::FeatureSet& features,
     for (int run = 0; run < runs; ++run) {
         const auto start = Clock::now();
         for (const auto& [key, variant] : distinct)
-            programs[variant] = std::make_unique<prism::gl::Program>(*variant, prism::shaders::kCatalog.contractAttributes, key);
+            programs[variant] =
+                std::make_unique<prism::gl::Program>(*variant, prism::shaders::kCatalog.contractAttributes, key);
         glFinish();
         buildTimes.push_back(msSince(start));
     }
@@ -152,10 +160,14 @@ int main(int argc, char** argv) {
     std::vector<std::string> scenes;
     for (int i = 1; i < argc; ++i) {
         std::string a = argv[i];
-        if (a == "--runs" && i + 1 < argc) runs = std::max(1, std::atoi(argv[++i]));
-        else if (a == "--frames" && i + 1 < argc) frames = std::max(1, std::atoi(argv[++i]));
-        else if (a == "--csv" && i + 1 < argc) csvPath = argv[++i];
-        else scenes.push_back(a);
+        if (a == "--runs" && i + 1 < argc)
+            runs = std::max(1, std::atoi(argv[++i]));
+        else if (a == "--frames" && i + 1 < argc)
+            frames = std::max(1, std::atoi(argv[++i]));
+        else if (a == "--csv" && i + 1 < argc)
+            csvPath = argv[++i];
+        else
+            scenes.push_back(a);
     }
     if (scenes.empty()) {
         std::cerr << "usage: prism_bench_variants [--runs N] [--frames N] [--csv FILE] scene.json...\n";
@@ -179,13 +191,15 @@ int main(int argc, char** argv) {
         for (const auto* m : {&minimal, &uber}) {
             const char* mode = m == &minimal ? "minimal" : "uber";
             std::cout << "| " << name << " | " << mode << " | " << m->programs << " | " << m->glslLines << " | "
-                      << m->activeUniforms << " | " << m->compileLinkMs << " | " << m->frameMs << " | " << diff << " |\n";
+                      << m->activeUniforms << " | " << m->compileLinkMs << " | " << m->frameMs << " | " << diff
+                      << " |\n";
             csv << name << "," << mode << "," << m->programs << "," << m->glslLines << "," << m->activeUniforms << ","
                 << m->compileLinkMs << "," << m->frameMs << "," << diff << "\n";
         }
         std::cout << "| " << name << " | uber / minimal | | " << double(uber.glslLines) / minimal.glslLines << "x | "
                   << double(uber.activeUniforms) / minimal.activeUniforms << "x | "
-                  << uber.compileLinkMs / minimal.compileLinkMs << "x | " << uber.frameMs / minimal.frameMs << "x | |\n";
+                  << uber.compileLinkMs / minimal.compileLinkMs << "x | " << uber.frameMs / minimal.frameMs
+                  << "x | |\n";
     }
     if (!csvPath.empty()) std::ofstream(csvPath) << csv.str();
     glslang::FinalizeProcess();

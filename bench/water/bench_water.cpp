@@ -45,11 +45,14 @@ struct Row {
     double cellsPerSecondCpu() const { return grid * static_cast<double>(grid) / (cpuStepMs * 1e-3); }
 };
 
-int runsFor(int grid) { return grid <= 128 ? 21 : grid <= 256 ? 11 : grid <= 512 ? 7 : 5; }
+int runsFor(int grid) {
+    return grid <= 128 ? 21 : grid <= 256 ? 11 : grid <= 512 ? 7 : 5;
+}
 
 HeightField terrainFor(int grid) {
     // A 64 m square whatever the resolution: finer grids have smaller cells.
-    return proceduralTerrain({.width = grid, .height = grid, .cellSize = 64.0f / static_cast<float>(grid), .relief = 3.0f, .seed = 1});
+    return proceduralTerrain(
+        {.width = grid, .height = grid, .cellSize = 64.0f / static_cast<float>(grid), .relief = 3.0f, .seed = 1});
 }
 
 template <class Sim>
@@ -78,7 +81,8 @@ std::string fmt(double v, int precision = 2) {
     return s.str();
 }
 
-void writeCsv(const std::filesystem::path& path, const std::vector<Row>& rows, const std::string& device, int w, int h) {
+void writeCsv(const std::filesystem::path& path, const std::vector<Row>& rows, const std::string& device, int w,
+              int h) {
     if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
     std::ofstream f(path);
     f << "# prism_bench_water on " << device << "; render " << w << "x" << h << "\n";
@@ -95,12 +99,17 @@ void writeSvg(const std::filesystem::path& path, const std::vector<Row>& rows, c
     double lo = 1e30, hi = 0;
     for (const Row& r : rows)
         for (double v : {r.cpuStepMs, r.gpuStepMs, r.renderMs})
-            if (v > 0) { lo = std::min(lo, v); hi = std::max(hi, v); }
+            if (v > 0) {
+                lo = std::min(lo, v);
+                hi = std::max(hi, v);
+            }
     const double yMin = std::pow(10.0, std::floor(std::log10(lo))), yMax = std::pow(10.0, std::ceil(std::log10(hi)));
     const double xMin = std::log2(rows.front().grid * 1.0 * rows.front().grid) - 0.5;
     const double xMax = std::log2(rows.back().grid * 1.0 * rows.back().grid) + 0.5;
     auto X = [&](double cells) { return left + (std::log2(cells) - xMin) / (xMax - xMin) * (W - left - right); };
-    auto Y = [&](double ms) { return top + (std::log10(yMax) - std::log10(ms)) / (std::log10(yMax) - std::log10(yMin)) * (H - top - bottom); };
+    auto Y = [&](double ms) {
+        return top + (std::log10(yMax) - std::log10(ms)) / (std::log10(yMax) - std::log10(yMin)) * (H - top - bottom);
+    };
     std::ofstream s(path);
     s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H
       << "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
@@ -117,7 +126,8 @@ void writeSvg(const std::filesystem::path& path, const std::vector<Row>& rows, c
           << "\" stroke=\"#eee\"/>\n<text x=\"" << X(c) << "\" y=\"" << H - bottom + 18 << "\" text-anchor=\"middle\">"
           << r.grid << "&#178;</text>\n";
     }
-    s << "<text x=\"" << (left + W - right) / 2 << "\" y=\"" << H - 10 << "\" text-anchor=\"middle\">grid (cells, log scale)</text>\n";
+    s << "<text x=\"" << (left + W - right) / 2 << "\" y=\"" << H - 10
+      << "\" text-anchor=\"middle\">grid (cells, log scale)</text>\n";
     struct Series {
         const char* name;
         const char* colour;
@@ -134,12 +144,12 @@ void writeSvg(const std::filesystem::path& path, const std::vector<Row>& rows, c
         s << "\"/>\n";
         for (const Row& r : rows)
             if (r.*ser.field > 0)
-                s << "<circle cx=\"" << X(r.grid * 1.0 * r.grid) << "\" cy=\"" << Y(r.*ser.field) << "\" r=\"3.5\" fill=\""
-                  << ser.colour << "\"/>\n";
+                s << "<circle cx=\"" << X(r.grid * 1.0 * r.grid) << "\" cy=\"" << Y(r.*ser.field)
+                  << "\" r=\"3.5\" fill=\"" << ser.colour << "\"/>\n";
         const double ly = top + 10 + 20 * legend++;
         s << "<line x1=\"" << W - right + 12 << "\" x2=\"" << W - right + 32 << "\" y1=\"" << ly << "\" y2=\"" << ly
-          << "\" stroke=\"" << ser.colour << "\" stroke-width=\"2\"/>\n<text x=\"" << W - right + 36 << "\" y=\"" << ly + 4
-          << "\">" << ser.name << "</text>\n";
+          << "\" stroke=\"" << ser.colour << "\" stroke-width=\"2\"/>\n<text x=\"" << W - right + 36 << "\" y=\""
+          << ly + 4 << "\">" << ser.name << "</text>\n";
     }
     s << "</svg>\n";
 }
@@ -211,8 +221,8 @@ int main(int argc, char** argv) {
             rows.push_back(row);
             std::cout << "  " << grid << "^2 done\n" << std::flush;
         }
-        std::cout << "\n| grid | cells | CPU step (ms) | GPU step (ms) | GPU / CPU | CPU Mcells/s | render " << width << "x"
-                  << height << " (ms) |\n|---:|---:|---:|---:|---:|---:|---:|\n";
+        std::cout << "\n| grid | cells | CPU step (ms) | GPU step (ms) | GPU / CPU | CPU Mcells/s | render " << width
+                  << "x" << height << " (ms) |\n|---:|---:|---:|---:|---:|---:|---:|\n";
         for (const Row& r : rows)
             std::cout << "| " << r.grid << "^2 | " << r.grid * r.grid << " | " << fmt(r.cpuStepMs) << " | "
                       << (r.gpuStepMs > 0 ? fmt(r.gpuStepMs) : "-") << " | "
@@ -221,7 +231,8 @@ int main(int argc, char** argv) {
         std::cout << "(median of " << rows.front().cpuRuns << " (128^2) to " << rows.back().cpuRuns
                   << " runs; one step = one substep of the largest stable dt; GPU times end with glFinish)\n";
         if (!csv.empty()) writeCsv(csv, rows, device, width, height);
-        if (!svg.empty()) writeSvg(svg, rows, device + ", render " + std::to_string(width) + "x" + std::to_string(height));
+        if (!svg.empty())
+            writeSvg(svg, rows, device + ", render " + std::to_string(width) + "x" + std::to_string(height));
         if (!csv.empty() || !svg.empty()) std::cout << "wrote " << csv << " " << svg << "\n";
     } catch (const std::exception& e) {
         std::cerr << "prism_bench_water: error: " << e.what() << "\n";

@@ -10,8 +10,7 @@
 namespace {
 
 void printCatalog(std::string_view title, const prism::catalog::Catalog& catalog) {
-    std::cout << title << ": " << catalog.shaders.size() << " shaders, " << catalog.modules.size()
-              << " modules\n";
+    std::cout << title << ": " << catalog.shaders.size() << " shaders, " << catalog.modules.size() << " modules\n";
     for (const auto& shader : catalog.shaders) {
         std::cout << "  shader " << shader.name << ": " << shader.variants.size() << " variant(s), modules:";
         for (auto m : shader.modules) std::cout << ' ' << catalog.modules[m].name;
@@ -37,8 +36,8 @@ int main() {
     bool ok = consumer::lit::moduleIdFromName("tint").has_value() &&
               consumer::plain::moduleIdFromName("checker").has_value() &&
               !consumer::plain::moduleIdFromName("tint").has_value();
-    std::cout << "lit shader: " << consumer::lit::name(phong)
-              << ", plain shader: " << consumer::plain::name(checker) << '\n';
+    std::cout << "lit shader: " << consumer::lit::name(phong) << ", plain shader: " << consumer::plain::name(checker)
+              << '\n';
     std::cout << (ok ? "consumer: OK" : "consumer: unexpected catalogue contents") << '\n';
     return ok ? 0 : 1;
 }

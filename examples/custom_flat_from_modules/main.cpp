@@ -49,7 +49,9 @@ void main() {
 }
 )glsl";
 
-std::uint32_t id(ModuleId m) { return static_cast<std::uint32_t>(m); }
+std::uint32_t id(ModuleId m) {
+    return static_cast<std::uint32_t>(m);
+}
 
 }  // namespace
 
@@ -58,9 +60,13 @@ int main(int argc, char** argv) {
     try {
         auto context = prism::gl::createContext();
         std::vector<prism::gl::ComposeStage> stages{
-            {prism::catalog::Stage::Vertex, {id(ModuleId::lights), id(ModuleId::normals)}, kVertexMain,
+            {prism::catalog::Stage::Vertex,
+             {id(ModuleId::lights), id(ModuleId::normals)},
+             kVertexMain,
              "examples/custom_flat_from_modules/flat_main.vert"},
-            {prism::catalog::Stage::Fragment, {id(ModuleId::material), id(ModuleId::fragment_output)}, kFragmentMain,
+            {prism::catalog::Stage::Fragment,
+             {id(ModuleId::material), id(ModuleId::fragment_output)},
+             kFragmentMain,
              "examples/custom_flat_from_modules/flat_main.frag"},
         };
         for (const auto& s : stages) {

@@ -67,8 +67,10 @@ float parseIntensity(const std::string& text) {
         validateIntensity(*number);  // names the bad value and the range
         return *number;
     }
-    throw RainParameterError("rain: --intensity must be drizzle, light, moderate, heavy, excessive, cloudburst or a "
-                             "number of cm/h >= 0 (got '" + text + "')");
+    throw RainParameterError(
+        "rain: --intensity must be drizzle, light, moderate, heavy, excessive, cloudburst or a "
+        "number of cm/h >= 0 (got '" +
+        text + "')");
 }
 
 RainSceneDesc sceneFor(const Options& o, int view, float intensity, float wind, bool fog) {
@@ -156,15 +158,28 @@ constexpr StreakTechnique kTechniques[] = {StreakTechnique::GeometryShader, Stre
 void pressKey(Live& s, RainScene& scene, int key, bool shift) {
     const int classes = static_cast<int>(rainClasses().size());
     switch (key) {
-    case GLFW_KEY_I: s.rainClass = std::min(s.rainClass + 1, classes - 1); break;
-    case GLFW_KEY_K: s.rainClass = std::max(s.rainClass - 1, 0); break;
-    case GLFW_KEY_W:
-        if (shift) s.windDirection = std::fmod(s.windDirection + 45.0f, 360.0f);
-        else s.wind = s.wind >= 12.0f ? 0.0f : s.wind + 2.0f;
-        break;
-    case GLFW_KEY_F: s.fog = !s.fog; s.rebuild = true; return;
-    case GLFW_KEY_T: s.technique = (s.technique + 1) % 3; scene.setTechnique(kTechniques[s.technique]); return;
-    default: return;
+        case GLFW_KEY_I:
+            s.rainClass = std::min(s.rainClass + 1, classes - 1);
+            break;
+        case GLFW_KEY_K:
+            s.rainClass = std::max(s.rainClass - 1, 0);
+            break;
+        case GLFW_KEY_W:
+            if (shift)
+                s.windDirection = std::fmod(s.windDirection + 45.0f, 360.0f);
+            else
+                s.wind = s.wind >= 12.0f ? 0.0f : s.wind + 2.0f;
+            break;
+        case GLFW_KEY_F:
+            s.fog = !s.fog;
+            s.rebuild = true;
+            return;
+        case GLFW_KEY_T:
+            s.technique = (s.technique + 1) % 3;
+            scene.setTechnique(kTechniques[s.technique]);
+            return;
+        default:
+            return;
     }
     if (auto* rain = scene.rain()) {
         rain->setIntensity(rainClasses()[static_cast<std::size_t>(s.rainClass)].intensity);
@@ -206,8 +221,8 @@ int runWindow(const Options& o) {
     live.windDirection = o.windDirection;
     live.fog = o.fog;
     auto build = [&] {
-        RainSceneDesc d = sceneFor(o, 0, rainClasses()[static_cast<std::size_t>(live.rainClass)].intensity, live.wind,
-                                   live.fog);
+        RainSceneDesc d =
+            sceneFor(o, 0, rainClasses()[static_cast<std::size_t>(live.rainClass)].intensity, live.wind, live.fog);
         d.technique = kTechniques[live.technique];
         return std::make_unique<RainScene>(d);
     };
@@ -244,11 +259,12 @@ int runWindow(const Options& o) {
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - now).count();
         smoothedMs = frame == 0 ? ms : 0.9 * smoothedMs + 0.1 * ms;
         const auto* rain = current->rain();
-        const std::string title =
-            "Prism rain - " + std::string(rainClasses()[static_cast<std::size_t>(live.rainClass)].name) + ", " +
-            std::to_string(rain ? rain->particleCount() : 0) + " drops, wind " + std::to_string(static_cast<int>(live.wind)) +
-            " m/s, " + (live.fog ? "fog, " : "") + std::string(techniqueName(kTechniques[live.technique])) + ", " +
-            std::to_string(static_cast<int>(smoothedMs)) + " ms";
+        const std::string title = "Prism rain - " +
+                                  std::string(rainClasses()[static_cast<std::size_t>(live.rainClass)].name) + ", " +
+                                  std::to_string(rain ? rain->particleCount() : 0) + " drops, wind " +
+                                  std::to_string(static_cast<int>(live.wind)) + " m/s, " + (live.fog ? "fog, " : "") +
+                                  std::string(techniqueName(kTechniques[live.technique])) + ", " +
+                                  std::to_string(static_cast<int>(smoothedMs)) + " ms";
         glfwSetWindowTitle(window, title.c_str());
         context->swapBuffers();
         context->pollEvents();
@@ -274,9 +290,11 @@ int main(int argc, char** argv) {
     app.add_option("--seed", o.seed, "random seed of the rain")->capture_default_str();
     app.add_option("--width", o.width, "image width")->capture_default_str()->check(CLI::Range(16, 4096));
     app.add_option("--height", o.height, "image height")->capture_default_str()->check(CLI::Range(16, 4096));
-    app.add_option("--warmup", o.warmup, "simulation steps of 1/30 s before an image")->capture_default_str()->check(
-        CLI::Range(0, 10000));
-    app.add_option("--intensity", o.intensity, "rain class (drizzle..cloudburst) or cm/h, with --view")->capture_default_str();
+    app.add_option("--warmup", o.warmup, "simulation steps of 1/30 s before an image")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 10000));
+    app.add_option("--intensity", o.intensity, "rain class (drizzle..cloudburst) or cm/h, with --view")
+        ->capture_default_str();
     app.add_option("--wind", o.wind, "wind strength in m/s, with --view or --window")->capture_default_str();
     app.add_option("--wind-direction", o.windDirection, "degrees in the xz plane (0 = +x)")->capture_default_str();
     app.add_flag("--fog", o.fog, "distance fog and fog billboards, with --view or --window");

@@ -36,24 +36,44 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
     auto& s = *static_cast<ViewerState*>(glfwGetWindowUserPointer(window));
     const auto& shaders = prism::shaders::kCatalog.shaders;
     switch (key) {
-    case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(window, GLFW_TRUE); break;
-    case GLFW_KEY_LEFT: s.yaw -= 0.1f; break;
-    case GLFW_KEY_RIGHT: s.yaw += 0.1f; break;
-    case GLFW_KEY_UP: s.pitch -= 0.1f; break;
-    case GLFW_KEY_DOWN: s.pitch += 0.1f; break;
-    case GLFW_KEY_S:
-        if (++s.variantIndex >= shaders[s.shaderIndex].variants.size()) {
-            s.variantIndex = 0;
-            s.shaderIndex = (s.shaderIndex + 1) % shaders.size();
-        }
-        s.meshDirty = true;  // flat needs other normals
-        break;
-    case GLFW_KEY_M: s.meshIndex = (s.meshIndex + 1) % std::size(kMeshes); s.meshDirty = true; break;
-    case GLFW_KEY_EQUAL:
-    case GLFW_KEY_KP_ADD: if (s.subdivision < 6) ++s.subdivision; s.meshDirty = true; break;
-    case GLFW_KEY_MINUS:
-    case GLFW_KEY_KP_SUBTRACT: if (s.subdivision > 0) --s.subdivision; s.meshDirty = true; break;
-    default: break;
+        case GLFW_KEY_ESCAPE:
+            glfwSetWindowShouldClose(window, GLFW_TRUE);
+            break;
+        case GLFW_KEY_LEFT:
+            s.yaw -= 0.1f;
+            break;
+        case GLFW_KEY_RIGHT:
+            s.yaw += 0.1f;
+            break;
+        case GLFW_KEY_UP:
+            s.pitch -= 0.1f;
+            break;
+        case GLFW_KEY_DOWN:
+            s.pitch += 0.1f;
+            break;
+        case GLFW_KEY_S:
+            if (++s.variantIndex >= shaders[s.shaderIndex].variants.size()) {
+                s.variantIndex = 0;
+                s.shaderIndex = (s.shaderIndex + 1) % shaders.size();
+            }
+            s.meshDirty = true;  // flat needs other normals
+            break;
+        case GLFW_KEY_M:
+            s.meshIndex = (s.meshIndex + 1) % std::size(kMeshes);
+            s.meshDirty = true;
+            break;
+        case GLFW_KEY_EQUAL:
+        case GLFW_KEY_KP_ADD:
+            if (s.subdivision < 6) ++s.subdivision;
+            s.meshDirty = true;
+            break;
+        case GLFW_KEY_MINUS:
+        case GLFW_KEY_KP_SUBTRACT:
+            if (s.subdivision > 0) --s.subdivision;
+            s.meshDirty = true;
+            break;
+        default:
+            break;
     }
 }
 
@@ -87,8 +107,9 @@ int main(int argc, char** argv) {
             job.variant.clear();
             for (const auto& d : variant.defines) job.variant.emplace_back(d.name, d.value);
             if (state.meshDirty) {
-                gpu.emplace(prism::meshForShader(job.shader, prism::namedMesh(kMeshes[state.meshIndex], state.subdivision)),
-                            prism::shaders::kCatalog.contractAttributes);
+                gpu.emplace(
+                    prism::meshForShader(job.shader, prism::namedMesh(kMeshes[state.meshIndex], state.subdivision)),
+                    prism::shaders::kCatalog.contractAttributes);
                 state.meshDirty = false;
             }
             int w = 0, h = 0;
@@ -103,7 +124,8 @@ int main(int argc, char** argv) {
             glEnable(GL_DEPTH_TEST);
             prism::drawJob(cache, job, *gpu);
             glFinish();
-            const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            const double ms =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
             smoothedMs = frame == 0 ? ms : 0.9 * smoothedMs + 0.1 * ms;
             const std::string title = "Prism viewer - " + job.shader + " " + std::string(variant.name) + " / " +
                                       kMeshes[state.meshIndex] + " subdiv " + std::to_string(state.subdivision) +

@@ -63,10 +63,12 @@ prism::Image8 depthMap(const WaterScene& scene) {
         for (int x = 0; x < t.width; ++x) {
             const float g = 0.25f + 0.6f * (t.at(x, z) - *lo) / std::max(1e-6f, *hi - *lo);
             const float d = depth[t.index(x, z)];
-            const float w = d <= 1e-4f ? 0.0f : std::clamp(std::log10(d / 1e-4f) / 3.0f, 0.0f, 1.0f);  // 0.1 mm .. 10 cm
+            const float w =
+                d <= 1e-4f ? 0.0f : std::clamp(std::log10(d / 1e-4f) / 3.0f, 0.0f, 1.0f);  // 0.1 mm .. 10 cm
             const float r = g * (1.0f - w) + 0.05f * w, gg = g * (1.0f - w) + 0.25f * w, b = g * (1.0f - w) + 0.85f * w;
-            img.set(x, z, {static_cast<std::uint8_t>(r * 255), static_cast<std::uint8_t>(gg * 255),
-                           static_cast<std::uint8_t>(b * 255), 255});
+            img.set(x, z,
+                    {static_cast<std::uint8_t>(r * 255), static_cast<std::uint8_t>(gg * 255),
+                     static_cast<std::uint8_t>(b * 255), 255});
         }
     return img;
 }
@@ -85,8 +87,11 @@ WaterSceneDescription describe(const Options& o) {
     if (!o.heightmap.empty()) {
         d.terrain = loadHeightMap(o.heightmap, {.cellSize = o.cellSize, .heightScale = o.heightScale});
     } else {
-        d.terrain = proceduralTerrain({.width = o.grid, .height = o.grid, .cellSize = o.cellSize,
-                                       .relief = 0.06f * static_cast<float>(o.grid) * o.cellSize, .seed = 1});
+        d.terrain = proceduralTerrain({.width = o.grid,
+                                       .height = o.grid,
+                                       .cellSize = o.cellSize,
+                                       .relief = 0.06f * static_cast<float>(o.grid) * o.cellSize,
+                                       .seed = 1});
     }
     if (!o.permeabilityMap.empty())
         d.permeability = loadPermeabilityMap(o.permeabilityMap, d.terrain.width, d.terrain.height,
@@ -132,19 +137,41 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
     if (action == GLFW_RELEASE) return;
     auto& s = *static_cast<ViewState*>(glfwGetWindowUserPointer(window));
     switch (key) {
-    case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(window, GLFW_TRUE); break;
-    case GLFW_KEY_LEFT: s.yaw -= 0.1f; break;
-    case GLFW_KEY_RIGHT: s.yaw += 0.1f; break;
-    case GLFW_KEY_UP: s.pitch = std::min(1.45f, s.pitch + 0.05f); break;
-    case GLFW_KEY_DOWN: s.pitch = std::max(0.05f, s.pitch - 0.05f); break;
-    case GLFW_KEY_EQUAL:
-    case GLFW_KEY_KP_ADD: s.zoom *= 0.9f; break;
-    case GLFW_KEY_MINUS:
-    case GLFW_KEY_KP_SUBTRACT: s.zoom *= 1.1f; break;
-    case GLFW_KEY_R: s.rainIndex = (s.rainIndex + 1) % 7; s.rainChanged = true; break;
-    case GLFW_KEY_F: s.fogToggled = true; break;
-    case GLFW_KEY_SPACE: s.paused = !s.paused; break;
-    default: break;
+        case GLFW_KEY_ESCAPE:
+            glfwSetWindowShouldClose(window, GLFW_TRUE);
+            break;
+        case GLFW_KEY_LEFT:
+            s.yaw -= 0.1f;
+            break;
+        case GLFW_KEY_RIGHT:
+            s.yaw += 0.1f;
+            break;
+        case GLFW_KEY_UP:
+            s.pitch = std::min(1.45f, s.pitch + 0.05f);
+            break;
+        case GLFW_KEY_DOWN:
+            s.pitch = std::max(0.05f, s.pitch - 0.05f);
+            break;
+        case GLFW_KEY_EQUAL:
+        case GLFW_KEY_KP_ADD:
+            s.zoom *= 0.9f;
+            break;
+        case GLFW_KEY_MINUS:
+        case GLFW_KEY_KP_SUBTRACT:
+            s.zoom *= 1.1f;
+            break;
+        case GLFW_KEY_R:
+            s.rainIndex = (s.rainIndex + 1) % 7;
+            s.rainChanged = true;
+            break;
+        case GLFW_KEY_F:
+            s.fogToggled = true;
+            break;
+        case GLFW_KEY_SPACE:
+            s.paused = !s.paused;
+            break;
+        default:
+            break;
     }
 }
 
@@ -160,7 +187,8 @@ int runWindow(const Options& o) {
     auto* window = static_cast<GLFWwindow*>(context->nativeWindow());
     ViewState state;
     for (std::size_t i = 0; i < rainClassTable().size(); ++i)
-        if (auto c = parseRainClass(o.rain); c && *c == rainClassTable()[i].rainClass) state.rainIndex = static_cast<int>(i) + 1;
+        if (auto c = parseRainClass(o.rain); c && *c == rainClassTable()[i].rainClass)
+            state.rainIndex = static_cast<int>(i) + 1;
     if (parseRainRateMmPerHour(o.rain) == 0.0) state.rainIndex = 0;
     glfwSetWindowUserPointer(window, &state);
     glfwSetKeyCallback(window, onKey);
@@ -178,7 +206,10 @@ int runWindow(const Options& o) {
         const double wall = std::min(0.1, std::chrono::duration<double>(now - last).count());
         last = now;
         if (state.rainChanged) {
-            const double mmh = state.rainIndex == 0 ? 0.0 : rainRateMmPerHour(rainClassTable()[static_cast<std::size_t>(state.rainIndex - 1)].rainClass);
+            const double mmh =
+                state.rainIndex == 0
+                    ? 0.0
+                    : rainRateMmPerHour(rainClassTable()[static_cast<std::size_t>(state.rainIndex - 1)].rainClass);
             scene->water()->setRain(mmh);
             state.rainChanged = false;
         }
@@ -201,14 +232,15 @@ int runWindow(const Options& o) {
         smoothedMs = frame == 0 ? ms : 0.9 * smoothedMs + 0.1 * ms;
         std::ostringstream title;
         title << std::fixed << std::setprecision(1) << "Prism water - " << smoothedMs << " ms - rain "
-              << scene->water()->rainMmPerHour() << " mm/h - stored "
-              << std::setprecision(3) << scene->water()->simulation().ledger().stored * t.cellSize * t.cellSize << " m3"
+              << scene->water()->rainMmPerHour() << " mm/h - stored " << std::setprecision(3)
+              << scene->water()->simulation().ledger().stored * t.cellSize * t.cellSize << " m3"
               << (state.paused ? " (paused)" : "");
         glfwSetWindowTitle(window, title.str().c_str());
         context->swapBuffers();
         context->pollEvents();
     }
-    std::cout << "water: last frame " << smoothedMs << " ms (smoothed); " << ledgerLine(scene->water()->simulation()) << "\n";
+    std::cout << "water: last frame " << smoothedMs << " ms (smoothed); " << ledgerLine(scene->water()->simulation())
+              << "\n";
     renderer.reset();
     scene.reset();
     return 0;
@@ -225,8 +257,10 @@ int main(int argc, char** argv) {
     app.add_option("--heightmap", o.heightmap, "8- or 16-bit PNG height map instead of the procedural terrain");
     app.add_option("--height-scale", o.heightScale, "metres for the brightest height-map value");
     app.add_option("--permeability", o.permeabilityMap, "8- or 16-bit PNG permeability (attribute) map");
-    app.add_option("--permeability-max", o.permeabilityMaxMmH, "infiltration rate (mm/h) of a white permeability pixel");
-    app.add_option("--rain", o.rain, "rain class (drizzle, light, moderate, heavy, excessive, cloudburst), none, or mm/h");
+    app.add_option("--permeability-max", o.permeabilityMaxMmH,
+                   "infiltration rate (mm/h) of a white permeability pixel");
+    app.add_option("--rain", o.rain,
+                   "rain class (drizzle, light, moderate, heavy, excessive, cloudburst), none, or mm/h");
     app.add_option("--steps", o.steps, "simulation steps")->check(CLI::NonNegativeNumber);
     app.add_option("--dt", o.dt, "seconds per step (split into stable substeps)")->check(CLI::NonNegativeNumber);
     app.add_flag("--gpu", o.gpu, "run the step as compute shaders (GL 4.3)");

@@ -50,8 +50,7 @@ ArgsResult parseArgs(int argc, char** argv) {
     CLI::App app{"prism-shaderc: resolve #includes, validate GLSL with glslang and embed it in a C++ header",
                  "prism-shaderc"};
     app.set_version_flag("--version", std::string("prism-shaderc ") + PRISM_VERSION);
-    app.add_option("inputs", o.inputs, "shader stage files (.vert .geom .frag .comp) or directories")
-        ->required();
+    app.add_option("inputs", o.inputs, "shader stage files (.vert .geom .frag .comp) or directories")->required();
     app.add_option("-I", o.includeDirs, "module search directory (repeatable, searched in order)")
         ->allow_extra_args(false);
     app.add_option("-o", o.output, "generated C++ header");
@@ -60,8 +59,7 @@ ArgsResult parseArgs(int argc, char** argv) {
     app.add_option("--emit-glsl", o.emitGlslDir, "also write each flattened stage as DIR/<shader>[.<variant>].<stage>");
     app.add_flag("--check", o.checkOnly, "validate only, write nothing");
     app.add_option("-D", defines, "define a macro for every stage: NAME[=VALUE]")->allow_extra_args(false);
-    app.add_option("--glsl-version", o.glslVersion, "default #version when a shader has none")
-        ->capture_default_str();
+    app.add_option("--glsl-version", o.glslVersion, "default #version when a shader has none")->capture_default_str();
     app.add_option("--namespace", o.nameSpace, "C++ namespace of the generated code")->capture_default_str();
     app.add_option("--contract", o.contracts, "binding contract JSON (attributes and uniforms the runtime provides)")
         ->allow_extra_args(false);

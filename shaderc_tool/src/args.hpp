@@ -11,23 +11,23 @@
 namespace prism::shaderc {
 
 struct Options {
-    std::vector<std::string> inputs;        // stage files or directories
-    std::vector<std::string> includeDirs;   // -I, searched in order
+    std::vector<std::string> inputs;                           // stage files or directories
+    std::vector<std::string> includeDirs;                      // -I, searched in order
     std::vector<std::pair<std::string, std::string>> defines;  // -D NAME[=VALUE]
-    std::vector<std::string> contracts;     // --contract (JSON), merged in order
-    std::vector<std::string> variantFilters;  // --variant SHADER:NAME=V,NAME=V
-    std::string output;                     // -o header
-    std::string depfile;                    // --depfile
-    std::string stamp;                      // --stamp: touched on every successful run
-    std::string emitGlslDir;                // --emit-glsl
-    std::string baseDir;                    // --base-dir: embedded paths are relative to it
+    std::vector<std::string> contracts;                        // --contract (JSON), merged in order
+    std::vector<std::string> variantFilters;                   // --variant SHADER:NAME=V,NAME=V
+    std::string output;                                        // -o header
+    std::string depfile;                                       // --depfile
+    std::string stamp;                                         // --stamp: touched on every successful run
+    std::string emitGlslDir;                                   // --emit-glsl
+    std::string baseDir;                                       // --base-dir: embedded paths are relative to it
     std::string nameSpace = "prism::shaders";
     int glslVersion = 330;
     std::string glslProfile = "core";
     ErrorFormat errorFormat = ErrorFormat::Gcc;
-    int jobs = 0;                           // 0 = hardware concurrency
+    int jobs = 0;  // 0 = hardware concurrency
     bool checkOnly = false;
-    std::string commandLine;                // for the banner
+    std::string commandLine;  // for the banner
 };
 
 struct ArgsResult {

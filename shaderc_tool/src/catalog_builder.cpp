@@ -41,8 +41,9 @@ ModuleIndex indexModules(const Options& o, const std::set<std::string>& extraFil
         auto canonical = reader.canonical(path);
         if (!canonical || !canonicals.insert(*canonical).second) return;
         if (!identifiers.insert(identifier).second) {
-            sink.report(makeError(path, 0, 0, "module identifier '" + identifier +
-                                                  "' is already taken by another module; rename one of them"));
+            sink.report(makeError(
+                path, 0, 0,
+                "module identifier '" + identifier + "' is already taken by another module; rename one of them"));
             return;
         }
         found.emplace_back(identifier, path);
@@ -127,7 +128,8 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
                 CatalogStage cst{st.stage, r.stage.text, {}};
                 for (const auto& f : r.stage.files) {
                     cst.files.push_back(embeddedPath(f.path, o.baseDir));
-                    if (f.number > 0 && includedCanonical.insert(f.canonical).second) includedPath[f.canonical] = f.path;
+                    if (f.number > 0 && includedCanonical.insert(f.canonical).second)
+                        includedPath[f.canonical] = f.path;
                 }
                 rc.filesRead.insert(rc.filesRead.end(), r.stage.filesRead.begin(), r.stage.filesRead.end());
                 cv.stages.push_back(std::move(cst));
@@ -150,8 +152,8 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
             for (const auto& cs : rc.data.shaders)
                 for (const auto& axis : cs.axes) declared = declared || axis.name == name;
             if (!declared)
-                sink.report(makeError("", 0, 0, "--variant *:" + name + "=" + value + ": no shader declares a variant '" +
-                                                     name + "'"));
+                sink.report(makeError(
+                    "", 0, 0, "--variant *:" + name + "=" + value + ": no shader declares a variant '" + name + "'"));
         }
     }
 
@@ -170,7 +172,8 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
         for (const auto& variant : rc.resolved[s])
             for (const auto& stage : variant)
                 for (const auto& f : stage.files)
-                    if (auto it = modules.byCanonical.find(f.canonical); f.number > 0 && it != modules.byCanonical.end())
+                    if (auto it = modules.byCanonical.find(f.canonical);
+                        f.number > 0 && it != modules.byCanonical.end())
                         used.insert(it->second);
         rc.data.shaders[s].modules.assign(used.begin(), used.end());
     }
@@ -198,7 +201,8 @@ void validateCatalog(ResolvedCatalog& rc, const Contract& contract, int jobs, Di
             results[i] = validateProgram(stages, contract);
         }
     };
-    const std::size_t threads = std::clamp<std::size_t>(static_cast<std::size_t>(jobs), 1, std::max<std::size_t>(1, tasks.size()));
+    const std::size_t threads =
+        std::clamp<std::size_t>(static_cast<std::size_t>(jobs), 1, std::max<std::size_t>(1, tasks.size()));
     std::vector<std::thread> pool;
     for (std::size_t i = 1; i < threads; ++i) pool.emplace_back(worker);
     worker();
@@ -208,9 +212,14 @@ void validateCatalog(ResolvedCatalog& rc, const Contract& contract, int jobs, Di
         auto& variant = rc.data.shaders[tasks[i].shader].variants[tasks[i].variant];
         for (auto& d : results[i].diagnostics) {
             if (rc.data.shaders[tasks[i].shader].variants.size() > 1 && d.severity == Severity::Error)
-                d.notes.push_back({Severity::Note, "", 0, 0,
-                                   "in variant " + variant.name + " of shader '" + rc.data.shaders[tasks[i].shader].name + "'",
-                                   {}, {}});
+                d.notes.push_back(
+                    {Severity::Note,
+                     "",
+                     0,
+                     0,
+                     "in variant " + variant.name + " of shader '" + rc.data.shaders[tasks[i].shader].name + "'",
+                     {},
+                     {}});
             sink.report(std::move(d));
         }
         variant.reflection = std::move(results[i].reflection);
@@ -221,24 +230,48 @@ std::string fingerprint(const ResolvedCatalog& rc) {
     // FNV-1a over the resolved texts, paths and everything else the header prints.
     std::uint64_t h = 1469598103934665603ull;
     auto mix = [&](std::string_view s) {
-        for (unsigned char c : s) { h ^= c; h *= 1099511628211ull; }
-        h ^= 0xff; h *= 1099511628211ull;
+        for (unsigned char c : s) {
+            h ^= c;
+            h *= 1099511628211ull;
+        }
+        h ^= 0xff;
+        h *= 1099511628211ull;
     };
     const auto& d = rc.data;
-    mix(PRISM_VERSION); mix(d.nameSpace); mix(d.commandLine); mix(d.versionDirective);  // the banner shows the command
+    mix(PRISM_VERSION);
+    mix(d.nameSpace);
+    mix(d.commandLine);
+    mix(d.versionDirective);  // the banner shows the command
     for (const auto& s : d.shaders) {
         mix(s.name);
-        for (const auto& a : s.axes) { mix(a.name); for (const auto& v : a.values) mix(v); }
+        for (const auto& a : s.axes) {
+            mix(a.name);
+            for (const auto& v : a.values) mix(v);
+        }
         for (const auto& v : s.variants)
-            for (const auto& st : v.stages) { mix(st.text); for (const auto& f : st.files) mix(f); }
+            for (const auto& st : v.stages) {
+                mix(st.text);
+                for (const auto& f : st.files) mix(f);
+            }
         for (auto m : s.modules) mix(std::to_string(m));
     }
     for (const auto& m : d.modules) {
-        mix(m.identifier); mix(m.path); mix(m.description); mix(m.text);
+        mix(m.identifier);
+        mix(m.path);
+        mix(m.description);
+        mix(m.text);
         for (auto dep : m.dependencies) mix(std::to_string(dep));
     }
-    for (const auto& a : d.contract.attributes) { mix(a.name); mix(a.type); mix(std::to_string(a.location)); }
-    for (const auto& u : d.contract.uniforms) { mix(u.name); mix(u.type); mix(std::to_string(u.array)); }
+    for (const auto& a : d.contract.attributes) {
+        mix(a.name);
+        mix(a.type);
+        mix(std::to_string(a.location));
+    }
+    for (const auto& u : d.contract.uniforms) {
+        mix(u.name);
+        mix(u.type);
+        mix(std::to_string(u.array));
+    }
     char buf[17];
     std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
     return buf;

@@ -17,10 +17,10 @@ namespace prism::shaderc {
 // Resolved (not yet validated) catalogue: cheap to compute, and enough to know
 // whether anything changed since the header was last written.
 struct ResolvedCatalog {
-    CatalogData data;              // variants without reflection yet
-    std::vector<std::string> filesRead;  // for the depfile (display paths)
+    CatalogData data;                                               // variants without reflection yet
+    std::vector<std::string> filesRead;                             // for the depfile (display paths)
     std::vector<std::vector<std::vector<ResolvedStage>>> resolved;  // [shader][variant][stage]
-    std::vector<std::vector<std::string>> stagePaths;                // [shader][stage]
+    std::vector<std::vector<std::string>> stagePaths;               // [shader][stage]
 };
 
 ResolvedCatalog resolveCatalog(const Options& options, const std::vector<ShaderInput>& shaders,
@@ -31,6 +31,5 @@ void validateCatalog(ResolvedCatalog& catalog, const Contract& contract, int job
 
 // A stable fingerprint of everything that determines the header's content.
 std::string fingerprint(const ResolvedCatalog& catalog);
-
 
 }  // namespace prism::shaderc

@@ -39,9 +39,9 @@ struct CatalogModule {
     std::string identifier;  // ModuleId enumerator, e.g. "lights" or "lighting_phong"
     std::string path;        // as embedded
     std::string description;
-    std::string text;        // own text, #include/#version/#pragma once blanked
+    std::string text;                         // own text, #include/#version/#pragma once blanked
     std::vector<std::uint32_t> dependencies;  // direct includes, in order
-    std::string sourcePath;  // as read (for the depfile), not embedded
+    std::string sourcePath;                   // as read (for the depfile), not embedded
 };
 
 struct CatalogData {

@@ -15,7 +15,12 @@ using nlohmann::json;
 std::pair<int, int> lineColumnOf(const std::string& text, std::size_t offset) {
     int line = 1, col = 1;
     for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
-        if (text[i] == '\n') { ++line; col = 1; } else { ++col; }
+        if (text[i] == '\n') {
+            ++line;
+            col = 1;
+        } else {
+            ++col;
+        }
     }
     return {line, col};
 }
@@ -30,11 +35,17 @@ struct Field {
         ok = false;
     }
     std::string string(const json& obj, const std::string& key, const std::string& at) {
-        if (!obj.contains(key) || !obj[key].is_string()) { fail(at + "/" + key, "a string"); return {}; }
+        if (!obj.contains(key) || !obj[key].is_string()) {
+            fail(at + "/" + key, "a string");
+            return {};
+        }
         return obj[key].get<std::string>();
     }
     int integer(const json& obj, const std::string& key, const std::string& at, bool required) {
-        if (!obj.contains(key)) { if (required) fail(at + "/" + key, "an integer"); return 0; }
+        if (!obj.contains(key)) {
+            if (required) fail(at + "/" + key, "an integer");
+            return 0;
+        }
         if (!obj[key].is_number_integer() || obj[key].get<long long>() < 0) {
             fail(at + "/" + key, "a non-negative integer");
             return 0;
@@ -56,28 +67,42 @@ void loadOne(const std::string& path, const std::string& text, Contract& c, std:
         return;
     }
     Field f{path, out};
-    if (!doc.is_object()) { f.fail("/", "an object with \"attributes\" and \"uniforms\""); return; }
+    if (!doc.is_object()) {
+        f.fail("/", "an object with \"attributes\" and \"uniforms\"");
+        return;
+    }
     if (doc.contains("attributes")) {
-        if (!doc["attributes"].is_array()) f.fail("/attributes", "an array");
-        else for (std::size_t i = 0; i < doc["attributes"].size(); ++i) {
-            std::string at = "/attributes/" + std::to_string(i);
-            const json& a = doc["attributes"][i];
-            if (!a.is_object()) { f.fail(at, "an object {name, type, location}"); continue; }
-            ContractAttribute attr{f.string(a, "name", at), f.string(a, "type", at), f.integer(a, "location", at, true)};
-            if (!attr.type.empty() && glTypeOf(attr.type) == 0) f.fail(at + "/type", "a GLSL type such as vec3");
-            c.attributes.push_back(std::move(attr));
-        }
+        if (!doc["attributes"].is_array())
+            f.fail("/attributes", "an array");
+        else
+            for (std::size_t i = 0; i < doc["attributes"].size(); ++i) {
+                std::string at = "/attributes/" + std::to_string(i);
+                const json& a = doc["attributes"][i];
+                if (!a.is_object()) {
+                    f.fail(at, "an object {name, type, location}");
+                    continue;
+                }
+                ContractAttribute attr{f.string(a, "name", at), f.string(a, "type", at),
+                                       f.integer(a, "location", at, true)};
+                if (!attr.type.empty() && glTypeOf(attr.type) == 0) f.fail(at + "/type", "a GLSL type such as vec3");
+                c.attributes.push_back(std::move(attr));
+            }
     }
     if (doc.contains("uniforms")) {
-        if (!doc["uniforms"].is_array()) f.fail("/uniforms", "an array");
-        else for (std::size_t i = 0; i < doc["uniforms"].size(); ++i) {
-            std::string at = "/uniforms/" + std::to_string(i);
-            const json& u = doc["uniforms"][i];
-            if (!u.is_object()) { f.fail(at, "an object {name, type[, array]}"); continue; }
-            ContractUniform uni{f.string(u, "name", at), f.string(u, "type", at), f.integer(u, "array", at, false)};
-            if (!uni.type.empty() && glTypeOf(uni.type) == 0) f.fail(at + "/type", "a GLSL type such as mat4");
-            c.uniforms.push_back(std::move(uni));
-        }
+        if (!doc["uniforms"].is_array())
+            f.fail("/uniforms", "an array");
+        else
+            for (std::size_t i = 0; i < doc["uniforms"].size(); ++i) {
+                std::string at = "/uniforms/" + std::to_string(i);
+                const json& u = doc["uniforms"][i];
+                if (!u.is_object()) {
+                    f.fail(at, "an object {name, type[, array]}");
+                    continue;
+                }
+                ContractUniform uni{f.string(u, "name", at), f.string(u, "type", at), f.integer(u, "array", at, false)};
+                if (!uni.type.empty() && glTypeOf(uni.type) == 0) f.fail(at + "/type", "a GLSL type such as mat4");
+                c.uniforms.push_back(std::move(uni));
+            }
     }
 }
 
@@ -103,7 +128,10 @@ std::string suggestion(const std::string& name, const std::vector<T>& known) {
     std::size_t bestDistance = 4;
     for (const auto& k : known) {
         auto d = editDistance(name, k.name);
-        if (d < bestDistance) { bestDistance = d; best = k.name; }
+        if (d < bestDistance) {
+            bestDistance = d;
+            best = k.name;
+        }
     }
     return best.empty() ? std::string() : " (did you mean '" + best + "'?)";
 }
@@ -118,16 +146,40 @@ std::string contractFiles(const Contract& c) {
 
 std::uint32_t glTypeOf(const std::string& t) {
     static const std::map<std::string, std::uint32_t> types = {
-        {"float", 0x1406}, {"vec2", 0x8B50}, {"vec3", 0x8B51}, {"vec4", 0x8B52},
-        {"int", 0x1404}, {"ivec2", 0x8B53}, {"ivec3", 0x8B54}, {"ivec4", 0x8B55},
-        {"uint", 0x1405}, {"uvec2", 0x8DC6}, {"uvec3", 0x8DC7}, {"uvec4", 0x8DC8},
-        {"bool", 0x8B56}, {"bvec2", 0x8B57}, {"bvec3", 0x8B58}, {"bvec4", 0x8B59},
-        {"mat2", 0x8B5A}, {"mat3", 0x8B5B}, {"mat4", 0x8B5C},
-        {"mat2x3", 0x8B65}, {"mat2x4", 0x8B66}, {"mat3x2", 0x8B67}, {"mat3x4", 0x8B68},
-        {"mat4x2", 0x8B69}, {"mat4x3", 0x8B6A},
-        {"sampler2D", 0x8B5E}, {"sampler3D", 0x8B5F}, {"samplerCube", 0x8B60},
-        {"sampler2DShadow", 0x8B62}, {"sampler2DArray", 0x8DC1}, {"isampler2D", 0x8DCA},
-        {"usampler2D", 0x8DD2}, {"image2D", 0x904D}, {"image2DArray", 0x9053},
+        {"float", 0x1406},
+        {"vec2", 0x8B50},
+        {"vec3", 0x8B51},
+        {"vec4", 0x8B52},
+        {"int", 0x1404},
+        {"ivec2", 0x8B53},
+        {"ivec3", 0x8B54},
+        {"ivec4", 0x8B55},
+        {"uint", 0x1405},
+        {"uvec2", 0x8DC6},
+        {"uvec3", 0x8DC7},
+        {"uvec4", 0x8DC8},
+        {"bool", 0x8B56},
+        {"bvec2", 0x8B57},
+        {"bvec3", 0x8B58},
+        {"bvec4", 0x8B59},
+        {"mat2", 0x8B5A},
+        {"mat3", 0x8B5B},
+        {"mat4", 0x8B5C},
+        {"mat2x3", 0x8B65},
+        {"mat2x4", 0x8B66},
+        {"mat3x2", 0x8B67},
+        {"mat3x4", 0x8B68},
+        {"mat4x2", 0x8B69},
+        {"mat4x3", 0x8B6A},
+        {"sampler2D", 0x8B5E},
+        {"sampler3D", 0x8B5F},
+        {"samplerCube", 0x8B60},
+        {"sampler2DShadow", 0x8B62},
+        {"sampler2DArray", 0x8DC1},
+        {"isampler2D", 0x8DCA},
+        {"usampler2D", 0x8DD2},
+        {"image2D", 0x904D},
+        {"image2DArray", 0x9053},
     };
     auto it = types.find(t);
     return it == types.end() ? 0 : it->second;
@@ -172,9 +224,8 @@ std::vector<Diagnostic> checkContract(const Contract& contract, const std::vecto
                                        [&](const auto& a) { return a.name == v.name; });
                 if (it == contract.attributes.end()) {
                     out.push_back(diagnosticAt(locate, s, v, Severity::Error,
-                                               "vertex attribute '" + v.name +
-                                                   "' is not in the binding contract (" + files +
-                                                   "), so the runtime would never feed it" +
+                                               "vertex attribute '" + v.name + "' is not in the binding contract (" +
+                                                   files + "), so the runtime would never feed it" +
                                                    suggestion(v.name, contract.attributes) +
                                                    "; fix the name or add it to the contract"));
                 } else if (it->type != glslTypeWithArray(v)) {
@@ -197,11 +248,11 @@ std::vector<Diagnostic> checkContract(const Contract& contract, const std::vecto
                                                    "` but the contract (" + files + ") supplies `" + it->type +
                                                    (it->array ? "[" + std::to_string(it->array) + "]" : "") + "`"));
                 } else if ((v.arraySize != 0) != (it->array != 0) || v.arraySize > it->array || v.arraySize < 0) {
-                    out.push_back(diagnosticAt(locate, s, v, Severity::Error,
-                                               "uniform '" + v.name + "' is `" + glslTypeWithArray(v) +
-                                                   "` but the contract (" + files + ") supplies " +
-                                                   (it->array ? "at most " + std::to_string(it->array) + " elements"
-                                                              : "a single value")));
+                    out.push_back(diagnosticAt(
+                        locate, s, v, Severity::Error,
+                        "uniform '" + v.name + "' is `" + glslTypeWithArray(v) + "` but the contract (" + files +
+                            ") supplies " +
+                            (it->array ? "at most " + std::to_string(it->array) + " elements" : "a single value")));
                 }
             }
         }

@@ -30,7 +30,7 @@ struct ContractUniform {
 };
 
 struct Contract {
-    std::vector<std::string> files;  // where it was read from
+    std::vector<std::string> files;             // where it was read from
     std::vector<ContractAttribute> attributes;  // sorted by location
     std::vector<ContractUniform> uniforms;      // sorted by name
     bool empty() const { return files.empty(); }

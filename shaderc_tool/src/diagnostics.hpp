@@ -37,7 +37,7 @@ std::string formatDiagnostic(const Diagnostic& d, ErrorFormat fmt);
 // Collects diagnostics from every stage, drops exact repeats (same severity, file,
 // line, column and message), and prints them in the order first seen.
 class DiagnosticSink {
-public:
+  public:
     // Returns false when `d` repeated an earlier one and was dropped.
     bool report(Diagnostic d);
     void reportAll(std::vector<Diagnostic> ds) {
@@ -47,7 +47,7 @@ public:
     int errorCount() const;
     void print(std::ostream& out, ErrorFormat fmt) const;
 
-private:
+  private:
     std::vector<Diagnostic> kept_;
     std::set<std::tuple<int, std::string, int, int, std::string>> seen_;
 };

@@ -13,13 +13,14 @@ namespace {
 
 const std::set<std::string>& cppKeywords() {
     static const std::set<std::string> words = {
-        "alignas", "alignof", "and", "asm", "auto", "bool", "break", "case", "catch", "char", "class", "const",
-        "constexpr", "continue", "default", "delete", "do", "double", "else", "enum", "explicit", "export",
-        "extern", "false", "float", "for", "friend", "goto", "if", "inline", "int", "long", "mutable",
-        "namespace", "new", "noexcept", "not", "nullptr", "operator", "or", "private", "protected", "public",
-        "register", "return", "short", "signed", "sizeof", "static", "struct", "switch", "template", "this",
-        "throw", "true", "try", "typedef", "typename", "union", "unsigned", "using", "virtual", "void",
-        "volatile", "while", "xor", "concept", "requires", "module", "import", "co_await", "co_return",
+        "alignas",  "alignof", "and",       "asm",       "auto",     "bool",      "break",     "case",     "catch",
+        "char",     "class",   "const",     "constexpr", "continue", "default",   "delete",    "do",       "double",
+        "else",     "enum",    "explicit",  "export",    "extern",   "false",     "float",     "for",      "friend",
+        "goto",     "if",      "inline",    "int",       "long",     "mutable",   "namespace", "new",      "noexcept",
+        "not",      "nullptr", "operator",  "or",        "private",  "protected", "public",    "register", "return",
+        "short",    "signed",  "sizeof",    "static",    "struct",   "switch",    "template",  "this",     "throw",
+        "true",     "try",     "typedef",   "typename",  "union",    "unsigned",  "using",     "virtual",  "void",
+        "volatile", "while",   "xor",       "concept",   "requires", "module",    "import",    "co_await", "co_return",
         "co_yield", "char8_t", "consteval", "constinit"};
     return words;
 }
@@ -41,10 +42,14 @@ std::string quoted(const std::string& s) {
 
 std::string_view stageEnum(catalog::Stage s) {
     switch (s) {
-    case catalog::Stage::Vertex: return "Vertex";
-    case catalog::Stage::Geometry: return "Geometry";
-    case catalog::Stage::Fragment: return "Fragment";
-    case catalog::Stage::Compute: return "Compute";
+        case catalog::Stage::Vertex:
+            return "Vertex";
+        case catalog::Stage::Geometry:
+            return "Geometry";
+        case catalog::Stage::Fragment:
+            return "Fragment";
+        case catalog::Stage::Compute:
+            return "Compute";
     }
     return "Vertex";
 }
@@ -52,7 +57,7 @@ std::string_view stageEnum(catalog::Stage s) {
 // Emits named constexpr arrays, sharing one array among identical contents (stage
 // texts repeat across variants).
 class ArrayEmitter {
-public:
+  public:
     explicit ArrayEmitter(std::ostringstream& out) : out_(out) {}
 
     // Returns the expression to use for a span of `type` built from `items`.
@@ -68,7 +73,7 @@ public:
         return name;
     }
 
-private:
+  private:
     std::ostringstream& out_;
     std::map<std::string, std::string> seen_;
 };
@@ -143,8 +148,8 @@ std::string writeVariant(std::ostringstream& out, ArrayEmitter& arrays, const Ca
     auto defineArray = arrays.array("prism::catalog::Define", prefix + "_defines", defines);
     auto attributeArray = arrays.array("prism::catalog::Attribute", prefix + "_attributes", attributes, false);
     auto uniformArray = arrays.array("prism::catalog::Uniform", prefix + "_uniforms", uniforms, false);
-    return "{" + quoted(v.name) + ", " + defineArray + ", " + stageArray + ", " + attributeArray + ", " +
-           uniformArray + "}";
+    return "{" + quoted(v.name) + ", " + defineArray + ", " + stageArray + ", " + attributeArray + ", " + uniformArray +
+           "}";
 }
 
 std::string writeShaders(std::ostringstream& out, ArrayEmitter& arrays, const CatalogData& c) {
@@ -173,23 +178,31 @@ std::string writeShaders(std::ostringstream& out, ArrayEmitter& arrays, const Ca
 
 void writeLookups(std::ostringstream& out) {
     out << R"cpp(
-constexpr const prism::catalog::Shader& shaderInfo(ShaderId id) { return kCatalog.shaders[static_cast<std::size_t>(id)]; }
-constexpr const prism::catalog::Module& moduleInfo(ModuleId id) { return kCatalog.modules[static_cast<std::size_t>(id)]; }
-constexpr std::string_view name(ShaderId id) { return shaderInfo(id).name; }
-constexpr std::string_view name(ModuleId id) { return moduleInfo(id).name; }
+        constexpr const prism::catalog::Shader& shaderInfo(ShaderId id) {
+            return kCatalog.shaders[static_cast<std::size_t>(id)];
+        }
+        constexpr const prism::catalog::Module& moduleInfo(ModuleId id) {
+            return kCatalog.modules[static_cast<std::size_t>(id)];
+        }
+        constexpr std::string_view name(ShaderId id) {
+            return shaderInfo(id).name;
+        }
+        constexpr std::string_view name(ModuleId id) {
+            return moduleInfo(id).name;
+        }
 
-constexpr std::optional<ShaderId> shaderIdFromName(std::string_view n) {
-    for (std::size_t i = 0; i < kShaderCount; ++i)
-        if (kCatalog.shaders[i].name == n) return static_cast<ShaderId>(i);
-    return std::nullopt;
-}
+        constexpr std::optional<ShaderId> shaderIdFromName(std::string_view n) {
+            for (std::size_t i = 0; i < kShaderCount; ++i)
+                if (kCatalog.shaders[i].name == n) return static_cast<ShaderId>(i);
+            return std::nullopt;
+        }
 
-constexpr std::optional<ModuleId> moduleIdFromName(std::string_view n) {
-    for (std::size_t i = 0; i < kModuleCount; ++i)
-        if (kCatalog.modules[i].name == n) return static_cast<ModuleId>(i);
-    return std::nullopt;
-}
-)cpp";
+        constexpr std::optional<ModuleId> moduleIdFromName(std::string_view n) {
+            for (std::size_t i = 0; i < kModuleCount; ++i)
+                if (kCatalog.modules[i].name == n) return static_cast<ModuleId>(i);
+            return std::nullopt;
+        }
+    )cpp";
 }
 
 }  // namespace
@@ -219,7 +232,8 @@ std::vector<std::string> splitIntoChunks(const std::string& text, std::size_t ma
 
 std::string rawStringLiteral(const std::string& text) {
     std::string delimiter = "prism";
-    for (int i = 0; text.find(")" + delimiter + "\"") != std::string::npos; ++i) delimiter = "prism" + std::to_string(i);
+    for (int i = 0; text.find(")" + delimiter + "\"") != std::string::npos; ++i)
+        delimiter = "prism" + std::to_string(i);
     return "R\"" + delimiter + "(" + text + ")" + delimiter + "\"";
 }
 
@@ -242,9 +256,11 @@ std::string writeHeader(const CatalogData& c) {
     auto shaders = writeShaders(out, arrays, c);
     std::vector<std::string> attributes, uniforms;
     for (const auto& a : c.contract.attributes)
-        attributes.push_back("{" + quoted(a.name) + ", " + hex(glTypeOf(a.type)) + ", " + std::to_string(a.location) + "}");
+        attributes.push_back("{" + quoted(a.name) + ", " + hex(glTypeOf(a.type)) + ", " + std::to_string(a.location) +
+                             "}");
     for (const auto& u : c.contract.uniforms)
-        uniforms.push_back("{" + quoted(u.name) + ", " + hex(glTypeOf(u.type)) + ", " + std::to_string(std::max(1, u.array)) + "}");
+        uniforms.push_back("{" + quoted(u.name) + ", " + hex(glTypeOf(u.type)) + ", " +
+                           std::to_string(std::max(1, u.array)) + "}");
     out << "// ---- binding contract\n";
     auto contractAttributes = arrays.array("prism::catalog::Attribute", "contract_attributes", attributes, false);
     auto contractUniforms = arrays.array("prism::catalog::Uniform", "contract_uniforms", uniforms, false);

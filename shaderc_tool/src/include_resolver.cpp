@@ -20,8 +20,7 @@ constexpr std::size_t kMaxIncludeDepth = 64;
 // Extensions that only make sense to an include-aware front end; a GL driver may
 // reject them, and the output needs none of them.
 constexpr std::array<std::string_view, 3> kIncludeExtensions = {
-    "GL_GOOGLE_include_directive", "GL_ARB_shading_language_include",
-    "GL_GOOGLE_cpp_style_line_directive"};
+    "GL_GOOGLE_include_directive", "GL_ARB_shading_language_include", "GL_GOOGLE_cpp_style_line_directive"};
 
 // ---- directive helpers ---------------------------------------------------------------
 
@@ -54,15 +53,13 @@ int directiveColumn(const LogicalLine& line) {
 int includeTargetColumn(const LogicalLine& line) {
     const std::string& code = line.code;
     const std::size_t keyword = code.find("include");
-    const std::size_t quote =
-        keyword == std::string::npos ? std::string::npos : code.find_first_of("\"<", keyword);
+    const std::size_t quote = keyword == std::string::npos ? std::string::npos : code.find_first_of("\"<", keyword);
     if (quote == std::string::npos || quote >= line.physical.front().size()) return directiveColumn(line);
     return static_cast<int>(quote) + 1;
 }
 
 bool isPragmaOnce(const Directive& directive) {
-    return directive.name == "pragma" && splitWhitespace(directive.argument) ==
-                                             std::vector<std::string>{"once"};
+    return directive.name == "pragma" && splitWhitespace(directive.argument) == std::vector<std::string>{"once"};
 }
 
 bool isPrismPragma(const Directive& directive) {
@@ -153,8 +150,7 @@ std::string placeName(const std::string& file, int line) {
 bool isVariantValue(std::string_view value) {
     if (isIdentifier(value)) return true;
     if (value.starts_with('-')) value.remove_prefix(1);
-    return !value.empty() && std::all_of(value.begin(), value.end(),
-                                         [](char c) { return c >= '0' && c <= '9'; });
+    return !value.empty() && std::all_of(value.begin(), value.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
 
 // Checks the words after `#pragma prism variant`; returns an error message or "".
@@ -164,10 +160,8 @@ std::string checkVariantDeclaration(const std::vector<std::string>& words) {
     std::set<std::string> seen;
     for (std::size_t i = 1; i < words.size(); ++i) {
         if (!isVariantValue(words[i]))
-            return "invalid value '" + words[i] + "' of variant " + words[0] +
-                   " (must be an identifier or an integer)";
-        if (!seen.insert(words[i]).second)
-            return "value '" + words[i] + "' listed twice for variant " + words[0];
+            return "invalid value '" + words[i] + "' of variant " + words[0] + " (must be an identifier or an integer)";
+        if (!seen.insert(words[i]).second) return "value '" + words[i] + "' listed twice for variant " + words[0];
     }
     return {};
 }
@@ -194,13 +188,12 @@ struct SeenVersion {
 };
 
 class StageResolver {
-public:
-    StageResolver(const ResolveOptions& options, const SourceReader& reader)
-        : options_(options), reader_(reader) {}
+  public:
+    StageResolver(const ResolveOptions& options, const SourceReader& reader) : options_(options), reader_(reader) {}
 
     ResolveResult resolve(const std::string& stagePath);
 
-private:
+  private:
     struct Frame {
         std::uint32_t number = 0;
         std::string display;
@@ -212,8 +205,7 @@ private:
     void processFile(const Frame& frame, const std::string& text);
     void handleActiveDirective(const Frame& frame, const LogicalLine& line, const Directive& directive);
     void handleInclude(const Frame& frame, const LogicalLine& line, const Directive& directive);
-    std::optional<FoundFile> locateInclude(const Frame& frame, const LogicalLine& line,
-                                           const Directive& directive);
+    std::optional<FoundFile> locateInclude(const Frame& frame, const LogicalLine& line, const Directive& directive);
     void enterInclude(const Frame& includer, const LogicalLine& line, const FoundFile& found);
     std::optional<std::string> cycleThrough(const FoundFile& found) const;
     void handleVersion(const Frame& frame, const LogicalLine& line, const Directive& directive);
@@ -303,8 +295,7 @@ void StageResolver::processFile(const Frame& frame, const std::string& text) {
                "unterminated #" + open->directive + ": no matching #endif before the end of the file");
 }
 
-void StageResolver::handleActiveDirective(const Frame& frame, const LogicalLine& line,
-                                          const Directive& directive) {
+void StageResolver::handleActiveDirective(const Frame& frame, const LogicalLine& line, const Directive& directive) {
     if (directive.name == "include") return handleInclude(frame, line, directive);
     if (directive.name == "version") return handleVersion(frame, line, directive);
     if (directive.name == "pragma") return handlePragma(frame, line, directive);
@@ -336,8 +327,7 @@ std::optional<FoundFile> StageResolver::locateInclude(const Frame& frame, const 
     const auto dirs = searchDirs(*target, frame.display, options_);
     auto found = findInclude(*target, dirs, reader_);
     if (!found) {
-        report(Severity::Error, frame, line.firstLine, includeTargetColumn(line),
-               missingIncludeMessage(*target, dirs));
+        report(Severity::Error, frame, line.firstLine, includeTargetColumn(line), missingIncludeMessage(*target, dirs));
         return std::nullopt;
     }
     if (auto cycle = cycleThrough(*found)) {
@@ -404,10 +394,10 @@ void StageResolver::handleVersion(const Frame& frame, const LogicalLine& line, c
         return;
     }
     if (version_->version.sameAs(*version)) return;
-    auto& error = report(Severity::Error, frame, line.firstLine, directiveColumn(line),
-                         version->directive() + " conflicts with " + version_->version.directive() + " at " +
-                             placeName(version_->file, version_->line) +
-                             "; all files of a stage must ask for the same version");
+    auto& error =
+        report(Severity::Error, frame, line.firstLine, directiveColumn(line),
+               version->directive() + " conflicts with " + version_->version.directive() + " at " +
+                   placeName(version_->file, version_->line) + "; all files of a stage must ask for the same version");
     error.notes.push_back(makeNote(version_->file, version_->line, "first #version is here"));
 }
 
@@ -419,29 +409,26 @@ void StageResolver::handlePragma(const Frame& frame, const LogicalLine& line, co
     if (words.size() >= 2 && words[1] == "variant")
         return handleVariant(frame, line, std::vector<std::string>(words.begin() + 2, words.end()));
     report(Severity::Warning, frame, line.firstLine, directiveColumn(line),
-           "unknown #pragma prism '" + (words.size() >= 2 ? words[1] : std::string()) +
-               "' ignored (known: variant)");
+           "unknown #pragma prism '" + (words.size() >= 2 ? words[1] : std::string()) + "' ignored (known: variant)");
 }
 
-void StageResolver::handleVariant(const Frame& frame, const LogicalLine& line,
-                                  const std::vector<std::string>& words) {
+void StageResolver::handleVariant(const Frame& frame, const LogicalLine& line, const std::vector<std::string>& words) {
     if (auto message = checkVariantDeclaration(words); !message.empty()) {
         report(Severity::Error, frame, line.firstLine, directiveColumn(line), std::move(message));
         return;
     }
     const std::vector<std::string> values(words.begin() + 1, words.end());
     auto& pragmas = result_.stage.variantPragmas;
-    const auto earlier = std::find_if(pragmas.begin(), pragmas.end(),
-                                      [&](const VariantPragma& p) { return p.name == words[0]; });
+    const auto earlier =
+        std::find_if(pragmas.begin(), pragmas.end(), [&](const VariantPragma& p) { return p.name == words[0]; });
     if (earlier == pragmas.end()) {
         pragmas.push_back({words[0], values, frame.display, line.firstLine});
         return;
     }
     if (earlier->values == values) return;  // the same declaration in another module: merged
     auto& error = report(Severity::Error, frame, line.firstLine, directiveColumn(line),
-                         "variant " + words[0] + " declared with values {" + joinWords(values) +
-                             "} here but {" + joinWords(earlier->values) + "} at " +
-                             placeName(earlier->file, earlier->line));
+                         "variant " + words[0] + " declared with values {" + joinWords(values) + "} here but {" +
+                             joinWords(earlier->values) + "} at " + placeName(earlier->file, earlier->line));
     error.notes.push_back(makeNote(earlier->file, earlier->line, "variant " + words[0] + " first declared here"));
 }
 
@@ -454,8 +441,7 @@ void StageResolver::handleUndef(const Frame& frame, const LogicalLine& line, con
     emitCopy(line);
 }
 
-Diagnostic& StageResolver::report(Severity severity, const Frame& frame, int line, int column,
-                                  std::string message) {
+Diagnostic& StageResolver::report(Severity severity, const Frame& frame, int line, int column, std::string message) {
     result_.diagnostics.push_back(
         makeDiagnostic(severity, frame.display, line, column, std::move(message), frame.chain));
     return result_.diagnostics.back();
@@ -547,13 +533,12 @@ std::string leadingComment(const std::vector<LogicalLine>& lines) {
 }
 
 class ModuleScanner {
-public:
-    ModuleScanner(const ResolveOptions& options, const SourceReader& reader)
-        : options_(options), reader_(reader) {}
+  public:
+    ModuleScanner(const ResolveOptions& options, const SourceReader& reader) : options_(options), reader_(reader) {}
 
     ModuleScanResult scan(const std::string& modulePath);
 
-private:
+  private:
     void scanLines(const std::vector<LogicalLine>& lines);
     void addInclude(const LogicalLine& line, const Directive& directive);
     void trackDefinition(const Directive& directive);
@@ -638,24 +623,20 @@ void ModuleScanner::trackDefinition(const Directive& directive) {
     else if (directive.name == "undef" && !words.empty())
         macros_.undefine(words[0]);
     else if (directive.name == "version")
-        if (const auto version = parseVersionArgument(directive.argument))
-            predefineVersionMacros(macros_, *version);
+        if (const auto version = parseVersionArgument(directive.argument)) predefineVersionMacros(macros_, *version);
 }
 
 void ModuleScanner::report(Severity severity, int line, int column, std::string message) {
-    result_.diagnostics.push_back(
-        makeDiagnostic(severity, result_.module.path, line, column, std::move(message)));
+    result_.diagnostics.push_back(makeDiagnostic(severity, result_.module.path, line, column, std::move(message)));
 }
 
 }  // namespace
 
-ResolveResult resolveStage(const std::string& stagePath, const ResolveOptions& options,
-                           const SourceReader& reader) {
+ResolveResult resolveStage(const std::string& stagePath, const ResolveOptions& options, const SourceReader& reader) {
     return StageResolver(options, reader).resolve(stagePath);
 }
 
-ModuleScanResult scanModule(const std::string& modulePath, const ResolveOptions& options,
-                            const SourceReader& reader) {
+ModuleScanResult scanModule(const std::string& modulePath, const ResolveOptions& options, const SourceReader& reader) {
     return ModuleScanner(options, reader).scan(modulePath);
 }
 

@@ -62,8 +62,7 @@ struct ResolveResult {
     std::vector<Diagnostic> diagnostics;  // errors make ok false; warnings may appear either way
 };
 
-ResolveResult resolveStage(const std::string& stagePath, const ResolveOptions& options,
-                           const SourceReader& reader);
+ResolveResult resolveStage(const std::string& stagePath, const ResolveOptions& options, const SourceReader& reader);
 
 // A module as the catalogue stores it: its own text with #include, #version and
 // #pragma once lines blanked (so line numbers stay true), its leading comment as the
@@ -82,7 +81,6 @@ struct ModuleScanResult {
     std::vector<Diagnostic> diagnostics;
 };
 
-ModuleScanResult scanModule(const std::string& modulePath, const ResolveOptions& options,
-                            const SourceReader& reader);
+ModuleScanResult scanModule(const std::string& modulePath, const ResolveOptions& options, const SourceReader& reader);
 
 }  // namespace prism::shaderc

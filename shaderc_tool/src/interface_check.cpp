@@ -5,8 +5,8 @@
 
 namespace prism::shaderc {
 
-Diagnostic diagnosticAt(const SourceLocator& locate, std::size_t stage, const InterfaceVariable& v,
-                        Severity severity, std::string message) {
+Diagnostic diagnosticAt(const SourceLocator& locate, std::size_t stage, const InterfaceVariable& v, Severity severity,
+                        std::string message) {
     Diagnostic d;
     d.severity = severity;
     d.file = locate.path ? locate.path(stage, v.sourceNumber) : std::string();
@@ -42,10 +42,9 @@ void checkPair(const std::vector<StageInterface>& stages, std::size_t prevIndex,
         const std::string what = std::string(in.isBlock ? "block" : "input") + " '" + in.name + "'";
         if (match == prev.variables.end()) {
             out.push_back(diagnosticAt(locate, nextIndex, in, Severity::Error,
-                                       nextName + " " + what + " is not written by the " + prevName +
-                                           " stage (" + (locate.path ? locate.path(prevIndex, 0) : prevName) +
-                                           "); declare `out " + glslTypeWithArray(in) + " " + in.name +
-                                           ";` there or remove the input"));
+                                       nextName + " " + what + " is not written by the " + prevName + " stage (" +
+                                           (locate.path ? locate.path(prevIndex, 0) : prevName) + "); declare `out " +
+                                           glslTypeWithArray(in) + " " + in.name + ";` there or remove the input"));
             continue;
         }
         InterfaceVariable inElement = in;
@@ -55,8 +54,8 @@ void checkPair(const std::vector<StageInterface>& stages, std::size_t prevIndex,
         if (!typeDiffers && !interpDiffers) continue;
         std::string problem = typeDiffers ? "type" : "interpolation qualifier";
         auto d = diagnosticAt(locate, nextIndex, in, Severity::Error,
-                              nextName + " " + what + " is `" + describe(in, arrayedInputs) + "` but the " +
-                                  prevName + " output is `" + describe(*match, false) + "` (" + problem +
+                              nextName + " " + what + " is `" + describe(in, arrayedInputs) + "` but the " + prevName +
+                                  " output is `" + describe(*match, false) + "` (" + problem +
                                   " mismatch); make both declarations agree");
         d.notes.push_back(diagnosticAt(locate, prevIndex, *match, Severity::Note,
                                        "the " + prevName + " output '" + match->name + "' is declared here"));
@@ -66,8 +65,7 @@ void checkPair(const std::vector<StageInterface>& stages, std::size_t prevIndex,
 
 }  // namespace
 
-std::vector<Diagnostic> checkStageInterfaces(const std::vector<StageInterface>& stages,
-                                             const SourceLocator& locate) {
+std::vector<Diagnostic> checkStageInterfaces(const std::vector<StageInterface>& stages, const SourceLocator& locate) {
     std::vector<Diagnostic> out;
     for (std::size_t i = 1; i < stages.size(); ++i) checkPair(stages, i - 1, i, locate, out);
     return out;

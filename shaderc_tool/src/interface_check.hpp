@@ -18,10 +18,9 @@ struct SourceLocator {
     std::function<std::vector<IncludeSite>(std::size_t stage, std::uint32_t sourceNumber)> chain;
 };
 
-std::vector<Diagnostic> checkStageInterfaces(const std::vector<StageInterface>& stages,
-                                             const SourceLocator& locate);
+std::vector<Diagnostic> checkStageInterfaces(const std::vector<StageInterface>& stages, const SourceLocator& locate);
 
-Diagnostic diagnosticAt(const SourceLocator& locate, std::size_t stage, const InterfaceVariable& v,
-                        Severity severity, std::string message);
+Diagnostic diagnosticAt(const SourceLocator& locate, std::size_t stage, const InterfaceVariable& v, Severity severity,
+                        std::string message);
 
 }  // namespace prism::shaderc

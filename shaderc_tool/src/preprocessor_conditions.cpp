@@ -116,8 +116,7 @@ std::int64_t parseIntegerLiteral(std::string_view text) {
 }
 
 std::string_view matchPunctuator(std::string_view rest) {
-    static constexpr std::array<std::string_view, 8> twoChar = {"<<", ">>", "<=", ">=",
-                                                                 "==", "!=", "&&", "||"};
+    static constexpr std::array<std::string_view, 8> twoChar = {"<<", ">>", "<=", ">=", "==", "!=", "&&", "||"};
     for (const auto op : twoChar)
         if (rest.starts_with(op)) return op;
     static constexpr std::string_view oneChar = "!~-+*/%<>&^|?:()";
@@ -181,8 +180,7 @@ std::string takeDefinedOperand(const std::vector<Token>& tokens, std::size_t& i)
 std::vector<Token> expandMacros(const std::vector<Token>& tokens, const MacroTable& macros,
                                 std::set<std::string>& expanding, int depth) {
     if (depth > kMaxMacroExpansionDepth)
-        throw ExpressionError{"macro expansion nested more than " +
-                              std::to_string(kMaxMacroExpansionDepth) + " deep"};
+        throw ExpressionError{"macro expansion nested more than " + std::to_string(kMaxMacroExpansionDepth) + " deep"};
     std::vector<Token> out;
     std::size_t i = 0;
     while (i < tokens.size()) {
@@ -200,8 +198,7 @@ std::vector<Token> expandMacros(const std::vector<Token>& tokens, const MacroTab
             out.push_back(token);
             continue;
         }
-        if (macro->functionLike)
-            throw ExpressionError{"function-like macro '" + token.text + "' cannot be used here"};
+        if (macro->functionLike) throw ExpressionError{"function-like macro '" + token.text + "' cannot be used here"};
         expanding.insert(token.text);
         const auto expansion = expandMacros(tokenize(macro->value), macros, expanding, depth + 1);
         expanding.erase(token.text);
@@ -215,9 +212,8 @@ std::vector<Token> expandMacros(const std::vector<Token>& tokens, const MacroTab
 int binaryPrecedence(const Token& token) {
     if (token.kind != Token::Kind::Punctuator) return 0;
     static const std::map<std::string, int, std::less<>> precedence = {
-        {"||", 1}, {"&&", 2}, {"|", 3},  {"^", 4},  {"&", 5},  {"==", 6}, {"!=", 6},
-        {"<", 7},  {">", 7},  {"<=", 7}, {">=", 7}, {"<<", 8}, {">>", 8}, {"+", 9},
-        {"-", 9},  {"*", 10}, {"/", 10}, {"%", 10}};
+        {"||", 1}, {"&&", 2}, {"|", 3},  {"^", 4},  {"&", 5}, {"==", 6}, {"!=", 6}, {"<", 7},  {">", 7},
+        {"<=", 7}, {">=", 7}, {"<<", 8}, {">>", 8}, {"+", 9}, {"-", 9},  {"*", 10}, {"/", 10}, {"%", 10}};
     const auto found = precedence.find(token.text);
     return found == precedence.end() ? 0 : found->second;
 }
@@ -259,7 +255,7 @@ std::int64_t applyBinary(std::string_view op, std::int64_t lhs, std::int64_t rhs
 // Recursive descent with precedence climbing. `evaluate` is false inside operands
 // that short-circuiting skips, so `0 && 1/0` is fine.
 class ExpressionParser {
-public:
+  public:
     explicit ExpressionParser(std::vector<Token> tokens) : tokens_(std::move(tokens)) {}
 
     std::int64_t parseAll() {
@@ -269,7 +265,7 @@ public:
         return value;
     }
 
-private:
+  private:
     std::int64_t parseConditional(bool evaluate) {
         const std::int64_t condition = parseBinary(1, evaluate);
         if (!accept("?")) return condition;
@@ -287,8 +283,10 @@ private:
             const std::string op = tokens_[pos_++].text;
             const bool shortCircuits = (op == "&&" && lhs == 0) || (op == "||" && lhs != 0);
             const std::int64_t rhs = parseBinary(precedence + 1, evaluate && !shortCircuits);
-            if (shortCircuits) lhs = op == "||";
-            else if (evaluate) lhs = applyBinary(op, lhs, rhs);
+            if (shortCircuits)
+                lhs = op == "||";
+            else if (evaluate)
+                lhs = applyBinary(op, lhs, rhs);
         }
         return lhs;
     }
@@ -349,8 +347,7 @@ std::vector<LogicalLine> splitLogicalLines(std::string_view text) {
             const std::string& current = physical[i++];
             line.physical.push_back(current);
             continues = endsWithContinuation(current);
-            spliced += continues ? std::string_view(current).substr(0, current.size() - 1)
-                                 : std::string_view(current);
+            spliced += continues ? std::string_view(current).substr(0, current.size() - 1) : std::string_view(current);
         }
         line.code = blankComments(spliced, inBlockComment);
         lines.push_back(std::move(line));
@@ -379,8 +376,7 @@ std::vector<std::string> splitWhitespace(std::string_view text) {
 }
 
 bool isIdentifier(std::string_view text) {
-    return !text.empty() && isIdentifierStart(text.front()) &&
-           std::all_of(text.begin(), text.end(), isIdentifierChar);
+    return !text.empty() && isIdentifierStart(text.front()) && std::all_of(text.begin(), text.end(), isIdentifierChar);
 }
 
 std::optional<Directive> parseDirective(const LogicalLine& line) {
@@ -449,8 +445,7 @@ std::optional<GlslVersion> parseVersionArgument(std::string_view argument) {
     GlslVersion version;
     const auto& digits = words[0];
     const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), version.number);
-    if (error != std::errc() || end != digits.data() + digits.size() || version.number <= 0)
-        return std::nullopt;
+    if (error != std::errc() || end != digits.data() + digits.size() || version.number <= 0) return std::nullopt;
     if (words.size() == 2) {
         version.profile = words[1];
         if (version.profile != "core" && version.profile != "compatibility" && version.profile != "es")
@@ -491,12 +486,11 @@ ConditionValue evaluateCondition(std::string_view expression, const MacroTable& 
 }
 
 bool isConditionalDirective(std::string_view name) {
-    return name == "if" || name == "ifdef" || name == "ifndef" || name == "elif" || name == "else" ||
-           name == "endif";
+    return name == "if" || name == "ifdef" || name == "ifndef" || name == "elif" || name == "else" || name == "endif";
 }
 
 std::string ConditionalStack::apply(const Directive& directive, int line, const MacroTable& macros) {
-    if (directive.name == "elif") return elif(directive, macros);
+    if (directive.name == "elif") return elif (directive, macros);
     if (directive.name == "else") return elseBranch(line);
     if (directive.name == "endif") return endGroup();
     return openGroup(directive, line, macros);
@@ -535,7 +529,7 @@ std::string ConditionalStack::openGroup(const Directive& directive, int line, co
     return error;
 }
 
-std::string ConditionalStack::elif(const Directive& directive, const MacroTable& macros) {
+std::string ConditionalStack::elif (const Directive& directive, const MacroTable& macros) {
     if (groups_.empty()) return "#elif without #if";
     Group& group = groups_.back();
     if (group.elseLine != 0) {

@@ -44,7 +44,7 @@ struct Macro {
 
 // Macros known at a point of the text: predefined, given with -D, and #define'd.
 class MacroTable {
-public:
+  public:
     void define(const std::string& name, std::string value, bool functionLike = false);
     void undefine(const std::string& name);
     bool isDefined(const std::string& name) const;
@@ -53,7 +53,7 @@ public:
     // Returns an error message, empty on success.
     std::string defineFromDirective(std::string_view argument);
 
-private:
+  private:
     std::map<std::string, Macro, std::less<>> macros_;
 };
 
@@ -93,7 +93,7 @@ bool isConditionalDirective(std::string_view name);
 
 // The nesting of conditional groups in one file.
 class ConditionalStack {
-public:
+  public:
     struct OpenGroup {
         std::string directive;  // "if", "ifdef" or "ifndef"
         int line = 0;
@@ -109,7 +109,7 @@ public:
     // The innermost group still open (for "unterminated #if" at the end of a file).
     std::optional<OpenGroup> innermostOpen() const;
 
-private:
+  private:
     struct Group {
         OpenGroup opened;
         bool parentActive = true;
@@ -119,7 +119,7 @@ private:
     };
 
     std::string openGroup(const Directive& directive, int line, const MacroTable& macros);
-    std::string elif(const Directive& directive, const MacroTable& macros);
+    std::string elif (const Directive& directive, const MacroTable& macros);
     std::string elseBranch(int line);
     std::string endGroup();
 

@@ -37,18 +37,17 @@ void checkCompleteness(const ShaderInput& s, std::vector<Diagnostic>& out) {
     if (has(catalog::Stage::Compute)) {
         if (s.stages.size() > 1)
             out.push_back(makeError(any, 0, 0,
-                                    "shader '" + s.name + "' mixes a compute stage with graphics stages; "
-                                    "rename one of them"));
+                                    "shader '" + s.name +
+                                        "' mixes a compute stage with graphics stages; "
+                                        "rename one of them"));
         return;
     }
     if (!has(catalog::Stage::Vertex))
-        out.push_back(makeError(any, 0, 0,
-                                "shader '" + s.name + "' has no vertex stage: expected " +
-                                    siblingPath(any, ".vert")));
+        out.push_back(
+            makeError(any, 0, 0, "shader '" + s.name + "' has no vertex stage: expected " + siblingPath(any, ".vert")));
     if (!has(catalog::Stage::Fragment))
-        out.push_back(makeError(any, 0, 0,
-                                "shader '" + s.name + "' has no fragment stage: expected " +
-                                    siblingPath(any, ".frag")));
+        out.push_back(makeError(
+            any, 0, 0, "shader '" + s.name + "' has no fragment stage: expected " + siblingPath(any, ".frag")));
 }
 
 }  // namespace
@@ -85,9 +84,10 @@ ShaderInputsResult collectShaderInputs(const std::vector<std::string>& inputs) {
                                 [&](const StageFile& s) { return s.stage == stage; });
         if (dup != shader.stages.end()) {
             if (fs::path(dup->path).lexically_normal() != fs::path(f).lexically_normal())
-                result.diagnostics.push_back(makeError(
-                    f, 0, 0, "second " + std::string(catalog::stageName(stage)) + " stage for shader '" + name +
-                                 "' (first: " + dup->path + "); shader names must be unique"));
+                result.diagnostics.push_back(makeError(f, 0, 0,
+                                                       "second " + std::string(catalog::stageName(stage)) +
+                                                           " stage for shader '" + name + "' (first: " + dup->path +
+                                                           "); shader names must be unique"));
             continue;
         }
         shader.stages.push_back({stage, f});

@@ -11,7 +11,7 @@
 namespace prism::shaderc {
 
 class SourceReader {
-public:
+  public:
     virtual ~SourceReader() = default;
     // A canonical key for `path` if the file exists (symlinks and ./.. resolved), else nullopt.
     virtual std::optional<std::string> canonical(const std::string& path) const = 0;
@@ -22,11 +22,11 @@ public:
 // Reads each file and resolves each path once per run: a catalogue's stages include
 // the same modules again and again (thread-safe).
 class DiskReader final : public SourceReader {
-public:
+  public:
     std::optional<std::string> canonical(const std::string& path) const override;
     std::optional<std::string> read(const std::string& path) const override;
 
-private:
+  private:
     mutable std::mutex mutex_;
     mutable std::map<std::string, std::optional<std::string>> canonicalCache_;
     mutable std::map<std::string, std::optional<std::string>> textCache_;
@@ -34,14 +34,14 @@ private:
 
 // Paths are normalised lexically ("a/./b/../c" == "a/c"); no symlinks.
 class MemoryReader final : public SourceReader {
-public:
+  public:
     MemoryReader() = default;
     MemoryReader(std::initializer_list<std::pair<const std::string, std::string>> files);
     void add(const std::string& path, std::string text);
     std::optional<std::string> canonical(const std::string& path) const override;
     std::optional<std::string> read(const std::string& path) const override;
 
-private:
+  private:
     std::map<std::string, std::string> files_;
 };
 

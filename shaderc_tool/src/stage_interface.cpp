@@ -23,17 +23,23 @@ std::string typeSpelling(const glslang::TType& t) {
     }
     int n = t.getVectorSize();
     switch (t.getBasicType()) {
-    case EbtFloat: return vectorName("float", "", n);
-    case EbtDouble: return vectorName("double", "d", n);
-    case EbtInt: return vectorName("int", "i", n);
-    case EbtUint: return vectorName("uint", "u", n);
-    case EbtBool: return vectorName("bool", "b", n);
-    default: return std::string(t.getBasicTypeString().c_str());
+        case EbtFloat:
+            return vectorName("float", "", n);
+        case EbtDouble:
+            return vectorName("double", "d", n);
+        case EbtInt:
+            return vectorName("int", "i", n);
+        case EbtUint:
+            return vectorName("uint", "u", n);
+        case EbtBool:
+            return vectorName("bool", "b", n);
+        default:
+            return std::string(t.getBasicTypeString().c_str());
     }
 }
 
 class LinkerObjectCollector : public glslang::TIntermTraverser {
-public:
+  public:
     explicit LinkerObjectCollector(StageInterface& out) : out_(out) {}
 
     bool visitAggregate(glslang::TVisit, glslang::TIntermAggregate* node) override {
@@ -43,7 +49,7 @@ public:
         return false;
     }
 
-private:
+  private:
     void add(const glslang::TIntermSymbol& sym) {
         using namespace glslang;
         const TType& type = sym.getType();
@@ -53,18 +59,28 @@ private:
         if (name.rfind("gl_", 0) == 0) return;
         InterfaceVariable v;
         switch (q.storage) {
-        case EvqVaryingIn: v.storage = StorageKind::In; break;
-        case EvqVaryingOut: v.storage = StorageKind::Out; break;
-        case EvqUniform: v.storage = StorageKind::Uniform; break;
-        case EvqBuffer: v.storage = StorageKind::Buffer; break;
-        default: return;
+            case EvqVaryingIn:
+                v.storage = StorageKind::In;
+                break;
+            case EvqVaryingOut:
+                v.storage = StorageKind::Out;
+                break;
+            case EvqUniform:
+                v.storage = StorageKind::Uniform;
+                break;
+            case EvqBuffer:
+                v.storage = StorageKind::Buffer;
+                break;
+            default:
+                return;
         }
         v.isBlock = type.getBasicType() == EbtBlock;
         v.name = v.isBlock ? std::string(type.getTypeName().c_str()) : name;
         v.type = typeSpelling(type);
         if (type.isArray()) v.arraySize = type.isUnsizedArray() ? -1 : type.getOuterArraySize();
-        v.interpolation = q.flat ? Interpolation::Flat : q.nopersp ? Interpolation::NoPerspective
-                                                                    : Interpolation::Smooth;
+        v.interpolation = q.flat      ? Interpolation::Flat
+                          : q.nopersp ? Interpolation::NoPerspective
+                                      : Interpolation::Smooth;
         const TSourceLoc& loc = sym.getLoc();
         v.sourceNumber = static_cast<std::uint32_t>(loc.string < 0 ? 0 : loc.string);
         v.line = loc.line;
@@ -95,9 +111,12 @@ std::string glslTypeWithArray(const InterfaceVariable& v) {
 
 std::string_view interpolationName(Interpolation i) {
     switch (i) {
-    case Interpolation::Smooth: return "smooth";
-    case Interpolation::Flat: return "flat";
-    case Interpolation::NoPerspective: return "noperspective";
+        case Interpolation::Smooth:
+            return "smooth";
+        case Interpolation::Flat:
+            return "flat";
+        case Interpolation::NoPerspective:
+            return "noperspective";
     }
     return "smooth";
 }

@@ -19,10 +19,10 @@ enum class StorageKind { In, Out, Uniform, Buffer };
 enum class Interpolation { Smooth, Flat, NoPerspective };
 
 struct InterfaceVariable {
-    std::string name;      // block name for interface blocks
+    std::string name;  // block name for interface blocks
     StorageKind storage = StorageKind::In;
-    std::string type;      // GLSL spelling without array: "vec3", "mat4", "sampler2D", struct name
-    int arraySize = 0;     // 0 = not an array, -1 = unsized, else the (outer) size
+    std::string type;   // GLSL spelling without array: "vec3", "mat4", "sampler2D", struct name
+    int arraySize = 0;  // 0 = not an array, -1 = unsized, else the (outer) size
     Interpolation interpolation = Interpolation::Smooth;
     bool isBlock = false;
     std::uint32_t sourceNumber = 0;  // from the #line directives

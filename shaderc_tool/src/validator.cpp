@@ -17,10 +17,14 @@ namespace {
 
 EShLanguage glslangStage(catalog::Stage s) {
     switch (s) {
-    case catalog::Stage::Vertex: return EShLangVertex;
-    case catalog::Stage::Geometry: return EShLangGeometry;
-    case catalog::Stage::Fragment: return EShLangFragment;
-    case catalog::Stage::Compute: return EShLangCompute;
+        case catalog::Stage::Vertex:
+            return EShLangVertex;
+        case catalog::Stage::Geometry:
+            return EShLangGeometry;
+        case catalog::Stage::Fragment:
+            return EShLangFragment;
+        case catalog::Stage::Compute:
+            return EShLangCompute;
     }
     return EShLangVertex;
 }
@@ -32,7 +36,9 @@ EProfile profileOf(const std::string& versionDirective) {
     return ENoProfile;
 }
 
-bool isIdentifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+bool isIdentifierChar(char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+}
 
 // Position of `word` in `text` as a whole identifier, or npos.
 std::size_t findWord(std::string_view text, std::string_view word) {
@@ -47,7 +53,7 @@ std::size_t findWord(std::string_view text, std::string_view word) {
 // The text of every (source number, line) in a flattened stage, recovered from its
 // `#line N S` directives, so a message's token can be given a column.
 class SourceLines {
-public:
+  public:
     SourceLines(const ResolvedStage& stage) {
         std::istringstream in(stage.text);
         std::string line;
@@ -82,7 +88,8 @@ public:
             const auto column = findWord(code, v.name);
             if (column == std::string_view::npos) continue;
             if (findWord(code, "in") == std::string_view::npos && findWord(code, "out") == std::string_view::npos &&
-                findWord(code, "uniform") == std::string_view::npos && findWord(code, "buffer") == std::string_view::npos)
+                findWord(code, "uniform") == std::string_view::npos &&
+                findWord(code, "buffer") == std::string_view::npos)
                 continue;
             v.sourceNumber = key.first;
             v.line = key.second;
@@ -91,7 +98,7 @@ public:
         }
     }
 
-private:
+  private:
     std::map<std::pair<std::uint32_t, int>, std::string> lines_;
 };
 
@@ -158,18 +165,26 @@ std::vector<Diagnostic> mapInfoLog(const std::string& log, const StageMaps& maps
     }
     for (auto [index, count] : followOns) {
         auto& d = out[index];
-        d.notes.push_back({Severity::Note, d.file, d.line, d.column,
-                           std::to_string(count) + " follow-on error" + (count > 1 ? "s" : "") +
-                               " on the same line suppressed",
-                           {}, {}});
+        d.notes.push_back(
+            {Severity::Note,
+             d.file,
+             d.line,
+             d.column,
+             std::to_string(count) + " follow-on error" + (count > 1 ? "s" : "") + " on the same line suppressed",
+             {},
+             {}});
     }
     return out;
 }
 
 }  // namespace
 
-void initializeValidator() { glslang::InitializeProcess(); }
-void finalizeValidator() { glslang::FinalizeProcess(); }
+void initializeValidator() {
+    glslang::InitializeProcess();
+}
+void finalizeValidator() {
+    glslang::FinalizeProcess();
+}
 
 ValidatedVariant validateProgram(const std::vector<StageToValidate>& stages, const Contract& contract) {
     ValidatedVariant result;
@@ -181,10 +196,10 @@ ValidatedVariant validateProgram(const std::vector<StageToValidate>& stages, con
     for (const auto& s : stages) {
         maps.push_back({&s, SourceLines(s.resolved)});
         if (s.stage == catalog::Stage::Compute && s.resolved.versionNumber < 430) {
-            result.diagnostics.push_back(makeError(
-                s.path, 1, 1,
-                "compute shaders need GLSL 430 or newer, this stage is " + std::to_string(s.resolved.versionNumber) +
-                    "; add `#version 430 core` or pass --glsl-version 430"));
+            result.diagnostics.push_back(makeError(s.path, 1, 1,
+                                                   "compute shaders need GLSL 430 or newer, this stage is " +
+                                                       std::to_string(s.resolved.versionNumber) +
+                                                       "; add `#version 430 core` or pass --glsl-version 430"));
             compiled = false;
             shaders.push_back(nullptr);
             continue;

@@ -24,8 +24,9 @@ AxesResult axesFromPragmas(const std::vector<VariantPragma>& pragmas) {
         } else if (it->values != values) {
             const auto* first = firstSeen[static_cast<std::size_t>(it - r.axes.begin())];
             auto d = makeError(p.file, p.line, 1,
-                               "variant '" + p.name + "' is declared again with other values; declare it once "
-                               "or with the same values everywhere");
+                               "variant '" + p.name +
+                                   "' is declared again with other values; declare it once "
+                                   "or with the same values everywhere");
             d.notes.push_back({Severity::Note, first->file, first->line, 1, "first declared here", {}, {}});
             r.diagnostics.push_back(std::move(d));
         }
@@ -38,7 +39,8 @@ FilterParseResult parseVariantFilters(const std::vector<std::string>& specs) {
     for (const auto& spec : specs) {
         auto colon = spec.find(':');
         if (colon == std::string::npos || colon == 0) {
-            r.diagnostics.push_back(makeError("", 0, 0, "--variant " + spec + ": expected SHADER:NAME=VALUE[,NAME=VALUE...]"));
+            r.diagnostics.push_back(
+                makeError("", 0, 0, "--variant " + spec + ": expected SHADER:NAME=VALUE[,NAME=VALUE...]"));
             continue;
         }
         VariantFilter f{spec.substr(0, colon), {}};
@@ -49,13 +51,17 @@ FilterParseResult parseVariantFilters(const std::vector<std::string>& specs) {
             auto comma = rest.find(',', start);
             std::string item = rest.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
             auto eq = item.find('=');
-            if (eq == std::string::npos || eq == 0 || eq + 1 == item.size()) { ok = false; break; }
+            if (eq == std::string::npos || eq == 0 || eq + 1 == item.size()) {
+                ok = false;
+                break;
+            }
             f.fixed.emplace_back(item.substr(0, eq), item.substr(eq + 1));
             if (comma == std::string::npos) break;
             start = comma + 1;
         }
         if (!ok) {
-            r.diagnostics.push_back(makeError("", 0, 0, "--variant " + spec + ": expected SHADER:NAME=VALUE[,NAME=VALUE...]"));
+            r.diagnostics.push_back(
+                makeError("", 0, 0, "--variant " + spec + ": expected SHADER:NAME=VALUE[,NAME=VALUE...]"));
             continue;
         }
         r.filters.push_back(std::move(f));
@@ -92,11 +98,11 @@ ChoicesResult variantChoices(const std::string& shader, const std::vector<Axis>&
         for (const auto& [name, value] : f.fixed) {
             auto ax = std::find_if(axes.begin(), axes.end(), [&](const Axis& a) { return a.name == name; });
             if (ax == axes.end())
-                r.diagnostics.push_back(makeError("", 0, 0, "--variant " + shader + ": shader '" + shader +
-                                                               "' declares no variant '" + name + "'"));
+                r.diagnostics.push_back(makeError(
+                    "", 0, 0, "--variant " + shader + ": shader '" + shader + "' declares no variant '" + name + "'"));
             else if (std::find(ax->values.begin(), ax->values.end(), value) == ax->values.end())
-                r.diagnostics.push_back(makeError("", 0, 0, "--variant " + shader + ": '" + name +
-                                                               "' has no value '" + value + "'"));
+                r.diagnostics.push_back(
+                    makeError("", 0, 0, "--variant " + shader + ": '" + name + "' has no value '" + value + "'"));
         }
         mine.push_back(f);
     }
@@ -106,8 +112,8 @@ ChoicesResult variantChoices(const std::string& shader, const std::vector<Axis>&
     while (true) {
         std::vector<std::pair<std::string, std::string>> defines;
         for (std::size_t a = 0; a < axes.size(); ++a) defines.emplace_back(axes[a].name, axes[a].values[index[a]]);
-        bool wanted = mine.empty() ||
-                      std::any_of(mine.begin(), mine.end(), [&](const VariantFilter& f) { return matches(f, defines); });
+        bool wanted = mine.empty() || std::any_of(mine.begin(), mine.end(),
+                                                  [&](const VariantFilter& f) { return matches(f, defines); });
         if (wanted) r.choices.push_back({variantName(defines), defines});
         // Odometer increment, last axis fastest.
         std::size_t a = axes.size();

@@ -14,17 +14,19 @@
 
 namespace prism::geometry::testing {
 
-inline bool isFinite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+inline bool isFinite(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 inline ::testing::AssertionResult hasUnitNormals(const Mesh& mesh, float tolerance = 1e-5f) {
     if (mesh.normals.size() != mesh.positions.size())
-        return ::testing::AssertionFailure() << mesh.normals.size() << " normals for " << mesh.positions.size()
-                                             << " positions";
+        return ::testing::AssertionFailure()
+               << mesh.normals.size() << " normals for " << mesh.positions.size() << " positions";
     for (std::size_t i = 0; i < mesh.normals.size(); ++i) {
         const glm::vec3 n = mesh.normals[i];
         if (!isFinite(n) || std::abs(glm::length(n) - 1.0f) > tolerance)
-            return ::testing::AssertionFailure() << "normal " << i << " = (" << n.x << ", " << n.y << ", " << n.z
-                                                 << ") is not a finite unit vector";
+            return ::testing::AssertionFailure()
+                   << "normal " << i << " = (" << n.x << ", " << n.y << ", " << n.z << ") is not a finite unit vector";
     }
     return ::testing::AssertionSuccess();
 }
@@ -70,8 +72,7 @@ inline ::testing::AssertionResult isClosedAndConsistentlyWound(const Mesh& mesh)
     const Mesh welded = weldVertices(geometryOnly, byPosition).mesh;
     std::map<std::pair<std::uint32_t, std::uint32_t>, int> directedEdges;
     for (std::size_t t = 0; t < triangleCount(welded); ++t)
-        for (int k = 0; k < 3; ++k)
-            ++directedEdges[{welded.indices[3 * t + k], welded.indices[3 * t + (k + 1) % 3]}];
+        for (int k = 0; k < 3; ++k) ++directedEdges[{welded.indices[3 * t + k], welded.indices[3 * t + (k + 1) % 3]}];
     for (const auto& [edge, count] : directedEdges) {
         if (count != 1)
             return ::testing::AssertionFailure() << "edge " << edge.first << "->" << edge.second << " used " << count

@@ -18,7 +18,9 @@ TEST(Mesh, CountsTrianglesAndVertices) {
 
 TEST(Mesh, BoundsSkipNonFinitePositions) {
     Mesh mesh;
-    mesh.positions = {{1, 2, 3}, {-1, 5, 0}, {std::numeric_limits<float>::quiet_NaN(), 0, 0},
+    mesh.positions = {{1, 2, 3},
+                      {-1, 5, 0},
+                      {std::numeric_limits<float>::quiet_NaN(), 0, 0},
                       {std::numeric_limits<float>::infinity(), 0, 0}};
     const Bounds box = computeBounds(mesh);
     EXPECT_EQ(box.min, glm::vec3(-1, 2, 0));

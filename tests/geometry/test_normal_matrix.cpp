@@ -26,11 +26,16 @@ bool isFinite(const glm::mat3& m) {
 
 void expectMatrixNear(const glm::mat3& actual, const glm::mat3& expected, float tolerance) {
     for (int c = 0; c < 3; ++c)
-        for (int r = 0; r < 3; ++r) EXPECT_NEAR(actual[c][r], expected[c][r], tolerance) << "column " << c << " row " << r;
+        for (int r = 0; r < 3; ++r)
+            EXPECT_NEAR(actual[c][r], expected[c][r], tolerance) << "column " << c << " row " << r;
 }
 
-glm::mat4 rotation(float degrees, glm::vec3 axis) { return glm::rotate(glm::mat4(1.0f), glm::radians(degrees), axis); }
-glm::mat4 scale(glm::vec3 s) { return glm::scale(glm::mat4(1.0f), s); }
+glm::mat4 rotation(float degrees, glm::vec3 axis) {
+    return glm::rotate(glm::mat4(1.0f), glm::radians(degrees), axis);
+}
+glm::mat4 scale(glm::vec3 s) {
+    return glm::scale(glm::mat4(1.0f), s);
+}
 
 TEST(NormalMatrix, RotationGivesTheRotationBackAndIgnoresTranslation) {
     const glm::mat4 world = glm::translate(glm::mat4(1.0f), {5, -3, 2}) * rotation(37.0f, {1, 2, 3});

@@ -80,7 +80,9 @@ struct DegenerateCase {
     glm::vec3 a, b, c;
 };
 
-void PrintTo(const DegenerateCase& c, std::ostream* out) { *out << c.name; }
+void PrintTo(const DegenerateCase& c, std::ostream* out) {
+    *out << c.name;
+}
 
 class DegenerateTriangle : public ::testing::TestWithParam<DegenerateCase> {};
 
@@ -133,7 +135,11 @@ TEST(AreaWeightedNormals, AllDegenerateMeshUsesTheConfiguredFallback) {
     Mesh mesh;
     mesh.positions = {{0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {kNaN, 0, 0}};
     mesh.indices = {0, 1, 2, 1, 2, 3};
-    EXPECT_TRUE(hasUnitNormals([&] { Mesh m = mesh; computeVertexNormals(m); return m; }()));
+    EXPECT_TRUE(hasUnitNormals([&] {
+        Mesh m = mesh;
+        computeVertexNormals(m);
+        return m;
+    }()));
     for (const glm::vec3& n : areaWeightedVertexNormals(mesh)) EXPECT_EQ(n, glm::vec3(0, 0, 1));
 
     VertexNormalOptions sideways;

@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 
 // A fresh directory per test, removed afterwards.
 class ObjLoader : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
         static std::atomic<int> counter{0};
         directory_ = fs::temp_directory_path() /
@@ -75,7 +75,7 @@ TEST_F(ObjLoader, QuadCubeIsTriangulatedAndSplitPerFace) {
     EXPECT_EQ(mesh.positions.size(), 36u);
     EXPECT_TRUE(mesh.uvs.empty());
     EXPECT_TRUE(testing::hasUnitNormals(mesh));
-    EXPECT_GT(testing::signedVolume(mesh), 7.99);  // CCW from outside, volume 8
+    EXPECT_GT(testing::signedVolume(mesh), 7.99);            // CCW from outside, volume 8
     for (std::size_t i = 0; i < mesh.positions.size(); ++i)  // flat: normal is the face axis
         EXPECT_FLOAT_EQ(glm::dot(mesh.normals[i], mesh.positions[i]), 1.0f);
 }
@@ -135,7 +135,9 @@ struct MalformedCase {
     const char* expected;  // part of the message
 };
 
-void PrintTo(const MalformedCase& c, std::ostream* out) { *out << c.name; }
+void PrintTo(const MalformedCase& c, std::ostream* out) {
+    *out << c.name;
+}
 
 class MalformedObj : public ObjLoader, public ::testing::WithParamInterface<MalformedCase> {};
 

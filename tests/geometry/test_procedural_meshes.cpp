@@ -39,10 +39,16 @@ const NamedMesh kAllMeshes[] = {
     {"ThinTorus", [] { return makeTorus(1.0f, 0.01f, 64, 3); }, true},
     {"Grid", [] { return makeGrid(); }, false},
     {"TrefoilKnot", [] { return makeTrefoilKnot(); }, true},
-    {"SmoothKnot", [] { return makeTrefoilKnot({64, 8, 0.15f, 0, 0.0f, 0}); }, true},
+    {"SmoothKnot",
+     [] {
+         return makeTrefoilKnot({64, 8, 0.15f, 0, 0.0f, 0});
+     },
+     true},
 };
 
-void PrintTo(const NamedMesh& mesh, std::ostream* out) { *out << mesh.name; }
+void PrintTo(const NamedMesh& mesh, std::ostream* out) {
+    *out << mesh.name;
+}
 
 std::vector<NamedMesh> closedMeshes() {
     std::vector<NamedMesh> closed;
@@ -148,7 +154,9 @@ TEST(Icosphere, VertexCountIs10Times4PowLevelPlus2) {
     }
 }
 
-TEST(Icosphere, LevelAbove7IsRejected) { EXPECT_THROW(makeIcosphere(1.0f, 8), std::invalid_argument); }
+TEST(Icosphere, LevelAbove7IsRejected) {
+    EXPECT_THROW(makeIcosphere(1.0f, 8), std::invalid_argument);
+}
 
 TEST(Torus, NormalsPointAwayFromTheTubeCentre) {
     const float major = 2.0f, minor = 0.5f;
@@ -197,7 +205,8 @@ TEST(TrefoilKnot, TubeDoesNotIntersectItself) {
         for (std::uint32_t j = i + 24; j + 24 <= i + 96; ++j)
             for (std::uint32_t a = 0; a < 8; ++a)
                 for (std::uint32_t b = 0; b < 8; ++b)
-                    closest = std::min(closest, glm::length(knot.positions[i * 8 + a] - knot.positions[(j % 96) * 8 + b]));
+                    closest =
+                        std::min(closest, glm::length(knot.positions[i * 8 + a] - knot.positions[(j % 96) * 8 + b]));
     EXPECT_GT(closest, 0.0f);
     EXPECT_GT(signedVolume(knot), 0.0);
 }

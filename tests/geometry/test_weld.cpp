@@ -28,7 +28,9 @@ WeldOptions crease(float degrees) {
 }
 
 // What an OBJ importer gives for a cube without texture coordinates: 36 vertices.
-Mesh importedCube() { return withoutAttributes(splitVerticesPerFace(makeCube())); }
+Mesh importedCube() {
+    return withoutAttributes(splitVerticesPerFace(makeCube()));
+}
 
 TEST(Weld, SplitCubeWithoutCreaseBecomes8SmoothCorners) {
     const WeldResult welded = weldVertices(importedCube());
@@ -146,8 +148,7 @@ TEST(Weld, KeepsExistingNormalsWhenNotRecomputing) {
 
 TEST(Weld, RejectsBadCreaseAnglesAndInvalidMeshes) {
     EXPECT_THROW(weldVertices(importedCube(), crease(-1.0f)), std::invalid_argument);
-    EXPECT_THROW(weldVertices(importedCube(), crease(std::numeric_limits<float>::quiet_NaN())),
-                 std::invalid_argument);
+    EXPECT_THROW(weldVertices(importedCube(), crease(std::numeric_limits<float>::quiet_NaN())), std::invalid_argument);
     Mesh broken = importedCube();
     broken.indices.back() = 99;
     EXPECT_THROW(weldVertices(broken), std::invalid_argument);

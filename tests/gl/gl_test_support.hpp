@@ -108,7 +108,7 @@ inline std::unique_ptr<gl::Context> contextOrSkip(gl::Backend backend) {
 // Triangle (-0.5,-0.5) (0.5,-0.5) (0,0.5) with red, green, blue corners, bound to
 // the contract locations 0 (a_position) and 1 (a_color).
 class TriangleMesh {
-public:
+  public:
     TriangleMesh() {
         const float vertices[] = {
             -0.5f, -0.5f, 1.f, 0.f, 0.f, 1.f,  //
@@ -140,7 +140,7 @@ public:
         glBindVertexArray(0);
     }
 
-private:
+  private:
     GLuint vao_ = 0, vbo_ = 0;
 };
 

@@ -14,13 +14,15 @@ using prism::gl::CompositionError;
 // A diamond: top -> {left, right} -> base. Each module's text is a function
 // returning its own share of the final colour.
 inline constexpr std::string_view kBase[] = {"// base\nfloat baseValue() { return 0.25; }\n"};
-inline constexpr std::string_view kLeft[] = {"// left: #include \"base.glsl\" blanked below\n\n"
-                                             "float leftValue() { return baseValue(); }\n"};
+inline constexpr std::string_view kLeft[] = {
+    "// left: #include \"base.glsl\" blanked below\n\n"
+    "float leftValue() { return baseValue(); }\n"};
 inline constexpr std::string_view kRight[] = {"\nfloat rightValue() { return baseValue() * 2.0; }\n"};
 inline constexpr std::string_view kTop[] = {"\n\nvec4 topColor() { return vec4(leftValue(), rightValue(), ",
                                             "0.0, 1.0); }\n"};  // two chunks
 // Line 3 of faulty.glsl has a type error.
-inline constexpr std::string_view kFaulty[] = {"// faulty\nfloat okay() { return 1.0; }\nfloat bad() { return vec3(1.0); }\n"};
+inline constexpr std::string_view kFaulty[] = {
+    "// faulty\nfloat okay() { return 1.0; }\nfloat bad() { return vec3(1.0); }\n"};
 inline constexpr std::string_view kLoopA[] = {"float a() { return 1.0; }\n"};
 inline constexpr std::string_view kLoopB[] = {"float b() { return 1.0; }\n"};
 
@@ -30,11 +32,11 @@ inline constexpr std::uint32_t kLoopADeps[] = {6};
 inline constexpr std::uint32_t kLoopBDeps[] = {5};
 
 inline constexpr cat::Module kModules[] = {
-    {"base", "modules/base.glsl", "", kBase, {}},          // 0
+    {"base", "modules/base.glsl", "", kBase, {}},               // 0
     {"left", "modules/left.glsl", "", kLeft, kOnBase},          // 1
     {"right", "modules/right.glsl", "", kRight, kOnBase},       // 2
     {"top", "modules/top.glsl", "", kTop, kTopDeps},            // 3
-    {"faulty", "modules/faulty.glsl", "", kFaulty, {}},    // 4
+    {"faulty", "modules/faulty.glsl", "", kFaulty, {}},         // 4
     {"loop_a", "modules/loop_a.glsl", "", kLoopA, kLoopADeps},  // 5
     {"loop_b", "modules/loop_b.glsl", "", kLoopB, kLoopBDeps},  // 6
 };
@@ -118,7 +120,7 @@ TEST(ComposeLayout, UserVersionLineIsBlankedAndIncludeRefused) {
 }
 
 class ComposeGl : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override { ctx_ = prism::gl::createContext(prism::gl::Backend::Egl); }
     std::unique_ptr<prism::gl::Context> ctx_;
 };
@@ -144,7 +146,8 @@ TEST_F(ComposeGl, ErrorInModuleMapsToModulePathAndLine) {
             ADD_FAILURE() << "the faulty module compiled under " << catalog->versionDirective;
         } catch (const prism::gl::ShaderBuildError& e) {
             const std::string what = e.what();
-            EXPECT_NE(what.find("modules/faulty.glsl:3:"), std::string::npos) << catalog->versionDirective << "\n" << what;
+            EXPECT_NE(what.find("modules/faulty.glsl:3:"), std::string::npos) << catalog->versionDirective << "\n"
+                                                                              << what;
         }
     }
 }

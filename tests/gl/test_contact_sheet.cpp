@@ -63,12 +63,12 @@ TEST(ContactSheet, LayoutAndLabels) {
     // pad 4; cells 10x8; label strip 7 + pad.
     EXPECT_EQ(sheet.width, 4 + 2 * (10 + 4));
     EXPECT_EQ(sheet.height, 4 + 2 * (8 + 4 + 7 + 4));
-    EXPECT_EQ(sheet.at(4, 4), (prism::Rgba8{255, 0, 0, 255}));           // image 0 top-left
-    EXPECT_EQ(sheet.at(18, 4), (prism::Rgba8{0, 255, 0, 255}));          // image 1
-    EXPECT_EQ(sheet.at(4, 4 + 23), (prism::Rgba8{0, 0, 255, 255}));      // image 2, second row
+    EXPECT_EQ(sheet.at(4, 4), (prism::Rgba8{255, 0, 0, 255}));       // image 0 top-left
+    EXPECT_EQ(sheet.at(18, 4), (prism::Rgba8{0, 255, 0, 255}));      // image 1
+    EXPECT_EQ(sheet.at(4, 4 + 23), (prism::Rgba8{0, 0, 255, 255}));  // image 2, second row
     EXPECT_EQ(sheet.at(0, 0), style.background);
-    EXPECT_EQ(sheet.at(4 + 2, 4 + 8 + 4), style.labelColour);            // top of the 'A'
-    EXPECT_EQ(sheet.at(4 + 2, 4 + 23 + 8 + 4), style.background);        // image 2 has no label
+    EXPECT_EQ(sheet.at(4 + 2, 4 + 8 + 4), style.labelColour);      // top of the 'A'
+    EXPECT_EQ(sheet.at(4 + 2, 4 + 23 + 8 + 4), style.background);  // image 2 has no label
     EXPECT_THROW(prism::composeContactSheet(images, labels, 0), std::invalid_argument);
     const std::vector<std::string> tooMany = {"a", "b", "c", "d"};
     EXPECT_THROW(prism::composeContactSheet(images, tooMany, 2), std::invalid_argument);

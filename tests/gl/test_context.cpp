@@ -11,7 +11,7 @@ using prism::gl::ContextError;
 
 // Sets or unsets an environment variable for the scope of one test.
 class ScopedEnv {
-public:
+  public:
     ScopedEnv(const char* name, const char* value) : name_(name) {
         if (const char* old = std::getenv(name)) old_ = old, hadOld_ = true;
         if (value)
@@ -26,7 +26,7 @@ public:
             unsetenv(name_);
     }
 
-private:
+  private:
     const char* name_;
     std::string old_;
     bool hadOld_ = false;

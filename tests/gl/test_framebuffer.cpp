@@ -9,7 +9,7 @@ using prism::gl::ColorFormat;
 using prism::gl::Framebuffer;
 
 class FramebufferTest : public ::testing::TestWithParam<Backend> {
-protected:
+  protected:
     void SetUp() override { ctx_ = prism::gl::createContext(GetParam()); }
     std::unique_ptr<prism::gl::Context> ctx_;
 };

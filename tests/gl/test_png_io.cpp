@@ -12,7 +12,7 @@ namespace {
 namespace fs = std::filesystem;
 
 class PngTest : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
         dir_ = fs::temp_directory_path() / ("prism_png_test_" + std::to_string(::getpid()));
         fs::remove_all(dir_);
@@ -25,8 +25,9 @@ prism::Image8 pattern(int w, int h) {
     prism::Image8 img(w, h);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
-            img.set(x, y, {static_cast<std::uint8_t>(x * 7), static_cast<std::uint8_t>(y * 13),
-                           static_cast<std::uint8_t>((x ^ y) * 3), static_cast<std::uint8_t>(255 - x - y)});
+            img.set(x, y,
+                    {static_cast<std::uint8_t>(x * 7), static_cast<std::uint8_t>(y * 13),
+                     static_cast<std::uint8_t>((x ^ y) * 3), static_cast<std::uint8_t>(255 - x - y)});
     return img;
 }
 

@@ -10,7 +10,7 @@ using namespace prism::test;
 using prism::gl::Program;
 
 class ProgramTest : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override { ctx_ = prism::gl::createContext(prism::gl::Backend::Egl); }
 
     Program solidProgram() const {
@@ -85,7 +85,8 @@ TEST_F(ProgramTest, LinkErrorIsReported) {
     prism::gl::ProgramSources sources;
     sources.label = "unlinkable";
     sources.stages.push_back({prism::catalog::Stage::Vertex,
-                              "#version 330 core\nvoid main() { gl_Position = vec4(0.0); }\n", {{0, "a.vert"}}});
+                              "#version 330 core\nvoid main() { gl_Position = vec4(0.0); }\n",
+                              {{0, "a.vert"}}});
     sources.stages.push_back({prism::catalog::Stage::Fragment,
                               "#version 330 core\nfloat declaredOnly();\nout vec4 c;\n"
                               "void main() { c = vec4(declaredOnly()); }\n",

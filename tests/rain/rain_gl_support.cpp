@@ -21,7 +21,7 @@ GlState& state() {
 }
 
 class Environment : public ::testing::Environment {
-public:
+  public:
     void SetUp() override {
         try {
             state().context = gl::createContext(gl::ContextOptions{.majorVersion = 4, .minorVersion = 3});
@@ -41,8 +41,12 @@ public:
 
 }  // namespace
 
-gl::Context* context() { return state().context.get(); }
-const std::string& contextError() { return state().error; }
+gl::Context* context() {
+    return state().context.get();
+}
+const std::string& contextError() {
+    return state().error;
+}
 
 RainPrograms& programs() {
     if (!state().programs) throw std::logic_error("no GL context: " + state().error);

@@ -18,7 +18,7 @@ const std::string& contextError();
 RainPrograms& programs();
 
 class RainGlTest : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override;
 };
 

@@ -32,8 +32,8 @@ inline ::testing::AssertionResult allFiniteAndInside(std::span<const Particle> p
         const glm::vec3 local = glm::vec3(p.position) - center;
         const float r = std::sqrt(local.x * local.x + local.z * local.z);
         if (r > radius * (1.0f + 1e-5f) + slack)
-            return ::testing::AssertionFailure() << "particle " << i << " is " << r << " m from the axis (radius "
-                                                 << radius << ")";
+            return ::testing::AssertionFailure()
+                   << "particle " << i << " is " << r << " m from the axis (radius " << radius << ")";
         if (local.y < -0.5f * height - slack || local.y > 0.5f * height + slack)
             return ::testing::AssertionFailure() << "particle " << i << " is at height " << local.y
                                                  << " relative to the centre (half height " << 0.5f * height << ")";
@@ -47,7 +47,8 @@ inline std::vector<double> ringShares(std::span<const Particle> particles, const
     std::vector<double> share(static_cast<std::size_t>(rings), 0.0);
     for (const auto& p : particles) {
         const float dx = p.position.x - center.x, dz = p.position.z - center.z;
-        const int k = std::min(rings - 1, static_cast<int>(std::sqrt(dx * dx + dz * dz) / radius * static_cast<float>(rings)));
+        const int k =
+            std::min(rings - 1, static_cast<int>(std::sqrt(dx * dx + dz * dz) / radius * static_cast<float>(rings)));
         share[static_cast<std::size_t>(k)] += 1.0;
     }
     for (auto& s : share) s /= std::max<double>(1.0, static_cast<double>(particles.size()));

@@ -90,9 +90,9 @@ TEST(CpuRain, EveryParticleStaysInsideAfterAnyCameraMove) {
     p.wind.strength = 4.0f;
     CpuRainSimulation sim(p, glm::vec3(0.0f, 1.7f, 0.0f));
     // Walks, runs, jumps, vertical moves and teleports, in one sequence.
-    const glm::vec3 moves[] = {{0.05f, 0, 0},  {1.0f, 0, 0.5f}, {12.0f, 0, 0},   {0, 0, -30.0f}, {60.0f, 0, 60.0f},
-                               {0, 8.0f, 0},   {0, -25.0f, 0},  {1000.0f, 0, 0}, {0, 0, 0},      {-5.0f, 3.0f, 5.0f},
-                               {0, 500.0f, 0}, {2.0f, -1.0f, 0}};
+    const glm::vec3 moves[] = {{0.05f, 0, 0},     {1.0f, 0, 0.5f},     {12.0f, 0, 0},  {0, 0, -30.0f},
+                               {60.0f, 0, 60.0f}, {0, 8.0f, 0},        {0, -25.0f, 0}, {1000.0f, 0, 0},
+                               {0, 0, 0},         {-5.0f, 3.0f, 5.0f}, {0, 500.0f, 0}, {2.0f, -1.0f, 0}};
     glm::vec3 eye(0.0f, 1.7f, 0.0f);
     for (int round = 0; round < 3; ++round)
         for (const auto& m : moves) {
@@ -135,7 +135,8 @@ TEST(CpuRain, FastCameraMoveLeavesNoGapsOrBursts) {
     }
     // No burst in height either: drops stay spread over the whole height.
     for (const auto& q : sim.particles())
-        heights[std::min<std::size_t>(9, static_cast<std::size_t>((q.position.y - sim.center().y) / p.height * 10.0f + 5.0f))] += 1.0;
+        heights[std::min<std::size_t>(
+            9, static_cast<std::size_t>((q.position.y - sim.center().y) / p.height * 10.0f + 5.0f))] += 1.0;
     for (double h : heights) EXPECT_NEAR(h / sim.particleCount(), 0.1, 0.015);
     // And per step only the drops that fell out of the bottom (v dt / H) and the thin
     // crescent the camera left behind (2 R x move / (pi R^2) of a uniform disc) jump:
@@ -146,7 +147,8 @@ TEST(CpuRain, FastCameraMoveLeavesNoGapsOrBursts) {
     int jumped = 0;
     for (std::uint32_t i = 0; i < sim.particleCount(); ++i)
         if (std::fabs(sim.particles()[i].position.x - before[i].position.x) > 2.0f) ++jumped;
-    const double expected = sim.fallSpeed() * (1.0 / 30.0) / p.height + 2.0 * p.radius * 1.0 / (3.14159265 * p.radius * p.radius);
+    const double expected =
+        sim.fallSpeed() * (1.0 / 30.0) / p.height + 2.0 * p.radius * 1.0 / (3.14159265 * p.radius * p.radius);
     EXPECT_LT(jumped, static_cast<int>(1.2 * expected * sim.particleCount()));
     double lowest = 1e9, highest = 0.0;
     for (std::size_t b = 0; b < still.size(); ++b) {
@@ -176,7 +178,8 @@ TEST(CpuRain, WindKeepsTheRingsCentredOnTheCamera) {
     for (int i = 0; i < 300; ++i) sim.step(1.0f / 30.0f, glm::vec3(0.0f));  // 10 s: ~3 full falls
     ASSERT_TRUE(allFiniteAndInside(sim.particles(), sim.center(), p.radius, p.height));
     glm::dvec2 mean(0.0);
-    for (const auto& q : sim.particles()) mean += glm::dvec2(q.position.x - sim.center().x, q.position.z - sim.center().z);
+    for (const auto& q : sim.particles())
+        mean += glm::dvec2(q.position.x - sim.center().x, q.position.z - sim.center().z);
     mean /= static_cast<double>(sim.particleCount());
     EXPECT_LT(glm::length(mean), 0.1 * p.radius);
 }

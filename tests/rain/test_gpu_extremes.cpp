@@ -93,7 +93,14 @@ TEST_F(GpuRainExtremes, TeleportAndZeroAndHugeSteps) {
     EXPECT_THROW(rain.update(0.1f, glm::vec3(std::numeric_limits<float>::quiet_NaN())), RainParameterError);
     EXPECT_THROW(rain.setIntensity(-1.0f), RainParameterError);
     EXPECT_THROW(rain.setWind(WindParams{std::nullopt, std::numeric_limits<float>::quiet_NaN()}), RainParameterError);
-    EXPECT_THROW(RainSystem(programs(), [] { RainParams q; q.intensity = -3.0f; return q; }(), glm::vec3(0.0f)),
+    EXPECT_THROW(RainSystem(
+                     programs(),
+                     [] {
+                         RainParams q;
+                         q.intensity = -3.0f;
+                         return q;
+                     }(),
+                     glm::vec3(0.0f)),
                  RainParameterError);
 }
 
@@ -106,7 +113,8 @@ TEST_F(GpuRainExtremes, EveryTechniqueDrawsFinitePixels) {
     cam.target = {0.0f, 30.0f, 0.001f};  // straight up, along the fall: degenerate streak frames
     RainSystem rain(programs(), p, cam.eye);
     rain.update(1.0f / 30.0f, cam.eye);
-    for (StreakTechnique t : {StreakTechnique::GeometryShader, StreakTechnique::Instanced, StreakTechnique::PointSprites}) {
+    for (StreakTechnique t :
+         {StreakTechnique::GeometryShader, StreakTechnique::Instanced, StreakTechnique::PointSprites}) {
         gl::Framebuffer fb(64, 64, gl::ColorFormat::Rgba32F);
         fb.clear({0.f, 0.f, 0.f, 1.f});
         RainDrawInputs in;

@@ -26,16 +26,18 @@ constexpr float kPositionTolerance = 1e-3f;
 constexpr double kMaxWrapMismatchShare = 0.001;
 
 struct Agreement {
-    float maxDiff = 0.0f;       // over agreeing particles
-    std::size_t mismatched = 0; // beyond the tolerance
+    float maxDiff = 0.0f;        // over agreeing particles
+    std::size_t mismatched = 0;  // beyond the tolerance
 };
 
 Agreement compare(const std::vector<Particle>& gpu, std::span<const Particle> cpu) {
     Agreement a;
     for (std::size_t i = 0; i < gpu.size(); ++i) {
         const float d = glm::length(glm::vec3(gpu[i].position) - glm::vec3(cpu[i].position));
-        if (d > kPositionTolerance) ++a.mismatched;
-        else a.maxDiff = std::max(a.maxDiff, d);
+        if (d > kPositionTolerance)
+            ++a.mismatched;
+        else
+            a.maxDiff = std::max(a.maxDiff, d);
     }
     return a;
 }
@@ -77,7 +79,7 @@ TEST_F(GpuRain, UpdateAgreesWithTheCpuReferenceAfterManySteps) {
     CpuRainSimulation cpu(p, eye);
     constexpr int kSteps = 180;  // 3 s at 60 Hz: every drop respawns at least once
     for (int i = 0; i < kSteps; ++i) {
-        eye += glm::vec3(0.08f, 0.0f, 0.03f);      // walking
+        eye += glm::vec3(0.08f, 0.0f, 0.03f);              // walking
         if (i == 90) eye += glm::vec3(40.0f, 0.0f, 0.0f);  // one fast jump (folds)
         const float dt = (i % 7 == 3) ? 0.05f : 1.0f / 60.0f;
         gpu.update(dt, eye);
@@ -85,8 +87,8 @@ TEST_F(GpuRain, UpdateAgreesWithTheCpuReferenceAfterManySteps) {
     }
     const auto g = gpu.readParticles();
     const Agreement a = compare(g, cpu.particles());
-    std::cout << "[ info ] after " << kSteps << " steps: largest difference " << a.maxDiff << " m, "
-              << a.mismatched << " of " << g.size() << " particles beyond " << kPositionTolerance << " m\n";
+    std::cout << "[ info ] after " << kSteps << " steps: largest difference " << a.maxDiff << " m, " << a.mismatched
+              << " of " << g.size() << " particles beyond " << kPositionTolerance << " m\n";
     EXPECT_LE(static_cast<double>(a.mismatched), kMaxWrapMismatchShare * g.size());
     EXPECT_LT(a.maxDiff, kPositionTolerance);
     EXPECT_TRUE(allFiniteAndInside(g, gpu.center(), p.radius, p.height));
@@ -98,8 +100,8 @@ TEST_F(GpuRain, EveryParticleStaysInsideAfterCameraMoves) {
     p.wind.strength = 6.0f;
     glm::vec3 eye(0.0f, 1.7f, 0.0f);
     RainSystem gpu(programs(), p, eye);
-    const glm::vec3 moves[] = {{0.1f, 0, 0}, {15.0f, 0, 0}, {0, 0, -45.0f}, {0, 12.0f, 0},
-                               {0, -40.0f, 0}, {3000.0f, 0, 200.0f}, {0, 0, 0}, {-60.0f, 5.0f, 60.0f}};
+    const glm::vec3 moves[] = {{0.1f, 0, 0},   {15.0f, 0, 0},        {0, 0, -45.0f}, {0, 12.0f, 0},
+                               {0, -40.0f, 0}, {3000.0f, 0, 200.0f}, {0, 0, 0},      {-60.0f, 5.0f, 60.0f}};
     for (const auto& m : moves) {
         eye += m;
         gpu.update(1.0f / 30.0f, eye);

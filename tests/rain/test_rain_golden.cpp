@@ -40,7 +40,9 @@ struct RainCase {
     StreakTechnique technique = StreakTechnique::GeometryShader;
 };
 
-void PrintTo(const RainCase& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const RainCase& c, std::ostream* os) {
+    *os << c.name;
+}
 
 const std::vector<RainCase>& goldenCases() {
     static const std::vector<RainCase> cases = {
@@ -71,7 +73,9 @@ Image8 renderScene(const RainSceneDesc& d) {
     return scene.render(kSize, kSize);
 }
 
-fs::path goldenPath(const std::string& name) { return fs::path(PRISM_RAIN_GOLDEN_DIR) / (name + ".png"); }
+fs::path goldenPath(const std::string& name) {
+    return fs::path(PRISM_RAIN_GOLDEN_DIR) / (name + ".png");
+}
 
 fs::path outputDir() {
     const char* dir = std::getenv("PRISM_GOLDEN_OUT");
@@ -112,7 +116,8 @@ TEST_P(RainGolden, MatchesStoredGoldenWithinThresholds) {
     RainSceneDesc dry = describe(c);
     dry.rain.reset();
     // A golden without visible rain would test nothing.
-    ASSERT_GT(changedPixels(actual, renderScene(dry)), actual.pixelCount() / 50) << c.name << ": (almost) no rain drawn";
+    ASSERT_GT(changedPixels(actual, renderScene(dry)), actual.pixelCount() / 50)
+        << c.name << ": (almost) no rain drawn";
 
     if (envFlag("PRISM_UPDATE_GOLDENS")) {
         writePng(goldenPath(c.name), actual);
@@ -193,8 +198,8 @@ TEST_F(RainImages, BackLitRainIsBrighterThanFrontLitRain) {
         dry.rain.reset();
         return addedLight(renderScene(d), renderScene(dry));
     };
-    const double backLit = rainLight({0.0f, -0.3f, 1.0f});   // sun ahead, shining towards the camera
-    const double frontLit = rainLight({0.0f, -0.3f, -1.0f}); // sun behind the camera
+    const double backLit = rainLight({0.0f, -0.3f, 1.0f});    // sun ahead, shining towards the camera
+    const double frontLit = rainLight({0.0f, -0.3f, -1.0f});  // sun behind the camera
     std::cout << "[ info ] rain light, back-lit " << backLit << ", front-lit " << frontLit << "\n";
     EXPECT_GT(backLit, 2.0 * frontLit);
 }

@@ -140,7 +140,8 @@ void expectError(F&& f, std::initializer_list<const char*> fragments) {
         ADD_FAILURE() << "no RainParameterError";
     } catch (const RainParameterError& e) {
         const std::string m = e.what();
-        for (const char* frag : fragments) EXPECT_NE(m.find(frag), std::string::npos) << "'" << frag << "' not in: " << m;
+        for (const char* frag : fragments)
+            EXPECT_NE(m.find(frag), std::string::npos) << "'" << frag << "' not in: " << m;
     }
 }
 

@@ -17,7 +17,8 @@ namespace {
 class RainSceneResources : public RainGlTest {};
 
 bool anyContains(const std::vector<std::string>& names, const std::string& part) {
-    return std::any_of(names.begin(), names.end(), [&](const std::string& n) { return n.find(part) != std::string::npos; });
+    return std::any_of(names.begin(), names.end(),
+                       [&](const std::string& n) { return n.find(part) != std::string::npos; });
 }
 
 TEST_F(RainSceneResources, NoRainNoFogBuildsOnlyTheGround) {

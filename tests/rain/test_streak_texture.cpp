@@ -34,7 +34,9 @@ TEST(StreakTexture, HasTariqsLayout) {
     EXPECT_EQ(phiOfBin(8), 170.0f);
 }
 
-TEST(StreakTexture, IsDeterministic) { EXPECT_EQ(generateStreakTextures().texels, texture().texels); }
+TEST(StreakTexture, IsDeterministic) {
+    EXPECT_EQ(generateStreakTextures().texels, texture().texels);
+}
 
 TEST(StreakTexture, BackLitDropsAreBrighterThanFrontLit) {
     // phi = 170: the light is behind the drop (refraction through it, a lens); phi = 10:

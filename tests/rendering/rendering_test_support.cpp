@@ -33,12 +33,9 @@ GlState& state() {
 
 const std::vector<ShaderSpec>& catalogueShaders() {
     static const std::vector<ShaderSpec> specs = {
-        {"unicolor", "unicolor", {}, false, false},
-        {"flat", "flat", {}, true, false},
-        {"smooth", "smooth", {}, true, false},
-        {"gouraud", "gouraud", {}, true, true},
-        {"phong", "phong", {}, true, true},
-        {"phong-blinn", "phong", {{"BLINN", "1"}}, true, true},
+        {"unicolor", "unicolor", {}, false, false}, {"flat", "flat", {}, true, false},
+        {"smooth", "smooth", {}, true, false},      {"gouraud", "gouraud", {}, true, true},
+        {"phong", "phong", {}, true, true},         {"phong-blinn", "phong", {{"BLINN", "1"}}, true, true},
     };
     return specs;
 }
@@ -70,8 +67,12 @@ void GlEnvironment::TearDown() {
     state().context.reset();
 }
 
-gl::Context* context() { return state().context.get(); }
-const std::string& contextError() { return state().error; }
+gl::Context* context() {
+    return state().context.get();
+}
+const std::string& contextError() {
+    return state().error;
+}
 
 ProgramCache& programCache() {
     if (!state().cache) throw std::logic_error("no GL context: " + state().error);

@@ -44,18 +44,18 @@ glm::vec3 brightestAllowed(const ShaderSpec& spec, const Lights& lights, const M
 
 // The process-wide context and program cache, created once by the environment.
 class GlEnvironment : public ::testing::Environment {
-public:
+  public:
     void SetUp() override;
     void TearDown() override;
 };
-gl::Context* context();            // nullptr when creation failed
-const std::string& contextError(); // why it failed
+gl::Context* context();             // nullptr when creation failed
+const std::string& contextError();  // why it failed
 ProgramCache& programCache();
 
 // Base fixture of every test that renders: fails (not skips) without a context, since a
 // rendering tier that silently skips would hide a broken headless setup.
 class RenderingTest : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override;
 };
 
@@ -68,10 +68,10 @@ std::size_t coveredPixels(const Image8& image, const glm::vec4& background, int 
 
 // What a render must never contain, counted over all pixels of an RGBA32F image.
 struct PixelInspection {
-    std::size_t nonFinite = 0;   // a channel is NaN or Inf
-    std::size_t overBright = 0;  // an RGB channel above bound + epsilon, or alpha above 1 + epsilon
-    std::size_t negative = 0;    // a channel below -1e-6
-    std::string firstOverBright; // "pixel (x, y) channel c = v > limit", for messages
+    std::size_t nonFinite = 0;    // a channel is NaN or Inf
+    std::size_t overBright = 0;   // an RGB channel above bound + epsilon, or alpha above 1 + epsilon
+    std::size_t negative = 0;     // a channel below -1e-6
+    std::string firstOverBright;  // "pixel (x, y) channel c = v > limit", for messages
     std::string firstNegative;
 };
 PixelInspection inspectPixels(const ImageF& image, const glm::vec3& bound, float epsilon);

@@ -47,9 +47,9 @@ constexpr glm::vec4 kBackground{0.02f, 0.02f, 0.03f, 1.0f};
 constexpr Thresholds kSameImage{.maxChannelDiff = 3, .maxShareOver = 0.001, .maxMean = 0.5};
 
 enum class Expect {
-    LitAndDrawn,    // covers >= minCoveredShare, and lights add visibly to the ambient term
-    DrawnUnlit,     // covers >= minCoveredShare; lights may add nothing (grazing, back light)
-    NothingDrawn,   // every pixel is exactly the background
+    LitAndDrawn,   // covers >= minCoveredShare, and lights add visibly to the ambient term
+    DrawnUnlit,    // covers >= minCoveredShare; lights may add nothing (grazing, back light)
+    NothingDrawn,  // every pixel is exactly the background
 };
 
 struct Scene {
@@ -102,8 +102,7 @@ void renderAndCheckShader(const ShaderSpec& spec, const Scene& scene, ImageF& im
     glm::vec3 bound = brightestAllowed(spec, scene.lights, scene.material);
     if (scene.fog) bound = glm::max(bound, scene.fog->color);  // fog mixes towards its colour
     ASSERT_TRUE(kBackground.r <= bound.r && kBackground.g <= bound.g && kBackground.b <= bound.b)
-        << "test setup: the background " << fmt(glm::vec3(kBackground)) << " is brighter than the bound "
-        << fmt(bound);
+        << "test setup: the background " << fmt(glm::vec3(kBackground)) << " is brighter than the bound " << fmt(bound);
 
     ASSERT_NO_THROW(image = renderImageF(programCache(), job));
     ASSERT_EQ(image.width, kSize);
@@ -153,8 +152,8 @@ float brightestRedInColumns(const ImageF& image, int x0, int x1) {
 // Every shader's image of `scene` is the same as of `reference` within kSameImage.
 void expectSameImages(const std::map<std::string, ImageF>& scene, const std::map<std::string, ImageF>& reference) {
     for (const auto& [label, image] : scene) {
-        const ImageComparison cmp = compareImages(toImage8(image), toImage8(reference.at(label)),
-                                                  kSameImage.maxChannelDiff);
+        const ImageComparison cmp =
+            compareImages(toImage8(image), toImage8(reference.at(label)), kSameImage.maxChannelDiff);
         EXPECT_TRUE(passes(cmp, kSameImage)) << label << ": " << describe(cmp, kSameImage);
     }
 }
@@ -467,7 +466,7 @@ TEST_F(Extremes, NearPlane1e3FarPlane1e4MeshFarAway) {
 // A copy of one catalogue shader, every variant, with text replaced in its stages, as
 // its own one-shader catalogue: the seed's bugs put back into the current shaders.
 class MutantCatalog {
-public:
+  public:
     MutantCatalog(std::string_view shaderName, const std::vector<std::pair<std::string, std::string>>& replacements) {
         const catalog::Shader* original = catalog::findShader(shaders::kCatalog, shaderName);
         if (!original) throw std::invalid_argument("no catalogue shader " + std::string(shaderName));
@@ -484,7 +483,8 @@ public:
                 std::string text = catalog::joinChunks(stage.chunks);
                 for (std::size_t r = 0; r < replacements.size(); ++r) {
                     const auto& [from, to] = replacements[r];
-                    for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) {
+                    for (std::size_t at = text.find(from); at != std::string::npos;
+                         at = text.find(from, at + to.size())) {
                         text.replace(at, from.size(), to);
                         found[r] = true;
                     }
@@ -513,7 +513,7 @@ public:
 
     const catalog::Catalog& catalog() const { return catalog_; }
 
-private:
+  private:
     std::vector<std::string> sources_;
     std::vector<std::string_view> chunks_;
     std::vector<catalog::StageSource> stages_;
@@ -547,8 +547,8 @@ TEST_F(ExtremeChecksCatchSeedBugs, ConstantAddedToHighlightIsOverBright) {
 // ShininessZero case above still guards safePow on drivers that return NaN.
 
 TEST_F(ExtremeChecksCatchSeedBugs, NormalizeOfZeroNormalIsNonFinite) {
-    const MutantCatalog mutant("phong", {{"vec3 n = safeNormalize(v_eyeNormal, vec3(0.0, 0.0, 1.0));",
-                                          "vec3 n = normalize(v_eyeNormal);"}});
+    const MutantCatalog mutant(
+        "phong", {{"vec3 n = safeNormalize(v_eyeNormal, vec3(0.0, 0.0, 1.0));", "vec3 n = normalize(v_eyeNormal);"}});
     Scene s = sphereWithNormals([](std::size_t, const glm::vec3&) { return glm::vec3(0.0f); });
     const PixelInspection px = renderMutant(mutant, s);
     EXPECT_GT(px.nonFinite, 0u);

@@ -94,7 +94,9 @@ struct GoldenCase {
 };
 
 // gtest prints the case by its golden path, not as bytes.
-void PrintTo(const GoldenCase& c, std::ostream* os) { *os << c.shaderLabel << "/" << c.name(); }
+void PrintTo(const GoldenCase& c, std::ostream* os) {
+    *os << c.shaderLabel << "/" << c.name();
+}
 
 std::vector<GoldenCase> goldenCases() {
     std::vector<GoldenCase> cases;
@@ -196,7 +198,7 @@ TEST(GoldenCatalogue, EveryCatalogueShaderIsCovered) {
 // --- Mutation tests: the comparison must catch real changes ------------------------
 
 class GoldenMutation : public RenderingTest {
-protected:
+  protected:
     void SetUp() override {
         RenderingTest::SetUp();
         if (HasFatalFailure()) return;
@@ -247,16 +249,15 @@ TEST_F(GoldenMutation, PhongLightTurnedByFiveDegreesFailsAgainstGolden) {
     const GoldenCase original = phongSphere();
     const Image8 golden = goldenThatPasses(original);
     GoldenCase mutant = original;
-    mutant.light.direction =
-        glm::vec3(glm::rotate(glm::mat4(1.0f), glm::radians(5.0f), glm::vec3(0, 1, 0)) *
-                  glm::vec4(original.light.direction, 0.0f));
+    mutant.light.direction = glm::vec3(glm::rotate(glm::mat4(1.0f), glm::radians(5.0f), glm::vec3(0, 1, 0)) *
+                                       glm::vec4(original.light.direction, 0.0f));
     const ImageComparison cmp = compareImages(renderGoldenCase(mutant), golden, kGoldenThresholds.maxChannelDiff);
     EXPECT_FALSE(reportMutant("phong sphere key light turned 5 degrees", cmp));
 }
 
 TEST_F(GoldenMutation, GouraudDiffersFromPhongGoldenBeyondThresholds) {
-    for (const GoldenCase& phong : {phongSphere(), GoldenCase{"phong", "icosphere", 1, 0.0f, 128.0f,
-                                                               kLightFrontAbove, kTeal}}) {
+    for (const GoldenCase& phong :
+         {phongSphere(), GoldenCase{"phong", "icosphere", 1, 0.0f, 128.0f, kLightFrontAbove, kTeal}}) {
         const Image8 golden = goldenThatPasses(phong);
         GoldenCase gouraud = phong;
         gouraud.shaderLabel = "gouraud";

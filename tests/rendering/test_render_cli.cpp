@@ -97,15 +97,15 @@ TEST(PrismRenderCli, UnknownShaderExitsNonZeroListsKnownShadersWritesNothing) {
     EXPECT_EQ(r.exitCode, kExitBadInput);
     EXPECT_NE(r.err.find("phongg"), std::string::npos) << r.err;
     for (const auto& s : shaders::kCatalog.shaders)
-        EXPECT_NE(r.err.find(std::string(s.name)), std::string::npos) << "known shader " << s.name << " not listed: " << r.err;
+        EXPECT_NE(r.err.find(std::string(s.name)), std::string::npos)
+            << "known shader " << s.name << " not listed: " << r.err;
     EXPECT_TRUE(imagesIn(dir).empty());
 }
 
 TEST(PrismRenderCli, UnknownVariantExitsWithBadInputWritesNothing) {
     const fs::path dir = testDir();
-    const auto r = runPrismRender({"--shader", "phong", "--variant", "BLINN=7", "--size", "32x32", "--out",
-                                   (dir / "out.png").string()},
-                                  dir);
+    const auto r = runPrismRender(
+        {"--shader", "phong", "--variant", "BLINN=7", "--size", "32x32", "--out", (dir / "out.png").string()}, dir);
     EXPECT_EQ(r.exitCode, kExitBadInput) << r.err;
     EXPECT_NE(r.err.find("BLINN"), std::string::npos) << r.err;
     EXPECT_TRUE(imagesIn(dir).empty());
@@ -114,7 +114,8 @@ TEST(PrismRenderCli, UnknownVariantExitsWithBadInputWritesNothing) {
 TEST(PrismRenderCli, MissingObjFileNamesTheFileWritesNothing) {
     const fs::path dir = testDir();
     const fs::path obj = dir / "no-such-mesh.obj";
-    const auto r = runPrismRender({"--shader", "phong", "--mesh", obj.string(), "--out", (dir / "out.png").string()}, dir);
+    const auto r =
+        runPrismRender({"--shader", "phong", "--mesh", obj.string(), "--out", (dir / "out.png").string()}, dir);
     EXPECT_EQ(r.exitCode, kExitBadInput) << r.err;
     EXPECT_NE(r.err.find(obj.string()), std::string::npos) << r.err;
     EXPECT_TRUE(imagesIn(dir).empty());
@@ -125,7 +126,8 @@ TEST(PrismRenderCli, ObjPathThatIsADirectoryNamesTheFileWritesNothing) {
     const fs::path dir = testDir();
     const fs::path obj = dir / "folder.obj";
     fs::create_directories(obj);
-    const auto r = runPrismRender({"--shader", "phong", "--mesh", obj.string(), "--out", (dir / "out.png").string()}, dir);
+    const auto r =
+        runPrismRender({"--shader", "phong", "--mesh", obj.string(), "--out", (dir / "out.png").string()}, dir);
     EXPECT_EQ(r.exitCode, kExitBadInput) << r.err;
     EXPECT_NE(r.err.find(obj.string()), std::string::npos) << r.err;
     EXPECT_TRUE(imagesIn(dir).empty());
@@ -133,9 +135,11 @@ TEST(PrismRenderCli, ObjPathThatIsADirectoryNamesTheFileWritesNothing) {
 
 TEST(PrismRenderCli, ObjFaceIndexOutOfRangeNamesFileAndLineWritesNothing) {
     const fs::path dir = testDir();
-    const fs::path obj = writeFile(dir / "bad-face.obj", "# a triangle that points past the vertex list\n"
-                                                         "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
-    const auto r = runPrismRender({"--shader", "phong", "--mesh", obj.string(), "--out", (dir / "out.png").string()}, dir);
+    const fs::path obj = writeFile(dir / "bad-face.obj",
+                                   "# a triangle that points past the vertex list\n"
+                                   "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
+    const auto r =
+        runPrismRender({"--shader", "phong", "--mesh", obj.string(), "--out", (dir / "out.png").string()}, dir);
     EXPECT_EQ(r.exitCode, kExitBadInput) << r.err;
     EXPECT_NE(r.err.find(obj.string() + ":5"), std::string::npos) << "expected file:line " << obj << ":5 in: " << r.err;
     EXPECT_TRUE(imagesIn(dir).empty());
@@ -144,7 +148,8 @@ TEST(PrismRenderCli, ObjFaceIndexOutOfRangeNamesFileAndLineWritesNothing) {
 TEST(PrismRenderCli, ObjVertexWithNonNumberNamesFileAndLineWritesNothing) {
     const fs::path dir = testDir();
     const fs::path obj = writeFile(dir / "bad-vertex.obj", "v 0 0 0\nv 1 abc 0\nv 0 1 0\nf 1 2 3\n");
-    const auto r = runPrismRender({"--shader", "phong", "--mesh", obj.string(), "--out", (dir / "out.png").string()}, dir);
+    const auto r =
+        runPrismRender({"--shader", "phong", "--mesh", obj.string(), "--out", (dir / "out.png").string()}, dir);
     EXPECT_EQ(r.exitCode, kExitBadInput) << r.err;
     EXPECT_NE(r.err.find(obj.string() + ":2"), std::string::npos) << "expected file:line " << obj << ":2 in: " << r.err;
     EXPECT_TRUE(imagesIn(dir).empty());
@@ -161,9 +166,8 @@ class PrismRenderCliBadNumber : public ::testing::TestWithParam<BadNumber> {};
 TEST_P(PrismRenderCliBadNumber, ExitsWithBadInputNamesOptionWritesNothing) {
     const BadNumber& p = GetParam();
     const fs::path dir = testDir();
-    const auto r = runPrismRender({"--shader", "phong", "--subdiv", "0", p.option, p.value, "--out",
-                                   (dir / "out.png").string()},
-                                  dir);
+    const auto r = runPrismRender(
+        {"--shader", "phong", "--subdiv", "0", p.option, p.value, "--out", (dir / "out.png").string()}, dir);
     EXPECT_EQ(r.exitCode, kExitBadInput) << r.err;
     EXPECT_NE(r.err.find(p.option), std::string::npos) << "message should name " << p.option << ": " << r.err;
     EXPECT_TRUE(imagesIn(dir).empty());
@@ -183,9 +187,8 @@ INSTANTIATE_TEST_SUITE_P(Options, PrismRenderCliBadNumber,
 
 TEST(PrismRenderCli, CheckFiniteOnNormalRenderExitsZero) {
     const fs::path dir = testDir();
-    const auto r = runPrismRender({"--shader", "phong", "--mesh", "sphere", "--subdiv", "1", "--size", "48x48",
-                                   "--check-finite"},
-                                  dir);
+    const auto r = runPrismRender(
+        {"--shader", "phong", "--mesh", "sphere", "--subdiv", "1", "--size", "48x48", "--check-finite"}, dir);
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("finite"), std::string::npos) << r.out;
     EXPECT_TRUE(imagesIn(dir).empty()) << "--check-finite without --out writes no image";
@@ -194,10 +197,10 @@ TEST(PrismRenderCli, CheckFiniteOnNormalRenderExitsZero) {
 TEST(PrismRenderCli, SuccessfulRenderWritesPngOfRequestedSize) {
     const fs::path dir = testDir();
     const fs::path out = dir / "phong-blinn.png";
-    const auto r = runPrismRender({"--shader", "phong", "--variant", "BLINN=1", "--mesh", "torus", "--subdiv", "1",
-                                   "--shininess", "64", "--light-dir", "-1,-1,-1", "--size", "96x64", "--out",
-                                   out.string()},
-                                  dir);
+    const auto r =
+        runPrismRender({"--shader", "phong", "--variant", "BLINN=1", "--mesh", "torus", "--subdiv", "1", "--shininess",
+                        "64", "--light-dir", "-1,-1,-1", "--size", "96x64", "--out", out.string()},
+                       dir);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     ASSERT_TRUE(fs::exists(out));
     const Image8 image = readPng(out);

@@ -45,7 +45,8 @@ TEST(SceneLoader, FullObjectSyntax) {
                                 "variant": {"BLINN": "1"}}}],
       "rain": {"intensity": "heavy", "wind": [1, 0, 0]},
       "water": {"grid": 128, "cellSize": 0.5, "seconds": 30, "soilMmPerHour": 2, "seed": 4}
-    })", "s.json");
+    })",
+                        "s.json");
     EXPECT_EQ(s.camera.eye, glm::vec3(1, 2, 3));
     EXPECT_FLOAT_EQ(s.lights.ambient.x, 0.2f);
     ASSERT_EQ(s.objects.size(), 1u);
@@ -74,8 +75,8 @@ TEST(SceneLoader, MisspelledKeyIsAnError) {
 TEST(SceneLoader, WrongTypes) {
     EXPECT_EQ(errorOf(R"({"camera": {"fovY": "wide"}})"), "scene.json: /camera/fovY: expected a number");
     EXPECT_EQ(errorOf(R"({"objects": {"mesh": "sphere"}})"), "scene.json: /objects: expected an array of objects");
-    EXPECT_EQ(errorOf(R"({"objects": [{"material": {"shininess": -1}}]})").rfind(
-                  "scene.json: /objects/0/material/shininess: expected a number in [0", 0),
+    EXPECT_EQ(errorOf(R"({"objects": [{"material": {"shininess": -1}}]})")
+                  .rfind("scene.json: /objects/0/material/shininess: expected a number in [0", 0),
               0u);
     EXPECT_EQ(errorOf(R"({"lights": [{"type": "spot"}]})"),
               "scene.json: /lights/0/type: expected ambient, directional or point");

@@ -25,7 +25,7 @@ namespace {
 std::unique_ptr<prism::gl::Context> gContext;
 
 class ContextEnvironment : public ::testing::Environment {
-public:
+  public:
     void SetUp() override { gContext = prism::gl::createContext(); }
     void TearDown() override { gContext.reset(); }
 };
@@ -194,4 +194,5 @@ TEST_P(SceneGolden, MatchesTheGoldenImage) {
     EXPECT_TRUE(ok) << prism::describe(stats, kThresholds);
 }
 
-INSTANTIATE_TEST_SUITE_P(ExampleScenes, SceneGolden, ::testing::Values("one_light", "four_lights", "fog", "rain", "water"));
+INSTANTIATE_TEST_SUITE_P(ExampleScenes, SceneGolden,
+                         ::testing::Values("one_light", "four_lights", "fog", "rain", "water"));

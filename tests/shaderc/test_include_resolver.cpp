@@ -174,8 +174,8 @@ TEST(IncludeResolver, MissingAngleIncludeDoesNotSearchIncluderDir) {
 }
 
 TEST(IncludeResolver, MalformedIncludeIsAnErrorAtItsLine) {
-    for (const char* line : {"#include lighting.glsl", "#include \"unterminated.glsl", "#include",
-                             "#include \"\"", "#include \"a.glsl\" junk"}) {
+    for (const char* line : {"#include lighting.glsl", "#include \"unterminated.glsl", "#include", "#include \"\"",
+                             "#include \"a.glsl\" junk"}) {
         MemoryReader reader{{"main.frag", std::string("// x\n") + line + "\n"}, {"a.glsl", ""}};
         const Diagnostic& error = onlyError(resolve(reader, "main.frag"));
         EXPECT_EQ(error.line, 2) << line;
@@ -246,8 +246,8 @@ TEST(IncludeResolver, ElifChainFollowsOnlyTheTakenBranch) {
         "#if QUALITY == 0\n#include \"low.glsl\"\n"
         "#elif QUALITY == 1\n#include \"mid.glsl\"\n"
         "#else\n#include \"high.glsl\"\n#endif\n";
-    MemoryReader reader{{"main.frag", stage}, {"low.glsl", "int low;\n"},
-                        {"mid.glsl", "int mid;\n"}, {"high.glsl", "int high;\n"}};
+    MemoryReader reader{
+        {"main.frag", stage}, {"low.glsl", "int low;\n"}, {"mid.glsl", "int mid;\n"}, {"high.glsl", "int high;\n"}};
     for (const auto& [quality, expected] :
          std::vector<std::pair<std::string, std::string>>{{"0", "low.glsl"}, {"1", "mid.glsl"}, {"7", "high.glsl"}}) {
         ResolveOptions options;
@@ -259,8 +259,9 @@ TEST(IncludeResolver, ElifChainFollowsOnlyTheTakenBranch) {
 }
 
 TEST(IncludeResolver, VersionMacrosUsableInConditions) {
-    MemoryReader reader{{"main.frag", "#version 450 core\n#if __VERSION__ >= 450 && GL_core_profile\n"
-                                      "#include \"modern.glsl\"\n#endif\n"},
+    MemoryReader reader{{"main.frag",
+                         "#version 450 core\n#if __VERSION__ >= 450 && GL_core_profile\n"
+                         "#include \"modern.glsl\"\n#endif\n"},
                         {"modern.glsl", "int modern;\n"}};
     const auto result = resolve(reader, "main.frag");
     ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
@@ -324,8 +325,7 @@ TEST(IncludeResolver, IncludeDirsSearchedInOrderAndRelativeToIncluder) {
 }
 
 TEST(IncludeResolver, SameFileThroughDifferentSpellingsEntersOnce) {
-    MemoryReader reader{{"s/main.frag", "#include \"../m/a.glsl\"\n#include <a.glsl>\n"},
-                        {"m/a.glsl", "int once;\n"}};
+    MemoryReader reader{{"s/main.frag", "#include \"../m/a.glsl\"\n#include <a.glsl>\n"}, {"m/a.glsl", "int once;\n"}};
     ResolveOptions options;
     options.includeDirs = {"m"};
     const auto result = resolve(reader, "s/main.frag", options);
@@ -451,8 +451,7 @@ TEST(IncludeResolver, ContinuedIncludeKeepsLineNumbers) {
 }
 
 TEST(IncludeResolver, CrlfAndNoTrailingNewlineAndEmptyFiles) {
-    MemoryReader reader{{"main.frag", "#version 330 core\r\n#include \"empty.glsl\"\r\nint x;"},
-                        {"empty.glsl", ""}};
+    MemoryReader reader{{"main.frag", "#version 330 core\r\n#include \"empty.glsl\"\r\nint x;"}, {"empty.glsl", ""}};
     const auto result = resolve(reader, "main.frag");
     ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
     EXPECT_EQ(result.stage.text, "#version 330 core\n#line 1 0\n\n#line 1 1\n#line 3 0\nint x;\n");
@@ -486,8 +485,9 @@ TEST(IncludeResolver, InvalidDefineNameIsAnError) {
 
 TEST(IncludeResolver, VariantPragmasCollectedAndBlanked) {
     MemoryReader reader{{"main.frag", "#pragma prism variant SHADOWS\n#include \"a.glsl\"\n"},
-                        {"a.glsl", "\n#pragma prism variant QUALITY LOW MEDIUM HIGH\n"
-                                   "#if 0\n#pragma prism variant IGNORED\n#endif\n"}};
+                        {"a.glsl",
+                         "\n#pragma prism variant QUALITY LOW MEDIUM HIGH\n"
+                         "#if 0\n#pragma prism variant IGNORED\n#endif\n"}};
     const auto result = resolve(reader, "main.frag");
     ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
     ASSERT_EQ(result.stage.variantPragmas.size(), 2u);
@@ -601,7 +601,7 @@ TEST(ScanModule, MissingIncludeIsAnError) {
 // ---- DiskReader ------------------------------------------------------------------------
 
 class IncludeResolverOnDisk : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
         root_ = std::filesystem::temp_directory_path() /
                 ("prism_resolver_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
@@ -652,28 +652,31 @@ std::string glslangInfoLog(const std::string& text) {
     return shader.getInfoLog();
 }
 
-MemoryReader glslangReader(const std::string& version, const std::string& moduleBody,
-                           const std::string& mainBody) {
-    return MemoryReader{
-        {"shaders/main.frag", "#version " + version + "\n"   // 1
-                              "#include \"lighting.glsl\"\n"  // 2
-                              "out vec4 color;\n"             // 3
-                              "void main() {\n"               // 4
-                              "    " + mainBody + "\n"        // 5
-                              "}\n"},
-        {"shaders/lighting.glsl", "// Lighting helpers.\n"        // 1
-                                  "#include \"util.glsl\"\n"      // 2
-                                  "vec3 light() {\n"              // 3
-                                  "    " + moduleBody + "\n"      // 4
-                                  "}\n"},
-        {"shaders/util.glsl", "// Utilities.\n\nfloat unit() { return 1.0; }\n"}};
+MemoryReader glslangReader(const std::string& version, const std::string& moduleBody, const std::string& mainBody) {
+    return MemoryReader{{"shaders/main.frag", "#version " + version +
+                                                  "\n"                            // 1
+                                                  "#include \"lighting.glsl\"\n"  // 2
+                                                  "out vec4 color;\n"             // 3
+                                                  "void main() {\n"               // 4
+                                                  "    " +
+                                                  mainBody +
+                                                  "\n"  // 5
+                                                  "}\n"},
+                        {"shaders/lighting.glsl",
+                         "// Lighting helpers.\n"    // 1
+                         "#include \"util.glsl\"\n"  // 2
+                         "vec3 light() {\n"          // 3
+                         "    " +
+                             moduleBody +
+                             "\n"  // 4
+                             "}\n"},
+                        {"shaders/util.glsl", "// Utilities.\n\nfloat unit() { return 1.0; }\n"}};
 }
 
 class IncludeResolverLineNumbers : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(IncludeResolverLineNumbers, ErrorInIncludedModuleReportedAtItsTrueLine) {
-    const auto result = resolve(glslangReader(GetParam(), "return undefined_in_module;",
-                                              "color = vec4(light(), 1.0);"),
+    const auto result = resolve(glslangReader(GetParam(), "return undefined_in_module;", "color = vec4(light(), 1.0);"),
                                 "shaders/main.frag");
     ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
     ASSERT_EQ(result.stage.files.at(1).path, "shaders/lighting.glsl");
@@ -682,8 +685,7 @@ TEST_P(IncludeResolverLineNumbers, ErrorInIncludedModuleReportedAtItsTrueLine) {
 }
 
 TEST_P(IncludeResolverLineNumbers, ErrorInStageAfterIncludesReportedAtItsTrueLine) {
-    const auto result = resolve(glslangReader(GetParam(), "return vec3(unit());",
-                                              "color = vec4(undefined_in_main);"),
+    const auto result = resolve(glslangReader(GetParam(), "return vec3(unit());", "color = vec4(undefined_in_main);"),
                                 "shaders/main.frag");
     ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
     const std::string log = glslangInfoLog(result.stage.text);

@@ -56,7 +56,8 @@ TEST(InterfaceCheck, ArraySizeMismatch) {
     auto files = program("out float v_w[3];", "in float v_w[2];", "vec4(v_w[0])");
     auto r = validateInMemory(files, {{V, "s/p.vert"}, {F, "s/p.frag"}});
     ASSERT_FALSE(r.ok);
-    EXPECT_NE(test::allMessages(r).find("`smooth float[2]` but the vert output is `smooth float[3]`"), std::string::npos)
+    EXPECT_NE(test::allMessages(r).find("`smooth float[2]` but the vert output is `smooth float[3]`"),
+              std::string::npos)
         << test::allMessages(r);
 }
 
@@ -79,11 +80,13 @@ TEST(InterfaceCheck, NoPerspectiveMismatch) {
 
 TEST(InterfaceCheck, GeometryStageInputsAreArraysOfTheVertexOutputs) {
     MemoryReader files{
-        {"g.vert", "#version 330 core\nin vec3 a_position;\nout vec3 v_n;\n"
-                   "void main() { v_n = a_position; gl_Position = vec4(a_position, 1.0); }\n"},
-        {"g.geom", "#version 330 core\nlayout(points) in;\nlayout(points, max_vertices = 1) out;\n"
-                   "in vec3 v_n[];\nout vec3 v_c;\n"
-                   "void main() { v_c = v_n[0]; gl_Position = gl_in[0].gl_Position; EmitVertex(); }\n"},
+        {"g.vert",
+         "#version 330 core\nin vec3 a_position;\nout vec3 v_n;\n"
+         "void main() { v_n = a_position; gl_Position = vec4(a_position, 1.0); }\n"},
+        {"g.geom",
+         "#version 330 core\nlayout(points) in;\nlayout(points, max_vertices = 1) out;\n"
+         "in vec3 v_n[];\nout vec3 v_c;\n"
+         "void main() { v_c = v_n[0]; gl_Position = gl_in[0].gl_Position; EmitVertex(); }\n"},
         {"g.frag", "#version 330 core\nin vec3 v_c;\nout vec4 frag;\nvoid main() { frag = vec4(v_c, 1.0); }\n"},
     };
     auto ok = validateInMemory(files, {{V, "g.vert"}, {G, "g.geom"}, {F, "g.frag"}});
@@ -100,8 +103,9 @@ TEST(InterfaceCheck, GeometryStageInputsAreArraysOfTheVertexOutputs) {
 TEST(InterfaceCheck, ErrorInsideAModuleIsReportedAtTheModuleLineWithChain) {
     MemoryReader files{
         {"mods/helper.glsl", "// Provides: a helper.\nvec3 helper(vec3 x) {\n    return x * undefinedThing;\n}\n"},
-        {"s/p.vert", "#version 330 core\n#include <helper.glsl>\nin vec3 a_position;\n"
-                     "void main() { gl_Position = vec4(helper(a_position), 1.0); }\n"},
+        {"s/p.vert",
+         "#version 330 core\n#include <helper.glsl>\nin vec3 a_position;\n"
+         "void main() { gl_Position = vec4(helper(a_position), 1.0); }\n"},
         {"s/p.frag", "#version 330 core\nout vec4 frag;\nvoid main() { frag = vec4(1.0); }\n"},
     };
     auto r = validateInMemory(files, {{V, "s/p.vert"}, {F, "s/p.frag"}}, {}, {"mods"});
@@ -118,8 +122,9 @@ TEST(InterfaceCheck, ErrorInsideAModuleIsReportedAtTheModuleLineWithChain) {
 
 TEST(InterfaceCheck, FollowOnErrorsOnOneLineBecomeANote) {
     MemoryReader files{
-        {"s/p.vert", "#version 330 core\nin vec3 a_position;\n"
-                     "void main() { vec3 y = vec2(1.0) + nope; gl_Position = vec4(y, 1.0); }\n"},
+        {"s/p.vert",
+         "#version 330 core\nin vec3 a_position;\n"
+         "void main() { vec3 y = vec2(1.0) + nope; gl_Position = vec4(y, 1.0); }\n"},
         {"s/p.frag", "#version 330 core\nout vec4 frag;\nvoid main() { frag = vec4(1.0); }\n"},
     };
     auto r = validateInMemory(files, {{V, "s/p.vert"}, {F, "s/p.frag"}});

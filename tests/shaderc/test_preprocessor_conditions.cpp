@@ -296,8 +296,8 @@ TEST(ConditionalStack, UnbalancedDirectivesAreErrors) {
     EXPECT_EQ(d.apply("#endif"), "#endif without #if");
     EXPECT_EQ(d.apply("#else"), "#else without #if");
     EXPECT_EQ(d.apply("#elif 1"), "#elif without #if");
-    d.apply("#if 1");   // line 4
-    d.apply("#else");   // line 5
+    d.apply("#if 1");  // line 4
+    d.apply("#else");  // line 5
     EXPECT_NE(d.apply("#else").find("#else after #else (the first #else is at line 5)"), std::string::npos);
     EXPECT_NE(d.apply("#elif 1").find("#elif after #else"), std::string::npos);
 }
@@ -333,9 +333,7 @@ TEST(GlslVersionDirective, PredefinedMacros) {
     predefineVersionMacros(macros, *parseVersionArgument("330"));
     EXPECT_EQ(valueOf("__VERSION__ == 330 && GL_core_profile == 1 && !defined GL_ES", macros), 1);
     predefineVersionMacros(macros, *parseVersionArgument("150 compatibility"));
-    EXPECT_EQ(valueOf("__VERSION__ == 150 && defined GL_compatibility_profile && !defined GL_core_profile",
-                      macros),
-              1);
+    EXPECT_EQ(valueOf("__VERSION__ == 150 && defined GL_compatibility_profile && !defined GL_core_profile", macros), 1);
     predefineVersionMacros(macros, *parseVersionArgument("120"));
     EXPECT_EQ(valueOf("defined GL_core_profile", macros), 0);
     predefineVersionMacros(macros, *parseVersionArgument("300 es"));

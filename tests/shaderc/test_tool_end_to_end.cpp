@@ -26,8 +26,8 @@ const std::string kBaseResults = kSource + "/tests/shaderc/baseResults";
 // The project catalogue with the light counts pinned (2 directional, 1 point), so the
 // baseline stays small: the other light variants differ only in their #defines.
 std::string catalogueArgs() {
-    return "--base-dir " + kSource + " --variant '*:DIRECTIONAL_LIGHTS=2,POINT_LIGHTS=1' -I " + kSource + "/modules --contract " + kSource +
-           "/modules/contract.json " + kSource + "/shader_sources";
+    return "--base-dir " + kSource + " --variant '*:DIRECTIONAL_LIGHTS=2,POINT_LIGHTS=1' -I " + kSource +
+           "/modules --contract " + kSource + "/modules/contract.json " + kSource + "/shader_sources";
 }
 
 std::string fixtureArgs() {
@@ -99,7 +99,8 @@ TEST(ToolOutputs, UnchangedHeaderKeepsItsTimestampAndErrorsWriteNothing) {
     ASSERT_EQ(runShaderc(args, dir.str()).exitCode, 0);
     EXPECT_EQ(fs::last_write_time(header), firstTime);
 
-    dir.write("fx/modules/tint.glsl", "// Provides: a broken tint.\nuniform vec3 u_tint;\nvec3 tint(vec3 c) { return c * missing; }\n");
+    dir.write("fx/modules/tint.glsl",
+              "// Provides: a broken tint.\nuniform vec3 u_tint;\nvec3 tint(vec3 c) { return c * missing; }\n");
     auto broken = runShaderc(args, dir.str());
     EXPECT_EQ(broken.exitCode, 1);
     EXPECT_NE(broken.output.find("fx/modules/tint.glsl:3:"), std::string::npos) << broken.output;
@@ -135,9 +136,9 @@ TEST(ToolOutputs, DepfileEscapesPathsWithSpaces) {
     ScratchDir dir("dep");
     fs::copy(kFixture, dir.path() / "my fx$#", fs::copy_options::recursive);
     const std::string fx = "'" + (dir.path() / "my fx$#").string() + "'";
-    auto run = runShaderc("-o out.hpp --depfile out.d -I " + fx + "/modules --contract " + fx + "/contract.json " + fx +
-                              "/shaders",
-                          dir.str());
+    auto run = runShaderc(
+        "-o out.hpp --depfile out.d -I " + fx + "/modules --contract " + fx + "/contract.json " + fx + "/shaders",
+        dir.str());
     ASSERT_EQ(run.exitCode, 0) << run.output;
     auto dep = readFile(dir.path() / "out.d");
     EXPECT_EQ(dep.rfind("out.hpp:", 0), 0u) << dep;
@@ -157,15 +158,18 @@ TEST(ToolExitCodes, UsageAndMissingInputs) {
 
 TEST(ToolDiagnostics, ModuleErrorReportedOnceForManyShadersWithChain) {
     ScratchDir dir("once");
-    dir.write("m/bad.glsl", "// Provides: a broken helper.\nvec3 helper(vec3 x) {\n    return x * undefinedThing;\n}\n");
+    dir.write("m/bad.glsl",
+              "// Provides: a broken helper.\nvec3 helper(vec3 x) {\n    return x * undefinedThing;\n}\n");
     for (std::string s : {"a", "b", "c"}) {
-        dir.write("s/" + s + ".vert", "#version 330 core\n#include <bad.glsl>\nin vec3 a_position;\n"
-                                      "void main() { gl_Position = vec4(helper(a_position), 1.0); }\n");
+        dir.write("s/" + s + ".vert",
+                  "#version 330 core\n#include <bad.glsl>\nin vec3 a_position;\n"
+                  "void main() { gl_Position = vec4(helper(a_position), 1.0); }\n");
         dir.write("s/" + s + ".frag", "#version 330 core\nout vec4 frag;\nvoid main() { frag = vec4(1.0); }\n");
     }
     auto run = runShaderc("--check -I m s", dir.str());
     EXPECT_EQ(run.exitCode, 1);
-    const std::string line = "m/bad.glsl:3:16: error: 'undefinedThing': undeclared identifier\n  included from s/a.vert:2\n";
+    const std::string line =
+        "m/bad.glsl:3:16: error: 'undefinedThing': undeclared identifier\n  included from s/a.vert:2\n";
     auto first = run.output.find(line);
     ASSERT_NE(first, std::string::npos) << run.output;
     EXPECT_EQ(run.output.find("m/bad.glsl:3:16", first + 1), std::string::npos) << run.output;
@@ -192,8 +196,7 @@ TEST(ToolDiagnostics, MsvcFormat) {
     dir.write("s/p.frag", "#version 330 core\nout vec4 frag;\nvoid main() { frag = vec4(1.0); }\n");
     auto run = runShaderc("--check --errfmt msvc s", dir.str());
     EXPECT_EQ(run.exitCode, 1);
-    EXPECT_NE(run.output.find("s/p.vert(2,29): error: 'nope': undeclared identifier"), std::string::npos)
-        << run.output;
+    EXPECT_NE(run.output.find("s/p.vert(2,29): error: 'nope': undeclared identifier"), std::string::npos) << run.output;
 }
 
 TEST(ToolVariants, FilterEmitsOnlyTheAskedVariants) {

@@ -43,7 +43,8 @@ TEST(Variants, FiltersSelectOnlyTheAskedCombinations) {
     ASSERT_TRUE(c.diagnostics.empty());
     std::vector<std::string> names;
     for (const auto& ch : c.choices) names.push_back(ch.name);
-    EXPECT_EQ(names, (std::vector<std::string>{"FOG=0,LIGHTS=2", "FOG=1,LIGHTS=1", "FOG=1,LIGHTS=2", "FOG=1,LIGHTS=4"}));
+    EXPECT_EQ(names,
+              (std::vector<std::string>{"FOG=0,LIGHTS=2", "FOG=1,LIGHTS=1", "FOG=1,LIGHTS=2", "FOG=1,LIGHTS=4"}));
 }
 
 TEST(Variants, FilterNamingUnknownAxisOrValueIsAnError) {

@@ -18,8 +18,8 @@ struct ToolRun {
 };
 
 inline ToolRun runShaderc(const std::string& args, const std::string& workDir = "") {
-    std::string cmd = (workDir.empty() ? "" : "cd '" + workDir + "' && ") + std::string(PRISM_SHADERC_EXE) + " " +
-                      args + " 2>&1";
+    std::string cmd =
+        (workDir.empty() ? "" : "cd '" + workDir + "' && ") + std::string(PRISM_SHADERC_EXE) + " " + args + " 2>&1";
     ToolRun r;
     FILE* pipe = popen(cmd.c_str(), "r");
     if (!pipe) return r;
@@ -45,7 +45,7 @@ inline void writeFile(const std::filesystem::path& p, const std::string& text) {
 
 // A fresh directory under the system temp dir, removed when the object dies.
 class ScratchDir {
-public:
+  public:
     explicit ScratchDir(const std::string& name)
         : path_(std::filesystem::temp_directory_path() / ("prism-test-" + name + "-" + std::to_string(::getpid()))) {
         std::filesystem::remove_all(path_);
@@ -56,7 +56,7 @@ public:
     std::string str() const { return path_.string(); }
     void write(const std::string& relative, const std::string& text) const { writeFile(path_ / relative, text); }
 
-private:
+  private:
     std::filesystem::path path_;
 };
 

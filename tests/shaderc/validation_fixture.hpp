@@ -15,7 +15,7 @@
 namespace prism::test {
 
 class GlslangEnvironment : public ::testing::Environment {
-public:
+  public:
     void SetUp() override { shaderc::initializeValidator(); }
     void TearDown() override { shaderc::finalizeValidator(); }
 };

@@ -68,8 +68,8 @@ double distributionDeviationAfter(float courant, int steps) {
 TEST(WaterStability, DistributionHoldsAt070AndBlowsUpAt072) {
     const double stable = distributionDeviationAfter(0.70f, 3000);
     const double unstable = distributionDeviationAfter(0.72f, 3000);
-    std::cout << "[stability] max |depth - 1| after 3000 steps: c dt/h = 0.70 -> " << stable
-              << " m, 0.72 -> " << unstable << " m\n";
+    std::cout << "[stability] max |depth - 1| after 3000 steps: c dt/h = 0.70 -> " << stable << " m, 0.72 -> "
+              << unstable << " m\n";
     EXPECT_LT(stable, 0.011);
     EXPECT_GT(unstable, 0.1);
 }
@@ -196,7 +196,8 @@ TEST(WaterStep, GaussianKernelIsNormalisedAndSmoothingConservesMass) {
     p.maxSubsteps = 100000000;
     CpuWaterSimulation sim(flat, {}, p);
     std::vector<float> depth(flat.cellCount());
-    for (std::size_t i = 0; i < depth.size(); ++i) depth[i] = 0.05f + 0.04f * static_cast<float>((i * 7919) % 13) / 13.0f;
+    for (std::size_t i = 0; i < depth.size(); ++i)
+        depth[i] = 0.05f + 0.04f * static_cast<float>((i * 7919) % 13) / 13.0f;
     sim.setDepth(depth);
     auto variance = [](const std::vector<float>& v) {
         const double m = std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());

@@ -20,8 +20,8 @@ using test::WaterGlTest;
 // The stated tolerance of CPU/GPU agreement: both run the same fp32 operations in the
 // same order, so on a driver that rounds as IEEE 754 (llvmpipe does) they agree to the
 // bit; this tolerance leaves room for a driver that fuses a multiply-add.
-constexpr float kAgreementAbs = 1e-6f;    // m of water depth
-constexpr float kAgreementRel = 1e-4f;    // of the depth
+constexpr float kAgreementAbs = 1e-6f;  // m of water depth
+constexpr float kAgreementRel = 1e-4f;  // of the depth
 
 struct Agreement {
     std::size_t identical = 0, cells = 0;
@@ -57,8 +57,8 @@ TEST_F(WaterGlTest, GpuAndCpuStepsAgree) {
         }
         const Agreement depth = compare(cpu.depthPairs(), gpu.depthPairs());
         const Agreement velocity = compare(cpu.edgeVelocities(), gpu.edgeVelocities());
-        std::cout << "[agreement] after " << cpu.substepsDone() << " substeps: " << depth.identical << "/" << depth.cells
-                  << " depths bit-identical, max |cpu - gpu| = " << depth.maxAbs << " m; velocities "
+        std::cout << "[agreement] after " << cpu.substepsDone() << " substeps: " << depth.identical << "/"
+                  << depth.cells << " depths bit-identical, max |cpu - gpu| = " << depth.maxAbs << " m; velocities "
                   << velocity.identical << "/" << velocity.cells << " identical, max diff " << velocity.maxAbs << "\n";
         EXPECT_TRUE(depth.within) << "max depth difference " << depth.maxAbs;
         EXPECT_LE(velocity.maxAbs, 1e-5f);
@@ -74,17 +74,18 @@ TEST_F(WaterGlTest, GpuAndCpuStepsAgree) {
 // within the test budget; the 40x40 run of the CPU ledger test gives the same figure on
 // the GPU (the two are bit-identical, GpuAndCpuStepsAgree) and the example prints it.
 TEST_F(WaterGlTest, GpuMassLedgerHoldsOver10000Steps) {
-    const HeightField terrain = proceduralTerrain({.width = 12, .height = 12, .cellSize = 0.25f, .relief = 1.0f, .pits = 2, .seed = 5});
+    const HeightField terrain =
+        proceduralTerrain({.width = 12, .height = 12, .cellSize = 0.25f, .relief = 1.0f, .pits = 2, .seed = 5});
     GpuWaterSimulation gpu(terrain, proceduralPermeability(terrain), {});
     gpu.setRainRate(mmPerHourToMetresPerSecond(rainRateMmPerHour(RainClass::Heavy)));
     const double dt = maxStableDt(gpu.params(), terrain.cellSize);
     const auto start = std::chrono::steady_clock::now();
     for (int i = 0; i < 10000; ++i) gpu.advance(dt);
     const MassLedger l = gpu.ledger();
-    std::cout << "[ledger] gpu open 12x12, 10000 steps: relative error " << l.relativeError() << " (stored "
-              << l.stored << ", infiltrated " << l.infiltrated << ", lost " << l.lostThroughBorder << " of rain "
-              << l.rainIn << " cell-metres) in "
-              << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
+    std::cout << "[ledger] gpu open 12x12, 10000 steps: relative error " << l.relativeError() << " (stored " << l.stored
+              << ", infiltrated " << l.infiltrated << ", lost " << l.lostThroughBorder << " of rain " << l.rainIn
+              << " cell-metres) in " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
+              << " s\n";
     EXPECT_LT(l.relativeError(), 1e-5);
     test::expectFiniteNonNegative(gpu, "gpu ledger run");
 }

@@ -58,7 +58,8 @@ TEST(HeightMaps, SixteenBitSamplesRoundTripExactly) {
     const GreyImage back = readGreyPng(dir / "h16.png");
     EXPECT_EQ(back.bitDepth, 16);
     EXPECT_EQ(back.values, img.values) << "16-bit samples must not be reduced to 8 bits";
-    const HeightField f = loadHeightMap(dir / "h16.png", {.cellSize = 0.5f, .heightScale = 65.535f, .baseHeight = 1.0f});
+    const HeightField f =
+        loadHeightMap(dir / "h16.png", {.cellSize = 0.5f, .heightScale = 65.535f, .baseHeight = 1.0f});
     EXPECT_EQ(f.width, 5);
     EXPECT_EQ(f.height, 3);
     EXPECT_FLOAT_EQ(f.cellSize, 0.5f);

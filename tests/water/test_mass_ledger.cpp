@@ -13,7 +13,8 @@ namespace prism::water {
 namespace {
 
 void runLedger(BorderMode border, const char* label) {
-    const HeightField terrain = proceduralTerrain({.width = 40, .height = 40, .cellSize = 0.25f, .relief = 2.0f, .seed = 5});
+    const HeightField terrain =
+        proceduralTerrain({.width = 40, .height = 40, .cellSize = 0.25f, .relief = 2.0f, .seed = 5});
     WaterParams p;
     p.border = border;
     CpuWaterSimulation sim(terrain, proceduralPermeability(terrain), p);
@@ -34,8 +35,12 @@ void runLedger(BorderMode border, const char* label) {
     test::expectFiniteNonNegative(sim, label);
 }
 
-TEST(MassLedger, HoldsOver10000StepsWithOpenBorder) { runLedger(BorderMode::Open, "open"); }
-TEST(MassLedger, HoldsOver10000StepsWithClosedBorder) { runLedger(BorderMode::Closed, "closed"); }
+TEST(MassLedger, HoldsOver10000StepsWithOpenBorder) {
+    runLedger(BorderMode::Open, "open");
+}
+TEST(MassLedger, HoldsOver10000StepsWithClosedBorder) {
+    runLedger(BorderMode::Closed, "closed");
+}
 
 }  // namespace
 }  // namespace prism::water

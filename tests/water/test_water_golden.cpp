@@ -39,7 +39,9 @@ bool envFlag(const char* name) {
     return !(s.empty() || s == "0" || s == "false" || s == "off");
 }
 
-fs::path goldenPath(const std::string& name) { return fs::path(PRISM_GOLDEN_DIR) / "water" / (name + ".png"); }
+fs::path goldenPath(const std::string& name) {
+    return fs::path(PRISM_GOLDEN_DIR) / "water" / (name + ".png");
+}
 
 fs::path outputDir() {
     const char* dir = std::getenv("PRISM_GOLDEN_OUT");
@@ -50,7 +52,8 @@ fs::path outputDir() {
 // CPU reference (deterministic; the GPU step gives the same bits).
 WaterSceneDescription puddleDescription() {
     WaterSceneDescription d;
-    d.terrain = proceduralTerrain({.width = 64, .height = 64, .cellSize = 0.25f, .relief = 1.0f, .pits = 5, .seed = 21});
+    d.terrain =
+        proceduralTerrain({.width = 64, .height = 64, .cellSize = 0.25f, .relief = 1.0f, .pits = 5, .seed = 21});
     d.rainMmPerHour = rainRateMmPerHour(RainClass::Cloudburst);
     d.sky.faceSize = 64;
     return d;
@@ -73,8 +76,8 @@ void expectMatchesGolden(const std::string& name, const Image8& actual) {
         writePng(goldenPath(name), actual);
         GTEST_SKIP() << "PRISM_UPDATE_GOLDENS: rewrote " << goldenPath(name).string();
     }
-    ASSERT_TRUE(fs::exists(goldenPath(name))) << "no golden image " << goldenPath(name).string()
-                                              << "; create it with PRISM_UPDATE_GOLDENS=1";
+    ASSERT_TRUE(fs::exists(goldenPath(name)))
+        << "no golden image " << goldenPath(name).string() << "; create it with PRISM_UPDATE_GOLDENS=1";
     const ImageComparison cmp = compareImages(actual, readPng(goldenPath(name)), kGoldenThresholds.maxChannelDiff);
     const bool ok = passes(cmp, kGoldenThresholds);
     std::string saved;
@@ -89,7 +92,9 @@ void expectMatchesGolden(const std::string& name, const Image8& actual) {
 }
 
 // Pixels that the water changed: where the image differs from the same view without water.
-std::size_t differingPixels(const Image8& a, const Image8& b) { return compareImages(a, b, 3).pixelsOver; }
+std::size_t differingPixels(const Image8& a, const Image8& b) {
+    return compareImages(a, b, 3).pixelsOver;
+}
 
 TEST_F(WaterGlTest, GoldenPuddlesFromTwoViews) {
     WaterScene scene(puddleDescription());
@@ -142,8 +147,8 @@ TEST_F(WaterGlTest, GoldenCatchesAChangedFresnelF0) {
     simulatePuddles(scene);
     WaterSceneRenderer renderer(scene);
     const Image8 mutant = renderer.renderImage(groundCamera(scene.terrain()), kSize, kSize);
-    const ImageComparison cmp =
-        compareImages(mutant, readPng(goldenPath("puddles-ground-cloudburst-120x2s")), kGoldenThresholds.maxChannelDiff);
+    const ImageComparison cmp = compareImages(mutant, readPng(goldenPath("puddles-ground-cloudburst-120x2s")),
+                                              kGoldenThresholds.maxChannelDiff);
     std::cout << "[mutation] F0 0.02 -> 0.2: " << describe(cmp, kGoldenThresholds) << "\n";
     EXPECT_FALSE(passes(cmp, kGoldenThresholds));
 }

@@ -19,11 +19,12 @@ State& state() {
 }
 
 class Environment : public ::testing::Environment {
-public:
+  public:
     void TearDown() override { state().context.reset(); }
 };
 
-[[maybe_unused]] const ::testing::Environment* const kEnvironment = ::testing::AddGlobalTestEnvironment(new Environment);
+[[maybe_unused]] const ::testing::Environment* const kEnvironment =
+    ::testing::AddGlobalTestEnvironment(new Environment);
 
 }  // namespace
 
@@ -40,7 +41,9 @@ gl::Context* glContext() {
     return s.context.get();
 }
 
-const std::string& glContextError() { return state().error; }
+const std::string& glContextError() {
+    return state().error;
+}
 
 void WaterGlTest::SetUp() {
     ASSERT_NE(glContext(), nullptr) << "cannot create the GL 4.3 context the water GL tests need: " << glContextError();

@@ -14,7 +14,7 @@ const std::string& glContextError();
 // Base fixture: fails (never skips) without a 4.3 context, since a GL tier that
 // silently skips would hide a broken headless setup.
 class WaterGlTest : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override;
 };
 

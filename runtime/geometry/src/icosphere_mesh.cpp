@@ -19,18 +19,18 @@ constexpr std::uint32_t kMaxIcosphereLevel = 7;
 // The 12 corners of an icosahedron, (0, +-1, +-phi) and its cyclic permutations.
 std::vector<glm::dvec3> icosahedronCorners() {
     const double phi = (1.0 + std::sqrt(5.0)) / 2.0;
-    return {{-1, phi, 0}, {1, phi, 0},  {-1, -phi, 0}, {1, -phi, 0}, {0, -1, phi}, {0, 1, phi},
+    return {{-1, phi, 0},  {1, phi, 0},  {-1, -phi, 0}, {1, -phi, 0}, {0, -1, phi},  {0, 1, phi},
             {0, -1, -phi}, {0, 1, -phi}, {phi, 0, -1},  {phi, 0, 1},  {-phi, 0, -1}, {-phi, 0, 1}};
 }
 
 // Its 20 faces, counter-clockwise seen from outside.
-constexpr std::uint32_t kIcosahedronFaces[20][3] = {
-    {0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-    {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-    {3, 8, 9},  {4, 9, 5},  {2, 4, 11},  {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+constexpr std::uint32_t kIcosahedronFaces[20][3] = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                                    {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                                    {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                                    {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
 
 class MidpointCache {
-public:
+  public:
     explicit MidpointCache(std::vector<glm::dvec3>& directions) : directions_(directions) {}
 
     // The vertex halfway along edge (a, b) on the unit sphere, created on first use.
@@ -41,14 +41,16 @@ public:
         return it->second;
     }
 
-private:
+  private:
     std::vector<glm::dvec3>& directions_;
     std::unordered_map<std::uint64_t, std::uint32_t> cache_;
 };
 
 }  // namespace
 
-std::uint32_t icosphereVertexCount(std::uint32_t level) { return 10u * (1u << (2u * level)) + 2u; }
+std::uint32_t icosphereVertexCount(std::uint32_t level) {
+    return 10u * (1u << (2u * level)) + 2u;
+}
 
 Mesh makeIcosphere(float radius, std::uint32_t level) {
     detail::requirePositiveSize("makeIcosphere", "radius", radius);

@@ -71,7 +71,9 @@ NormalMatrix computeNormalMatrix(const glm::mat3& linearPart) {
     return {glm::mat3(cofactor / largestEntry(cofactor)), NormalMatrixKind::FlattenedPlane};
 }
 
-NormalMatrix computeNormalMatrix(const glm::mat4& world) { return computeNormalMatrix(glm::mat3(world)); }
+NormalMatrix computeNormalMatrix(const glm::mat4& world) {
+    return computeNormalMatrix(glm::mat3(world));
+}
 
 glm::vec3 transformNormal(const glm::mat3& normalMatrix, const glm::vec3& normal, const glm::vec3& fallback) {
     const glm::dmat3 n(normalMatrix);

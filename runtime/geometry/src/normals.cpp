@@ -15,7 +15,9 @@ namespace {
 
 const glm::vec3 kDefaultFallback{0.0f, 0.0f, 1.0f};
 
-bool isFinite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool isFinite(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 // Unit vector of `sum` if it is clearly longer than `reference` * ratio (no
 // cancellation, no division by ~0); nullopt otherwise.
@@ -33,7 +35,9 @@ glm::dvec3 crossOfTriangle(const Mesh& mesh, std::size_t triangle) {
     return triangleCrossProduct(mesh.positions[a], mesh.positions[b], mesh.positions[c]);
 }
 
-bool isZero(const glm::dvec3& v) { return v.x == 0.0 && v.y == 0.0 && v.z == 0.0; }
+bool isZero(const glm::dvec3& v) {
+    return v.x == 0.0 && v.y == 0.0 && v.z == 0.0;
+}
 
 }  // namespace
 
@@ -125,8 +129,8 @@ std::vector<glm::vec3> areaWeightedVertexNormals(const Mesh& mesh, const VertexN
             significantDirection(meshSum, meshLengthSum, kMeshDirectionRatio).value_or(fallback);
         for (std::size_t v = 0; v < vertices; ++v) {
             if (hasOwnDirection[v]) continue;
-            normals[v] = significantDirection(neighbourSums[v], neighbourCounts[v], kCancellationRatio)
-                             .value_or(meshDirection);
+            normals[v] =
+                significantDirection(neighbourSums[v], neighbourCounts[v], kCancellationRatio).value_or(meshDirection);
         }
     }
 

@@ -94,8 +94,10 @@ Mesh loadObj(const std::filesystem::path& file, const ObjLoadOptions& options) {
             for (int k = 0; k < 3; ++k, ++corner) {
                 const tinyobj::index_t& index = faces.indices[corner];
                 mesh.positions.push_back(attribute3(attrib.vertices, index.vertex_index, file));
-                if (index.normal_index >= 0) fileNormals.push_back(attribute3(attrib.normals, index.normal_index, file));
-                else everyCornerHasNormal = false;
+                if (index.normal_index >= 0)
+                    fileNormals.push_back(attribute3(attrib.normals, index.normal_index, file));
+                else
+                    everyCornerHasNormal = false;
                 if (index.texcoord_index >= 0) {
                     const auto t = static_cast<std::size_t>(index.texcoord_index) * 2;
                     if (t + 1 >= attrib.texcoords.size())
@@ -121,7 +123,8 @@ Mesh loadObj(const std::filesystem::path& file, const ObjLoadOptions& options) {
     computeVertexNormals(mesh);
     if (options.useFileNormals && everyCornerHasNormal) {
         // The file's normals, normalised; a zero or broken one keeps the face normal.
-        for (std::size_t i = 0; i < mesh.normals.size(); ++i) mesh.normals[i] = safeNormalize(fileNormals[i], mesh.normals[i]);
+        for (std::size_t i = 0; i < mesh.normals.size(); ++i)
+            mesh.normals[i] = safeNormalize(fileNormals[i], mesh.normals[i]);
     }
     return mesh;
 }

@@ -80,7 +80,8 @@ std::optional<std::string> checkFaceCorner(std::string_view corner, const Elemen
     while (true) {
         const std::size_t slash = corner.find('/', start);
         if (partCount == 3) return "face corner '" + std::string(corner) + "' has more than 3 parts (v/vt/vn)";
-        parts[partCount++] = corner.substr(start, slash == std::string_view::npos ? std::string_view::npos : slash - start);
+        parts[partCount++] =
+            corner.substr(start, slash == std::string_view::npos ? std::string_view::npos : slash - start);
         if (slash == std::string_view::npos) break;
         start = slash + 1;
     }
@@ -118,9 +119,12 @@ std::optional<ObjProblem> findFirstObjProblem(std::string_view text) {
     for (std::string_view line : lines) {
         const std::vector<std::string_view> tokens = splitTokens(line);
         if (tokens.empty()) continue;
-        if (tokens[0] == "v") ++total.positions;
-        else if (tokens[0] == "vt") ++total.texcoords;
-        else if (tokens[0] == "vn") ++total.normals;
+        if (tokens[0] == "v")
+            ++total.positions;
+        else if (tokens[0] == "vt")
+            ++total.texcoords;
+        else if (tokens[0] == "vn")
+            ++total.normals;
     }
 
     ElementCounts soFar;
@@ -129,20 +133,22 @@ std::optional<ObjProblem> findFirstObjProblem(std::string_view text) {
         if (tokens.empty() || tokens[0].front() == '#') continue;
         std::optional<std::string> problem;
         if (tokens[0] == "v") {
-            problem = checkNumbers(tokens, [](std::size_t c) { return c == 3 || c == 4 || c == 6; },
-                                   "3 numeric coordinates (x y z, x y z w or x y z r g b)");
+            problem = checkNumbers(
+                tokens, [](std::size_t c) { return c == 3 || c == 4 || c == 6; },
+                "3 numeric coordinates (x y z, x y z w or x y z r g b)");
             ++soFar.positions;
         } else if (tokens[0] == "vn") {
-            problem = checkNumbers(tokens, [](std::size_t c) { return c == 3; }, "3 numeric components (x y z)");
+            problem = checkNumbers(
+                tokens, [](std::size_t c) { return c == 3; }, "3 numeric components (x y z)");
             ++soFar.normals;
         } else if (tokens[0] == "vt") {
-            problem = checkNumbers(tokens, [](std::size_t c) { return c >= 1 && c <= 3; },
-                                   "1 to 3 numeric coordinates (u [v [w]])");
+            problem = checkNumbers(
+                tokens, [](std::size_t c) { return c >= 1 && c <= 3; }, "1 to 3 numeric coordinates (u [v [w]])");
             ++soFar.texcoords;
         } else if (tokens[0] == "f") {
-            if (tokens.size() < 4)
-                problem = "`f` needs at least 3 corners, got " + std::to_string(tokens.size() - 1);
-            for (std::size_t i = 1; !problem && i < tokens.size(); ++i) problem = checkFaceCorner(tokens[i], total, soFar);
+            if (tokens.size() < 4) problem = "`f` needs at least 3 corners, got " + std::to_string(tokens.size() - 1);
+            for (std::size_t i = 1; !problem && i < tokens.size(); ++i)
+                problem = checkFaceCorner(tokens[i], total, soFar);
         }
         if (problem) return ObjProblem{n + 1, *problem};
     }

@@ -21,8 +21,8 @@ inline void requireInRange(const char* generator, const char* parameter, float v
                                     ", " + std::to_string(high) + "], got " + std::to_string(value));
 }
 
-inline void requireCountInRange(const char* generator, const char* parameter, std::uint32_t value,
-                                std::uint32_t low, std::uint32_t high) {
+inline void requireCountInRange(const char* generator, const char* parameter, std::uint32_t value, std::uint32_t low,
+                                std::uint32_t high) {
     if (value < low || value > high)
         throw std::invalid_argument(std::string(generator) + ": " + parameter + " must be in [" + std::to_string(low) +
                                     ", " + std::to_string(high) + "], got " + std::to_string(value));

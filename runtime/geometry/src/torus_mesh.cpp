@@ -14,8 +14,9 @@ Mesh makeTorus(float majorRadius, float minorRadius, std::uint32_t majorSegments
     detail::requirePositiveSize("makeTorus", "majorRadius", majorRadius);
     detail::requirePositiveSize("makeTorus", "minorRadius", minorRadius);
     if (!(minorRadius < majorRadius))
-        throw std::invalid_argument("makeTorus: minorRadius must be smaller than majorRadius (the tube would "
-                                    "intersect itself)");
+        throw std::invalid_argument(
+            "makeTorus: minorRadius must be smaller than majorRadius (the tube would "
+            "intersect itself)");
     detail::requireCountInRange("makeTorus", "majorSegments", majorSegments, 3, detail::kMaxSegments);
     detail::requireCountInRange("makeTorus", "minorSegments", minorSegments, 3, detail::kMaxSegments);
     const double pi = glm::pi<double>();
@@ -27,8 +28,8 @@ Mesh makeTorus(float majorRadius, float minorRadius, std::uint32_t majorSegments
         for (std::uint32_t j = 0; j <= minorSegments; ++j) {
             const double tube = 2.0 * pi * (j % minorSegments) / minorSegments;  // around the tube
             const glm::dvec3 normal = std::cos(tube) * outward + glm::dvec3(0.0, std::sin(tube), 0.0);
-            mesh.positions.push_back(glm::vec3(static_cast<double>(majorRadius) * outward +
-                                               static_cast<double>(minorRadius) * normal));
+            mesh.positions.push_back(
+                glm::vec3(static_cast<double>(majorRadius) * outward + static_cast<double>(minorRadius) * normal));
             mesh.normals.push_back(glm::vec3(normal));
             mesh.uvs.push_back({static_cast<float>(i) / static_cast<float>(majorSegments),
                                 static_cast<float>(j) / static_cast<float>(minorSegments)});

@@ -55,7 +55,8 @@ Mesh makeUvSphere(float radius, std::uint32_t rings, std::uint32_t segments) {
         }
     }
     for (std::uint32_t s = 0; s < segments; ++s)
-        mesh.indices.insert(mesh.indices.end(), {ringVertex(rings - 1, s), ringVertex(rings - 1, s + 1), bottomPole + s});
+        mesh.indices.insert(mesh.indices.end(),
+                            {ringVertex(rings - 1, s), ringVertex(rings - 1, s + 1), bottomPole + s});
     return mesh;
 }
 

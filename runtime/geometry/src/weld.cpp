@@ -36,7 +36,7 @@ std::uint64_t hashPosition(const glm::vec3& p) {
 // the first group at that position, so a probe touches one cache line; the table
 // doubles when half full, so it is sized for the distinct positions, not the input.
 class PositionTable {
-public:
+  public:
     explicit PositionTable(std::size_t expectedPositions) {
         std::size_t capacity = 1024;
         while (capacity < 2 * expectedPositions) capacity *= 2;
@@ -64,7 +64,7 @@ public:
         }
     }
 
-private:
+  private:
     struct Slot {
         glm::vec3 position{0.0f};
         std::uint32_t group = detail::kNoGroup;

@@ -34,7 +34,9 @@ std::vector<glm::vec3> vertexDirections(const Mesh& mesh) {
     return directions;
 }
 
-bool isZero(const glm::vec3& v) { return v.x == 0.0f && v.y == 0.0f && v.z == 0.0f; }
+bool isZero(const glm::vec3& v) {
+    return v.x == 0.0f && v.y == 0.0f && v.z == 0.0f;
+}
 
 }  // namespace
 

@@ -19,10 +19,12 @@ inline bool isWeldablePosition(const glm::vec3& p) {
 }
 
 // Exact float comparison: -0.0 == 0.0; positions with NaN/Inf are excluded earlier.
-inline bool samePosition(const glm::vec3& a, const glm::vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+inline bool samePosition(const glm::vec3& a, const glm::vec3& b) {
+    return a.x == b.x && a.y == b.y && a.z == b.z;
+}
 
 class WeldRules {
-public:
+  public:
     // Validates the mesh and the crease angle (std::invalid_argument).
     WeldRules(const Mesh& mesh, const WeldOptions& options);
 
@@ -31,12 +33,12 @@ public:
     // crease angle when one is set.
     bool mayJoin(std::uint32_t groupFirst, std::uint32_t candidate) const;
 
-private:
+  private:
     const Mesh& mesh_;
     bool compareUvs_ = false;
     bool useCrease_ = false;
     float minimumCosine_ = -1.0f;
-    std::vector<glm::vec3> directions_;      // unit, or zero when a vertex has none
+    std::vector<glm::vec3> directions_;  // unit, or zero when a vertex has none
 };
 
 // Builds the welded mesh from the group of every input vertex and the first vertex of

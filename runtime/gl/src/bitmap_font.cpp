@@ -73,7 +73,9 @@ constexpr std::uint8_t rowBits(std::string_view row) {
     return bits;
 }
 
-constexpr char canonical(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
+constexpr char canonical(char c) {
+    return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c;
+}
 
 const GlyphArt* find(char c) {
     const char k = canonical(c);
@@ -84,7 +86,9 @@ const GlyphArt* find(char c) {
 
 }  // namespace
 
-bool hasGlyph(char c) { return find(c) != nullptr; }
+bool hasGlyph(char c) {
+    return find(c) != nullptr;
+}
 
 std::array<std::uint8_t, kGlyphHeight> glyph(char c) {
     const GlyphArt* g = find(c);

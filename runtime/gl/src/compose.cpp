@@ -16,7 +16,8 @@ std::string_view versionDirectiveOf(const catalog::Catalog& c) {
 int versionNumber(std::string_view directive) {
     std::size_t p = directive.find_first_of("0123456789");
     int v = 0;
-    while (p < directive.size() && std::isdigit(static_cast<unsigned char>(directive[p]))) v = v * 10 + (directive[p++] - '0');
+    while (p < directive.size() && std::isdigit(static_cast<unsigned char>(directive[p])))
+        v = v * 10 + (directive[p++] - '0');
     return v;
 }
 

@@ -11,7 +11,8 @@ namespace {
 
 [[noreturn, maybe_unused]] void throwNotCompiledIn(Backend backend, std::string_view package) {
     throw ContextError("prism: this build has no " + std::string(backendName(backend)) + " backend; install " +
-                       std::string(package) + " (scripts/setup.sh) and reconfigure CMake, or pick another backend "
+                       std::string(package) +
+                       " (scripts/setup.sh) and reconfigure CMake, or pick another backend "
                        "(PRISM_GL_BACKEND=egl|osmesa|glfw)");
 }
 
@@ -28,9 +29,12 @@ void checkOptions(const ContextOptions& o) {
 
 std::string_view backendName(Backend backend) {
     switch (backend) {
-    case Backend::Egl: return "egl";
-    case Backend::OsMesa: return "osmesa";
-    case Backend::Glfw: return "glfw";
+        case Backend::Egl:
+            return "egl";
+        case Backend::OsMesa:
+            return "osmesa";
+        case Backend::Glfw:
+            return "glfw";
     }
     return "?";
 }
@@ -54,15 +58,19 @@ std::optional<Backend> backendFromEnvironment() {
 bool isBackendCompiledIn(Backend backend) {
     switch (backend) {
 #ifdef PRISM_GL_HAVE_EGL
-    case Backend::Egl: return true;
+        case Backend::Egl:
+            return true;
 #endif
 #ifdef PRISM_GL_HAVE_OSMESA
-    case Backend::OsMesa: return true;
+        case Backend::OsMesa:
+            return true;
 #endif
 #ifdef PRISM_GL_HAVE_GLFW
-    case Backend::Glfw: return true;
+        case Backend::Glfw:
+            return true;
 #endif
-    default: return false;
+        default:
+            return false;
     }
 }
 
@@ -70,27 +78,27 @@ std::unique_ptr<Context> createContext(Backend backend, const ContextOptions& op
     checkOptions(options);
     std::unique_ptr<Context> ctx;
     switch (backend) {
-    case Backend::Egl:
+        case Backend::Egl:
 #ifdef PRISM_GL_HAVE_EGL
-        ctx = detail::createEglContext(options);
+            ctx = detail::createEglContext(options);
 #else
-        throwNotCompiledIn(backend, "libegl1-mesa-dev");
+            throwNotCompiledIn(backend, "libegl1-mesa-dev");
 #endif
-        break;
-    case Backend::OsMesa:
+            break;
+        case Backend::OsMesa:
 #ifdef PRISM_GL_HAVE_OSMESA
-        ctx = detail::createOsMesaContext(options);
+            ctx = detail::createOsMesaContext(options);
 #else
-        throwNotCompiledIn(backend, "libosmesa6-dev");
+            throwNotCompiledIn(backend, "libosmesa6-dev");
 #endif
-        break;
-    case Backend::Glfw:
+            break;
+        case Backend::Glfw:
 #ifdef PRISM_GL_HAVE_GLFW
-        ctx = detail::createGlfwContext(options);
+            ctx = detail::createGlfwContext(options);
 #else
-        throwNotCompiledIn(backend, "libglfw3-dev");
+            throwNotCompiledIn(backend, "libglfw3-dev");
 #endif
-        break;
+            break;
     }
     const detail::CurrentGlInfo gl = detail::queryCurrentGlInfo();
     ctx->info_.backend = backend;

@@ -18,26 +18,41 @@ namespace {
 
 std::string eglErrorName(EGLint e) {
     switch (e) {
-    case EGL_SUCCESS: return "EGL_SUCCESS";
-    case EGL_NOT_INITIALIZED: return "EGL_NOT_INITIALIZED";
-    case EGL_BAD_ACCESS: return "EGL_BAD_ACCESS";
-    case EGL_BAD_ALLOC: return "EGL_BAD_ALLOC";
-    case EGL_BAD_ATTRIBUTE: return "EGL_BAD_ATTRIBUTE";
-    case EGL_BAD_CONFIG: return "EGL_BAD_CONFIG";
-    case EGL_BAD_CONTEXT: return "EGL_BAD_CONTEXT";
-    case EGL_BAD_CURRENT_SURFACE: return "EGL_BAD_CURRENT_SURFACE";
-    case EGL_BAD_DISPLAY: return "EGL_BAD_DISPLAY";
-    case EGL_BAD_MATCH: return "EGL_BAD_MATCH";
-    case EGL_BAD_NATIVE_PIXMAP: return "EGL_BAD_NATIVE_PIXMAP";
-    case EGL_BAD_NATIVE_WINDOW: return "EGL_BAD_NATIVE_WINDOW";
-    case EGL_BAD_PARAMETER: return "EGL_BAD_PARAMETER";
-    case EGL_BAD_SURFACE: return "EGL_BAD_SURFACE";
-    case EGL_CONTEXT_LOST: return "EGL_CONTEXT_LOST";
-    default: {
-        char hex[32];
-        std::snprintf(hex, sizeof hex, "EGL error 0x%x", static_cast<unsigned>(e));
-        return hex;
-    }
+        case EGL_SUCCESS:
+            return "EGL_SUCCESS";
+        case EGL_NOT_INITIALIZED:
+            return "EGL_NOT_INITIALIZED";
+        case EGL_BAD_ACCESS:
+            return "EGL_BAD_ACCESS";
+        case EGL_BAD_ALLOC:
+            return "EGL_BAD_ALLOC";
+        case EGL_BAD_ATTRIBUTE:
+            return "EGL_BAD_ATTRIBUTE";
+        case EGL_BAD_CONFIG:
+            return "EGL_BAD_CONFIG";
+        case EGL_BAD_CONTEXT:
+            return "EGL_BAD_CONTEXT";
+        case EGL_BAD_CURRENT_SURFACE:
+            return "EGL_BAD_CURRENT_SURFACE";
+        case EGL_BAD_DISPLAY:
+            return "EGL_BAD_DISPLAY";
+        case EGL_BAD_MATCH:
+            return "EGL_BAD_MATCH";
+        case EGL_BAD_NATIVE_PIXMAP:
+            return "EGL_BAD_NATIVE_PIXMAP";
+        case EGL_BAD_NATIVE_WINDOW:
+            return "EGL_BAD_NATIVE_WINDOW";
+        case EGL_BAD_PARAMETER:
+            return "EGL_BAD_PARAMETER";
+        case EGL_BAD_SURFACE:
+            return "EGL_BAD_SURFACE";
+        case EGL_CONTEXT_LOST:
+            return "EGL_CONTEXT_LOST";
+        default: {
+            char hex[32];
+            std::snprintf(hex, sizeof hex, "EGL error 0x%x", static_cast<unsigned>(e));
+            return hex;
+        }
     }
 }
 
@@ -53,7 +68,9 @@ bool hasExtension(const char* list, const char* name) {
     return false;
 }
 
-GlProc eglLoader(const char* name) { return reinterpret_cast<GlProc>(eglGetProcAddress(name)); }
+GlProc eglLoader(const char* name) {
+    return reinterpret_cast<GlProc>(eglGetProcAddress(name));
+}
 
 // The surfaceless display is one per process; it is initialised by the first
 // context and terminated when the last one goes.
@@ -69,15 +86,18 @@ EGLDisplay acquireDisplay() {
     }
     const char* clientExtensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
     if (!hasExtension(clientExtensions, "EGL_MESA_platform_surfaceless"))
-        throw ContextError("prism: EGL backend: the EGL library lacks EGL_MESA_platform_surfaceless (client "
-                           "extensions: " + std::string(clientExtensions ? clientExtensions : "none") +
-                           "); install Mesa's EGL (libegl1-mesa-dev, libegl-mesa0) or use PRISM_GL_BACKEND=osmesa");
+        throw ContextError(
+            "prism: EGL backend: the EGL library lacks EGL_MESA_platform_surfaceless (client "
+            "extensions: " +
+            std::string(clientExtensions ? clientExtensions : "none") +
+            "); install Mesa's EGL (libegl1-mesa-dev, libegl-mesa0) or use PRISM_GL_BACKEND=osmesa");
     auto getPlatformDisplay =
         reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
     if (!getPlatformDisplay)
         throw ContextError("prism: EGL backend: eglGetPlatformDisplayEXT is missing; install libegl1-mesa-dev");
     EGLDisplay display = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-    if (display == EGL_NO_DISPLAY) fail("eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA)", "install libgl1-mesa-dri");
+    if (display == EGL_NO_DISPLAY)
+        fail("eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA)", "install libgl1-mesa-dri");
     EGLint major = 0, minor = 0;
     if (!eglInitialize(display, &major, &minor))
         fail("eglInitialize on the surfaceless platform",
@@ -96,7 +116,7 @@ void releaseDisplay() {
 }
 
 class EglContext final : public Context {
-public:
+  public:
     explicit EglContext(const ContextOptions& options) : display_(acquireDisplay()) {
         try {
             create(options);
@@ -107,7 +127,8 @@ public:
     }
 
     ~EglContext() override {
-        if (eglGetCurrentContext() == context_) eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+        if (eglGetCurrentContext() == context_)
+            eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         eglDestroyContext(display_, context_);
         releaseDisplay();
     }
@@ -122,12 +143,13 @@ public:
     int drawableWidth() const override { return 0; }
     int drawableHeight() const override { return 0; }
 
-private:
+  private:
     void create(const ContextOptions& options) {
         const char* displayExtensions = eglQueryString(display_, EGL_EXTENSIONS);
         if (!hasExtension(displayExtensions, "EGL_KHR_surfaceless_context"))
-            throw ContextError("prism: EGL backend: the display lacks EGL_KHR_surfaceless_context; use "
-                               "PRISM_GL_BACKEND=osmesa");
+            throw ContextError(
+                "prism: EGL backend: the display lacks EGL_KHR_surfaceless_context; use "
+                "PRISM_GL_BACKEND=osmesa");
         if (!eglBindAPI(EGL_OPENGL_API)) fail("eglBindAPI(EGL_OPENGL_API)", "this EGL has no desktop GL; use osmesa");
 
         EGLConfig config = EGL_NO_CONFIG_KHR;

@@ -20,7 +20,9 @@ void onGlfwError(int code, const char* description) {
     gLastGlfwError = "GLFW error " + std::to_string(code) + ": " + (description ? description : "?");
 }
 
-GlProc glfwLoader(const char* name) { return reinterpret_cast<GlProc>(glfwGetProcAddress(name)); }
+GlProc glfwLoader(const char* name) {
+    return reinterpret_cast<GlProc>(glfwGetProcAddress(name));
+}
 
 void acquireGlfw() {
     std::lock_guard lock(gGlfwMutex);
@@ -43,7 +45,7 @@ void releaseGlfw() {
 }
 
 class GlfwContext final : public Context {
-public:
+  public:
     explicit GlfwContext(const ContextOptions& options) {
         acquireGlfw();
         glfwDefaultWindowHints();
@@ -101,7 +103,7 @@ public:
         return h;
     }
 
-private:
+  private:
     GLFWwindow* window_ = nullptr;
 };
 

@@ -12,20 +12,28 @@
 namespace prism::gl::detail {
 namespace {
 
-GlProc osmesaLoader(const char* name) { return reinterpret_cast<GlProc>(OSMesaGetProcAddress(name)); }
+GlProc osmesaLoader(const char* name) {
+    return reinterpret_cast<GlProc>(OSMesaGetProcAddress(name));
+}
 
 class OsMesaContext final : public Context {
-public:
+  public:
     explicit OsMesaContext(const ContextOptions& options)
         : width_(options.width),
           height_(options.height),
           buffer_(static_cast<std::size_t>(options.width) * static_cast<std::size_t>(options.height) * 4) {
-        const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA,
-                               OSMESA_DEPTH_BITS, 24,
-                               OSMESA_STENCIL_BITS, 8,
-                               OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                               OSMESA_CONTEXT_MAJOR_VERSION, options.majorVersion,
-                               OSMESA_CONTEXT_MINOR_VERSION, options.minorVersion,
+        const int attribs[] = {OSMESA_FORMAT,
+                               OSMESA_RGBA,
+                               OSMESA_DEPTH_BITS,
+                               24,
+                               OSMESA_STENCIL_BITS,
+                               8,
+                               OSMESA_PROFILE,
+                               OSMESA_CORE_PROFILE,
+                               OSMESA_CONTEXT_MAJOR_VERSION,
+                               options.majorVersion,
+                               OSMESA_CONTEXT_MINOR_VERSION,
+                               options.minorVersion,
                                0};
         context_ = OSMesaCreateContextAttribs(attribs, nullptr);
         if (!context_)
@@ -48,8 +56,8 @@ public:
 
     void makeCurrent() override {
         if (!OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, width_, height_))
-            throw ContextError("prism: OSMesa backend: OSMesaMakeCurrent failed for a " + std::to_string(width_) +
-                               "x" + std::to_string(height_) + " buffer");
+            throw ContextError("prism: OSMesa backend: OSMesaMakeCurrent failed for a " + std::to_string(width_) + "x" +
+                               std::to_string(height_) + " buffer");
         loadGlFunctions(&osmesaLoader, "osmesa");
     }
 
@@ -57,7 +65,7 @@ public:
     int drawableWidth() const override { return width_; }
     int drawableHeight() const override { return height_; }
 
-private:
+  private:
     int width_, height_;
     std::vector<unsigned char> buffer_;
     OSMesaContext context_ = nullptr;

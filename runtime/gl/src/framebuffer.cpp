@@ -11,16 +11,24 @@ namespace {
 
 std::string statusName(GLenum status) {
     switch (status) {
-    case GL_FRAMEBUFFER_UNDEFINED: return "GL_FRAMEBUFFER_UNDEFINED";
-    case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT: return "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT";
-    case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT: return "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT";
-    case GL_FRAMEBUFFER_UNSUPPORTED: return "GL_FRAMEBUFFER_UNSUPPORTED";
-    case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE: return "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE";
-    default: return "status " + std::to_string(status);
+        case GL_FRAMEBUFFER_UNDEFINED:
+            return "GL_FRAMEBUFFER_UNDEFINED";
+        case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT:
+            return "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT";
+        case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT:
+            return "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT";
+        case GL_FRAMEBUFFER_UNSUPPORTED:
+            return "GL_FRAMEBUFFER_UNSUPPORTED";
+        case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE:
+            return "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE";
+        default:
+            return "status " + std::to_string(status);
     }
 }
 
-std::string sizeText(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
+std::string sizeText(int w, int h) {
+    return std::to_string(w) + "x" + std::to_string(h);
+}
 
 // Reads the whole colour attachment bottom-up (GL order) into `data`.
 template <class T>
@@ -34,8 +42,7 @@ void readPixels(const Framebuffer& fb, GLenum type, std::vector<T>& data) {
 
 }  // namespace
 
-Framebuffer::Framebuffer(int width, int height, ColorFormat format)
-    : width_(width), height_(height), format_(format) {
+Framebuffer::Framebuffer(int width, int height, ColorFormat format) : width_(width), height_(height), format_(format) {
     GLint maxSize = 0;
     glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxSize);
     if (width < 1 || height < 1 || width > maxSize || height > maxSize)
@@ -77,7 +84,9 @@ Framebuffer::Framebuffer(int width, int height, ColorFormat format)
     }
 }
 
-Framebuffer::~Framebuffer() { release(); }
+Framebuffer::~Framebuffer() {
+    release();
+}
 
 Framebuffer::Framebuffer(Framebuffer&& other) noexcept
     : width_(other.width_),
@@ -112,7 +121,9 @@ void Framebuffer::bind() const {
     glViewport(0, 0, width_, height_);
 }
 
-void Framebuffer::bindDefault() { glBindFramebuffer(GL_FRAMEBUFFER, 0); }
+void Framebuffer::bindDefault() {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
 
 void Framebuffer::clear(std::array<float, 4> rgba, float depth) const {
     bind();

@@ -8,7 +8,9 @@
 namespace prism {
 namespace {
 
-std::string sizeText(const Image8& img) { return std::to_string(img.width) + "x" + std::to_string(img.height); }
+std::string sizeText(const Image8& img) {
+    return std::to_string(img.width) + "x" + std::to_string(img.height);
+}
 
 }  // namespace
 
@@ -56,7 +58,8 @@ ImageComparison compareImages(const Image8& actual, const Image8& expected, int 
 bool passes(const ImageComparison& stats, const Thresholds& t) {
     if (!stats.sizeMatches) return false;
     const std::size_t pixels = static_cast<std::size_t>(stats.width) * static_cast<std::size_t>(stats.height);
-    const double share = pixels > 0 ? static_cast<double>(stats.pixelsAbove(t.maxChannelDiff)) / static_cast<double>(pixels) : 0.0;
+    const double share =
+        pixels > 0 ? static_cast<double>(stats.pixelsAbove(t.maxChannelDiff)) / static_cast<double>(pixels) : 0.0;
     return share <= t.maxShareOver && stats.meanAbsError <= t.maxMean;
 }
 

@@ -56,7 +56,8 @@ void writePng(const std::filesystem::path& path, const Image8& image) {
     if (ec) {
         std::error_code ignored;
         std::filesystem::remove(temp, ignored);
-        throw PngError("cannot write PNG " + quoted(path) + ": rename from " + quoted(temp) + " failed: " + ec.message());
+        throw PngError("cannot write PNG " + quoted(path) + ": rename from " + quoted(temp) +
+                       " failed: " + ec.message());
     }
 }
 

@@ -23,20 +23,28 @@ WarningHandler defaultHandler() {
 
 GLenum shaderType(catalog::Stage stage) {
     switch (stage) {
-    case catalog::Stage::Vertex: return GL_VERTEX_SHADER;
-    case catalog::Stage::Geometry: return GL_GEOMETRY_SHADER;
-    case catalog::Stage::Fragment: return GL_FRAGMENT_SHADER;
-    case catalog::Stage::Compute: return kComputeShader;
+        case catalog::Stage::Vertex:
+            return GL_VERTEX_SHADER;
+        case catalog::Stage::Geometry:
+            return GL_GEOMETRY_SHADER;
+        case catalog::Stage::Fragment:
+            return GL_FRAGMENT_SHADER;
+        case catalog::Stage::Compute:
+            return kComputeShader;
     }
     return GL_VERTEX_SHADER;
 }
 
 std::string_view stageWord(catalog::Stage stage) {
     switch (stage) {
-    case catalog::Stage::Vertex: return "vertex";
-    case catalog::Stage::Geometry: return "geometry";
-    case catalog::Stage::Fragment: return "fragment";
-    case catalog::Stage::Compute: return "compute";
+        case catalog::Stage::Vertex:
+            return "vertex";
+        case catalog::Stage::Geometry:
+            return "geometry";
+        case catalog::Stage::Fragment:
+            return "fragment";
+        case catalog::Stage::Compute:
+            return "compute";
     }
     return "?";
 }
@@ -59,7 +67,9 @@ std::string programLog(GLuint program) {
     return log;
 }
 
-std::string programName(const std::string& label) { return label.empty() ? "program" : "program '" + label + "'"; }
+std::string programName(const std::string& label) {
+    return label.empty() ? "program" : "program '" + label + "'";
+}
 
 }  // namespace
 
@@ -91,9 +101,13 @@ Program::Program(const catalog::Variant& variant, std::span<const catalog::Attri
     build(sourcesFromVariant(variant, contractAttributes, std::move(label)));
 }
 
-Program::Program(ProgramSources sources) { build(std::move(sources)); }
+Program::Program(ProgramSources sources) {
+    build(std::move(sources));
+}
 
-Program::~Program() { release(); }
+Program::~Program() {
+    release();
+}
 
 Program::Program(Program&& other) noexcept
     : program_(std::exchange(other.program_, 0u)),
@@ -123,9 +137,13 @@ void Program::release() noexcept {
     program_ = 0;
 }
 
-void Program::use() const { glUseProgram(program_); }
+void Program::use() const {
+    glUseProgram(program_);
+}
 
-void Program::setWarningHandler(WarningHandler handler) { warningHandler_ = std::move(handler); }
+void Program::setWarningHandler(WarningHandler handler) {
+    warningHandler_ = std::move(handler);
+}
 
 void Program::warn(const std::string& message) const {
     const std::string text = programName(label_) + ": " + message;
@@ -153,7 +171,8 @@ void Program::build(ProgramSources sources) {
         if (shader == 0) {
             deleteShaders();
             throw ShaderBuildError("prism: cannot create a " + std::string(stageWord(stage.stage)) + " shader for " +
-                                       programName(label_) + " (is a GL context current, and does it support this stage?)",
+                                       programName(label_) +
+                                       " (is a GL context current, and does it support this stage?)",
                                    "");
         }
         shaders.push_back(shader);

@@ -22,16 +22,21 @@ namespace {
     throw RainParameterError(s.str());
 }
 
-float fade(float t) { return t * t * (3.0f - 2.0f * t); }
+float fade(float t) {
+    return t * t * (3.0f - 2.0f * t);
+}
 
 // Periodic value noise: lattice values from the hash, wrapped with the periods.
 float valueNoise(float x, float y, float z, int period, int periodZ, std::uint32_t seed, std::uint32_t octave) {
-    const int ix = static_cast<int>(std::floor(x)), iy = static_cast<int>(std::floor(y)), iz = static_cast<int>(std::floor(z));
-    const float fx = fade(x - static_cast<float>(ix)), fy = fade(y - static_cast<float>(iy)), fz = fade(z - static_cast<float>(iz));
+    const int ix = static_cast<int>(std::floor(x)), iy = static_cast<int>(std::floor(y)),
+              iz = static_cast<int>(std::floor(z));
+    const float fx = fade(x - static_cast<float>(ix)), fy = fade(y - static_cast<float>(iy)),
+                fz = fade(z - static_cast<float>(iz));
     auto lattice = [&](int a, int b, int c) {
         const auto wrap = [](int v, int p) { return static_cast<std::uint32_t>(((v % p) + p) % p); };
         const std::uint32_t index =
-            wrap(a, period) + static_cast<std::uint32_t>(period) * (wrap(b, period) + static_cast<std::uint32_t>(period) * wrap(c, periodZ));
+            wrap(a, period) + static_cast<std::uint32_t>(period) *
+                                  (wrap(b, period) + static_cast<std::uint32_t>(period) * wrap(c, periodZ));
         return rainUniform(seed, index, 20u + octave);
     };
     float v[2][2][2];
@@ -57,7 +62,8 @@ void validate(const SceneFog& fog) {
     if (!std::isfinite(b.minHeight) || !std::isfinite(b.maxHeight) || b.maxHeight < b.minHeight)
         fail("billboard maxHeight", b.maxHeight, "finite and >= minHeight");
     if (!(b.drift >= 0.0f) || !std::isfinite(b.drift)) fail("billboard drift", b.drift, "a finite number >= 0 m/s");
-    if (!(b.windFactor >= 0.0f) || !std::isfinite(b.windFactor)) fail("billboard windFactor", b.windFactor, "a finite number >= 0");
+    if (!(b.windFactor >= 0.0f) || !std::isfinite(b.windFactor))
+        fail("billboard windFactor", b.windFactor, "a finite number >= 0");
     for (float c : {b.color.r, b.color.g, b.color.b, fog.distance.color.r, fog.distance.color.g, fog.distance.color.b})
         if (!std::isfinite(c) || c < 0.0f) fail("colour channel", c, "a finite number >= 0");
 }
@@ -80,7 +86,8 @@ FogNoiseArray generateFogNoise(int size, int layers, std::uint32_t seed) {
                     const int cells = 4 << o;
                     const float fx = static_cast<float>(x) / static_cast<float>(size) * static_cast<float>(cells);
                     const float fy = static_cast<float>(y) / static_cast<float>(size) * static_cast<float>(cells);
-                    const float fz = static_cast<float>(l) / static_cast<float>(layers) * static_cast<float>(kTimeCells);
+                    const float fz =
+                        static_cast<float>(l) / static_cast<float>(layers) * static_cast<float>(kTimeCells);
                     sum += amplitude * valueNoise(fx, fy, fz, cells, kTimeCells, seed, static_cast<std::uint32_t>(o));
                     norm += amplitude;
                     amplitude *= 0.5f;
@@ -93,7 +100,8 @@ FogNoiseArray generateFogNoise(int size, int layers, std::uint32_t seed) {
     return n;
 }
 
-FogBillboardSimulation::FogBillboardSimulation(const FogBillboardParams& params, const glm::vec3& eye) : params_(params) {
+FogBillboardSimulation::FogBillboardSimulation(const FogBillboardParams& params, const glm::vec3& eye)
+    : params_(params) {
     SceneFog check;
     check.billboards = params;
     validate(check);
@@ -114,7 +122,8 @@ void FogBillboardSimulation::step(float dt, const glm::vec3& eye, const glm::vec
     validateEye(eye);
     const float h = clampStep(dt);
     for (std::size_t i = 0; i < billboards_.size(); ++i) {
-        glm::vec3 p = glm::vec3(billboards_[i]) + (drift_[i] + params_.windFactor * glm::vec3(wind.x, 0.0f, wind.z)) * h;
+        glm::vec3 p =
+            glm::vec3(billboards_[i]) + (drift_[i] + params_.windFactor * glm::vec3(wind.x, 0.0f, wind.z)) * h;
         glm::vec2 local(p.x - eye.x, p.z - eye.z);
         local = foldIntoCylinder(local, glm::vec2(0.0f), params_.radius);
         billboards_[i] = glm::vec4(eye.x + local.x, p.y, eye.z + local.y, billboards_[i].w);

@@ -46,7 +46,8 @@ void FogSystem::update(float dt, const glm::vec3& eye, const glm::vec3& wind) {
 
 void FogSystem::setStrength(float strength) {
     if (!(strength >= 0.0f && strength <= 1.0f))
-        throw RainParameterError("rain: fog billboard strength must be in [0, 1] (got " + std::to_string(strength) + ")");
+        throw RainParameterError("rain: fog billboard strength must be in [0, 1] (got " + std::to_string(strength) +
+                                 ")");
     params_.strength = strength;
 }
 

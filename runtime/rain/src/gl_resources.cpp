@@ -37,7 +37,9 @@ GlObjectCounts glObjectCounts() {
     return r;
 }
 
-void detail::countDispatch() { ++counters().computeDispatches; }
+void detail::countDispatch() {
+    ++counters().computeDispatches;
+}
 
 GlBuffer::GlBuffer(std::size_t bytes, const void* data, unsigned usage) : bytes_(bytes) {
     GLuint id = 0;

@@ -32,7 +32,9 @@ std::string str(float v) {
     return s.str();
 }
 
-[[noreturn]] void fail(const std::string& what) { throw RainParameterError("rain: " + what); }
+[[noreturn]] void fail(const std::string& what) {
+    throw RainParameterError("rain: " + what);
+}
 
 void requireFinite(float v, const char* name, const char* range) {
     if (!std::isfinite(v)) fail(std::string(name) + " must be a finite number " + range + " (got " + str(v) + ")");
@@ -40,7 +42,9 @@ void requireFinite(float v, const char* name, const char* range) {
 
 }  // namespace
 
-std::span<const RainClassInfo> rainClasses() { return kClasses; }
+std::span<const RainClassInfo> rainClasses() {
+    return kClasses;
+}
 
 const RainClassInfo& rainClassInfo(RainClass id) {
     for (const auto& c : kClasses)
@@ -89,7 +93,8 @@ RainRate rainRateFor(float intensity) {
         const auto& a = kClasses[i];
         const auto& b = kClasses[i + 1];
         if (intensity <= b.intensity) {
-            const float t = (std::log(intensity) - std::log(a.intensity)) / (std::log(b.intensity) - std::log(a.intensity));
+            const float t =
+                (std::log(intensity) - std::log(a.intensity)) / (std::log(b.intensity) - std::log(a.intensity));
             return {a.fallSpeed + t * (b.fallSpeed - a.fallSpeed),
                     a.dropsPerSquareMetreSecond + t * (b.dropsPerSquareMetreSecond - a.dropsPerSquareMetreSecond)};
         }
@@ -131,7 +136,8 @@ void validate(const RainParams& p) {
     if (p.jitter < 0.0f || p.jitter > 100.0f) fail("jitter must be in [0, 100] m/s (got " + str(p.jitter) + ")");
     const auto& s = p.streaks;
     requireFinite(s.exposure, "streaks.exposure", "> 0 s");
-    if (s.exposure <= 0.0f || s.exposure > 1.0f) fail("streaks.exposure must be in (0, 1] s (got " + str(s.exposure) + ")");
+    if (s.exposure <= 0.0f || s.exposure > 1.0f)
+        fail("streaks.exposure must be in (0, 1] s (got " + str(s.exposure) + ")");
     requireFinite(s.width, "streaks.width", "> 0 m");
     requireFinite(s.widthPerMetre, "streaks.widthPerMetre", ">= 0");
     if (s.width <= 0.0f || s.widthPerMetre < 0.0f)
@@ -169,9 +175,8 @@ std::uint32_t particleCountFor(const RainParams& p) {
 
 glm::vec3 windVector(const RainParams& p) {
     validateWind(p.wind);
-    const float degrees = p.wind.directionDegrees
-                              ? *p.wind.directionDegrees
-                              : 360.0f * rainUniform(p.seed, 0xFFFFFFFFu, kChannelWindDirection);
+    const float degrees = p.wind.directionDegrees ? *p.wind.directionDegrees
+                                                  : 360.0f * rainUniform(p.seed, 0xFFFFFFFFu, kChannelWindDirection);
     const float radians = degrees * 0.017453292519943295f;
     return {p.wind.strength * std::cos(radians), 0.0f, p.wind.strength * std::sin(radians)};
 }

@@ -5,7 +5,9 @@
 
 namespace prism::rain {
 
-const catalog::Catalog& rainCatalog() { return rain_shaders::kCatalog; }
+const catalog::Catalog& rainCatalog() {
+    return rain_shaders::kCatalog;
+}
 
 RainPrograms::RainPrograms() : cache_(rain_shaders::kCatalog) {}
 

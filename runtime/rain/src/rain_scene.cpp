@@ -26,9 +26,10 @@ constexpr float kPostWidth = 0.12f;
 
 geometry::Mesh makeRainGround(const GroundDesc& g) {
     if (!(g.size > 0.0f) || g.cells < 1 || g.cells > 2048 || !std::isfinite(g.hillHeight) || !(g.flatRadius >= 0.0f))
-        throw RainParameterError("rain: ground needs size > 0, cells in 1..2048, a finite hill height and flatRadius >= 0");
-    geometry::Mesh mesh = geometry::makeGrid(g.size, g.size, static_cast<std::uint32_t>(g.cells),
-                                             static_cast<std::uint32_t>(g.cells));
+        throw RainParameterError(
+            "rain: ground needs size > 0, cells in 1..2048, a finite hill height and flatRadius >= 0");
+    geometry::Mesh mesh =
+        geometry::makeGrid(g.size, g.size, static_cast<std::uint32_t>(g.cells), static_cast<std::uint32_t>(g.cells));
     if (g.hillHeight != 0.0f) {
         for (auto& p : mesh.positions) {
             const float r = std::sqrt(p.x * p.x + p.z * p.z);
@@ -59,18 +60,18 @@ Camera rainSceneView(int view) {
     c.nearPlane = 0.1f;
     c.farPlane = 250.0f;
     switch (view) {
-    case 1:  // from beyond the lamp, looking back up the road and into the sun's side
-        c.eye = {-1.5f, 1.7f, -14.0f};
-        c.target = {1.0f, 2.4f, 0.0f};
-        break;
-    case 2:  // close to the lamp, looking up past it into the rain
-        c.eye = {0.2f, 1.6f, -2.2f};
-        c.target = {2.0f, 4.4f, -6.0f};
-        break;
-    default:  // along the road, past the lamp
-        c.eye = {0.0f, 1.7f, 6.0f};
-        c.target = {1.2f, 2.0f, -6.0f};
-        break;
+        case 1:  // from beyond the lamp, looking back up the road and into the sun's side
+            c.eye = {-1.5f, 1.7f, -14.0f};
+            c.target = {1.0f, 2.4f, 0.0f};
+            break;
+        case 2:  // close to the lamp, looking up past it into the rain
+            c.eye = {0.2f, 1.6f, -2.2f};
+            c.target = {2.0f, 4.4f, -6.0f};
+            break;
+        default:  // along the road, past the lamp
+            c.eye = {0.0f, 1.7f, 6.0f};
+            c.target = {1.2f, 2.0f, -6.0f};
+            break;
     }
     return c;
 }
@@ -106,7 +107,9 @@ void RainScene::update(float dt) {
     if (fog_) fog_->update(step, desc_.camera.eye, rain_ ? rain_->wind() : glm::vec3(0.0f));
 }
 
-std::vector<std::string> RainScene::programsInUse() const { return programs_->used(); }
+std::vector<std::string> RainScene::programsInUse() const {
+    return programs_->used();
+}
 
 void RainScene::draw(int width, int height) {
     if (width <= 0 || height <= 0) throw std::invalid_argument("rain: scene size must be positive");

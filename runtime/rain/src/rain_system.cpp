@@ -21,15 +21,20 @@ int locationOf(const catalog::Catalog& c, std::string_view name) {
     throw std::logic_error("rain: the binding contract has no attribute '" + std::string(name) + "'");
 }
 
-VariantValues fogVariant(const Fog* fog) { return {{"FOG", fog ? "1" : "0"}}; }
+VariantValues fogVariant(const Fog* fog) {
+    return {{"FOG", fog ? "1" : "0"}};
+}
 
 }  // namespace
 
 std::string_view techniqueName(StreakTechnique t) {
     switch (t) {
-    case StreakTechnique::GeometryShader: return "gs-quads";
-    case StreakTechnique::Instanced: return "instanced-quads";
-    case StreakTechnique::PointSprites: return "point-sprites";
+        case StreakTechnique::GeometryShader:
+            return "gs-quads";
+        case StreakTechnique::Instanced:
+            return "instanced-quads";
+        case StreakTechnique::PointSprites:
+            return "point-sprites";
     }
     return "?";
 }
@@ -45,9 +50,12 @@ std::optional<StreakTechnique> parseTechnique(std::string_view name) {
 
 std::string_view techniqueShader(StreakTechnique t) {
     switch (t) {
-    case StreakTechnique::GeometryShader: return "rain_streaks";
-    case StreakTechnique::Instanced: return "rain_instanced";
-    case StreakTechnique::PointSprites: return "rain_points";
+        case StreakTechnique::GeometryShader:
+            return "rain_streaks";
+        case StreakTechnique::Instanced:
+            return "rain_instanced";
+        case StreakTechnique::PointSprites:
+            return "rain_points";
     }
     return "rain_streaks";
 }
@@ -62,7 +70,9 @@ RainSystem::RainSystem(RainPrograms& programs, const RainParams& params, const g
     resize(particleCountFor(params_));
 }
 
-std::size_t RainSystem::gpuBytes() const { return particles_.bytes() + streakTextureBytes_; }
+std::size_t RainSystem::gpuBytes() const {
+    return particles_.bytes() + streakTextureBytes_;
+}
 
 void RainSystem::resize(std::uint32_t count) {
     if (count > capacity_) {
@@ -212,15 +222,17 @@ void RainSystem::draw(const RainDrawInputs& in) {
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     glBindVertexArray(vao->id());
     switch (in.technique) {
-    case StreakTechnique::GeometryShader: glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count_)); break;
-    case StreakTechnique::Instanced:
-        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(count_));
-        break;
-    case StreakTechnique::PointSprites:
-        glEnable(GL_PROGRAM_POINT_SIZE);
-        glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count_));
-        glDisable(GL_PROGRAM_POINT_SIZE);
-        break;
+        case StreakTechnique::GeometryShader:
+            glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count_));
+            break;
+        case StreakTechnique::Instanced:
+            glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(count_));
+            break;
+        case StreakTechnique::PointSprites:
+            glEnable(GL_PROGRAM_POINT_SIZE);
+            glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count_));
+            glDisable(GL_PROGRAM_POINT_SIZE);
+            break;
     }
     glBindVertexArray(0);
     glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
@@ -234,8 +246,8 @@ std::vector<Particle> RainSystem::readParticles() const {
     if (count_ == 0) return out;
     gl43_.barrier(kBarrierAll);
     glBindBuffer(GL_COPY_READ_BUFFER, particles_.id());
-    glGetBufferSubData(GL_COPY_READ_BUFFER, 0, static_cast<GLsizeiptr>(count_) * static_cast<GLsizeiptr>(sizeof(Particle)),
-                       out.data());
+    glGetBufferSubData(GL_COPY_READ_BUFFER, 0,
+                       static_cast<GLsizeiptr>(count_) * static_cast<GLsizeiptr>(sizeof(Particle)), out.data());
     glBindBuffer(GL_COPY_READ_BUFFER, 0);
     gl::throwIfGlError("rain: reading the particles back");
     return out;

@@ -12,7 +12,7 @@
 namespace prism::cli {
 
 std::optional<float> parseFiniteFloat(const std::string& text);
-std::optional<glm::vec3> parseVec3(const std::string& text);           // "x,y,z"
+std::optional<glm::vec3> parseVec3(const std::string& text);            // "x,y,z"
 std::optional<std::pair<int, int>> parseSize(const std::string& text);  // "WxH", 1..16384
 
 }  // namespace prism::cli

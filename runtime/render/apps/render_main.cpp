@@ -112,7 +112,8 @@ int main(int argc, char** argv) {
     job.shader = a.shader;
     if (!prism::catalog::findShader(prism::shaders::kCatalog, a.shader)) {
         std::string known;
-        for (const auto& s : prism::shaders::kCatalog.shaders) known += (known.empty() ? "" : ", ") + std::string(s.name);
+        for (const auto& s : prism::shaders::kCatalog.shaders)
+            known += (known.empty() ? "" : ", ") + std::string(s.name);
         return badInput("unknown shader '" + a.shader + "'; known shaders: " + known);
     }
     for (const auto& v : a.variants) {

@@ -40,12 +40,19 @@ VariantValues variantFor(const catalog::Shader& shader, const FeatureSet& f, con
         std::string value;
         bool asked = false;
         for (const auto& [n, v] : requested)
-            if (n == axis.name) { value = v; asked = true; }
+            if (n == axis.name) {
+                value = v;
+                asked = true;
+            }
         if (!asked) {
-            if (axis.name == "DIRECTIONAL_LIGHTS") value = smallestHolding(shader, axis, f.directionalLights);
-            else if (axis.name == "POINT_LIGHTS") value = smallestHolding(shader, axis, f.pointLights);
-            else if (axis.name == "FOG") value = f.fog ? "1" : "0";
-            else value = axis.values.empty() ? std::string() : std::string(axis.values[0]);
+            if (axis.name == "DIRECTIONAL_LIGHTS")
+                value = smallestHolding(shader, axis, f.directionalLights);
+            else if (axis.name == "POINT_LIGHTS")
+                value = smallestHolding(shader, axis, f.pointLights);
+            else if (axis.name == "FOG")
+                value = f.fog ? "1" : "0";
+            else
+                value = axis.values.empty() ? std::string() : std::string(axis.values[0]);
         }
         values.emplace_back(std::string(axis.name), value);
     }

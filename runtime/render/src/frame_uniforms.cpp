@@ -24,15 +24,14 @@ int capacityOf(const gl::Program& p, std::string_view arrayName) {
     return n;
 }
 
-void setLightArray(gl::Program& p, std::string_view countName, std::string_view firstName,
-                   std::string_view secondName, const std::vector<glm::vec3>& first,
-                   const std::vector<glm::vec3>& second) {
+void setLightArray(gl::Program& p, std::string_view countName, std::string_view firstName, std::string_view secondName,
+                   const std::vector<glm::vec3>& first, const std::vector<glm::vec3>& second) {
     if (!p.hasUniform(countName)) return;
     const int capacity = capacityOf(p, firstName);
     if (static_cast<int>(first.size()) > capacity)
-        throw std::invalid_argument(p.label() + ": " + std::to_string(first.size()) + " lights given but the shader holds " +
-                                    std::to_string(capacity) + " (" + std::string(firstName) +
-                                    "); choose a variant with more lights");
+        throw std::invalid_argument(p.label() + ": " + std::to_string(first.size()) +
+                                    " lights given but the shader holds " + std::to_string(capacity) + " (" +
+                                    std::string(firstName) + "); choose a variant with more lights");
     p.set(countName, static_cast<int>(first.size()));
     if (first.empty()) return;
     p.set(firstName, std::span<const glm::vec3>(first));
@@ -41,8 +40,8 @@ void setLightArray(gl::Program& p, std::string_view countName, std::string_view 
 
 }  // namespace
 
-void setFrameUniforms(gl::Program& p, const Camera& camera, float aspect, const Lights& lights,
-                      const glm::mat4& world, const Material& material, const Fog* fog) {
+void setFrameUniforms(gl::Program& p, const Camera& camera, float aspect, const Lights& lights, const glm::mat4& world,
+                      const Material& material, const Fog* fog) {
     const glm::mat4 view = camera.view();
     setIfPresent(p, "u_world", world);
     setIfPresent(p, "u_view", view);
@@ -52,8 +51,7 @@ void setFrameUniforms(gl::Program& p, const Camera& camera, float aspect, const 
     setIfPresent(p, "u_shininess", material.shininess);
     setIfPresent(p, "u_specular", material.specular);
     setIfPresent(p, "u_ambient", lights.ambient);
-    if (fog && !(fog->density >= 0.0f))
-        throw std::invalid_argument(p.label() + ": fog density must be a number >= 0");
+    if (fog && !(fog->density >= 0.0f)) throw std::invalid_argument(p.label() + ": fog density must be a number >= 0");
     setIfPresent(p, "u_fogColor", fog ? fog->color : glm::vec3(0.0f));
     setIfPresent(p, "u_fogDensity", fog ? fog->density : 0.0f);
 

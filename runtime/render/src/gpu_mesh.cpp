@@ -50,11 +50,15 @@ GpuMesh::GpuMesh(const geometry::Mesh& mesh, std::span<const catalog::Attribute>
     gl::throwIfGlError("uploading a mesh");
 }
 
-GpuMesh::~GpuMesh() { release(); }
+GpuMesh::~GpuMesh() {
+    release();
+}
 
 GpuMesh::GpuMesh(GpuMesh&& o) noexcept
-    : vao_(std::exchange(o.vao_, 0)), positions_(std::exchange(o.positions_, 0)),
-      normals_(std::exchange(o.normals_, 0)), indices_(std::exchange(o.indices_, 0)),
+    : vao_(std::exchange(o.vao_, 0)),
+      positions_(std::exchange(o.positions_, 0)),
+      normals_(std::exchange(o.normals_, 0)),
+      indices_(std::exchange(o.indices_, 0)),
       indexCount_(std::exchange(o.indexCount_, 0)) {}
 
 GpuMesh& GpuMesh::operator=(GpuMesh&& o) noexcept {

@@ -17,7 +17,9 @@ geometry::Mesh meshForShader(std::string_view shader, const geometry::Mesh& mesh
     return out;
 }
 
-std::vector<std::string> builtInMeshNames() { return {"sphere", "icosphere", "torus", "cube", "trefoil", "grid"}; }
+std::vector<std::string> builtInMeshNames() {
+    return {"sphere", "icosphere", "torus", "cube", "trefoil", "grid"};
+}
 
 geometry::Mesh namedMesh(const std::string& name, unsigned subdivision) {
     const unsigned s = std::clamp(subdivision, 0u, 7u);

@@ -17,7 +17,7 @@ namespace {
 using nlohmann::json;
 
 class Reader {
-public:
+  public:
     explicit Reader(std::string file) : file_(std::move(file)) {}
 
     [[noreturn]] void fail(const std::string& pointer, const std::string& expected) const {
@@ -75,7 +75,7 @@ public:
         return j.get<std::string>();
     }
 
-private:
+  private:
     std::string file_;
 };
 
@@ -136,8 +136,8 @@ glm::mat4 readTransform(const Reader& r, const json& j, const std::string& at) {
     }
     if (j.contains("scale")) {
         const json& s = j["scale"];
-        m = glm::scale(m, s.is_number() ? glm::vec3(static_cast<float>(r.number(s, at + "/scale")))
-                                        : r.vec3(s, at + "/scale"));
+        m = glm::scale(
+            m, s.is_number() ? glm::vec3(static_cast<float>(r.number(s, at + "/scale"))) : r.vec3(s, at + "/scale"));
     }
     return m;
 }
@@ -174,11 +174,13 @@ RainSettings readRain(const Reader& r, const json& j) {
     RainSettings s;
     if (j.contains("intensity")) {
         s.intensityClass = r.string(j["intensity"], "/rain/intensity");
-        static const std::set<std::string> classes = {"drizzle", "light", "moderate", "heavy", "excessive", "cloudburst"};
+        static const std::set<std::string> classes = {"drizzle", "light",     "moderate",
+                                                      "heavy",   "excessive", "cloudburst"};
         if (!classes.count(s.intensityClass))
             r.fail("/rain/intensity", "one of drizzle, light, moderate, heavy, excessive, cloudburst");
     }
-    if (j.contains("rateMmPerHour")) s.rateMillimetresPerHour = r.number(j["rateMmPerHour"], "/rain/rateMmPerHour", 0.0);
+    if (j.contains("rateMmPerHour"))
+        s.rateMillimetresPerHour = r.number(j["rateMmPerHour"], "/rain/rateMmPerHour", 0.0);
     if (j.contains("wind")) s.wind = r.vec3(j["wind"], "/rain/wind");
     if (j.contains("seed")) s.seed = r.whole(j["seed"], "/rain/seed", 0, 0xffffffffu);
     if (j.contains("radius")) s.cylinderRadius = static_cast<float>(r.number(j["radius"], "/rain/radius", 0.1, 1e4));
@@ -204,7 +206,12 @@ WaterSettings readWater(const Reader& r, const json& j) {
 std::pair<int, int> lineColumn(const std::string& text, std::size_t byte) {
     int line = 1, col = 1;
     for (std::size_t i = 0; i + 1 < byte && i < text.size(); ++i) {
-        if (text[i] == '\n') { ++line; col = 1; } else { ++col; }
+        if (text[i] == '\n') {
+            ++line;
+            col = 1;
+        } else {
+            ++col;
+        }
     }
     return {line, col};
 }

@@ -31,8 +31,7 @@ rain::RainParams rainParamsFor(const RainSettings& settings) {
     }
     const glm::vec2 horizontal(settings.wind.x, settings.wind.z);
     p.wind.strength = glm::length(horizontal);
-    if (p.wind.strength > 0.0f)
-        p.wind.directionDegrees = glm::degrees(std::atan2(horizontal.y, horizontal.x));
+    if (p.wind.strength > 0.0f) p.wind.directionDegrees = glm::degrees(std::atan2(horizontal.y, horizontal.x));
     p.seed = settings.seed;
     p.radius = settings.cylinderRadius;
     p.height = settings.cylinderHeight;
@@ -45,7 +44,9 @@ rain::RainParams rainParamsFor(const RainSettings& settings) {
 SceneRenderer::SceneRenderer(const catalog::Catalog& catalog) : programs_(catalog) {}
 SceneRenderer::~SceneRenderer() = default;
 
-std::size_t SceneRenderer::rainProgramsBuilt() const { return rainPrograms_ ? rainPrograms_->built() : 0; }
+std::size_t SceneRenderer::rainProgramsBuilt() const {
+    return rainPrograms_ ? rainPrograms_->built() : 0;
+}
 
 void SceneRenderer::drawRain(const Scene& scene) {
     const rain::RainParams params = rainParamsFor(*scene.rain);
@@ -59,10 +60,14 @@ void SceneRenderer::drawRain(const Scene& scene) {
     in.aspect = static_cast<float>(scene.width) / static_cast<float>(scene.height);
     in.viewportHeight = scene.height;
     in.lights.ambient = scene.lights.ambient;
-    if (!scene.lights.directional.empty()) in.lights.sun = scene.lights.directional.front();
-    else in.lights.sun.color = glm::vec3(0.0f);
-    if (!scene.lights.points.empty()) in.lights.lamp = scene.lights.points.front();
-    else in.lights.lamp.color = glm::vec3(0.0f);
+    if (!scene.lights.directional.empty())
+        in.lights.sun = scene.lights.directional.front();
+    else
+        in.lights.sun.color = glm::vec3(0.0f);
+    if (!scene.lights.points.empty())
+        in.lights.lamp = scene.lights.points.front();
+    else
+        in.lights.lamp.color = glm::vec3(0.0f);
     in.fog = scene.fog ? &*scene.fog : nullptr;
     system.draw(in);
     lastFrame_.variants.push_back("rain " + std::string(rain::techniqueName(in.technique)) + " (" +

@@ -24,12 +24,16 @@ constexpr float kTan22_5 = 0.41421356f;
 // Mesa's llvmpipe runs shaders with denormals flushed to zero (FTZ and DAZ); the
 // reference does the same for the duration of a step.
 class FlushDenormals {
-public:
+  public:
 #ifdef PRISM_WATER_HAVE_MXCSR
-    FlushDenormals() : saved_(_mm_getcsr()) { _mm_setcsr(saved_ | 0x8040u); }
-    ~FlushDenormals() { _mm_setcsr(saved_); }
+    FlushDenormals() : saved_(_mm_getcsr()) {
+        _mm_setcsr(saved_ | 0x8040u);
+    }
+    ~FlushDenormals() {
+        _mm_setcsr(saved_);
+    }
 
-private:
+  private:
     unsigned saved_;
 #endif
 };
@@ -55,7 +59,9 @@ inline float availableWater(float hi, float lo) {
     return v > 0.0f ? a : 0.0f;
 }
 
-inline int signOf(float v) { return v > 0.0f ? 1 : (v < 0.0f ? -1 : 0); }
+inline int signOf(float v) {
+    return v > 0.0f ? 1 : (v < 0.0f ? -1 : 0);
+}
 
 inline float edgeVelocity(const StepConstants& k, float q0, float sa, float sb, float availA, float availB) {
     float q = (q0 + k.waveAccelDt * (sa - sb)) * k.damping;
@@ -178,7 +184,8 @@ void CpuWaterSimulation::tangentialFlowOut(const StepConstants& k) {
     };
     for (int z = 0; z < H; ++z)
         for (int x = 0; x < W; ++x) {
-            const std::size_t i = static_cast<std::size_t>(z) * static_cast<std::size_t>(W) + static_cast<std::size_t>(x);
+            const std::size_t i =
+                static_cast<std::size_t>(z) * static_cast<std::size_t>(W) + static_cast<std::size_t>(x);
             const float nw = surfaceAt(x - 1, z - 1), n = surfaceAt(x, z - 1), ne = surfaceAt(x + 1, z - 1);
             const float w = surfaceAt(x - 1, z), e = surfaceAt(x + 1, z);
             const float sw = surfaceAt(x - 1, z + 1), s = surfaceAt(x, z + 1), se = surfaceAt(x + 1, z + 1);
@@ -194,7 +201,9 @@ void CpuWaterSimulation::tangentialFlowOut(const StepConstants& k) {
             const bool inside = tx >= 0 && tz >= 0 && tx < W && tz < H;
             if ((ox != 0 || oz != 0) && slope > 0.0f && (inside || k.openBorder != 0)) {
                 const float si = b[i] + hi_[i];
-                const std::size_t t = inside ? static_cast<std::size_t>(tz) * static_cast<std::size_t>(W) + static_cast<std::size_t>(tx) : i;
+                const std::size_t t =
+                    inside ? static_cast<std::size_t>(tz) * static_cast<std::size_t>(W) + static_cast<std::size_t>(tx)
+                           : i;
                 const float st = inside ? b[t] + hi_[t] : b[i];
                 const float fraction = std::min(k.maxFlowFraction, k.flowRateDt * slope);
                 const float a = fraction * availableWater(hi_[i], lo_[i]);
@@ -213,7 +222,8 @@ void CpuWaterSimulation::tangentialFlowGather() {
     auto inside = [&](int x, int z) { return x >= 0 && z >= 0 && x < W && z < H; };
     for (int z = 0; z < H; ++z)
         for (int x = 0; x < W; ++x) {
-            const std::size_t i = static_cast<std::size_t>(z) * static_cast<std::size_t>(W) + static_cast<std::size_t>(x);
+            const std::size_t i =
+                static_cast<std::size_t>(z) * static_cast<std::size_t>(W) + static_cast<std::size_t>(x);
             const int code = flowDirection_[i];
             float net = 0.0f, lost = 0.0f;
             if (code != 4 && flowAmount_[i] > 0.0f) {
@@ -225,7 +235,8 @@ void CpuWaterSimulation::tangentialFlowGather() {
                     if (ox == 0 && oz == 0) continue;
                     const int nx = x + ox, nz = z + oz;
                     if (!inside(nx, nz)) continue;
-                    const std::size_t j = static_cast<std::size_t>(nz) * static_cast<std::size_t>(W) + static_cast<std::size_t>(nx);
+                    const std::size_t j =
+                        static_cast<std::size_t>(nz) * static_cast<std::size_t>(W) + static_cast<std::size_t>(nx);
                     const int ncode = flowDirection_[j];
                     if (ncode != 4 && ncode % 3 - 1 == -ox && ncode / 3 - 1 == -oz) net = net + flowAmount_[j];
                 }
@@ -244,7 +255,8 @@ void CpuWaterSimulation::distributionVelocity(const StepConstants& k) {
     const float* b = terrain_.heights.data();
     for (int z = 0; z < H; ++z)
         for (int x = 0; x < W; ++x) {
-            const std::size_t i = static_cast<std::size_t>(z) * static_cast<std::size_t>(W) + static_cast<std::size_t>(x);
+            const std::size_t i =
+                static_cast<std::size_t>(z) * static_cast<std::size_t>(W) + static_cast<std::size_t>(x);
             const float si = b[i] + hi_[i];
             const float ai = availableWater(hi_[i], lo_[i]);
             if (x + 1 < W) {
@@ -265,7 +277,8 @@ void CpuWaterSimulation::distributionApply(const StepConstants& k) {
     const int W = width(), H = height();
     for (int z = 0; z < H; ++z)
         for (int x = 0; x < W; ++x) {
-            const std::size_t i = static_cast<std::size_t>(z) * static_cast<std::size_t>(W) + static_cast<std::size_t>(x);
+            const std::size_t i =
+                static_cast<std::size_t>(z) * static_cast<std::size_t>(W) + static_cast<std::size_t>(x);
             const float te = x + 1 < W ? qEast_[i] * k.dt : 0.0f;
             const float ts = z + 1 < H ? qSouth_[i] * k.dt : 0.0f;
             const float tw = x > 0 ? qEast_[i - 1] * k.dt : 0.0f;
@@ -285,7 +298,8 @@ void CpuWaterSimulation::smoothing(const StepConstants& k) {
     const float* b = terrain_.heights.data();
     for (int z = 0; z < H; ++z)
         for (int x = 0; x < W; ++x) {
-            const std::size_t i = static_cast<std::size_t>(z) * static_cast<std::size_t>(W) + static_cast<std::size_t>(x);
+            const std::size_t i =
+                static_cast<std::size_t>(z) * static_cast<std::size_t>(W) + static_cast<std::size_t>(x);
             const float si = b[i] + hi_[i];
             const float ai = availableWater(hi_[i], lo_[i]);
             float net = 0.0f;
@@ -296,7 +310,8 @@ void CpuWaterSimulation::smoothing(const StepConstants& k) {
                     if (dx == 0 && dz == 0) continue;
                     const int nx = x + dx;
                     if (nx < 0 || nx >= W) continue;
-                    const std::size_t j = static_cast<std::size_t>(nz) * static_cast<std::size_t>(W) + static_cast<std::size_t>(nx);
+                    const std::size_t j =
+                        static_cast<std::size_t>(nz) * static_cast<std::size_t>(W) + static_cast<std::size_t>(nx);
                     const float weight = k.smoothWeights[static_cast<std::size_t>(std::abs(dz) * 8 + std::abs(dx))];
                     const float sj = b[j] + hi_[j];
                     float t;

@@ -43,9 +43,10 @@ int currentGlVersion() {
 ComputeFunctions loadComputeFunctions() {
     const int version = currentGlVersion();
     if (version < 43)
-        throw gl::ContextError("prism water: the GPU simulation needs GL 4.3 compute shaders, but the current context is GL " +
-                               std::to_string(version / 10) + "." + std::to_string(version % 10) +
-                               "; create it with {.majorVersion = 4, .minorVersion = 3} or use the CPU simulation");
+        throw gl::ContextError(
+            "prism water: the GPU simulation needs GL 4.3 compute shaders, but the current context is GL " +
+            std::to_string(version / 10) + "." + std::to_string(version % 10) +
+            "; create it with {.majorVersion = 4, .minorVersion = 3} or use the CPU simulation");
     const GetProc getProc = currentGetProc();
     if (!getProc)
         throw gl::ContextError("prism water: no current OSMesa, EGL or GLFW context to load glDispatchCompute from");

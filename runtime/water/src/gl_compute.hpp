@@ -7,7 +7,7 @@
 
 namespace prism::water::detail {
 
-inline constexpr GLenum kShaderStorageBuffer = 0x90D2;      // GL_SHADER_STORAGE_BUFFER
+inline constexpr GLenum kShaderStorageBuffer = 0x90D2;       // GL_SHADER_STORAGE_BUFFER
 inline constexpr GLbitfield kShaderStorageBarrier = 0x2000;  // GL_SHADER_STORAGE_BARRIER_BIT
 inline constexpr GLbitfield kAllBarriers = 0xFFFFFFFFu;      // GL_ALL_BARRIER_BITS
 

@@ -19,16 +19,33 @@ namespace ws = prism::water_shaders;
 
 // Binding points of modules/water/water_grid.glsl.
 enum Binding : GLuint {
-    kTerrain = 0, kPermeability = 1, kWaterIn = 2, kWaterOut = 3, kVelocity = 4,
-    kFlow = 5, kLedgerCells = 6, kLedgerPartials = 7, kLedgerTotals = 8,
+    kTerrain = 0,
+    kPermeability = 1,
+    kWaterIn = 2,
+    kWaterOut = 3,
+    kVelocity = 4,
+    kFlow = 5,
+    kLedgerCells = 6,
+    kLedgerPartials = 7,
+    kLedgerTotals = 8,
 };
 
-enum Pass { kRain, kFlowOut, kFlowGather, kDistributeVelocity, kDistributeApply, kSmooth, kLedgerPartial, kLedgerTotal, kPassCount };
+enum Pass {
+    kRain,
+    kFlowOut,
+    kFlowGather,
+    kDistributeVelocity,
+    kDistributeApply,
+    kSmooth,
+    kLedgerPartial,
+    kLedgerTotal,
+    kPassCount
+};
 
 constexpr ws::ShaderId kPassShaders[kPassCount] = {
-    ws::ShaderId::water_rain_infiltrate, ws::ShaderId::water_flow_out,         ws::ShaderId::water_flow_gather,
+    ws::ShaderId::water_rain_infiltrate,     ws::ShaderId::water_flow_out,         ws::ShaderId::water_flow_gather,
     ws::ShaderId::water_distribute_velocity, ws::ShaderId::water_distribute_apply, ws::ShaderId::water_smooth,
-    ws::ShaderId::water_ledger_partial,  ws::ShaderId::water_ledger_total,
+    ws::ShaderId::water_ledger_partial,      ws::ShaderId::water_ledger_total,
 };
 
 template <class T>
@@ -87,7 +104,9 @@ struct GpuWaterSimulation::Impl {
     }
 };
 
-bool GpuWaterSimulation::isSupported() { return detail::currentGlVersion() >= 43; }
+bool GpuWaterSimulation::isSupported() {
+    return detail::currentGlVersion() >= 43;
+}
 
 GpuWaterSimulation::GpuWaterSimulation(HeightField terrain, std::vector<float> permeability, WaterParams params)
     : WaterSimulation(std::move(terrain), std::move(permeability), params), impl_(std::make_unique<Impl>()) {
@@ -120,11 +139,17 @@ GpuWaterSimulation::GpuWaterSimulation(HeightField terrain, std::vector<float> p
 
 GpuWaterSimulation::~GpuWaterSimulation() = default;
 
-std::size_t GpuWaterSimulation::programCount() const { return impl_->programs.size(); }
+std::size_t GpuWaterSimulation::programCount() const {
+    return impl_->programs.size();
+}
 
-unsigned GpuWaterSimulation::depthBuffer() const { return impl_->water[impl_->current]; }
+unsigned GpuWaterSimulation::depthBuffer() const {
+    return impl_->water[impl_->current];
+}
 
-void GpuWaterSimulation::finish() const { glFinish(); }
+void GpuWaterSimulation::finish() const {
+    glFinish();
+}
 
 void GpuWaterSimulation::resetState(std::span<const glm::vec2> pairs) {
     const std::size_t n = cellCount();

@@ -16,7 +16,9 @@
 namespace prism::water {
 namespace {
 
-std::string quoted(const std::filesystem::path& p) { return p.string(); }
+std::string quoted(const std::filesystem::path& p) {
+    return p.string();
+}
 
 struct FileCloser {
     void operator()(std::FILE* f) const {
@@ -45,7 +47,9 @@ std::uint32_t hash32(std::uint32_t v) {
     return v;
 }
 
-float smoothStep01(float t) { return t * t * (3.0f - 2.0f * t); }
+float smoothStep01(float t) {
+    return t * t * (3.0f - 2.0f * t);
+}
 
 }  // namespace
 
@@ -67,8 +71,7 @@ GreyImage readGreyPng(const std::filesystem::path& path) {
     std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
     if (!file) fail(path, std::filesystem::exists(path) ? "cannot be opened for reading" : "no such file");
     unsigned char signature[8] = {};
-    if (std::fread(signature, 1, 8, file.get()) != 8 || png_sig_cmp(signature, 0, 8) != 0)
-        fail(path, "not a PNG file");
+    if (std::fread(signature, 1, 8, file.get()) != 8 || png_sig_cmp(signature, 0, 8) != 0) fail(path, "not a PNG file");
 
     // libpng reports errors by longjmp: everything that changes after setjmp lives on
     // the heap behind a pointer fixed before it, and errors are rethrown as exceptions.
@@ -81,7 +84,8 @@ GreyImage readGreyPng(const std::filesystem::path& path) {
         int depth = 0, channels = 0;
     };
     const auto state = std::make_unique<ReadState>();
-    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &state->libpngError, pngErrorHandler, pngWarningHandler);
+    png_structp png =
+        png_create_read_struct(PNG_LIBPNG_VER_STRING, &state->libpngError, pngErrorHandler, pngWarningHandler);
     if (!png) fail(path, "libpng could not be initialised");
     png_infop info = png_create_info_struct(png);
     if (setjmp(png_jmpbuf(png))) {
@@ -96,10 +100,11 @@ GreyImage readGreyPng(const std::filesystem::path& path) {
     state->depth = png_get_bit_depth(png, info);
     const int colorType = png_get_color_type(png, info);
     if (colorType == PNG_COLOR_TYPE_PALETTE)
-        state->problem = "palette PNG; height and permeability maps must be greyscale (or RGB, red channel) with 8 or 16 bits";
+        state->problem =
+            "palette PNG; height and permeability maps must be greyscale (or RGB, red channel) with 8 or 16 bits";
     else if (state->depth != 8 && state->depth != 16)
-        state->problem = std::to_string(state->depth) +
-                         "-bit PNG; height and permeability maps must have 8 or 16 bits per sample";
+        state->problem =
+            std::to_string(state->depth) + "-bit PNG; height and permeability maps must have 8 or 16 bits per sample";
     if (!state->problem.empty()) {
         png_destroy_read_struct(&png, &info, nullptr);
         fail(path, state->problem);
@@ -126,7 +131,8 @@ GreyImage readGreyPng(const std::filesystem::path& path) {
     const std::size_t bytesPerSample = depth == 16 ? 2 : 1;
     for (png_uint_32 y = 0; y < h; ++y)
         for (png_uint_32 x = 0; x < w; ++x) {
-            const unsigned char* p = rows[y] + static_cast<std::size_t>(x) * static_cast<std::size_t>(channels) * bytesPerSample;
+            const unsigned char* p =
+                rows[y] + static_cast<std::size_t>(x) * static_cast<std::size_t>(channels) * bytesPerSample;
             image.values[static_cast<std::size_t>(y) * w + x] =
                 depth == 16 ? static_cast<std::uint16_t>(p[0] | (p[1] << 8)) : p[0];
         }
@@ -135,7 +141,8 @@ GreyImage readGreyPng(const std::filesystem::path& path) {
 
 void writeGreyPng(const std::filesystem::path& path, const GreyImage& image) {
     if (image.bitDepth != 8 && image.bitDepth != 16) fail(path, "writeGreyPng writes 8- or 16-bit images only");
-    if (image.width < 1 || image.height < 1 || image.values.size() != static_cast<std::size_t>(image.width) * image.height)
+    if (image.width < 1 || image.height < 1 ||
+        image.values.size() != static_cast<std::size_t>(image.width) * image.height)
         fail(path, "writeGreyPng: the image size does not match its samples");
     if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
     std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "wb"));
@@ -147,7 +154,8 @@ void writeGreyPng(const std::filesystem::path& path, const GreyImage& image) {
     const auto state = std::make_unique<WriteState>();
     state->row.resize(static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.bitDepth / 8));
     auto& row = state->row;
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &state->libpngError, pngErrorHandler, pngWarningHandler);
+    png_structp png =
+        png_create_write_struct(PNG_LIBPNG_VER_STRING, &state->libpngError, pngErrorHandler, pngWarningHandler);
     if (!png) fail(path, "libpng could not be initialised");
     png_infop info = png_create_info_struct(png);
     if (setjmp(png_jmpbuf(png))) {
@@ -176,7 +184,8 @@ void writeGreyPng(const std::filesystem::path& path, const GreyImage& image) {
 }
 
 HeightField loadHeightMap(const std::filesystem::path& path, const HeightMapOptions& o) {
-    if (!(o.cellSize > 0.0f) || !std::isfinite(o.cellSize) || !std::isfinite(o.heightScale) || !std::isfinite(o.baseHeight))
+    if (!(o.cellSize > 0.0f) || !std::isfinite(o.cellSize) || !std::isfinite(o.heightScale) ||
+        !std::isfinite(o.baseHeight))
         fail(path, "height-map options need a finite cell size > 0 and finite heights");
     const GreyImage img = readGreyPng(path);
     HeightField f;
@@ -191,8 +200,9 @@ HeightField loadHeightMap(const std::filesystem::path& path, const HeightMapOpti
 }
 
 float latticeNoise(int x, int y, int z, unsigned seed) {
-    std::uint32_t h = hash32(static_cast<std::uint32_t>(x) * 0x8da6b343U ^ hash32(static_cast<std::uint32_t>(y) * 0xd8163841U ^
-                                                                              hash32(static_cast<std::uint32_t>(z) * 0xcb1ab31fU ^ seed)));
+    std::uint32_t h = hash32(static_cast<std::uint32_t>(x) * 0x8da6b343U ^
+                             hash32(static_cast<std::uint32_t>(y) * 0xd8163841U ^
+                                    hash32(static_cast<std::uint32_t>(z) * 0xcb1ab31fU ^ seed)));
     return static_cast<float>(h >> 8) * (1.0f / 16777216.0f);
 }
 
@@ -204,7 +214,8 @@ float valueNoise3(float x, float y, float z, unsigned seed) {
     float c[2][2];
     for (int dz = 0; dz < 2; ++dz)
         for (int dy = 0; dy < 2; ++dy)
-            c[dz][dy] = lerp(latticeNoise(ix, iy + dy, iz + dz, seed), latticeNoise(ix + 1, iy + dy, iz + dz, seed), tx);
+            c[dz][dy] =
+                lerp(latticeNoise(ix, iy + dy, iz + dz, seed), latticeNoise(ix + 1, iy + dy, iz + dz, seed), tx);
     return lerp(lerp(c[0][0], c[0][1], ty), lerp(c[1][0], c[1][1], ty), tz);
 }
 
@@ -223,7 +234,8 @@ float fbm3(float x, float y, float z, unsigned seed, int octaves) {
 
 HeightField proceduralTerrain(const ProceduralTerrainOptions& o) {
     if (o.width < 1 || o.height < 1 || !(o.cellSize > 0.0f) || !std::isfinite(o.relief) || o.pits < 0)
-        throw std::invalid_argument("proceduralTerrain: needs at least 1x1 cells, a cell size > 0, a finite relief and pits >= 0");
+        throw std::invalid_argument(
+            "proceduralTerrain: needs at least 1x1 cells, a cell size > 0, a finite relief and pits >= 0");
     HeightField f;
     f.width = o.width;
     f.height = o.height;
@@ -235,7 +247,8 @@ HeightField proceduralTerrain(const ProceduralTerrainOptions& o) {
     std::vector<Pit> pits;
     for (int k = 0; k < o.pits; ++k) {
         const auto r = [&](int channel) { return latticeNoise(k, channel, 77, o.seed); };
-        pits.push_back({0.15f + 0.7f * r(0), 0.15f + 0.7f * r(1), 0.05f + 0.08f * r(2), (0.10f + 0.15f * r(3)) * o.relief});
+        pits.push_back(
+            {0.15f + 0.7f * r(0), 0.15f + 0.7f * r(1), 0.05f + 0.08f * r(2), (0.10f + 0.15f * r(3)) * o.relief});
     }
     const float aspect = static_cast<float>(o.height) / static_cast<float>(o.width);
     for (int z = 0; z < o.height; ++z)

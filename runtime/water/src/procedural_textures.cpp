@@ -12,14 +12,18 @@ namespace {
 
 constexpr float kPi = 3.14159265358979f;
 
-std::uint8_t toByte(float v) { return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
+std::uint8_t toByte(float v) {
+    return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+}
 
 float smoothstep(float a, float b, float x) {
     const float t = std::clamp((x - a) / (b - a), 0.0f, 1.0f);
     return t * t * (3.0f - 2.0f * t);
 }
 
-glm::vec3 mix(const glm::vec3& a, const glm::vec3& b, float t) { return a + (b - a) * t; }
+glm::vec3 mix(const glm::vec3& a, const glm::vec3& b, float t) {
+    return a + (b - a) * t;
+}
 
 }  // namespace
 
@@ -28,12 +32,24 @@ glm::vec3 skyDirection(int face, int s, int t, int size) {
     const float tc = 2.0f * (static_cast<float>(t) + 0.5f) / static_cast<float>(size) - 1.0f;
     glm::vec3 d;
     switch (face) {
-    case 0: d = {1.0f, -tc, -sc}; break;
-    case 1: d = {-1.0f, -tc, sc}; break;
-    case 2: d = {sc, 1.0f, tc}; break;
-    case 3: d = {sc, -1.0f, -tc}; break;
-    case 4: d = {sc, -tc, 1.0f}; break;
-    default: d = {-sc, -tc, -1.0f}; break;
+        case 0:
+            d = {1.0f, -tc, -sc};
+            break;
+        case 1:
+            d = {-1.0f, -tc, sc};
+            break;
+        case 2:
+            d = {sc, 1.0f, tc};
+            break;
+        case 3:
+            d = {sc, -1.0f, -tc};
+            break;
+        case 4:
+            d = {sc, -tc, 1.0f};
+            break;
+        default:
+            d = {-sc, -tc, -1.0f};
+            break;
     }
     return d / std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
 }
@@ -49,7 +65,8 @@ glm::vec3 skyRadiance(const glm::vec3& d, const SkyOptions& o) {
     const float cover = smoothstep(1.0f - o.cloudCover - 0.05f, 1.0f - o.cloudCover + 0.25f, n);
     // Darker, heavier cloud bases and brighter tops, all fading into haze at the horizon.
     const float shade = fbm3(cx * 2.0f + 4.0f, cz * 2.0f, 2.1f, o.seed + 17U, 4);
-    const glm::vec3 cloud = mix(glm::vec3(0.47f, 0.49f, 0.52f), glm::vec3(0.86f, 0.87f, 0.88f), smoothstep(0.3f, 0.75f, shade));
+    const glm::vec3 cloud =
+        mix(glm::vec3(0.47f, 0.49f, 0.52f), glm::vec3(0.86f, 0.87f, 0.88f), smoothstep(0.3f, 0.75f, shade));
     const float haze = smoothstep(0.0f, 0.12f, elevation);
     return mix(sky, cloud, cover * (0.35f + 0.65f * haze));
 }
@@ -75,7 +92,8 @@ CubeFaces proceduralSky(const SkyOptions& o) {
 }
 
 RippleFrames proceduralRipples(const RippleOptions& o) {
-    if (o.size < 4 || o.size > 1024 || o.drops < 0) throw std::invalid_argument("proceduralRipples: size 4..1024, drops >= 0");
+    if (o.size < 4 || o.size > 1024 || o.drops < 0)
+        throw std::invalid_argument("proceduralRipples: size 4..1024, drops >= 0");
     RippleFrames out;
     out.size = o.size;
     const int n = o.size;
@@ -115,7 +133,9 @@ RippleFrames proceduralRipples(const RippleOptions& o) {
             }
         for (int y = 0; y < n; ++y)
             for (int x = 0; x < n; ++x) {
-                auto at = [&](int xx, int yy) { return height[static_cast<std::size_t>((yy + n) % n) * n + static_cast<std::size_t>((xx + n) % n)]; };
+                auto at = [&](int xx, int yy) {
+                    return height[static_cast<std::size_t>((yy + n) % n) * n + static_cast<std::size_t>((xx + n) % n)];
+                };
                 const float gx = (at(x + 1, y) - at(x - 1, y)) * 0.5f;
                 const float gy = (at(x, y + 1) - at(x, y - 1)) * 0.5f;
                 glm::vec3 normal(-gx * 2.0f, -gy * 2.0f, 1.0f);

@@ -27,7 +27,9 @@ std::string lower(std::string_view s) {
 
 }  // namespace
 
-std::span<const RainClassInfo> rainClassTable() { return kTable; }
+std::span<const RainClassInfo> rainClassTable() {
+    return kTable;
+}
 
 const RainClassInfo& rainClassInfo(RainClass rainClass) {
     for (const auto& row : kTable)
@@ -35,7 +37,9 @@ const RainClassInfo& rainClassInfo(RainClass rainClass) {
     throw std::invalid_argument("prism::water: unknown rain class");
 }
 
-double rainRateMmPerHour(RainClass rainClass) { return rainClassInfo(rainClass).intensityCmPerHour * 10.0; }
+double rainRateMmPerHour(RainClass rainClass) {
+    return rainClassInfo(rainClass).intensityCmPerHour * 10.0;
+}
 
 std::optional<RainClass> parseRainClass(std::string_view name) {
     const std::string l = lower(name);

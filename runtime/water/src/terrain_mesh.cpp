@@ -7,7 +7,9 @@
 namespace prism::water {
 namespace {
 
-glm::vec3 mix(const glm::vec3& a, const glm::vec3& b, float t) { return a + (b - a) * std::clamp(t, 0.0f, 1.0f); }
+glm::vec3 mix(const glm::vec3& a, const glm::vec3& b, float t) {
+    return a + (b - a) * std::clamp(t, 0.0f, 1.0f);
+}
 
 float smoothstep(float a, float b, float x) {
     const float t = std::clamp((x - a) / (b - a), 0.0f, 1.0f);
@@ -52,7 +54,8 @@ TerrainMesh makeTerrainMesh(const HeightField& f, const std::vector<float>& perm
             const float dz = static_cast<float>(std::max(1, zd - zu)) * f.cellSize;
             glm::vec3 normal(-(f.at(xr, z) - f.at(xl, z)) / dx, 1.0f, -(f.at(x, zd) - f.at(x, zu)) / dz);
             normal /= std::sqrt(normal.x * normal.x + normal.y * normal.y + normal.z * normal.z);
-            t.mesh.positions[i] = {static_cast<float>(x) * f.cellSize, f.heights[i], static_cast<float>(z) * f.cellSize};
+            t.mesh.positions[i] = {static_cast<float>(x) * f.cellSize, f.heights[i],
+                                   static_cast<float>(z) * f.cellSize};
             t.mesh.normals[i] = normal;
             t.mesh.uvs[i] = {(static_cast<float>(x) + 0.5f) / static_cast<float>(f.width),
                              (static_cast<float>(z) + 0.5f) / static_cast<float>(f.height)};

@@ -76,7 +76,9 @@ float meanHeight(const HeightField& t) {
     return static_cast<float>(s / static_cast<double>(t.heights.size()));
 }
 
-float extent(const HeightField& t) { return std::max({t.sizeX(), t.sizeZ(), t.cellSize}); }
+float extent(const HeightField& t) {
+    return std::max({t.sizeX(), t.sizeZ(), t.cellSize});
+}
 
 }  // namespace
 
@@ -140,7 +142,9 @@ struct WaterSceneRenderer::Impl {
         GLuint textures[] = {skyTexture, depthTexture, heightTexture, rippleTexture};
         for (GLuint t : textures)
             if (t) glDeleteTextures(1, &t);
-        GLuint buffers[] = {terrainBuffers[0], terrainBuffers[1], terrainBuffers[2], terrainBuffers[3], terrainBuffers[4], skyVbo, waterIndices};
+        GLuint buffers[] = {terrainBuffers[0], terrainBuffers[1], terrainBuffers[2],
+                            terrainBuffers[3], terrainBuffers[4], skyVbo,
+                            waterIndices};
         for (GLuint b : buffers)
             if (b) glDeleteBuffers(1, &b);
         GLuint arrays[] = {terrainVao, skyVao, waterVao};
@@ -173,7 +177,8 @@ struct WaterSceneRenderer::Impl {
         const TerrainMesh t = makeTerrainMesh(scene.terrain(), scene.permeability());
         terrainVao = newVertexArray();
         glBindVertexArray(terrainVao);
-        const auto attribute = [&](int slot, std::string_view name, int components, const void* data, std::size_t bytes) {
+        const auto attribute = [&](int slot, std::string_view name, int components, const void* data,
+                                   std::size_t bytes) {
             terrainBuffers[slot] = newBuffer(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(bytes), data);
             const GLuint loc = static_cast<GLuint>(attributeLocation(name));
             glEnableVertexAttribArray(loc);
@@ -183,9 +188,9 @@ struct WaterSceneRenderer::Impl {
         attribute(1, "a_normal", 3, t.mesh.normals.data(), t.mesh.normals.size() * sizeof(glm::vec3));
         attribute(2, "a_uv", 2, t.mesh.uvs.data(), t.mesh.uvs.size() * sizeof(glm::vec2));
         attribute(3, "a_color", 4, t.colors.data(), t.colors.size() * sizeof(glm::vec4));
-        terrainBuffers[4] = newBuffer(GL_ELEMENT_ARRAY_BUFFER,
-                                      static_cast<GLsizeiptr>(t.mesh.indices.size() * sizeof(std::uint32_t)),
-                                      t.mesh.indices.data());
+        terrainBuffers[4] =
+            newBuffer(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(t.mesh.indices.size() * sizeof(std::uint32_t)),
+                      t.mesh.indices.data());
         terrainIndexCount = static_cast<GLsizei>(t.mesh.indices.size());
         glBindVertexArray(0);
     }
@@ -195,8 +200,8 @@ struct WaterSceneRenderer::Impl {
         skyTexture = newTexture();
         glBindTexture(GL_TEXTURE_CUBE_MAP, skyTexture);
         for (int f = 0; f < 6; ++f)
-            glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + static_cast<GLenum>(f), 0, GL_RGBA8, faces.size, faces.size, 0,
-                         GL_RGBA, GL_UNSIGNED_BYTE, faces.rgba[static_cast<std::size_t>(f)].data());
+            glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + static_cast<GLenum>(f), 0, GL_RGBA8, faces.size, faces.size,
+                         0, GL_RGBA, GL_UNSIGNED_BYTE, faces.rgba[static_cast<std::size_t>(f)].data());
         glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
         glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
@@ -206,7 +211,8 @@ struct WaterSceneRenderer::Impl {
         // A unit cube as 12 triangles (36 corners); only positions.
         const float p[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
                                {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
-        const int faceCorners[6][4] = {{1, 5, 6, 2}, {4, 0, 3, 7}, {3, 2, 6, 7}, {4, 5, 1, 0}, {5, 4, 7, 6}, {0, 1, 2, 3}};
+        const int faceCorners[6][4] = {{1, 5, 6, 2}, {4, 0, 3, 7}, {3, 2, 6, 7},
+                                       {4, 5, 1, 0}, {5, 4, 7, 6}, {0, 1, 2, 3}};
         std::vector<float> v;
         for (const auto& q : faceCorners)
             for (int k : {0, 1, 2, 0, 2, 3})
@@ -235,7 +241,8 @@ struct WaterSceneRenderer::Impl {
         const std::vector<std::uint32_t> idx = gridIndices(t.width, t.height);
         waterVao = newVertexArray();  // no attributes: vertices come from gl_VertexID
         glBindVertexArray(waterVao);
-        waterIndices = newBuffer(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(std::max<std::size_t>(1, idx.size()) * sizeof(std::uint32_t)),
+        waterIndices = newBuffer(GL_ELEMENT_ARRAY_BUFFER,
+                                 static_cast<GLsizeiptr>(std::max<std::size_t>(1, idx.size()) * sizeof(std::uint32_t)),
                                  idx.empty() ? nullptr : idx.data());
         waterIndexCount = static_cast<GLsizei>(idx.size());
         glBindVertexArray(0);
@@ -253,8 +260,8 @@ struct WaterSceneRenderer::Impl {
         const RippleFrames r = proceduralRipples({});
         rippleTexture = newTexture();
         glBindTexture(GL_TEXTURE_2D_ARRAY, rippleTexture);
-        glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA8, r.size, r.size, RippleFrames::kFrames, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-                     r.rgba.data());
+        glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA8, r.size, r.size, RippleFrames::kFrames, 0, GL_RGBA,
+                     GL_UNSIGNED_BYTE, r.rgba.data());
         glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
         glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_REPEAT);
@@ -372,7 +379,9 @@ WaterSceneRenderer::WaterSceneRenderer(const WaterScene& scene) : impl_(std::mak
 
 WaterSceneRenderer::~WaterSceneRenderer() = default;
 
-void WaterSceneRenderer::draw(const Camera& camera, int width, int height) { impl_->draw(camera, width, height); }
+void WaterSceneRenderer::draw(const Camera& camera, int width, int height) {
+    impl_->draw(camera, width, height);
+}
 
 Image8 WaterSceneRenderer::renderImage(const Camera& camera, int width, int height) {
     gl::Framebuffer fb(width, height);
@@ -389,6 +398,8 @@ SceneRenderStats WaterSceneRenderer::stats() const {
     return s;
 }
 
-ProgramCache& WaterSceneRenderer::programCache() { return impl_->cache; }
+ProgramCache& WaterSceneRenderer::programCache() {
+    return impl_->cache;
+}
 
 }  // namespace prism::water

@@ -10,9 +10,13 @@
 namespace prism::water {
 namespace {
 
-[[noreturn]] void bad(const std::string& what) { throw std::invalid_argument("WaterParams: " + what); }
+[[noreturn]] void bad(const std::string& what) {
+    throw std::invalid_argument("WaterParams: " + what);
+}
 
-bool finite(double v) { return std::isfinite(v); }
+bool finite(double v) {
+    return std::isfinite(v);
+}
 
 }  // namespace
 
@@ -20,7 +24,8 @@ void validate(const WaterParams& p) {
     if (!(p.waveSpeed > 0.0f) || !finite(p.waveSpeed)) bad("waveSpeed must be a finite number > 0 (m/s)");
     if (!(p.courantNumber > 0.0f) || p.courantNumber > 0.70710678f)
         bad("courantNumber must lie in (0, 1/sqrt(2) = 0.7071]: the height-field distribution is unstable above "
-            "(got " + std::to_string(p.courantNumber) + ")");
+            "(got " +
+            std::to_string(p.courantNumber) + ")");
     if (!(p.dampingPerSecond >= 0.0f) || !finite(p.dampingPerSecond)) bad("dampingPerSecond must be >= 0");
     if (!(p.epsilon >= 0.0f) || !finite(p.epsilon)) bad("epsilon must be >= 0 (m)");
     if (!(p.flowRate >= 0.0f) || !finite(p.flowRate)) bad("flowRate must be >= 0 (1/s)");
@@ -40,15 +45,16 @@ double maxStableDt(const WaterParams& p, float cellSize) {
 
 SubstepPlan planSubsteps(double dt, const WaterParams& p, float cellSize) {
     if (!(dt >= 0.0) || !finite(dt))
-        throw std::invalid_argument("water step: dt must be a finite number of seconds >= 0 (got " + std::to_string(dt) + ")");
+        throw std::invalid_argument("water step: dt must be a finite number of seconds >= 0 (got " +
+                                    std::to_string(dt) + ")");
     const double dtMax = maxStableDt(p, cellSize);
     if (dt == 0.0) return {};
     const double n = std::ceil(dt / dtMax);
     if (n > static_cast<double>(p.maxSubsteps))
-        throw std::invalid_argument("water step: dt = " + std::to_string(dt) + " s needs " + std::to_string(n) +
-                                    " substeps of at most " + std::to_string(dtMax) +
-                                    " s (c dt / h <= courantNumber), more than maxSubsteps = " +
-                                    std::to_string(p.maxSubsteps));
+        throw std::invalid_argument(
+            "water step: dt = " + std::to_string(dt) + " s needs " + std::to_string(n) + " substeps of at most " +
+            std::to_string(dtMax) +
+            " s (c dt / h <= courantNumber), more than maxSubsteps = " + std::to_string(p.maxSubsteps));
     return {static_cast<long>(n), dt / n};
 }
 

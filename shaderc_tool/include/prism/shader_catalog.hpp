@@ -31,10 +31,14 @@ enum class Stage : std::uint8_t { Vertex, Geometry, Fragment, Compute };
 
 constexpr std::string_view stageName(Stage s) {
     switch (s) {
-    case Stage::Vertex: return "vert";
-    case Stage::Geometry: return "geom";
-    case Stage::Fragment: return "frag";
-    case Stage::Compute: return "comp";
+        case Stage::Vertex:
+            return "vert";
+        case Stage::Geometry:
+            return "geom";
+        case Stage::Fragment:
+            return "frag";
+        case Stage::Compute:
+            return "comp";
     }
     return "?";
 }
@@ -82,9 +86,9 @@ struct VariantAxis {
 
 // One validated combination of axis values.
 struct Variant {
-    std::string_view name;               // e.g. "FOG=1,DIRECTIONAL_LIGHTS=4" or "default"
-    std::span<const Define> defines;     // one per axis, in axis order
-    std::span<const StageSource> stages; // in pipeline order
+    std::string_view name;                // e.g. "FOG=1,DIRECTIONAL_LIGHTS=4" or "default"
+    std::span<const Define> defines;      // one per axis, in axis order
+    std::span<const StageSource> stages;  // in pipeline order
     std::span<const Attribute> attributes;
     std::span<const Uniform> uniforms;
 };
@@ -113,7 +117,7 @@ struct Catalog {
     std::span<const Module> modules;
     std::span<const Attribute> contractAttributes;  // everything the runtime supplies
     std::span<const Uniform> contractUniforms;
-    std::string_view versionDirective;               // e.g. "#version 330 core"
+    std::string_view versionDirective;  // e.g. "#version 330 core"
 };
 
 inline std::string joinChunks(std::span<const std::string_view> chunks) {
@@ -138,12 +142,20 @@ constexpr const Module* findModule(const Catalog& c, std::string_view name) {
 }
 
 namespace detail {
-inline std::string_view wantedName(const Define& d) { return d.name; }
-inline std::string_view wantedValue(const Define& d) { return d.value; }
+inline std::string_view wantedName(const Define& d) {
+    return d.name;
+}
+inline std::string_view wantedValue(const Define& d) {
+    return d.value;
+}
 template <class Name, class Value>
-std::string_view wantedName(const std::pair<Name, Value>& p) { return p.first; }
+std::string_view wantedName(const std::pair<Name, Value>& p) {
+    return p.first;
+}
 template <class Name, class Value>
-std::string_view wantedValue(const std::pair<Name, Value>& p) { return p.second; }
+std::string_view wantedValue(const std::pair<Name, Value>& p) {
+    return p.second;
+}
 }  // namespace detail
 
 // The variant whose axis values equal `wanted` (Defines, or pairs of strings); axes not

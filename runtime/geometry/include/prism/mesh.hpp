@@ -30,9 +30,9 @@ namespace prism::geometry {
 
 struct Mesh {
     std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals;         // empty, or one unit normal per position
-    std::vector<glm::vec2> uvs;             // empty, or one texture coordinate per position
-    std::vector<std::uint32_t> indices;     // triangle list, counter-clockwise front faces
+    std::vector<glm::vec3> normals;      // empty, or one unit normal per position
+    std::vector<glm::vec2> uvs;          // empty, or one texture coordinate per position
+    std::vector<std::uint32_t> indices;  // triangle list, counter-clockwise front faces
 };
 
 // Axis-aligned box. An empty box (no finite position) has min > max.
@@ -45,8 +45,12 @@ struct Bounds {
     glm::vec3 size() const { return isEmpty() ? glm::vec3(0.0f) : max - min; }
 };
 
-inline std::size_t vertexCount(const Mesh& mesh) { return mesh.positions.size(); }
-inline std::size_t triangleCount(const Mesh& mesh) { return mesh.indices.size() / 3; }
+inline std::size_t vertexCount(const Mesh& mesh) {
+    return mesh.positions.size();
+}
+inline std::size_t triangleCount(const Mesh& mesh) {
+    return mesh.indices.size() / 3;
+}
 
 // Bounds of all finite positions (NaN/Inf positions are skipped).
 Bounds computeBounds(const Mesh& mesh);

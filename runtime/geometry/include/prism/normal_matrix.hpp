@@ -50,7 +50,9 @@ NormalMatrix computeNormalMatrix(const glm::mat4& world);
 NormalMatrix computeNormalMatrix(const glm::mat3& linearPart);
 
 // Just the matrix.
-inline glm::mat3 normalMatrix(const glm::mat4& world) { return computeNormalMatrix(world).matrix; }
+inline glm::mat3 normalMatrix(const glm::mat4& world) {
+    return computeNormalMatrix(world).matrix;
+}
 
 // normalMatrix * normal, normalised (in double); `fallback` when the result has no
 // direction: zero, non-finite, or cancelled to below 1e-6 of the sum of its parts'

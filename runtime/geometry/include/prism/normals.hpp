@@ -56,8 +56,8 @@ struct VertexNormalOptions {
 };
 
 struct NormalStats {
-    std::size_t degenerateTriangles = 0;   // triangles that contributed nothing
-    std::size_t fallbackVertices = 0;      // vertices that went through the fallback chain
+    std::size_t degenerateTriangles = 0;  // triangles that contributed nothing
+    std::size_t fallbackVertices = 0;     // vertices that went through the fallback chain
 };
 
 // Unit vector in the direction of v, computed in double; `fallback` when v is zero or

@@ -41,13 +41,13 @@ struct ObjLoadOptions {
 };
 
 class ObjLoadError : public std::runtime_error {
-public:
+  public:
     ObjLoadError(std::filesystem::path file, std::size_t line, const std::string& message);
 
     const std::filesystem::path& file() const { return file_; }
     std::size_t line() const { return line_; }  // 1-based; 0 when not about one line
 
-private:
+  private:
     std::filesystem::path file_;
     std::size_t line_;
 };

@@ -46,7 +46,7 @@
 namespace prism::gl {
 
 class CompositionError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 

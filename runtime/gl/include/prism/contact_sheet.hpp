@@ -28,8 +28,7 @@ int textWidth(std::string_view text, int scale = 1);
 int textHeight(std::string_view text, int scale = 1);
 
 // Draws `text` with its top-left corner at (x, y); each font pixel becomes scale x scale.
-void drawText(Image8& image, int x, int y, std::string_view text, int scale = 1,
-              Rgba8 colour = {255, 255, 255, 255});
+void drawText(Image8& image, int x, int y, std::string_view text, int scale = 1, Rgba8 colour = {255, 255, 255, 255});
 
 struct ContactSheetStyle {
     Rgba8 background{24, 24, 24, 255};

@@ -26,7 +26,7 @@ namespace prism::gl {
 enum class ColorFormat { Rgba8, Rgba32F };
 
 class Framebuffer {
-public:
+  public:
     Framebuffer(int width, int height, ColorFormat format = ColorFormat::Rgba8);
     ~Framebuffer();
     Framebuffer(Framebuffer&& other) noexcept;
@@ -53,7 +53,7 @@ public:
     Image8 readImage8() const;
     ImageF readImageF() const;
 
-private:
+  private:
     void release() noexcept;
 
     int width_ = 0, height_ = 0;

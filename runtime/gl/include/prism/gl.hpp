@@ -22,7 +22,7 @@
 namespace prism::gl {
 
 class GlError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 

@@ -37,7 +37,7 @@ namespace prism::gl {
 enum class Backend { Egl, OsMesa, Glfw };
 
 class ContextError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 
@@ -54,9 +54,9 @@ bool isBackendCompiledIn(Backend backend);
 struct ContextOptions {
     int majorVersion = 3;  // core profile; at least 3.3 (the loader's API)
     int minorVersion = 3;
-    int width = 64;        // GLFW window / OSMesa default framebuffer size
+    int width = 64;  // GLFW window / OSMesa default framebuffer size
     int height = 64;
-    bool debug = false;    // request a debug context
+    bool debug = false;                 // request a debug context
     std::string windowTitle = "Prism";  // GLFW only
     bool windowVisible = true;          // GLFW only
     bool vsync = true;                  // GLFW only
@@ -71,7 +71,7 @@ struct ContextInfo {
 };
 
 class Context {
-public:
+  public:
     virtual ~Context() = default;
     Context(const Context&) = delete;
     Context& operator=(const Context&) = delete;
@@ -93,7 +93,7 @@ public:
     virtual int drawableWidth() const = 0;
     virtual int drawableHeight() const = 0;
 
-protected:
+  protected:
     Context() = default;
     ContextInfo info_;
     friend std::unique_ptr<Context> createContext(Backend, const ContextOptions&);

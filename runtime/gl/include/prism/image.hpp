@@ -46,7 +46,8 @@ struct BasicImage {
             throw std::invalid_argument("prism::Image: negative size " + std::to_string(w) + "x" + std::to_string(h));
         data.resize(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * kChannels);
         for (std::size_t i = 0; i < data.size(); i += kChannels)
-            for (int c = 0; c < kChannels; ++c) data[i + static_cast<std::size_t>(c)] = fill[static_cast<std::size_t>(c)];
+            for (int c = 0; c < kChannels; ++c)
+                data[i + static_cast<std::size_t>(c)] = fill[static_cast<std::size_t>(c)];
     }
 
     std::size_t pixelCount() const { return static_cast<std::size_t>(width) * static_cast<std::size_t>(height); }
@@ -55,7 +56,8 @@ struct BasicImage {
 
     // Index of channel 0 of pixel (x, y) in `data`; no bounds check.
     std::size_t offset(int x, int y) const {
-        return (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) * kChannels;
+        return (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) *
+               kChannels;
     }
 
     Pixel at(int x, int y) const {
@@ -72,11 +74,12 @@ struct BasicImage {
 
     friend bool operator==(const BasicImage&, const BasicImage&) = default;
 
-private:
+  private:
     void check(int x, int y) const {
         if (!contains(x, y))
             throw std::out_of_range("prism::Image: pixel (" + std::to_string(x) + ", " + std::to_string(y) +
-                                    ") is outside the " + std::to_string(width) + "x" + std::to_string(height) + " image");
+                                    ") is outside the " + std::to_string(width) + "x" + std::to_string(height) +
+                                    " image");
     }
 };
 
@@ -98,8 +101,9 @@ BasicImage<T> flippedVertically(const BasicImage<T>& image) {
     BasicImage<T> out = image;
     const std::size_t row = static_cast<std::size_t>(image.width) * BasicImage<T>::kChannels;
     for (int y = 0; y < image.height; ++y)
-        std::copy_n(image.data.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(y) * row), row,
-                    out.data.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(image.height - 1 - y) * row));
+        std::copy_n(
+            image.data.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(y) * row), row,
+            out.data.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(image.height - 1 - y) * row));
     return out;
 }
 

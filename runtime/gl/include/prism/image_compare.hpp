@@ -28,23 +28,23 @@
 namespace prism {
 
 struct Thresholds {
-    int maxChannelDiff = 3;      // per channel, 8-bit units; a pixel above this is "over"
-    double maxShareOver = 0.001; // allowed share (0..1) of over pixels
-    double maxMean = 0.5;        // allowed mean absolute error, 8-bit units
+    int maxChannelDiff = 3;       // per channel, 8-bit units; a pixel above this is "over"
+    double maxShareOver = 0.001;  // allowed share (0..1) of over pixels
+    double maxMean = 0.5;         // allowed mean absolute error, 8-bit units
 };
 
 struct ImageComparison {
     bool sizeMatches = false;
-    std::string sizeMessage;     // e.g. "size differs: actual 64x64, expected 64x32"; empty when sizes match
-    int width = 0;               // of the compared area (= both sizes when they match)
+    std::string sizeMessage;  // e.g. "size differs: actual 64x64, expected 64x32"; empty when sizes match
+    int width = 0;            // of the compared area (= both sizes when they match)
     int height = 0;
-    int maxChannelDiff = 0;      // largest |actual - expected| over all channels and pixels
-    std::size_t pixelsOver = 0;  // pixels whose max channel diff exceeds `channelThreshold`
-    double shareOver = 0.0;      // pixelsOver / pixel count (0 for empty images)
-    int channelThreshold = 0;    // the threshold pixelsOver was counted with
-    double meanAbsError = 0.0;   // mean of |d| over all channels of all pixels, 8-bit units
+    int maxChannelDiff = 0;                           // largest |actual - expected| over all channels and pixels
+    std::size_t pixelsOver = 0;                       // pixels whose max channel diff exceeds `channelThreshold`
+    double shareOver = 0.0;                           // pixelsOver / pixel count (0 for empty images)
+    int channelThreshold = 0;                         // the threshold pixelsOver was counted with
+    double meanAbsError = 0.0;                        // mean of |d| over all channels of all pixels, 8-bit units
     std::array<std::size_t, 256> maxDiffHistogram{};  // pixels per per-pixel max channel diff
-    Image8 diff;                 // |d| * 8 clamped per RGB channel (alpha diff folded in), alpha 255
+    Image8 diff;  // |d| * 8 clamped per RGB channel (alpha diff folded in), alpha 255
 
     // Pixels whose max channel diff exceeds `threshold`, from the histogram.
     std::size_t pixelsAbove(int threshold) const;

@@ -19,7 +19,7 @@
 namespace prism {
 
 class PngError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 

@@ -67,16 +67,16 @@ struct AttributeBinding {
 };
 
 struct UniformDecl {
-    std::string name;            // as reflected: "u_color", "u_lights" or "u_lights[0]"
-    std::uint32_t glType = 0;    // GL_FLOAT_VEC3 etc.; 0 = unknown (no type check)
+    std::string name;          // as reflected: "u_color", "u_lights" or "u_lights[0]"
+    std::uint32_t glType = 0;  // GL_FLOAT_VEC3 etc.; 0 = unknown (no type check)
     int arraySize = 1;
 };
 
 // Everything needed to build a Program without a catalogue variant.
 struct ProgramSources {
-    std::string label;                               // names the program in errors and warnings
-    std::vector<StageText> stages;                   // in pipeline order
-    std::vector<AttributeBinding> attributes;        // bound before linking
+    std::string label;                                 // names the program in errors and warnings
+    std::vector<StageText> stages;                     // in pipeline order
+    std::vector<AttributeBinding> attributes;          // bound before linking
     std::optional<std::vector<UniformDecl>> uniforms;  // reflection; nullopt = ask the driver
 };
 
@@ -86,12 +86,12 @@ ProgramSources sourcesFromVariant(const catalog::Variant& variant,
 
 // Thrown when a stage fails to compile or the program fails to link.
 class ShaderBuildError : public std::runtime_error {
-public:
+  public:
     ShaderBuildError(const std::string& message, std::string driverLog)
         : std::runtime_error(message), driverLog_(std::move(driverLog)) {}
     const std::string& driverLog() const { return driverLog_; }  // untranslated
 
-private:
+  private:
     std::string driverLog_;
 };
 
@@ -102,7 +102,7 @@ using WarningHandler = std::function<void(std::string_view message)>;
 void setDefaultWarningHandler(WarningHandler handler);
 
 class Program {
-public:
+  public:
     Program(const catalog::Variant& variant, std::span<const catalog::Attribute> contractAttributes,
             std::string label = {});
     explicit Program(ProgramSources sources);
@@ -121,7 +121,7 @@ public:
 
     void set(std::string_view name, float value);
     void set(std::string_view name, double value) { set(name, static_cast<float>(value)); }
-    void set(std::string_view name, int value);        // also bool and sampler uniforms
+    void set(std::string_view name, int value);  // also bool and sampler uniforms
     void set(std::string_view name, unsigned value);
     void set(std::string_view name, bool value);
     void set(std::string_view name, const glm::vec2& value);
@@ -147,7 +147,7 @@ public:
     // Names set() was called with using a C++ type that does not fit, each once.
     const std::vector<std::string>& typeMismatchReports() const { return mismatchReports_; }
 
-private:
+  private:
     struct UniformSlot {
         int location = -1;
         std::uint32_t glType = 0;  // 0: unknown, no type check

@@ -29,6 +29,7 @@ struct FeatureSet {
 
 FeatureSet featuresOf(const Lights& lights, bool fog);
 
-VariantValues variantFor(const catalog::Shader& shader, const FeatureSet& features, const VariantValues& requested = {});
+VariantValues variantFor(const catalog::Shader& shader, const FeatureSet& features,
+                         const VariantValues& requested = {});
 
 }  // namespace prism

@@ -16,7 +16,7 @@
 namespace prism {
 
 class GpuMesh {
-public:
+  public:
     GpuMesh(const geometry::Mesh& mesh, std::span<const catalog::Attribute> contract);
     ~GpuMesh();
     GpuMesh(GpuMesh&& other) noexcept;
@@ -27,7 +27,7 @@ public:
     void draw() const;
     std::size_t triangleCount() const { return indexCount_ / 3; }
 
-private:
+  private:
     void release();
     unsigned vao_ = 0, positions_ = 0, normals_ = 0, indices_ = 0;
     std::size_t indexCount_ = 0;

@@ -26,12 +26,12 @@ namespace prism {
 using VariantValues = std::vector<std::pair<std::string, std::string>>;
 
 class UnknownShaderError : public std::invalid_argument {
-public:
+  public:
     using std::invalid_argument::invalid_argument;
 };
 
 class ProgramCache {
-public:
+  public:
     explicit ProgramCache(const catalog::Catalog& catalog) : catalog_(catalog) {}
 
     gl::Program& get(std::string_view shader, const VariantValues& variant = {});
@@ -42,7 +42,7 @@ public:
     const catalog::Variant& variantOf(std::string_view shader, const VariantValues& variant) const;
     std::vector<std::string> shaderNames() const;
 
-private:
+  private:
     const catalog::Catalog& catalog_;
     std::map<std::pair<std::string, std::string>, std::unique_ptr<gl::Program>> programs_;
 };

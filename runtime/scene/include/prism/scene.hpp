@@ -19,7 +19,7 @@
 namespace prism {
 
 struct SceneObject {
-    std::string mesh = "sphere";   // built-in name or a path to an .obj file
+    std::string mesh = "sphere";  // built-in name or a path to an .obj file
     unsigned subdivision = 3;
     glm::mat4 world{1.0f};
     std::string shader = "phong";
@@ -29,7 +29,7 @@ struct SceneObject {
 
 // Rain as a scene asks for it: an intensity class (the seed's Table 2) or a rate.
 struct RainSettings {
-    std::string intensityClass = "moderate";  // drizzle, light, moderate, heavy, excessive, cloudburst
+    std::string intensityClass = "moderate";       // drizzle, light, moderate, heavy, excessive, cloudburst
     std::optional<double> rateMillimetresPerHour;  // overrides the class when given
     glm::vec3 wind{0.0f};
     unsigned seed = 1;

@@ -40,7 +40,7 @@ struct SceneFrameInfo {
 };
 
 class SceneRenderer {
-public:
+  public:
     explicit SceneRenderer(const catalog::Catalog& catalog);
     ~SceneRenderer();
 
@@ -60,7 +60,7 @@ public:
     static constexpr int kRainWarmupSteps = 30;
     static constexpr float kRainStep = 1.0f / 60.0f;
 
-private:
+  private:
     void drawRain(const Scene& scene);
     void drawWater(const Scene& scene);
 

@@ -17,16 +17,16 @@
 namespace prism::rain {
 
 class ComputeUnavailableError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 
-inline constexpr unsigned kShaderStorageBuffer = 0x90D2;              // GL_SHADER_STORAGE_BUFFER
-inline constexpr unsigned kBarrierVertexAttribArray = 0x00000001;     // GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT
-inline constexpr unsigned kBarrierBufferUpdate = 0x00000200;          // GL_BUFFER_UPDATE_BARRIER_BIT
-inline constexpr unsigned kBarrierShaderStorage = 0x00002000;         // GL_SHADER_STORAGE_BARRIER_BIT
+inline constexpr unsigned kShaderStorageBuffer = 0x90D2;           // GL_SHADER_STORAGE_BUFFER
+inline constexpr unsigned kBarrierVertexAttribArray = 0x00000001;  // GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT
+inline constexpr unsigned kBarrierBufferUpdate = 0x00000200;       // GL_BUFFER_UPDATE_BARRIER_BIT
+inline constexpr unsigned kBarrierShaderStorage = 0x00002000;      // GL_SHADER_STORAGE_BARRIER_BIT
 inline constexpr unsigned kBarrierAll = kBarrierVertexAttribArray | kBarrierBufferUpdate | kBarrierShaderStorage;
-inline constexpr std::uint32_t kComputeGroupSize = 256;               // local_size_x of the rain .comp shaders
+inline constexpr std::uint32_t kComputeGroupSize = 256;  // local_size_x of the rain .comp shaders
 
 // Work groups for `count` invocations: x <= 65535, y as needed (0 groups for count 0).
 std::array<std::uint32_t, 2> computeGroups(std::uint32_t count, std::uint32_t groupSize = kComputeGroupSize);

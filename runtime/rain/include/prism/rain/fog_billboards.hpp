@@ -22,14 +22,14 @@
 namespace prism::rain {
 
 struct FogBillboardParams {
-    float strength = 0.45f;     // peak opacity of a billboard, [0, 1]; 0 = no billboards at all
-    int count = 40;             // 1..4096
-    float size = 16.0f;         // m, edge of a billboard
-    float radius = 40.0f;       // m, around the camera
-    float minHeight = 0.5f;     // m, world y of the lowest centre
-    float maxHeight = 4.0f;     // m
-    float drift = 0.3f;         // m/s of each billboard's own slow motion
-    float windFactor = 0.5f;    // share of the wind that carries the billboards
+    float strength = 0.45f;   // peak opacity of a billboard, [0, 1]; 0 = no billboards at all
+    int count = 40;           // 1..4096
+    float size = 16.0f;       // m, edge of a billboard
+    float radius = 40.0f;     // m, around the camera
+    float minHeight = 0.5f;   // m, world y of the lowest centre
+    float maxHeight = 4.0f;   // m
+    float drift = 0.3f;       // m/s of each billboard's own slow motion
+    float windFactor = 0.5f;  // share of the wind that carries the billboards
     glm::vec3 color{0.50f, 0.52f, 0.57f};
     std::uint32_t seed = 7;
 };
@@ -52,7 +52,7 @@ struct FogNoiseArray {
 FogNoiseArray generateFogNoise(int size = 64, int layers = 16, std::uint32_t seed = 7);
 
 class FogBillboardSimulation {
-public:
+  public:
     FogBillboardSimulation(const FogBillboardParams& params, const glm::vec3& eye);
     // Moves every billboard by (drift + windFactor * wind) * dt and folds the ones that
     // left the circle of `radius` around the camera to its other side.
@@ -61,7 +61,7 @@ public:
     const std::vector<glm::vec4>& billboards() const { return billboards_; }
     const FogBillboardParams& params() const { return params_; }
 
-private:
+  private:
     FogBillboardParams params_;
     std::vector<glm::vec4> billboards_;
     std::vector<glm::vec3> drift_;

@@ -18,7 +18,7 @@
 namespace prism::rain {
 
 class FogSystem {
-public:
+  public:
     FogSystem(RainPrograms& programs, const SceneFog& fog, const glm::vec3& eye);
     FogSystem(const FogSystem&) = delete;
     FogSystem& operator=(const FogSystem&) = delete;
@@ -31,7 +31,7 @@ public:
     float strength() const { return params_.strength; }
     const FogBillboardSimulation& simulation() const { return simulation_; }
 
-private:
+  private:
     RainPrograms& programs_;
     FogBillboardParams params_;
     FogBillboardSimulation simulation_;

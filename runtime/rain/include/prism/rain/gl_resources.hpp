@@ -20,8 +20,8 @@ struct GlObjectCounts {
     std::uint64_t buffersCreated = 0, buffersLive = 0;
     std::uint64_t texturesCreated = 0, texturesLive = 0;
     std::uint64_t vertexArraysCreated = 0, vertexArraysLive = 0;
-    std::uint64_t bufferBytesLive = 0;     // bytes of live buffers (particles, billboards)
-    std::uint64_t computeDispatches = 0;   // rain_init and rain_update dispatches
+    std::uint64_t bufferBytesLive = 0;    // bytes of live buffers (particles, billboards)
+    std::uint64_t computeDispatches = 0;  // rain_init and rain_update dispatches
 };
 GlObjectCounts glObjectCounts();
 
@@ -30,11 +30,14 @@ void countDispatch();
 }
 
 class GlBuffer {
-public:
+  public:
     GlBuffer() = default;
     explicit GlBuffer(std::size_t bytes, const void* data = nullptr, unsigned usage = 0x88E8 /* GL_DYNAMIC_DRAW */);
     ~GlBuffer() { release(); }
-    GlBuffer(GlBuffer&& o) noexcept : id_(o.id_), bytes_(o.bytes_) { o.id_ = 0; o.bytes_ = 0; }
+    GlBuffer(GlBuffer&& o) noexcept : id_(o.id_), bytes_(o.bytes_) {
+        o.id_ = 0;
+        o.bytes_ = 0;
+    }
     GlBuffer& operator=(GlBuffer&& o) noexcept;
     GlBuffer(const GlBuffer&) = delete;
     GlBuffer& operator=(const GlBuffer&) = delete;
@@ -42,14 +45,14 @@ public:
     std::size_t bytes() const { return bytes_; }
     explicit operator bool() const { return id_ != 0; }
 
-private:
+  private:
     void release() noexcept;
     unsigned id_ = 0;
     std::size_t bytes_ = 0;
 };
 
 class GlTexture {
-public:
+  public:
     GlTexture();  // creates the name
     ~GlTexture() { release(); }
     GlTexture(GlTexture&& o) noexcept : id_(o.id_) { o.id_ = 0; }
@@ -58,13 +61,13 @@ public:
     GlTexture& operator=(const GlTexture&) = delete;
     unsigned id() const { return id_; }
 
-private:
+  private:
     void release() noexcept;
     unsigned id_ = 0;
 };
 
 class GlVertexArray {
-public:
+  public:
     GlVertexArray();
     ~GlVertexArray() { release(); }
     GlVertexArray(GlVertexArray&& o) noexcept : id_(o.id_) { o.id_ = 0; }
@@ -73,7 +76,7 @@ public:
     GlVertexArray& operator=(const GlVertexArray&) = delete;
     unsigned id() const { return id_; }
 
-private:
+  private:
     void release() noexcept;
     unsigned id_ = 0;
 };

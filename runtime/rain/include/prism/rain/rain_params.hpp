@@ -33,7 +33,7 @@ namespace prism::rain {
 // Thrown for parameters outside their documented ranges (negative intensity, NaN
 // wind, ...); the message names the parameter, the value and the allowed range.
 class RainParameterError : public std::invalid_argument {
-public:
+  public:
     using std::invalid_argument::invalid_argument;
 };
 
@@ -42,10 +42,10 @@ enum class RainClass { Drizzle, Light, Moderate, Heavy, Excessive, Cloudburst };
 // One row of the seed's Table 2 ("Regenformen und -daten", after [13, p. 13]).
 struct RainClassInfo {
     RainClass id;
-    std::string_view name;        // "drizzle", "light", "moderate", "heavy", "excessive", "cloudburst"
-    float intensity;              // cm/h
-    float dropDiameterMm;         // the table's "Menge [mm]" column: typical drop size
-    float fallSpeed;              // m/s, terminal velocity
+    std::string_view name;  // "drizzle", "light", "moderate", "heavy", "excessive", "cloudburst"
+    float intensity;        // cm/h
+    float dropDiameterMm;   // the table's "Menge [mm]" column: typical drop size
+    float fallSpeed;        // m/s, terminal velocity
     float dropsPerSquareMetreSecond;
 };
 
@@ -72,26 +72,26 @@ struct WindParams {
 
 // How streaks look (used when drawing only).
 struct StreakStyle {
-    float exposure = 1.0f / 30.0f;       // s: streak length = speed x exposure
-    float width = 0.004f;                // m at distance 0
-    float widthPerMetre = 0.0015f;       // m of extra width per m of distance (seed: wider far away)
-    float opacity = 0.9f;                // of a drop at distance 0
-    float falloffDistance = 10.0f;       // m: opacity / (1 + (d / falloff)^2), Tariq's 1/d^2
+    float exposure = 1.0f / 30.0f;  // s: streak length = speed x exposure
+    float width = 0.004f;           // m at distance 0
+    float widthPerMetre = 0.0015f;  // m of extra width per m of distance (seed: wider far away)
+    float opacity = 0.9f;           // of a drop at distance 0
+    float falloffDistance = 10.0f;  // m: opacity / (1 + (d / falloff)^2), Tariq's 1/d^2
 };
 
 inline constexpr std::uint32_t kMaxParticles = 1u << 24;
 
 struct RainParams {
-    float intensity = 1.381f;            // cm/h (Table 2: moderate); 0 = no drops
-    float radius = 25.0f;                // m, cylinder around the camera
-    float height = 20.0f;                // m
-    float below = 4.0f;                  // m of the cylinder below the camera, in [0, height]
-    int lodRings = 4;                    // level-of-detail rings K, 1..16
-    float lodFalloff = 0.5f;             // density of ring k relative to the centre: falloff^k, (0, 1]
-    float particlesPerDrop = 0.05f;      // particles per physical drop, (0, 1]
-    std::uint32_t budget = 1u << 18;     // user cap on the particle count, <= kMaxParticles
+    float intensity = 1.381f;                 // cm/h (Table 2: moderate); 0 = no drops
+    float radius = 25.0f;                     // m, cylinder around the camera
+    float height = 20.0f;                     // m
+    float below = 4.0f;                       // m of the cylinder below the camera, in [0, height]
+    int lodRings = 4;                         // level-of-detail rings K, 1..16
+    float lodFalloff = 0.5f;                  // density of ring k relative to the centre: falloff^k, (0, 1]
+    float particlesPerDrop = 0.05f;           // particles per physical drop, (0, 1]
+    std::uint32_t budget = 1u << 18;          // user cap on the particle count, <= kMaxParticles
     std::optional<std::uint32_t> fixedCount;  // replaces the formula (benchmarks), <= kMaxParticles
-    float jitter = 0.3f;                 // m/s: largest random sideways speed of a drop, >= 0
+    float jitter = 0.3f;                      // m/s: largest random sideways speed of a drop, >= 0
     WindParams wind;
     std::uint32_t seed = 1;
     StreakStyle streaks;

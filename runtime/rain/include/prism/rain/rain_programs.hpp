@@ -24,7 +24,7 @@ namespace prism::rain {
 const catalog::Catalog& rainCatalog();
 
 class RainPrograms {
-public:
+  public:
     RainPrograms();
     gl::Program& get(std::string_view shader, const VariantValues& variant = {});
     // "shader (variant name)" of every program asked for, sorted.
@@ -33,7 +33,7 @@ public:
     ProgramCache& cache() { return cache_; }
     const catalog::Catalog& catalog() const { return cache_.catalog(); }
 
-private:
+  private:
     ProgramCache cache_;
     std::set<std::string> used_;
 };

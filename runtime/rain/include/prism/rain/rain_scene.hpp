@@ -33,12 +33,12 @@
 namespace prism::rain {
 
 struct GroundDesc {
-    float size = 240.0f;        // m, square centred on the origin
-    int cells = 120;            // per side
-    float hillHeight = 2.5f;    // m of the terrain's swell away from the flat centre (0 = plane)
-    float flatRadius = 20.0f;   // m of flat ground around the origin
+    float size = 240.0f;       // m, square centred on the origin
+    int cells = 120;           // per side
+    float hillHeight = 2.5f;   // m of the terrain's swell away from the flat centre (0 = plane)
+    float flatRadius = 20.0f;  // m of flat ground around the origin
     glm::vec3 color{0.42f, 0.42f, 0.44f};
-    float shininess = 48.0f;    // of the wet highlight
+    float shininess = 48.0f;  // of the wet highlight
     float specular = 0.6f;
 };
 
@@ -48,8 +48,8 @@ struct RainSceneDesc {
     RainLights lights;
     GroundDesc ground;
     bool showLampBulb = true;
-    std::optional<RainParams> rain;   // no value: no rain is modelled at all
-    std::optional<SceneFog> fog;      // no value: no fog code runs
+    std::optional<RainParams> rain;  // no value: no rain is modelled at all
+    std::optional<SceneFog> fog;     // no value: no fog code runs
     StreakTechnique technique = StreakTechnique::GeometryShader;
 };
 
@@ -62,7 +62,7 @@ RainSceneDesc defaultRainScene();
 Camera rainSceneView(int view);
 
 class RainScene {
-public:
+  public:
     explicit RainScene(const RainSceneDesc& desc);
     ~RainScene();
     RainScene(const RainScene&) = delete;
@@ -87,7 +87,7 @@ public:
     std::vector<std::string> programsInUse() const;
     float time() const { return time_; }
 
-private:
+  private:
     RainSceneDesc desc_;
     std::unique_ptr<RainPrograms> programs_;
     std::unique_ptr<GpuMesh> ground_;

@@ -58,11 +58,11 @@ float clampStep(float dt);
 
 // The per-step inputs shared by the CPU and GPU updates.
 struct StepInputs {
-    glm::vec3 center{0.0f};   // cylinder centre (cylinderCenter(params, eye))
-    glm::vec2 cylinder{1.0f}; // radius, height
+    glm::vec3 center{0.0f};    // cylinder centre (cylinderCenter(params, eye))
+    glm::vec2 cylinder{1.0f};  // radius, height
     glm::vec3 wind{0.0f};
-    float fallSpeed = 0.0f;   // the intensity's fall speed (respawned drops use it)
-    float dt = 0.0f;          // already clamped
+    float fallSpeed = 0.0f;  // the intensity's fall speed (respawned drops use it)
+    float dt = 0.0f;         // already clamped
 };
 
 glm::vec2 foldIntoCylinder(glm::vec2 xz, glm::vec2 seedXZ, float radius);
@@ -74,7 +74,7 @@ Particle stepParticle(Particle p, const StepInputs& in);
 int lodRingOf(const Particle& p, float radius, int rings);
 
 class CpuRainSimulation {
-public:
+  public:
     CpuRainSimulation(const RainParams& params, const glm::vec3& eye);
 
     // Advances by clampStep(dt) around the camera at `eye` (must be finite).
@@ -91,7 +91,7 @@ public:
     glm::vec3 center() const { return center_; }
     float fallSpeed() const { return rate_.fallSpeed; }
 
-private:
+  private:
     void resize(std::uint32_t count);
 
     RainParams params_;

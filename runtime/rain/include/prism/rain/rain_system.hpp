@@ -33,9 +33,9 @@
 namespace prism::rain {
 
 enum class StreakTechnique { GeometryShader, Instanced, PointSprites };
-std::string_view techniqueName(StreakTechnique t);  // "gs-quads", "instanced-quads", "point-sprites"
+std::string_view techniqueName(StreakTechnique t);                     // "gs-quads", "instanced-quads", "point-sprites"
 std::optional<StreakTechnique> parseTechnique(std::string_view name);  // also "gs", "instanced", "points"
-std::string_view techniqueShader(StreakTechnique t);  // rain_streaks, rain_instanced, rain_points
+std::string_view techniqueShader(StreakTechnique t);                   // rain_streaks, rain_instanced, rain_points
 
 // The rain scene's lights: ambient, a directional sun and a lamp with falloff
 // (modules/rain/drop_lights.glsl).
@@ -49,14 +49,14 @@ struct RainLights {
 struct RainDrawInputs {
     Camera camera;
     float aspect = 1.0f;
-    int viewportHeight = 512;        // pixels (minimum streak width)
+    int viewportHeight = 512;  // pixels (minimum streak width)
     RainLights lights;
-    const Fog* fog = nullptr;        // non-null: the FOG=1 variant
+    const Fog* fog = nullptr;  // non-null: the FOG=1 variant
     StreakTechnique technique = StreakTechnique::GeometryShader;
 };
 
 class RainSystem {
-public:
+  public:
     static constexpr std::size_t kBytesPerParticle = sizeof(Particle);
 
     RainSystem(RainPrograms& programs, const RainParams& params, const glm::vec3& eye);
@@ -87,7 +87,7 @@ public:
     // The first particleCount() particles, read back from the GPU.
     std::vector<Particle> readParticles() const;
 
-private:
+  private:
     void resize(std::uint32_t count);
     void seedRange(std::uint32_t first, std::uint32_t end);
     void ensureStreakTexture();

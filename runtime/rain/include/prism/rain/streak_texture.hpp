@@ -36,16 +36,20 @@ constexpr int streakLayer(int oscillation, int thetaBin, int phiBin) {
     return (oscillation * kThetaBins + thetaBin) * kPhiBins + phiBin;
 }
 // Bin centres in degrees: theta 10, 50, 90, 130, 170; phi 10, 30, ..., 170.
-constexpr float thetaOfBin(int bin) { return 10.0f + 40.0f * static_cast<float>(bin); }
-constexpr float phiOfBin(int bin) { return 10.0f + 20.0f * static_cast<float>(bin); }
+constexpr float thetaOfBin(int bin) {
+    return 10.0f + 40.0f * static_cast<float>(bin);
+}
+constexpr float phiOfBin(int bin) {
+    return 10.0f + 20.0f * static_cast<float>(bin);
+}
 
 struct OscillationType {
-    float frequency;   // brightness cycles along one streak
-    float amplitude;   // of the brightness modulation, in [0, 1]
-    float phase;       // radians
-    float sharpness;   // exponent of the glint peaks
-    float sway;        // sideways wobble of the streak centre, in u
-    float side;        // +1 or -1: which side the lit spot sits on
+    float frequency;  // brightness cycles along one streak
+    float amplitude;  // of the brightness modulation, in [0, 1]
+    float phase;      // radians
+    float sharpness;  // exponent of the glint peaks
+    float sway;       // sideways wobble of the streak centre, in u
+    float side;       // +1 or -1: which side the lit spot sits on
 };
 OscillationType oscillationType(int type);  // 0..9, fixed (hash of the type)
 
@@ -63,7 +67,8 @@ struct StreakTextureArray {
     std::vector<std::uint8_t> texels;  // layer-major, then rows (v), then u
 
     std::uint8_t at(int layer, int x, int y) const {
-        return texels[(static_cast<std::size_t>(layer) * static_cast<std::size_t>(height) + static_cast<std::size_t>(y)) *
+        return texels[(static_cast<std::size_t>(layer) * static_cast<std::size_t>(height) +
+                       static_cast<std::size_t>(y)) *
                           static_cast<std::size_t>(width) +
                       static_cast<std::size_t>(x)];
     }

@@ -25,7 +25,7 @@
 namespace prism::water {
 
 class GpuWaterSimulation final : public WaterSimulation {
-public:
+  public:
     GpuWaterSimulation(HeightField terrain, std::vector<float> permeability, WaterParams params = {});
     ~GpuWaterSimulation() override;
 
@@ -43,12 +43,12 @@ public:
     void finish() const;
     std::size_t programCount() const;
 
-protected:
+  protected:
     void runSubsteps(const StepConstants& constants, long count) override;
     void resetState(std::span<const glm::vec2> depthPairs) override;
     void lossTotals(double& infiltrated, double& lost) const override;
 
-private:
+  private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

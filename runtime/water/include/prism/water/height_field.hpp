@@ -24,7 +24,7 @@
 namespace prism::water {
 
 class HeightMapError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 
@@ -35,7 +35,9 @@ struct HeightField {
     std::vector<float> heights;  // metres, width * height, row-major
 
     std::size_t cellCount() const { return static_cast<std::size_t>(width) * static_cast<std::size_t>(height); }
-    std::size_t index(int x, int z) const { return static_cast<std::size_t>(z) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x); }
+    std::size_t index(int x, int z) const {
+        return static_cast<std::size_t>(z) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
+    }
     float at(int x, int z) const { return heights[index(x, z)]; }
     // Size of the covered area in metres (cell centres span (width - 1) h).
     float sizeX() const { return static_cast<float>(width > 0 ? width - 1 : 0) * cellSize; }

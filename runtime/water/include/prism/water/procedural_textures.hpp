@@ -15,8 +15,8 @@
 namespace prism::water {
 
 struct SkyOptions {
-    int faceSize = 128;      // texels per cube face edge
-    float cloudCover = 0.6f; // 0 clear .. 1 overcast
+    int faceSize = 128;       // texels per cube face edge
+    float cloudCover = 0.6f;  // 0 clear .. 1 overcast
     unsigned seed = 7;
     glm::vec3 zenith{0.34f, 0.42f, 0.52f};   // rain sky: grey-blue above
     glm::vec3 horizon{0.70f, 0.72f, 0.74f};  // pale grey at the horizon
@@ -36,8 +36,8 @@ glm::vec3 skyRadiance(const glm::vec3& direction, const SkyOptions& options);
 CubeFaces proceduralSky(const SkyOptions& options = {});
 
 struct RippleOptions {
-    int size = 64;     // texels per edge of one tileable frame
-    int drops = 20;    // raindrop impacts per 16-frame cycle
+    int size = 64;   // texels per edge of one tileable frame
+    int drops = 20;  // raindrop impacts per 16-frame cycle
     unsigned seed = 3;
 };
 

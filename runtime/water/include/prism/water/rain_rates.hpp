@@ -25,10 +25,10 @@ enum class RainClass { Drizzle, Light, Moderate, Heavy, Excessive, Cloudburst };
 
 struct RainClassInfo {
     RainClass rainClass;
-    std::string_view name;          // "drizzle", "light", "moderate", "heavy", "excessive", "cloudburst"
-    std::string_view germanName;    // as in the seed: "Nieselregen", ...
-    double intensityCmPerHour;      // Table 2, column "Intensität [cm/h]"
-    double dropDiameterMm;          // Table 2, "Menge [mm]" (the drop size)
+    std::string_view name;        // "drizzle", "light", "moderate", "heavy", "excessive", "cloudburst"
+    std::string_view germanName;  // as in the seed: "Nieselregen", ...
+    double intensityCmPerHour;    // Table 2, column "Intensität [cm/h]"
+    double dropDiameterMm;        // Table 2, "Menge [mm]" (the drop size)
     double fallSpeedMetresPerSecond;
     double dropsPerSecondPerSquareMetre;
 };
@@ -44,7 +44,11 @@ std::optional<RainClass> parseRainClass(std::string_view name);
 // naming the text and listing the class names.
 double parseRainRateMmPerHour(std::string_view text);
 
-constexpr double mmPerHourToMetresPerSecond(double mmPerHour) { return mmPerHour / 1000.0 / 3600.0; }
-constexpr double metresPerSecondToMmPerHour(double metresPerSecond) { return metresPerSecond * 3600.0 * 1000.0; }
+constexpr double mmPerHourToMetresPerSecond(double mmPerHour) {
+    return mmPerHour / 1000.0 / 3600.0;
+}
+constexpr double metresPerSecondToMmPerHour(double metresPerSecond) {
+    return metresPerSecond * 3600.0 * 1000.0;
+}
 
 }  // namespace prism::water

@@ -37,13 +37,13 @@ enum class SimulationBackend { Cpu, Gpu };
 
 // How the water surface looks (seed 4.3).
 struct WaterLook {
-    float threshold = 0.001f;         // m: shallower water is not drawn
-    float shoreFadeDepth = 0.006f;    // m: the surface fades in between threshold and this
-    float fresnelF0 = 0.02f;          // reflectance looking straight down (water)
+    float threshold = 0.001f;             // m: shallower water is not drawn
+    float shoreFadeDepth = 0.006f;        // m: the surface fades in between threshold and this
+    float fresnelF0 = 0.02f;              // reflectance looking straight down (water)
     glm::vec3 tint{0.15f, 0.19f, 0.18f};  // body colour (rain water over soil)
-    float absorption = 12.0f;         // 1/m: body opacity 1 - exp(-absorption depth)
-    float rippleScale = 1.2f;         // ripple-map repeats per metre
-    float wetDarkening = 0.7f;        // albedo factor of soaked ground
+    float absorption = 12.0f;             // 1/m: body opacity 1 - exp(-absorption depth)
+    float rippleScale = 1.2f;             // ripple-map repeats per metre
+    float wetDarkening = 0.7f;            // albedo factor of soaked ground
 };
 
 struct WaterSceneDescription {
@@ -64,7 +64,7 @@ struct WaterSceneDescription {
 
 // The water map with its rain and ripple clock; exists only in scenes with water.
 class WaterSystem {
-public:
+  public:
     WaterSystem(const HeightField& terrain, std::vector<float> permeability, const WaterParams& params,
                 SimulationBackend backend, double rainMmPerHour);
 
@@ -80,14 +80,14 @@ public:
     WaterSimulation& simulation() { return *simulation_; }
     const WaterSimulation& simulation() const { return *simulation_; }
 
-private:
+  private:
     std::unique_ptr<WaterSimulation> simulation_;
     double rainMmPerHour_ = 0.0;
     double rippleFrame_ = 0.0;
 };
 
 class WaterScene {
-public:
+  public:
     explicit WaterScene(WaterSceneDescription description);
 
     const WaterSceneDescription& description() const { return description_; }
@@ -105,7 +105,7 @@ public:
     // The model matrix that centres the terrain on the origin.
     glm::mat4 world() const;
 
-private:
+  private:
     WaterSceneDescription description_;
     std::unique_ptr<WaterSystem> water_;
 };
@@ -117,19 +117,19 @@ Camera groundCamera(const HeightField& terrain);
 
 // GL objects a renderer created: the evidence for "only what the scene needs".
 struct SceneRenderStats {
-    std::size_t programs = 0;      // linked GL programs
+    std::size_t programs = 0;  // linked GL programs
     std::size_t textures = 0;
     std::size_t buffers = 0;
     std::size_t vertexArrays = 0;
-    bool waterSurface = false;     // water program, mesh and depth textures exist
-    bool rippleTextures = false;   // the 16-frame ripple array exists
+    bool waterSurface = false;    // water program, mesh and depth textures exist
+    bool rippleTextures = false;  // the 16-frame ripple array exists
 };
 
 // Draws a WaterScene. Needs a current GL context (3.3 is enough for the drawing; a GPU
 // simulation needs 4.3). Terrain and sky resources are made at construction; the water
 // surface's only when the scene has water; the ripple array when rain first falls.
 class WaterSceneRenderer {
-public:
+  public:
     explicit WaterSceneRenderer(const WaterScene& scene);
     ~WaterSceneRenderer();
     WaterSceneRenderer(const WaterSceneRenderer&) = delete;
@@ -143,7 +143,7 @@ public:
     SceneRenderStats stats() const;
     ProgramCache& programCache();
 
-private:
+  private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

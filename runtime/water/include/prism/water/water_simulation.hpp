@@ -54,17 +54,17 @@ enum class BorderMode {
 };
 
 struct WaterParams {
-    float waveSpeed = 0.5f;          // c, m/s, of the distribution's height-field waves
-    float courantNumber = 0.7f;      // c dt / h of a substep; at most 1/sqrt(2) = 0.7071
-    float dampingPerSecond = 2.0f;   // edge velocity factor exp(-damping dt) per substep
-    float epsilon = 0.002f;          // m, the epsilon of Algorithm 1
-    float flowRate = 4.0f;           // 1/s per unit slope, tangential flow
-    float maxFlowFraction = 0.5f;    // at most this share of a cell's water per tangential step
-    int smoothingKernel = 5;         // odd, 1..15; 1 switches smoothing off
-    float smoothingSigma = 1.0f;     // cells
-    float smoothingRate = 1.0f;      // 1/s: strength per substep = min(1, rate dt)
+    float waveSpeed = 0.5f;         // c, m/s, of the distribution's height-field waves
+    float courantNumber = 0.7f;     // c dt / h of a substep; at most 1/sqrt(2) = 0.7071
+    float dampingPerSecond = 2.0f;  // edge velocity factor exp(-damping dt) per substep
+    float epsilon = 0.002f;         // m, the epsilon of Algorithm 1
+    float flowRate = 4.0f;          // 1/s per unit slope, tangential flow
+    float maxFlowFraction = 0.5f;   // at most this share of a cell's water per tangential step
+    int smoothingKernel = 5;        // odd, 1..15; 1 switches smoothing off
+    float smoothingSigma = 1.0f;    // cells
+    float smoothingRate = 1.0f;     // 1/s: strength per substep = min(1, rate dt)
     BorderMode border = BorderMode::Open;
-    long maxSubsteps = 2'000'000;    // advance() refuses a dt needing more
+    long maxSubsteps = 2'000'000;  // advance() refuses a dt needing more
 };
 
 // Throws std::invalid_argument naming the first unusable parameter.
@@ -98,13 +98,13 @@ std::vector<double> gaussianWeights(int kernel, float sigma);
 
 // Water volumes, as sums of depths over cells (multiply by cellArea for cubic metres).
 struct MassLedger {
-    double initial = 0.0;       // water present when the ledger started (setDepth)
-    double rainIn = 0.0;        // rain added: per substep the fp32 rain depth (rate x dt, within
-                                // 2^-24 of the exact product) x cells, accumulated in double
+    double initial = 0.0;  // water present when the ledger started (setDepth)
+    double rainIn = 0.0;   // rain added: per substep the fp32 rain depth (rate x dt, within
+                           // 2^-24 of the exact product) x cells, accumulated in double
     double infiltrated = 0.0;
     double lostThroughBorder = 0.0;
-    double stored = 0.0;        // sum of the current depths
-    double cellArea = 1.0;      // m^2 per cell
+    double stored = 0.0;    // sum of the current depths
+    double cellArea = 1.0;  // m^2 per cell
 
     // (initial + rain in) - (stored + infiltrated + lost); zero for perfect conservation.
     double imbalance() const { return initial + rainIn - (stored + infiltrated + lostThroughBorder); }
@@ -113,7 +113,7 @@ struct MassLedger {
 };
 
 class WaterSimulation {
-public:
+  public:
     virtual ~WaterSimulation() = default;
     WaterSimulation(const WaterSimulation&) = delete;
     WaterSimulation& operator=(const WaterSimulation&) = delete;
@@ -155,7 +155,7 @@ public:
     // water-surface shader); needs a current GL context.
     virtual void uploadDepthTexture(unsigned texture) const = 0;
 
-protected:
+  protected:
     WaterSimulation(HeightField terrain, std::vector<float> permeability, WaterParams params);
     virtual void runSubsteps(const StepConstants& constants, long count) = 0;
     virtual void resetState(std::span<const glm::vec2> depthPairs) = 0;
@@ -166,7 +166,7 @@ protected:
     std::vector<float> permeability_;
     WaterParams params_;
 
-private:
+  private:
     double rainRate_ = 0.0;
     double rainIn_ = 0.0;
     double initial_ = 0.0;
@@ -177,7 +177,7 @@ private:
 // The CPU reference. Single-threaded, fp32 in the GPU's order, denormals flushed to zero
 // during a step as Mesa's llvmpipe does.
 class CpuWaterSimulation final : public WaterSimulation {
-public:
+  public:
     CpuWaterSimulation(HeightField terrain, std::vector<float> permeability, WaterParams params = {});
 
     std::vector<glm::vec2> depthPairs() const override;
@@ -185,12 +185,12 @@ public:
     std::string_view backendName() const override { return "cpu"; }
     void uploadDepthTexture(unsigned texture) const override;
 
-protected:
+  protected:
     void runSubsteps(const StepConstants& constants, long count) override;
     void resetState(std::span<const glm::vec2> depthPairs) override;
     void lossTotals(double& infiltrated, double& lost) const override;
 
-private:
+  private:
     void substep(const StepConstants& k);
     void rainAndInfiltration(const StepConstants& k);
     void tangentialFlowOut(const StepConstants& k);
