@@ -102,6 +102,9 @@ function(prism_add_shaders target)
   target_include_directories(${target} INTERFACE $<BUILD_INTERFACE:${gen_dir}>)
   target_link_libraries(${target} INTERFACE Prism::catalog)
   set_target_properties(${target} PROPERTIES PRISM_HEADER ${header})
+  if(COMMAND prism_set_layer)  # inside Prism's own build: catalogues are CPU-layer data
+    prism_set_layer(${target} cpu)
+  endif()
 endfunction()
 
 cmake_policy(POP)

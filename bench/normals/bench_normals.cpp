@@ -11,9 +11,9 @@
 // larger sizes show an extrapolation t * (n / n_measured)^2 from the largest
 // measured size, marked "~". Default sizes: 10k, 30k (the largest the O(n^2) method
 // measures by default), 100k and 1M triangles; about a minute in all.
-#include "prism/normals.hpp"
-#include "prism/procedural_meshes.hpp"
-#include "prism/weld.hpp"
+#include "prism/geometry/normals.hpp"
+#include "prism/geometry/procedural_meshes.hpp"
+#include "prism/geometry/weld.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -29,9 +29,9 @@
 #include <string>
 #include <vector>
 
-#include "prism/framebuffer.hpp"
-#include "prism/gl.hpp"
-#include "prism/gl_context.hpp"
+#include "prism/gl/framebuffer.hpp"
+#include "prism/gl/gl.hpp"
+#include "prism/gl/gl_context.hpp"
 #include "prism/rain/rain_scene.hpp"
 #include "prism/rain/rain_system.hpp"
 
@@ -99,7 +99,7 @@ Row measure(RainPrograms& programs, const Options& o, int exponent, bool warmUp)
     params.fixedCount = row.particles;
     params.wind.strength = 3.0f;
     params.seed = 2013;
-    const prism::Camera camera = rainSceneView(0);
+    const prism::view::Camera camera = rainSceneView(0);
     RainSystem rain(programs, params, camera.eye);
     row.bytesPerParticle =
         static_cast<double>(rain.particleBuffer() ? rain.capacity() * RainSystem::kBytesPerParticle : 0) /

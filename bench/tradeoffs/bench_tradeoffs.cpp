@@ -21,7 +21,7 @@
 // The first --warmup rounds are dropped. Reported: median and minimum (and p25/p75 in
 // the CSV) of the --frames kept frames.
 //
-// Scene: the repository's default camera and lights (prism::defaultCamera/Lights) and a
+// Scene: the repository's default camera and lights (prism::render::defaultCamera/Lights) and a
 // material chosen so that no reference pixel clamps (checked and printed), because a
 // clamped highlight would hide its error; background cleared with alpha 0 so coverage
 // is read back from alpha (every lit shader writes alpha 1).
@@ -45,14 +45,14 @@
 #include <vector>
 
 #include "image_metrics.hpp"
-#include "prism/contact_sheet.hpp"
-#include "prism/framebuffer.hpp"
-#include "prism/gl.hpp"
-#include "prism/gl_context.hpp"
-#include "prism/gpu_mesh.hpp"
-#include "prism/offscreen_render.hpp"
-#include "prism/png_io.hpp"
-#include "prism/shader_meshes.hpp"
+#include "prism/image/contact_sheet.hpp"
+#include "prism/gl/framebuffer.hpp"
+#include "prism/gl/gl.hpp"
+#include "prism/gl/gl_context.hpp"
+#include "prism/render/gpu_mesh.hpp"
+#include "prism/render/offscreen_render.hpp"
+#include "prism/image/png_io.hpp"
+#include "prism/render/shader_meshes.hpp"
 #include "prism/shaders.hpp"
 #include "sphere_reference.hpp"
 #include "tradeoff_report.hpp"

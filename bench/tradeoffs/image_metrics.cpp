@@ -16,7 +16,7 @@ struct Accumulator {
     int max = 0;
     std::array<std::size_t, 4> within{};
 
-    void add(const Image8& a, const Image8& b, int x, int y) {
+    void add(const image::Image8& a, const image::Image8& b, int x, int y) {
         const std::size_t o = a.offset(x, y);
         int pixelMax = 0;
         for (std::size_t c = 0; c < 3; ++c) {
@@ -41,16 +41,16 @@ struct Accumulator {
 
 }  // namespace
 
-bool covered(const Image8& image, int x, int y) {
+bool covered(const image::Image8& image, int x, int y) {
     return image.data[image.offset(x, y) + 3] == 255;
 }
 
-double luma(const Image8& image, int x, int y) {
+double luma(const image::Image8& image, int x, int y) {
     const std::size_t o = image.offset(x, y);
     return 0.2126 * image.data[o] + 0.7152 * image.data[o + 1] + 0.0722 * image.data[o + 2];
 }
 
-bool highlightCentroid(const Image8& image, glm::dvec2& centroid) {
+bool highlightCentroid(const image::Image8& image, glm::dvec2& centroid) {
     double maxLuma = -1.0;
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x)
@@ -71,7 +71,7 @@ bool highlightCentroid(const Image8& image, glm::dvec2& centroid) {
     return true;
 }
 
-Metrics compareWithReference(const Image8& render, const Image8& reference) {
+Metrics compareWithReference(const image::Image8& render, const image::Image8& reference) {
     if (render.width != reference.width || render.height != reference.height)
         throw std::invalid_argument("compareWithReference: the images differ in size");
     Accumulator all, both;

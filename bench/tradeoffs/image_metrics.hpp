@@ -24,7 +24,7 @@
 #include <array>
 #include <cstddef>
 
-#include "prism/image.hpp"
+#include "prism/image/image.hpp"
 
 namespace prism::bench {
 
@@ -52,13 +52,13 @@ struct Metrics {
     double highlightError = 0.0;  // distance between the centroids, pixels
 };
 
-bool covered(const Image8& image, int x, int y);
-double luma(const Image8& image, int x, int y);
+bool covered(const image::Image8& image, int x, int y);
+double luma(const image::Image8& image, int x, int y);
 
 // false when nothing is covered.
-bool highlightCentroid(const Image8& image, glm::dvec2& centroid);
+bool highlightCentroid(const image::Image8& image, glm::dvec2& centroid);
 
 // Both images must have the same size (std::invalid_argument otherwise).
-Metrics compareWithReference(const Image8& render, const Image8& reference);
+Metrics compareWithReference(const image::Image8& render, const image::Image8& reference);
 
 }  // namespace prism::bench

@@ -35,8 +35,8 @@ double phongSpecular(const glm::dvec3& toLight, const glm::dvec3& toEye, const g
     return safePow(std::max(glm::dot(reflect(-toLight, normal), toEye), 0.0), shininess);
 }
 
-// Camera::view() in double: the same look-at and the same fallback up axis.
-glm::dmat4 viewMatrix(const Camera& camera) {
+// view::Camera::view() in double: the same look-at and the same fallback up axis.
+glm::dmat4 viewMatrix(const view::Camera& camera) {
     const glm::dvec3 eye(camera.eye), target(camera.target), up(camera.up);
     glm::dvec3 forward = target - eye;
     if (glm::dot(forward, forward) < 1e-24) throw std::invalid_argument("sphere reference: eye and target coincide");
@@ -48,7 +48,7 @@ glm::dmat4 viewMatrix(const Camera& camera) {
 }
 
 glm::dvec3 lightContribution(const glm::dvec3& toLight, const glm::dvec3& radiance, const glm::dvec3& toEye,
-                             const glm::dvec3& normal, const Material& m, bool withSpecular) {
+                             const glm::dvec3& normal, const view::Material& m, bool withSpecular) {
     const double lambert = glm::dot(normal, toLight);
     if (lambert <= 0.0) return glm::dvec3(0.0);
     glm::dvec3 c = glm::dvec3(m.color) * lambert;
@@ -67,7 +67,7 @@ glm::dvec3 shadeEyeSpace(const glm::dvec3& eyePosition, const glm::dvec3& normal
                          bool withSpecular) {
     const glm::dmat4 view = viewMatrix(scene.camera);
     const glm::dmat3 rotation(view);
-    const Material& m = scene.material;
+    const view::Material& m = scene.material;
     const glm::dvec3 toEye = safeNormalize(-eyePosition, glm::dvec3(0, 0, 1));
     glm::dvec3 color = glm::dvec3(scene.lights.ambient) * glm::dvec3(m.color);
     for (const auto& l : scene.lights.directional) {
@@ -84,7 +84,7 @@ glm::dvec3 shadeEyeSpace(const glm::dvec3& eyePosition, const glm::dvec3& normal
 
 SphereReference renderSphereReference(const SphereScene& scene, bool withSpecular) {
     if (scene.width <= 0 || scene.height <= 0) throw std::invalid_argument("sphere reference: empty image");
-    const Camera& cam = scene.camera;
+    const view::Camera& cam = scene.camera;
     const glm::dmat4 view = viewMatrix(cam);
     const glm::dvec3 centre = glm::dvec3(view * glm::dvec4(scene.centre, 1.0));  // eye space
     const double r = scene.radius;

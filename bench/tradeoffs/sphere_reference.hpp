@@ -2,7 +2,7 @@
 // in double precision, with the formula of modules/lighting.glsl, so a rendered
 // icosphere can be compared with what the mesh only approximates.
 //
-//     prism::bench::SphereScene scene{.camera = prism::defaultCamera(), .lights = prism::defaultLights(),
+//     prism::bench::SphereScene scene{.camera = prism::render::defaultCamera(), .lights = prism::render::defaultLights(),
 //                                     .material = material, .width = 512, .height = 512};
 //     prism::bench::SphereReference full = prism::bench::renderSphereReference(scene, true);
 //     prism::bench::SphereReference diffuse = prism::bench::renderSphereReference(scene, false);
@@ -12,7 +12,7 @@
 //  * The ray starts at the eye and goes through the pixel CENTRE, where the rasteriser
 //    samples: NDC (2(x+0.5)/w - 1, 1 - 2(y+0.5)/h), eye-space direction
 //    (ndc.x * aspect * tan(fovY/2), ndc.y * tan(fovY/2), -1), i.e. exactly the inverse of
-//    Camera::projection(). The view matrix is Camera::view() rebuilt in double (same
+//    view::Camera::projection(). The view matrix is view::Camera::view() rebuilt in double (same
 //    look-at, same fallback up axis).
 //  * It is intersected with the analytic sphere (centre, radius; world space, the world
 //    matrix being translate(centre) * scale(radius) applied to a unit sphere) moved to
@@ -30,7 +30,7 @@
 //    `withSpecular = false` drops the specular term (the flat and smooth shaders'
 //    model). Only the Phong (reflection) specular is modelled, not BLINN.
 //  * 8 bits as a UNORM8 framebuffer stores it: clamp to [0, 1], then round to nearest
-//    (x * 255), as GL's float-to-unorm conversion and prism::toImage8 do; the
+//    (x * 255), as GL's float-to-unorm conversion and prism::image::toImage8 do; the
 //    background goes through the same conversion.
 #pragma once
 
@@ -39,16 +39,16 @@
 #include <cstdint>
 #include <vector>
 
-#include "prism/camera.hpp"
-#include "prism/image.hpp"
-#include "prism/scene_lighting.hpp"
+#include "prism/view/camera.hpp"
+#include "prism/image/image.hpp"
+#include "prism/view/lighting.hpp"
 
 namespace prism::bench {
 
 struct SphereScene {
-    Camera camera;
-    Lights lights;
-    Material material;
+    view::Camera camera;
+    view::Lights lights;
+    view::Material material;
     glm::dvec3 centre{0.0};  // world space
     double radius = 1.0;
     int width = 512;
@@ -61,7 +61,7 @@ struct SphereReference {
     int height = 0;
     std::vector<glm::dvec3> radiance;   // unclamped shade() per pixel (background where missed)
     std::vector<std::uint8_t> covered;  // 1 where the ray hits the sphere
-    Image8 image;                       // radiance in 8 bits; alpha 255 covered, 0 background
+    image::Image8 image;                       // radiance in 8 bits; alpha 255 covered, 0 background
     std::size_t clampedPixels = 0;      // covered pixels with a channel above 1 before clamping
 };
 

@@ -20,15 +20,15 @@
 #include <set>
 #include <sstream>
 
-#include "prism/feature_variants.hpp"
-#include "prism/frame_uniforms.hpp"
-#include "prism/framebuffer.hpp"
-#include "prism/gl.hpp"
-#include "prism/gl_context.hpp"
-#include "prism/gpu_mesh.hpp"
-#include "prism/image_compare.hpp"
-#include "prism/scene_loader.hpp"
-#include "prism/shader_meshes.hpp"
+#include "prism/render/feature_variants.hpp"
+#include "prism/render/frame_uniforms.hpp"
+#include "prism/gl/framebuffer.hpp"
+#include "prism/gl/gl.hpp"
+#include "prism/gl/gl_context.hpp"
+#include "prism/render/gpu_mesh.hpp"
+#include "prism/image/image_compare.hpp"
+#include "prism/scene/scene_loader.hpp"
+#include "prism/render/shader_meshes.hpp"
 #include "prism/shaders.hpp"
 
 namespace {
@@ -79,32 +79,32 @@ int preprocessedLines(const prism::catalog::Variant& v) {
 }
 
 struct Draw {
-    const prism::SceneObject* object;
+    const prism::scene::SceneObject* object;
     const prism::catalog::Variant* variant;
-    std::unique_ptr<prism::GpuMesh> mesh;
+    std::unique_ptr<prism::render::GpuMesh> mesh;
 };
 
 struct ModeResult {
     int glslLines = 0, activeUniforms = 0;
     std::size_t programs = 0;
     double compileLinkMs = 0.0, frameMs = 0.0;
-    prism::Image8 image;
+    prism::image::Image8 image;
 };
 
-ModeResult measure(const prism::Scene& scene, const prism::FeatureSet& features, bool uber, int runs, int frames) {
+ModeResult measure(const prism::scene::Scene& scene, const prism::render::FeatureSet& features, bool uber, int runs, int frames) {
     ModeResult r;
     std::vector<Draw> draws;
     std::map<std::string, const prism::catalog::Variant*> distinct;
-    prism::ProgramCache names(prism::shaders::kCatalog);
+    prism::render::ProgramCache names(prism::shaders::kCatalog);
     for (const auto& o : scene.objects) {
         const auto* shader = prism::catalog::findShader(prism::shaders::kCatalog, o.shader);
         if (!shader) throw std::runtime_error("unknown shader " + o.shader);
-        const prism::FeatureSet f = uber ? prism::FeatureSet{8, 4, true} : features;
-        const auto& variant = names.variantOf(o.shader, prism::variantFor(*shader, f, o.variantOverrides));
+        const prism::render::FeatureSet f = uber ? prism::render::FeatureSet{8, 4, true} : features;
+        const auto& variant = names.variantOf(o.shader, prism::render::variantFor(*shader, f, o.variantOverrides));
         distinct[o.shader + " " + std::string(variant.name)] = &variant;
         draws.push_back(
             {&o, &variant,
-             std::make_unique<prism::GpuMesh>(prism::meshForShader(o.shader, prism::namedMesh(o.mesh, o.subdivision)),
+             std::make_unique<prism::render::GpuMesh>(prism::render::meshForShader(o.shader, prism::render::namedMesh(o.mesh, o.subdivision)),
                                               prism::shaders::kCatalog.contractAttributes)});
     }
     r.programs = distinct.size();
@@ -127,8 +127,8 @@ ModeResult measure(const prism::Scene& scene, const prism::FeatureSet& features,
         r.activeUniforms += n;
     }
     // Frames: the same scene drawn with these programs; fog density 0 when the scene has none.
-    const prism::Fog noFog{glm::vec3(0.0f), 0.0f};
-    const prism::Fog* fog = scene.fog ? &*scene.fog : (uber ? &noFog : nullptr);
+    const prism::view::Fog noFog{glm::vec3(0.0f), 0.0f};
+    const prism::view::Fog* fog = scene.fog ? &*scene.fog : (uber ? &noFog : nullptr);
     prism::gl::Framebuffer fb(scene.width, scene.height);
     std::vector<double> frameTimes;
     for (int frame = 0; frame < frames + 2; ++frame) {
@@ -140,7 +140,7 @@ ModeResult measure(const prism::Scene& scene, const prism::FeatureSet& features,
         for (const auto& d : draws) {
             auto& program = *programs[d.variant];
             program.use();
-            prism::setFrameUniforms(program, scene.camera, float(scene.width) / float(scene.height), scene.lights,
+            prism::render::setFrameUniforms(program, scene.camera, float(scene.width) / float(scene.height), scene.lights,
                                     d.object->world, d.object->material, fog);
             d.mesh->draw();
         }
@@ -182,12 +182,12 @@ int main(int argc, char** argv) {
                  "image diff (max/255) |\n|---|---|---:|---:|---:|---:|---:|---:|\n";
     std::cout << std::fixed << std::setprecision(2);
     for (const auto& path : scenes) {
-        const auto scene = prism::loadScene(path);
-        const auto features = prism::featuresOf(scene.lights, scene.fog.has_value());
+        const auto scene = prism::scene::loadScene(path);
+        const auto features = prism::render::featuresOf(scene.lights, scene.fog.has_value());
         const auto name = std::filesystem::path(path).stem().string();
         auto minimal = measure(scene, features, false, runs, frames);
         auto uber = measure(scene, features, true, runs, frames);
-        const int diff = prism::compareImages(minimal.image, uber.image).maxChannelDiff;
+        const int diff = prism::image::compareImages(minimal.image, uber.image).maxChannelDiff;
         for (const auto* m : {&minimal, &uber}) {
             const char* mode = m == &minimal ? "minimal" : "uber";
             std::cout << "| " << name << " | " << mode << " | " << m->programs << " | " << m->glslLines << " | "

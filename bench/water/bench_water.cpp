@@ -20,9 +20,9 @@
 #include <string>
 #include <vector>
 
-#include "prism/gl.hpp"
-#include "prism/gl_context.hpp"
-#include "prism/framebuffer.hpp"
+#include "prism/gl/gl.hpp"
+#include "prism/gl/gl_context.hpp"
+#include "prism/gl/framebuffer.hpp"
 #include "prism/water/gpu_water_simulation.hpp"
 #include "prism/water/rain_rates.hpp"
 #include "prism/water/water_scene.hpp"
@@ -199,13 +199,13 @@ int main(int argc, char** argv) {
                 d.terrain = terrain;
                 d.permeability = k;
                 d.rainMmPerHour = rainRateMmPerHour(RainClass::Cloudburst);
-                d.fog = prism::Fog{.color = {0.66f, 0.68f, 0.70f}, .density = 0.01f};
+                d.fog = prism::view::Fog{.color = {0.66f, 0.68f, 0.70f}, .density = 0.01f};
                 WaterScene scene(std::move(d));
                 wet(scene.water()->simulation());
                 WaterSceneRenderer renderer(scene);
                 prism::gl::Framebuffer fb(width, height);
                 fb.bind();
-                const prism::Camera cam = groundCamera(scene.terrain());
+                const prism::view::Camera cam = groundCamera(scene.terrain());
                 renderer.draw(cam, width, height);  // builds the programs
                 glFinish();
                 std::vector<double> ms;

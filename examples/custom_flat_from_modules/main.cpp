@@ -10,15 +10,15 @@
 
 #include <iostream>
 
-#include "prism/compose.hpp"
-#include "prism/frame_uniforms.hpp"
-#include "prism/gl.hpp"
-#include "prism/gl_context.hpp"
-#include "prism/gpu_mesh.hpp"
-#include "prism/normals.hpp"
-#include "prism/offscreen_render.hpp"
-#include "prism/png_io.hpp"
-#include "prism/procedural_meshes.hpp"
+#include "prism/gl/compose.hpp"
+#include "prism/render/frame_uniforms.hpp"
+#include "prism/gl/gl.hpp"
+#include "prism/gl/gl_context.hpp"
+#include "prism/render/gpu_mesh.hpp"
+#include "prism/geometry/normals.hpp"
+#include "prism/render/offscreen_render.hpp"
+#include "prism/image/png_io.hpp"
+#include "prism/geometry/procedural_meshes.hpp"
 #include "prism/shaders.hpp"
 
 using prism::shaders::ModuleId;
@@ -79,18 +79,18 @@ int main(int argc, char** argv) {
 
         // Face normals on vertices split per face: the seed's NORMAL_FACE.
         auto mesh = prism::geometry::makeFlatShaded(prism::geometry::makeIcosphere(1.0f, 2));
-        prism::GpuMesh gpu(mesh, prism::shaders::kCatalog.contractAttributes);
+        prism::render::GpuMesh gpu(mesh, prism::shaders::kCatalog.contractAttributes);
         prism::gl::Framebuffer fb(256, 256);
         fb.bind();
         fb.clear({0.0f, 0.0f, 0.0f, 1.0f});
         glEnable(GL_DEPTH_TEST);
-        prism::Material material{{0.3f, 0.6f, 0.9f, 1.0f}, 1.0f, 0.0f};
+        prism::view::Material material{{0.3f, 0.6f, 0.9f, 1.0f}, 1.0f, 0.0f};
         program.use();
-        prism::setFrameUniforms(program, prism::defaultCamera(), 1.0f, prism::defaultLights(),
+        prism::render::setFrameUniforms(program, prism::render::defaultCamera(), 1.0f, prism::render::defaultLights(),
                                 glm::rotate(glm::mat4(1.0f), 0.4f, glm::vec3(0, 1, 0)), material);
         gpu.draw();
         auto image = fb.readImage8();
-        prism::writePng(out, image);
+        prism::image::writePng(out, image);
 
         std::size_t lit = 0;
         for (std::size_t i = 0; i < image.pixelCount(); ++i) lit += image.data[i * 4 + 2] > 0;

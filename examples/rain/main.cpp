@@ -21,14 +21,14 @@
 #include <string>
 #include <vector>
 
-#include "prism/gl.hpp"  // the GL loader first: GLFW must not pull in <GL/gl.h>
+#include "prism/gl/gl.hpp"  // the GL loader first: GLFW must not pull in <GL/gl.h>
 #if PRISM_RAIN_HAVE_GLFW
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #endif
-#include "prism/contact_sheet.hpp"
-#include "prism/gl_context.hpp"
-#include "prism/png_io.hpp"
+#include "prism/image/contact_sheet.hpp"
+#include "prism/gl/gl_context.hpp"
+#include "prism/image/png_io.hpp"
 #include "prism/rain/rain_scene.hpp"
 
 namespace {
@@ -91,7 +91,7 @@ RainSceneDesc sceneFor(const Options& o, int view, float intensity, float wind, 
     return d;
 }
 
-prism::Image8 shoot(const Options& o, const RainSceneDesc& desc) {
+prism::image::Image8 shoot(const Options& o, const RainSceneDesc& desc) {
     RainScene scene(desc);
     for (int i = 0; i < o.warmup; ++i) scene.update(1.0f / 30.0f);
     return scene.render(o.width, o.height);
@@ -102,7 +102,7 @@ int writeImages(const Options& o) {
     fs::create_directories(o.out);
     if (o.view >= 0) {
         const fs::path file = fs::path(o.out) / "rain.png";
-        prism::writePng(file, shoot(o, sceneFor(o, o.view, parseIntensity(o.intensity), o.wind, o.fog)));
+        prism::image::writePng(file, shoot(o, sceneFor(o, o.view, parseIntensity(o.intensity), o.wind, o.fog)));
         std::cout << "prism-rain: wrote " << file.string() << "\n";
         return 0;
     }
@@ -121,19 +121,19 @@ int writeImages(const Options& o) {
         {"view0-moderate-fog", 0, RainClass::Moderate, 0.0f, true},
         {"view2-cloudburst", 2, RainClass::Cloudburst, 2.0f, false},
     };
-    std::vector<prism::Image8> images;
+    std::vector<prism::image::Image8> images;
     std::vector<std::string> labels;
     for (const auto& s : shots) {
         const auto t0 = std::chrono::steady_clock::now();
         images.push_back(shoot(o, sceneFor(o, s.view, rainClassInfo(s.rain).intensity, s.wind, s.fog)));
         labels.push_back(s.name);
         const fs::path file = fs::path(o.out) / (s.name + ".png");
-        prism::writePng(file, images.back());
+        prism::image::writePng(file, images.back());
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
         std::cout << "prism-rain: wrote " << file.string() << " (" << ms << " ms)\n";
     }
     const fs::path sheet = fs::path(o.out) / "rain-sheet.png";
-    prism::writePng(sheet, prism::composeContactSheet(images, labels, 3));
+    prism::image::writePng(sheet, prism::image::composeContactSheet(images, labels, 3));
     std::cout << "prism-rain: wrote " << sheet.string() << "\n";
     return 0;
 }
@@ -246,7 +246,7 @@ int runWindow(const Options& o) {
         const auto now = std::chrono::steady_clock::now();
         const float dt = std::chrono::duration<float>(now - last).count();
         last = now;
-        prism::Camera cam = current->camera();
+        prism::view::Camera cam = current->camera();
         cam.eye = live.eye;
         cam.target = live.eye + glm::vec3(std::sin(live.yaw), 0.02f, -std::cos(live.yaw));
         current->setCamera(cam);

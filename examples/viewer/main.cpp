@@ -11,13 +11,13 @@
 #include <iostream>
 #include <string>
 
-#include "prism/gl.hpp"  // the GL loader first: GLFW must not pull in <GL/gl.h>
+#include "prism/gl/gl.hpp"  // the GL loader first: GLFW must not pull in <GL/gl.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
-#include "prism/gl_context.hpp"
-#include "prism/gpu_mesh.hpp"
-#include "prism/offscreen_render.hpp"
-#include "prism/shader_meshes.hpp"
+#include "prism/gl/gl_context.hpp"
+#include "prism/render/gpu_mesh.hpp"
+#include "prism/render/offscreen_render.hpp"
+#include "prism/render/shader_meshes.hpp"
 #include "prism/shaders.hpp"
 
 namespace {
@@ -95,9 +95,9 @@ int main(int argc, char** argv) {
         glfwSetWindowUserPointer(window, &state);
         glfwSetKeyCallback(window, onKey);
 
-        prism::ProgramCache cache(prism::shaders::kCatalog);
-        std::optional<prism::GpuMesh> gpu;
-        prism::RenderJob job;
+        prism::render::ProgramCache cache(prism::shaders::kCatalog);
+        std::optional<prism::render::GpuMesh> gpu;
+        prism::render::RenderJob job;
         double smoothedMs = 0.0;
         for (long frame = 0; !context->shouldClose() && (maxFrames == 0 || frame < maxFrames); ++frame) {
             const auto start = std::chrono::steady_clock::now();
@@ -108,7 +108,7 @@ int main(int argc, char** argv) {
             for (const auto& d : variant.defines) job.variant.emplace_back(d.name, d.value);
             if (state.meshDirty) {
                 gpu.emplace(
-                    prism::meshForShader(job.shader, prism::namedMesh(kMeshes[state.meshIndex], state.subdivision)),
+                    prism::render::meshForShader(job.shader, prism::render::namedMesh(kMeshes[state.meshIndex], state.subdivision)),
                     prism::shaders::kCatalog.contractAttributes);
                 state.meshDirty = false;
             }
@@ -122,7 +122,7 @@ int main(int argc, char** argv) {
             glClearColor(job.background.r, job.background.g, job.background.b, 1.0f);
             glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
             glEnable(GL_DEPTH_TEST);
-            prism::drawJob(cache, job, *gpu);
+            prism::render::drawJob(cache, job, *gpu);
             glFinish();
             const double ms =
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

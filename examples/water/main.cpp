@@ -20,14 +20,14 @@
 #include <sstream>
 #include <string>
 
-#include "prism/gl.hpp"  // the GL loader first: GLFW must not pull in <GL/gl.h>
+#include "prism/gl/gl.hpp"  // the GL loader first: GLFW must not pull in <GL/gl.h>
 #ifdef PRISM_WATER_HAVE_GLFW
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #endif
-#include "prism/framebuffer.hpp"
-#include "prism/gl_context.hpp"
-#include "prism/png_io.hpp"
+#include "prism/gl/framebuffer.hpp"
+#include "prism/gl/gl_context.hpp"
+#include "prism/image/png_io.hpp"
 #include "prism/water/gpu_water_simulation.hpp"
 #include "prism/water/rain_rates.hpp"
 #include "prism/water/water_scene.hpp"
@@ -54,11 +54,11 @@ struct Options {
 };
 
 // Top-down map: terrain shaded grey by height, water in blue by depth (log scale).
-prism::Image8 depthMap(const WaterScene& scene) {
+prism::image::Image8 depthMap(const WaterScene& scene) {
     const HeightField& t = scene.terrain();
     const std::vector<float> depth = scene.water()->simulation().depth();
     const auto [lo, hi] = std::minmax_element(t.heights.begin(), t.heights.end());
-    prism::Image8 img(t.width, t.height);
+    prism::image::Image8 img(t.width, t.height);
     for (int z = 0; z < t.height; ++z)
         for (int x = 0; x < t.width; ++x) {
             const float g = 0.25f + 0.6f * (t.at(x, z) - *lo) / std::max(1e-6f, *hi - *lo);
@@ -98,7 +98,7 @@ WaterSceneDescription describe(const Options& o) {
                                              mmPerHourToMetresPerSecond(o.permeabilityMaxMmH));
     d.rainMmPerHour = parseRainRateMmPerHour(o.rain);
     d.backend = o.gpu ? SimulationBackend::Gpu : SimulationBackend::Cpu;
-    if (o.fog > 0.0f) d.fog = prism::Fog{.color = {0.66f, 0.68f, 0.70f}, .density = o.fog};
+    if (o.fog > 0.0f) d.fog = prism::view::Fog{.color = {0.66f, 0.68f, 0.70f}, .density = o.fog};
     return d;
 }
 
@@ -119,9 +119,9 @@ int runOffscreen(const Options& o) {
     std::cout << "water: " << ledgerLine(scene.water()->simulation()) << "\n";
     WaterSceneRenderer renderer(scene);
     const std::filesystem::path out = o.out;
-    prism::writePng(out / "overview.png", renderer.renderImage(overviewCamera(scene.terrain()), o.width, o.height));
-    prism::writePng(out / "ground.png", renderer.renderImage(groundCamera(scene.terrain()), o.width, o.height));
-    prism::writePng(out / "depth.png", depthMap(scene));
+    prism::image::writePng(out / "overview.png", renderer.renderImage(overviewCamera(scene.terrain()), o.width, o.height));
+    prism::image::writePng(out / "ground.png", renderer.renderImage(groundCamera(scene.terrain()), o.width, o.height));
+    prism::image::writePng(out / "depth.png", depthMap(scene));
     std::cout << "water: wrote " << (out / "overview.png").string() << ", ground.png and depth.png\n";
     return 0;
 }
@@ -193,7 +193,7 @@ int runWindow(const Options& o) {
     glfwSetWindowUserPointer(window, &state);
     glfwSetKeyCallback(window, onKey);
     WaterSceneDescription d = describe(o);
-    const prism::Fog fog{.color = {0.66f, 0.68f, 0.70f}, .density = o.fog > 0.0f ? o.fog : 0.012f};
+    const prism::view::Fog fog{.color = {0.66f, 0.68f, 0.70f}, .density = o.fog > 0.0f ? o.fog : 0.012f};
     d.fog = fog;
     auto scene = std::make_unique<WaterScene>(std::move(d));
     auto renderer = std::make_unique<WaterSceneRenderer>(*scene);
@@ -214,14 +214,14 @@ int runWindow(const Options& o) {
             state.rainChanged = false;
         }
         if (state.fogToggled) {  // the renderer switches to the FOG=0 / FOG=1 programs
-            scene->setFog(scene->description().fog ? std::nullopt : std::optional<prism::Fog>(fog));
+            scene->setFog(scene->description().fog ? std::nullopt : std::optional<prism::view::Fog>(fog));
             state.fogToggled = false;
         }
         // 60x accelerated time so puddles form while you watch.
         if (!state.paused) scene->advance(o.frames ? o.dt : 60.0 * wall);
         int w = 0, h = 0;
         glfwGetFramebufferSize(window, &w, &h);
-        prism::Camera cam = overviewCamera(t);
+        prism::view::Camera cam = overviewCamera(t);
         const float r = 1.1f * extent * state.zoom;
         cam.eye = {r * std::cos(state.pitch) * std::sin(state.yaw), cam.target.y + r * std::sin(state.pitch),
                    r * std::cos(state.pitch) * std::cos(state.yaw)};

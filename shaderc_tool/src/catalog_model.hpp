@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include <prism/shader_catalog.hpp>
+#include <prism/catalog/shader_catalog.hpp>
 
 #include "contract.hpp"
 #include "reflection.hpp"

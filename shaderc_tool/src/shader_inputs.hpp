@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include <prism/shader_catalog.hpp>
+#include <prism/catalog/shader_catalog.hpp>
 
 #include "diagnostics.hpp"
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include <prism/shader_catalog.hpp>
+#include <prism/catalog/shader_catalog.hpp>
 
 #include "contract.hpp"
 #include "diagnostics.hpp"

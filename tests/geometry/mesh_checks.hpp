@@ -2,8 +2,8 @@
 // closedness of meshes.
 #pragma once
 
-#include "prism/mesh.hpp"
-#include "prism/weld.hpp"
+#include "prism/geometry/mesh.hpp"
+#include "prism/geometry/weld.hpp"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // Tests of the Mesh helpers: counts, bounds, validation and per-face splitting.
-#include "prism/mesh.hpp"
-#include "prism/procedural_meshes.hpp"
+#include "prism/geometry/mesh.hpp"
+#include "prism/geometry/procedural_meshes.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // Tests of the normal matrix: rotations, non-uniform scale (normals stay
 // perpendicular to the transformed surface), mirrors, singular and broken matrices.
-#include "prism/normal_matrix.hpp"
-#include "prism/normals.hpp"
-#include "prism/procedural_meshes.hpp"
+#include "prism/geometry/normal_matrix.hpp"
+#include "prism/geometry/normals.hpp"
+#include "prism/geometry/procedural_meshes.hpp"
 
 #include "mesh_checks.hpp"
 

@@ -1,8 +1,8 @@
 // Tests of face and area-weighted vertex normals: the thesis' worked example,
 // degenerate input, the fallback chain and extreme scales.
-#include "prism/normals.hpp"
-#include "prism/procedural_meshes.hpp"
-#include "prism/weld.hpp"
+#include "prism/geometry/normals.hpp"
+#include "prism/geometry/procedural_meshes.hpp"
+#include "prism/geometry/weld.hpp"
 
 #include "mesh_checks.hpp"
 

@@ -1,6 +1,6 @@
 // Tests of OBJ import: good files (triangles, quads, normals, uvs, relative indices,
 // CRLF), welding after import, and errors naming file and line.
-#include "prism/obj_loader.hpp"
+#include "prism/geometry/obj_loader.hpp"
 
 #include "mesh_checks.hpp"
 

@@ -1,8 +1,8 @@
 // Tests of the procedural meshes: counts, unit outward normals, CCW winding seen
 // from outside, closedness, determinism and argument checks.
-#include "prism/normals.hpp"
-#include "prism/procedural_meshes.hpp"
-#include "prism/weld.hpp"
+#include "prism/geometry/normals.hpp"
+#include "prism/geometry/procedural_meshes.hpp"
+#include "prism/geometry/weld.hpp"
 
 #include "mesh_checks.hpp"
 

@@ -1,8 +1,8 @@
 // Tests of welding: split cubes and spheres, crease angles, uv seams, -0.0, NaN, and
 // agreement of the O(n) hash weld with the thesis' O(n^2) search.
-#include "prism/normals.hpp"
-#include "prism/procedural_meshes.hpp"
-#include "prism/weld.hpp"
+#include "prism/geometry/normals.hpp"
+#include "prism/geometry/procedural_meshes.hpp"
+#include "prism/geometry/weld.hpp"
 
 #include "mesh_checks.hpp"
 

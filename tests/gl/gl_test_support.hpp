@@ -10,11 +10,11 @@
 #include <span>
 #include <string_view>
 
-#include "prism/framebuffer.hpp"
-#include "prism/gl.hpp"
-#include "prism/gl_context.hpp"
-#include "prism/program.hpp"
-#include "prism/shader_catalog.hpp"
+#include "prism/gl/framebuffer.hpp"
+#include "prism/gl/gl.hpp"
+#include "prism/gl/gl_context.hpp"
+#include "prism/gl/program.hpp"
+#include "prism/catalog/shader_catalog.hpp"
 
 namespace prism::test {
 

@@ -1,7 +1,7 @@
 // EGL and OSMesa both run Mesa's llvmpipe: the same program and triangle must give
 // byte-identical pixels (the premise of the golden-image tests).
 #include "gl_test_support.hpp"
-#include "prism/image_compare.hpp"
+#include "prism/image/image_compare.hpp"
 
 namespace {
 
@@ -29,7 +29,7 @@ prism::gl::ProgramSources shadedTriangleSources() {
     return s;
 }
 
-prism::Image8 render(prism::gl::Context& ctx) {
+prism::image::Image8 render(prism::gl::Context& ctx) {
     ctx.makeCurrent();
     prism::gl::Program program(shadedTriangleSources());
     program.set("u_frequency", 0.23f);
@@ -41,17 +41,17 @@ prism::Image8 render(prism::gl::Context& ctx) {
 TEST(BackendIdentity, EglAndOsMesaRenderIdenticalPixels) {
     auto egl = prism::gl::createContext(Backend::Egl);
     auto osmesa = prism::gl::createContext(Backend::OsMesa);
-    const prism::Image8 a = render(*egl);
-    const prism::Image8 b = render(*osmesa);
+    const prism::image::Image8 a = render(*egl);
+    const prism::image::Image8 b = render(*osmesa);
 
     // The image must show the triangle (not just the clear colour) to mean anything.
     std::size_t lit = 0;
     for (std::size_t i = 0; i < a.data.size(); i += 4) lit += (a.data[i] | a.data[i + 1] | a.data[i + 2]) != 0;
     EXPECT_GT(lit, a.pixelCount() / 16);  // the triangle covers 1/8 of the image
 
-    const auto cmp = prism::compareImages(a, b, 0);
+    const auto cmp = prism::image::compareImages(a, b, 0);
     EXPECT_TRUE(cmp.sizeMatches);
-    EXPECT_EQ(cmp.maxChannelDiff, 0) << prism::describe(cmp, prism::Thresholds{0, 0.0, 0.0});
+    EXPECT_EQ(cmp.maxChannelDiff, 0) << prism::image::describe(cmp, prism::image::Thresholds{0, 0.0, 0.0});
     EXPECT_EQ(a, b);
 }
 

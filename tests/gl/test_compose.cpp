@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "gl_test_support.hpp"
-#include "prism/compose.hpp"
+#include "prism/gl/compose.hpp"
 
 namespace {
 
@@ -132,7 +132,7 @@ TEST_F(ComposeGl, ComposedDiamondRenders) {
     EXPECT_EQ(glGetAttribLocation(program.id(), "a_position"), 0);  // contract binding applied
     prism::gl::Framebuffer fb(prism::test::kSize, prism::test::kSize);
     prism::test::drawTriangle(fb, program);
-    EXPECT_EQ(fb.readImage8().at(prism::test::kSize / 2, prism::test::kSize / 2), (prism::Rgba8{64, 128, 0, 255}));
+    EXPECT_EQ(fb.readImage8().at(prism::test::kSize / 2, prism::test::kSize / 2), (prism::image::Rgba8{64, 128, 0, 255}));
 }
 
 // Both the #line semantics of the driver and the files table are checked here: an

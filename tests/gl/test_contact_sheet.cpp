@@ -4,16 +4,16 @@
 #include <string>
 #include <vector>
 
-#include "prism/contact_sheet.hpp"
+#include "prism/image/contact_sheet.hpp"
 
 namespace {
 
-constexpr prism::Rgba8 kInk{255, 255, 0, 255};
-constexpr prism::Rgba8 kPaper{0, 0, 0, 255};
+constexpr prism::image::Rgba8 kInk{255, 255, 0, 255};
+constexpr prism::image::Rgba8 kPaper{0, 0, 0, 255};
 
 TEST(DrawText, GlyphPixelsAtScaleOne) {
-    prism::Image8 img(20, 10, kPaper);
-    prism::drawText(img, 2, 1, "T", 1, kInk);
+    prism::image::Image8 img(20, 10, kPaper);
+    prism::image::drawText(img, 2, 1, "T", 1, kInk);
     for (int x = 2; x < 7; ++x) EXPECT_EQ(img.at(x, 1), kInk) << x;  // the T's bar
     for (int y = 2; y < 8; ++y) EXPECT_EQ(img.at(4, y), kInk) << y;  // its stem
     EXPECT_EQ(img.at(3, 2), kPaper);
@@ -22,65 +22,65 @@ TEST(DrawText, GlyphPixelsAtScaleOne) {
 }
 
 TEST(DrawText, ScaleMakesBlocksAndTextIsClipped) {
-    prism::Image8 img(12, 16, kPaper);
-    prism::drawText(img, 0, 0, "T", 2, kInk);
+    prism::image::Image8 img(12, 16, kPaper);
+    prism::image::drawText(img, 0, 0, "T", 2, kInk);
     EXPECT_EQ(img.at(0, 0), kInk);
     EXPECT_EQ(img.at(1, 1), kInk);
     EXPECT_EQ(img.at(9, 1), kInk);
     EXPECT_EQ(img.at(4, 13), kInk);  // stem, row 6 of the glyph at scale 2
     EXPECT_EQ(img.at(3, 13), kPaper);
-    EXPECT_NO_THROW(prism::drawText(img, 8, 12, "WWW", 3, kInk));  // mostly outside
-    EXPECT_NO_THROW(prism::drawText(img, -30, -30, "A", 1, kInk));
+    EXPECT_NO_THROW(prism::image::drawText(img, 8, 12, "WWW", 3, kInk));  // mostly outside
+    EXPECT_NO_THROW(prism::image::drawText(img, -30, -30, "A", 1, kInk));
 }
 
 TEST(DrawText, LowerCaseAndUnknownCharacters) {
-    prism::Image8 upper(12, 8, kPaper), lower(12, 8, kPaper), unknown(12, 8, kPaper), question(12, 8, kPaper);
-    prism::drawText(upper, 0, 0, "AZ", 1, kInk);
-    prism::drawText(lower, 0, 0, "az", 1, kInk);
-    prism::drawText(unknown, 0, 0, "@", 1, kInk);
-    prism::drawText(question, 0, 0, "?", 1, kInk);
+    prism::image::Image8 upper(12, 8, kPaper), lower(12, 8, kPaper), unknown(12, 8, kPaper), question(12, 8, kPaper);
+    prism::image::drawText(upper, 0, 0, "AZ", 1, kInk);
+    prism::image::drawText(lower, 0, 0, "az", 1, kInk);
+    prism::image::drawText(unknown, 0, 0, "@", 1, kInk);
+    prism::image::drawText(question, 0, 0, "?", 1, kInk);
     EXPECT_EQ(upper, lower);
     EXPECT_EQ(unknown, question);
-    EXPECT_NE(upper, prism::Image8(12, 8, kPaper));
+    EXPECT_NE(upper, prism::image::Image8(12, 8, kPaper));
 }
 
 TEST(DrawText, Metrics) {
-    EXPECT_EQ(prism::textWidth("AB"), 11);
-    EXPECT_EQ(prism::textWidth("AB", 2), 22);
-    EXPECT_EQ(prism::textWidth("ABC\nA"), 17);
-    EXPECT_EQ(prism::textHeight("A"), 7);
-    EXPECT_EQ(prism::textHeight("A\nB"), 15);
-    EXPECT_EQ(prism::textWidth(""), 0);
+    EXPECT_EQ(prism::image::textWidth("AB"), 11);
+    EXPECT_EQ(prism::image::textWidth("AB", 2), 22);
+    EXPECT_EQ(prism::image::textWidth("ABC\nA"), 17);
+    EXPECT_EQ(prism::image::textHeight("A"), 7);
+    EXPECT_EQ(prism::image::textHeight("A\nB"), 15);
+    EXPECT_EQ(prism::image::textWidth(""), 0);
 }
 
 TEST(ContactSheet, LayoutAndLabels) {
-    const std::vector<prism::Image8> images = {prism::Image8(10, 8, {255, 0, 0, 255}),
-                                               prism::Image8(10, 8, {0, 255, 0, 255}),
-                                               prism::Image8(10, 8, {0, 0, 255, 255})};
+    const std::vector<prism::image::Image8> images = {prism::image::Image8(10, 8, {255, 0, 0, 255}),
+                                               prism::image::Image8(10, 8, {0, 255, 0, 255}),
+                                               prism::image::Image8(10, 8, {0, 0, 255, 255})};
     const std::vector<std::string> labels = {"A", "B"};
-    prism::ContactSheetStyle style;
-    const prism::Image8 sheet = prism::composeContactSheet(images, labels, 2, style);
+    prism::image::ContactSheetStyle style;
+    const prism::image::Image8 sheet = prism::image::composeContactSheet(images, labels, 2, style);
     // pad 4; cells 10x8; label strip 7 + pad.
     EXPECT_EQ(sheet.width, 4 + 2 * (10 + 4));
     EXPECT_EQ(sheet.height, 4 + 2 * (8 + 4 + 7 + 4));
-    EXPECT_EQ(sheet.at(4, 4), (prism::Rgba8{255, 0, 0, 255}));       // image 0 top-left
-    EXPECT_EQ(sheet.at(18, 4), (prism::Rgba8{0, 255, 0, 255}));      // image 1
-    EXPECT_EQ(sheet.at(4, 4 + 23), (prism::Rgba8{0, 0, 255, 255}));  // image 2, second row
+    EXPECT_EQ(sheet.at(4, 4), (prism::image::Rgba8{255, 0, 0, 255}));       // image 0 top-left
+    EXPECT_EQ(sheet.at(18, 4), (prism::image::Rgba8{0, 255, 0, 255}));      // image 1
+    EXPECT_EQ(sheet.at(4, 4 + 23), (prism::image::Rgba8{0, 0, 255, 255}));  // image 2, second row
     EXPECT_EQ(sheet.at(0, 0), style.background);
     EXPECT_EQ(sheet.at(4 + 2, 4 + 8 + 4), style.labelColour);      // top of the 'A'
     EXPECT_EQ(sheet.at(4 + 2, 4 + 23 + 8 + 4), style.background);  // image 2 has no label
-    EXPECT_THROW(prism::composeContactSheet(images, labels, 0), std::invalid_argument);
+    EXPECT_THROW(prism::image::composeContactSheet(images, labels, 0), std::invalid_argument);
     const std::vector<std::string> tooMany = {"a", "b", "c", "d"};
-    EXPECT_THROW(prism::composeContactSheet(images, tooMany, 2), std::invalid_argument);
+    EXPECT_THROW(prism::image::composeContactSheet(images, tooMany, 2), std::invalid_argument);
 }
 
 TEST(ContactSheet, LongLabelIsShortenedToItsCell) {
-    const std::vector<prism::Image8> images = {prism::Image8(20, 4, {255, 255, 255, 255}),
-                                               prism::Image8(20, 4, {255, 255, 255, 255})};
+    const std::vector<prism::image::Image8> images = {prism::image::Image8(20, 4, {255, 255, 255, 255}),
+                                               prism::image::Image8(20, 4, {255, 255, 255, 255})};
     const std::vector<std::string> labels = {"A VERY LONG LABEL", "X"};
-    const prism::Image8 sheet = prism::composeContactSheet(images, labels, 2);
+    const prism::image::Image8 sheet = prism::image::composeContactSheet(images, labels, 2);
     // Nothing of label 0 may spill into cell 1's column range (x >= 4 + 24).
-    prism::Image8 onlySecond = prism::composeContactSheet(images, std::vector<std::string>{"", "X"}, 2);
+    prism::image::Image8 onlySecond = prism::image::composeContactSheet(images, std::vector<std::string>{"", "X"}, 2);
     for (int y = 0; y < sheet.height; ++y)
         for (int x = 4 + 20; x < sheet.width; ++x) ASSERT_EQ(sheet.at(x, y), onlySecond.at(x, y)) << x << "," << y;
 }

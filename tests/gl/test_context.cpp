@@ -131,7 +131,7 @@ TEST(ContextSwitching, TwoBackendsInOneProcessEachRenderAfterMakeCurrent) {
         ctx->makeCurrent();
         prism::gl::Framebuffer fb(4, 4);
         fb.clear({0.f, 1.f, 0.f, 1.f});
-        EXPECT_EQ(fb.readImage8().at(2, 2), (prism::Rgba8{0, 255, 0, 255})) << prism::gl::backendName(ctx->backend());
+        EXPECT_EQ(fb.readImage8().at(2, 2), (prism::image::Rgba8{0, 255, 0, 255})) << prism::gl::backendName(ctx->backend());
     }
 }
 
@@ -140,7 +140,7 @@ TEST(ContextLifetime, EglCanBeCreatedAgainAfterTheLastOneIsDestroyed) {
         auto ctx = prism::gl::createContext(Backend::Egl);  // the display is terminated in between
         prism::gl::Framebuffer fb(4, 4);
         fb.clear({0.f, 0.f, 1.f, 1.f});
-        EXPECT_EQ(fb.readImage8().at(0, 0), (prism::Rgba8{0, 0, 255, 255})) << "round " << round;
+        EXPECT_EQ(fb.readImage8().at(0, 0), (prism::image::Rgba8{0, 0, 255, 255})) << "round " << round;
     }
 }
 
@@ -167,7 +167,7 @@ TEST(GlfwContext, WindowContextOrClearErrorWithoutDisplay) {
     EXPECT_EQ(ctx->drawableHeight(), 30);
     prism::gl::Framebuffer fb(8, 8);
     fb.clear({1.f, 0.f, 0.f, 1.f});
-    EXPECT_EQ(fb.readImage8().at(4, 4), (prism::Rgba8{255, 0, 0, 255}));
+    EXPECT_EQ(fb.readImage8().at(4, 4), (prism::image::Rgba8{255, 0, 0, 255}));
     ctx->swapBuffers();
 }
 

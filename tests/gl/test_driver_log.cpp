@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "prism/driver_log.hpp"
+#include "prism/gl/driver_log.hpp"
 
 namespace {
 

@@ -17,22 +17,22 @@ class FramebufferTest : public ::testing::TestWithParam<Backend> {
 TEST_P(FramebufferTest, ClearReadsBackExactColour) {
     Framebuffer fb(prism::test::kSize, 48);
     fb.clear({51.f / 255.f, 102.f / 255.f, 153.f / 255.f, 204.f / 255.f});
-    const prism::Image8 img = fb.readImage8();
+    const prism::image::Image8 img = fb.readImage8();
     ASSERT_EQ(img.width, prism::test::kSize);
     ASSERT_EQ(img.height, 48);
     for (int y = 0; y < img.height; ++y)
         for (int x = 0; x < img.width; ++x)
-            ASSERT_EQ(img.at(x, y), (prism::Rgba8{51, 102, 153, 204})) << "at " << x << "," << y;
+            ASSERT_EQ(img.at(x, y), (prism::image::Rgba8{51, 102, 153, 204})) << "at " << x << "," << y;
 }
 
 TEST_P(FramebufferTest, FloatTargetKeepsValuesOutsideZeroToOne) {
     Framebuffer fb(8, 8, ColorFormat::Rgba32F);
     fb.clear({2.5f, -0.75f, 0.125f, 1.0f});
-    const prism::ImageF img = fb.readImageF();
-    EXPECT_EQ(img.at(3, 5), (prism::RgbaF{2.5f, -0.75f, 0.125f, 1.0f}));
-    EXPECT_EQ(prism::countNonFinite(img), 0u);
+    const prism::image::ImageF img = fb.readImageF();
+    EXPECT_EQ(img.at(3, 5), (prism::image::RgbaF{2.5f, -0.75f, 0.125f, 1.0f}));
+    EXPECT_EQ(prism::image::countNonFinite(img), 0u);
     // The 8-bit read of a float target clamps.
-    EXPECT_EQ(fb.readImage8().at(0, 0), (prism::Rgba8{255, 0, 32, 255}));
+    EXPECT_EQ(fb.readImage8().at(0, 0), (prism::image::Rgba8{255, 0, 32, 255}));
 }
 
 TEST_P(FramebufferTest, RowZeroIsTheTop) {
@@ -44,11 +44,11 @@ TEST_P(FramebufferTest, RowZeroIsTheTop) {
     glClearColor(1.f, 0.f, 0.f, 1.f);
     glClear(GL_COLOR_BUFFER_BIT);
     glDisable(GL_SCISSOR_TEST);
-    const prism::Image8 img = fb.readImage8();
-    EXPECT_EQ(img.at(5, 0), (prism::Rgba8{255, 0, 0, 255}));
-    EXPECT_EQ(img.at(5, 3), (prism::Rgba8{255, 0, 0, 255}));
-    EXPECT_EQ(img.at(5, 4), (prism::Rgba8{0, 0, 255, 255}));
-    EXPECT_EQ(img.at(5, 15), (prism::Rgba8{0, 0, 255, 255}));
+    const prism::image::Image8 img = fb.readImage8();
+    EXPECT_EQ(img.at(5, 0), (prism::image::Rgba8{255, 0, 0, 255}));
+    EXPECT_EQ(img.at(5, 3), (prism::image::Rgba8{255, 0, 0, 255}));
+    EXPECT_EQ(img.at(5, 4), (prism::image::Rgba8{0, 0, 255, 255}));
+    EXPECT_EQ(img.at(5, 15), (prism::image::Rgba8{0, 0, 255, 255}));
 }
 
 TEST_P(FramebufferTest, MoveTransfersOwnership) {
@@ -58,7 +58,7 @@ TEST_P(FramebufferTest, MoveTransfersOwnership) {
     EXPECT_EQ(b.id(), id);
     EXPECT_EQ(a.id(), 0u);
     b.clear({1.f, 1.f, 1.f, 1.f});
-    EXPECT_EQ(b.readImage8().at(1, 1), (prism::Rgba8{255, 255, 255, 255}));
+    EXPECT_EQ(b.readImage8().at(1, 1), (prism::image::Rgba8{255, 255, 255, 255}));
 }
 
 TEST_P(FramebufferTest, BadSizeIsAClearError) {

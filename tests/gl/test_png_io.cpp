@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "prism/png_io.hpp"
+#include "prism/image/png_io.hpp"
 
 namespace {
 
@@ -21,8 +21,8 @@ class PngTest : public ::testing::Test {
     fs::path dir_;
 };
 
-prism::Image8 pattern(int w, int h) {
-    prism::Image8 img(w, h);
+prism::image::Image8 pattern(int w, int h) {
+    prism::image::Image8 img(w, h);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
             img.set(x, y,
@@ -32,10 +32,10 @@ prism::Image8 pattern(int w, int h) {
 }
 
 TEST_F(PngTest, RoundTripIsExactAndLeavesNoTempFile) {
-    const prism::Image8 img = pattern(37, 19);  // odd width: no row padding assumptions
+    const prism::image::Image8 img = pattern(37, 19);  // odd width: no row padding assumptions
     const fs::path file = dir_ / "nested" / "pattern.png";
-    prism::writePng(file, img);
-    EXPECT_EQ(prism::readPng(file), img);
+    prism::image::writePng(file, img);
+    EXPECT_EQ(prism::image::readPng(file), img);
     std::size_t entries = 0;
     for (const auto& e : fs::directory_iterator(file.parent_path())) {
         ++entries;
@@ -43,26 +43,26 @@ TEST_F(PngTest, RoundTripIsExactAndLeavesNoTempFile) {
     }
     EXPECT_EQ(entries, 1u);
     // Overwriting replaces the file.
-    const prism::Image8 other = pattern(5, 5);
-    prism::writePng(file, other);
-    EXPECT_EQ(prism::readPng(file), other);
+    const prism::image::Image8 other = pattern(5, 5);
+    prism::image::writePng(file, other);
+    EXPECT_EQ(prism::image::readPng(file), other);
 }
 
 TEST_F(PngTest, ReadErrorsNameTheFile) {
     const fs::path missing = dir_ / "missing.png";
     try {
-        prism::readPng(missing);
+        prism::image::readPng(missing);
         FAIL() << "reading a missing file succeeded";
-    } catch (const prism::PngError& e) {
+    } catch (const prism::image::PngError& e) {
         EXPECT_NE(std::string(e.what()).find(missing.string()), std::string::npos) << e.what();
     }
     fs::create_directories(dir_);
     const fs::path notPng = dir_ / "text.png";
     std::ofstream(notPng) << "this is not a PNG file";
     try {
-        prism::readPng(notPng);
+        prism::image::readPng(notPng);
         FAIL() << "reading a text file as PNG succeeded";
-    } catch (const prism::PngError& e) {
+    } catch (const prism::image::PngError& e) {
         EXPECT_NE(std::string(e.what()).find(notPng.string()), std::string::npos) << e.what();
     }
 }
@@ -72,12 +72,12 @@ TEST_F(PngTest, WriteErrorsNameTheFile) {
     std::ofstream(dir_ / "plainfile") << "x";
     const fs::path impossible = dir_ / "plainfile" / "out.png";  // parent is a file
     try {
-        prism::writePng(impossible, pattern(2, 2));
+        prism::image::writePng(impossible, pattern(2, 2));
         FAIL() << "writing below a plain file succeeded";
-    } catch (const prism::PngError& e) {
+    } catch (const prism::image::PngError& e) {
         EXPECT_NE(std::string(e.what()).find(impossible.string()), std::string::npos) << e.what();
     }
-    EXPECT_THROW(prism::writePng(dir_ / "empty.png", prism::Image8{}), prism::PngError);
+    EXPECT_THROW(prism::image::writePng(dir_ / "empty.png", prism::image::Image8{}), prism::image::PngError);
     EXPECT_FALSE(fs::exists(dir_ / "empty.png"));
 }
 

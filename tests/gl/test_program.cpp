@@ -30,13 +30,13 @@ TEST_F(ProgramTest, VariantRendersTriangleInUniformColour) {
 
     prism::gl::Framebuffer fb(kSize, kSize);
     drawTriangle(fb, program);
-    const prism::Image8 img = fb.readImage8();
-    EXPECT_EQ(img.at(kSize / 2, kSize / 2), (prism::Rgba8{255, 128, 64, 255}));
-    EXPECT_EQ(img.at(1, 1), (prism::Rgba8{0, 0, 0, 255}));
-    EXPECT_EQ(img.at(kSize - 2, kSize - 2), (prism::Rgba8{0, 0, 0, 255}));
+    const prism::image::Image8 img = fb.readImage8();
+    EXPECT_EQ(img.at(kSize / 2, kSize / 2), (prism::image::Rgba8{255, 128, 64, 255}));
+    EXPECT_EQ(img.at(1, 1), (prism::image::Rgba8{0, 0, 0, 255}));
+    EXPECT_EQ(img.at(kSize - 2, kSize - 2), (prism::image::Rgba8{0, 0, 0, 255}));
     // The triangle's wide base is at the bottom of the image (row 0 = top).
-    EXPECT_EQ(img.at(kSize * 3 / 10, kSize * 7 / 10), (prism::Rgba8{255, 128, 64, 255}));
-    EXPECT_EQ(img.at(kSize * 3 / 10, kSize * 3 / 10), (prism::Rgba8{0, 0, 0, 255}));
+    EXPECT_EQ(img.at(kSize * 3 / 10, kSize * 7 / 10), (prism::image::Rgba8{255, 128, 64, 255}));
+    EXPECT_EQ(img.at(kSize * 3 / 10, kSize * 3 / 10), (prism::image::Rgba8{0, 0, 0, 255}));
     EXPECT_TRUE(program.unknownUniformReports().empty());
     EXPECT_TRUE(program.typeMismatchReports().empty());
 }
@@ -53,7 +53,7 @@ TEST_F(ProgramTest, ArrayElementsAreAddressableByIndex) {
 
     prism::gl::Framebuffer fb(kSize, kSize);
     drawTriangle(fb, program);
-    EXPECT_EQ(fb.readImage8().at(kSize / 2, kSize / 2), (prism::Rgba8{128, 128, 128, 128}));
+    EXPECT_EQ(fb.readImage8().at(kSize / 2, kSize / 2), (prism::image::Rgba8{128, 128, 128, 128}));
 
     const float four[] = {1.f, 1.f, 1.f, 1.f};
     EXPECT_THROW(program.set("u_weights", std::span<const float>(four)), std::length_error);
@@ -163,7 +163,7 @@ TEST_F(ProgramTest, RawSourcesAskTheDriverForUniforms) {
 
     prism::gl::Framebuffer fb(kSize, kSize);
     drawTriangle(fb, program);
-    EXPECT_EQ(fb.readImage8().at(kSize / 2, kSize / 2), (prism::Rgba8{128, 0, 255, 255}));
+    EXPECT_EQ(fb.readImage8().at(kSize / 2, kSize / 2), (prism::image::Rgba8{128, 0, 255, 255}));
 }
 
 }  // namespace

@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "prism/gl_context.hpp"
+#include "prism/gl/gl_context.hpp"
 #include "prism/rain/rain_programs.hpp"
 
 namespace prism::rain::test {

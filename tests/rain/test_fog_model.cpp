@@ -1,4 +1,4 @@
-// Fog: the animated noise array tiles in space and loops in time; billboards drift and
+// view::Fog: the animated noise array tiles in space and loops in time; billboards drift and
 // stay around the camera; bad fog parameters are clear errors.
 #include <gtest/gtest.h>
 

@@ -8,8 +8,8 @@
 #include <iostream>
 #include <limits>
 
-#include "prism/framebuffer.hpp"
-#include "prism/gl.hpp"
+#include "prism/gl/framebuffer.hpp"
+#include "prism/gl/gl.hpp"
 #include "prism/rain/rain_system.hpp"
 #include "rain_gl_support.hpp"
 #include "rain_test_checks.hpp"
@@ -108,7 +108,7 @@ TEST_F(GpuRainExtremes, EveryTechniqueDrawsFinitePixels) {
     RainParams p;
     p.fixedCount = 20000;
     p.wind.strength = 500.0f;  // extreme tilt
-    Camera cam;
+    view::Camera cam;
     cam.eye = {0.0f, 1.7f, 0.0f};
     cam.target = {0.0f, 30.0f, 0.001f};  // straight up, along the fall: degenerate streak frames
     RainSystem rain(programs(), p, cam.eye);
@@ -122,8 +122,8 @@ TEST_F(GpuRainExtremes, EveryTechniqueDrawsFinitePixels) {
         in.viewportHeight = 64;
         in.technique = t;
         rain.draw(in);
-        const ImageF img = fb.readImageF();
-        EXPECT_EQ(countNonFinite(img), 0u) << techniqueName(t);
+        const image::ImageF img = fb.readImageF();
+        EXPECT_EQ(image::countNonFinite(img), 0u) << techniqueName(t);
         double sum = 0.0;
         for (float v : img.data) sum += v;
         EXPECT_GT(sum, 64.0 * 64.0 * 1.0 + 1.0) << techniqueName(t) << " drew nothing";

@@ -2,7 +2,7 @@
 // two views, with and without wind, and with fog; plus the three streak techniques
 // against each other, light dependence of the streaks, and byte-identical repeats.
 //
-// Thresholds as in tests/rendering (tests/golden/README.md): a pixel is "over" when a
+// image::Thresholds as in tests/rendering (tests/golden/README.md): a pixel is "over" when a
 // channel differs by more than 3/255; a case passes with at most 0.1 % of pixels over
 // and a mean absolute error of at most 0.5/255.
 // Flags: PRISM_UPDATE_GOLDENS=1 rewrites the goldens (the tests then report SKIPPED);
@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "prism/image_compare.hpp"
-#include "prism/png_io.hpp"
+#include "prism/image/image_compare.hpp"
+#include "prism/image/png_io.hpp"
 #include "prism/rain/rain_scene.hpp"
 #include "rain_gl_support.hpp"
 
@@ -29,7 +29,7 @@ namespace fs = std::filesystem;
 
 constexpr int kSize = 160;
 constexpr int kWarmupSteps = 20;  // of 1/30 s
-constexpr Thresholds kThresholds{.maxChannelDiff = 3, .maxShareOver = 0.001, .maxMean = 0.5};
+constexpr image::Thresholds kThresholds{.maxChannelDiff = 3, .maxShareOver = 0.001, .maxMean = 0.5};
 
 struct RainCase {
     std::string name;  // the golden's file name, self-describing
@@ -67,7 +67,7 @@ RainSceneDesc describe(const RainCase& c, std::uint32_t seed = 2013) {
     return d;
 }
 
-Image8 renderScene(const RainSceneDesc& d) {
+image::Image8 renderScene(const RainSceneDesc& d) {
     RainScene scene(d);
     for (int i = 0; i < kWarmupSteps; ++i) scene.update(1.0f / 30.0f);
     return scene.render(kSize, kSize);
@@ -82,15 +82,15 @@ fs::path outputDir() {
     return (dir && *dir) ? fs::path(dir) : fs::path(PRISM_RAIN_GOLDEN_FAILURE_DIR);
 }
 
-std::string saveActualAndDiff(const std::string& name, const Image8& actual, const ImageComparison& cmp) {
+std::string saveActualAndDiff(const std::string& name, const image::Image8& actual, const image::ImageComparison& cmp) {
     const fs::path base = outputDir() / name;
-    writePng(base.string() + ".actual.png", actual);
-    if (cmp.sizeMatches) writePng(base.string() + ".diff.png", cmp.diff);
+    image::writePng(base.string() + ".actual.png", actual);
+    if (cmp.sizeMatches) image::writePng(base.string() + ".diff.png", cmp.diff);
     return base.string() + ".{actual,diff}.png";
 }
 
 // Pixels that differ from `reference` by more than `tolerance` in any channel.
-std::size_t changedPixels(const Image8& a, const Image8& reference, int tolerance = 2) {
+std::size_t changedPixels(const image::Image8& a, const image::Image8& reference, int tolerance = 2) {
     std::size_t n = 0;
     for (std::size_t i = 0; i < a.data.size(); i += 4) {
         int d = 0;
@@ -101,7 +101,7 @@ std::size_t changedPixels(const Image8& a, const Image8& reference, int toleranc
 }
 
 // Sum over pixels of how much brighter `a` is than `reference` (RGB, 8-bit units).
-double addedLight(const Image8& a, const Image8& reference) {
+double addedLight(const image::Image8& a, const image::Image8& reference) {
     double sum = 0.0;
     for (std::size_t i = 0; i < a.data.size(); i += 4)
         for (int c = 0; c < 3; ++c) sum += std::max(0, int(a.data[i + c]) - int(reference.data[i + c]));
@@ -112,7 +112,7 @@ class RainGolden : public RainGlTest, public ::testing::WithParamInterface<RainC
 
 TEST_P(RainGolden, MatchesStoredGoldenWithinThresholds) {
     const RainCase& c = GetParam();
-    const Image8 actual = renderScene(describe(c));
+    const image::Image8 actual = renderScene(describe(c));
     RainSceneDesc dry = describe(c);
     dry.rain.reset();
     // A golden without visible rain would test nothing.
@@ -120,17 +120,17 @@ TEST_P(RainGolden, MatchesStoredGoldenWithinThresholds) {
         << c.name << ": (almost) no rain drawn";
 
     if (envFlag("PRISM_UPDATE_GOLDENS")) {
-        writePng(goldenPath(c.name), actual);
+        image::writePng(goldenPath(c.name), actual);
         GTEST_SKIP() << "PRISM_UPDATE_GOLDENS: rewrote " << goldenPath(c.name).string();
     }
     ASSERT_TRUE(fs::exists(goldenPath(c.name)))
         << "no golden image " << goldenPath(c.name).string() << "; create it with PRISM_UPDATE_GOLDENS=1";
-    const Image8 golden = readPng(goldenPath(c.name));
-    const ImageComparison cmp = compareImages(actual, golden, kThresholds.maxChannelDiff);
-    const bool ok = passes(cmp, kThresholds);
+    const image::Image8 golden = image::readPng(goldenPath(c.name));
+    const image::ImageComparison cmp = image::compareImages(actual, golden, kThresholds.maxChannelDiff);
+    const bool ok = image::passes(cmp, kThresholds);
     std::string saved;
     if (!ok || envFlag("PRISM_SAVE_ACTUAL")) saved = saveActualAndDiff(c.name, actual, cmp);
-    EXPECT_TRUE(ok) << goldenPath(c.name).string() << ": " << prism::describe(cmp, kThresholds)
+    EXPECT_TRUE(ok) << goldenPath(c.name).string() << ": " << prism::image::describe(cmp, kThresholds)
                     << "\nactual and diff images: " << saved;
 }
 
@@ -152,12 +152,12 @@ TEST_F(RainImages, RepeatedRenderIsByteIdentical) {
 // The thresholds catch a real change: another random seed, or the wind turned by 20 deg.
 TEST_F(RainImages, GoldenComparisonCatchesChanges) {
     const RainCase& c = goldenCases()[1];
-    const Image8 base = renderScene(describe(c));
-    const Image8 otherSeed = renderScene(describe(c, 2014));
-    EXPECT_FALSE(passes(compareImages(otherSeed, base, 3), kThresholds));
+    const image::Image8 base = renderScene(describe(c));
+    const image::Image8 otherSeed = renderScene(describe(c, 2014));
+    EXPECT_FALSE(image::passes(image::compareImages(otherSeed, base, 3), kThresholds));
     RainSceneDesc turned = describe(c);
     turned.rain->wind.directionDegrees = 220.0f;
-    EXPECT_FALSE(passes(compareImages(renderScene(turned), base, 3), kThresholds));
+    EXPECT_FALSE(image::passes(image::compareImages(renderScene(turned), base, 3), kThresholds));
 }
 
 // Instanced quads are the geometry-shader quads drawn another way: same image within
@@ -167,14 +167,14 @@ TEST_F(RainImages, TechniquesDrawTheSameStreaks) {
     RainCase c = goldenCases()[1];
     RainSceneDesc dryDesc = describe(c);
     dryDesc.rain.reset();
-    const Image8 dry = renderScene(dryDesc);
-    const Image8 gs = renderScene(describe(c));
+    const image::Image8 dry = renderScene(dryDesc);
+    const image::Image8 gs = renderScene(describe(c));
     c.technique = StreakTechnique::Instanced;
-    const Image8 instanced = renderScene(describe(c));
-    const ImageComparison cmp = compareImages(instanced, gs, 3);
-    EXPECT_TRUE(passes(cmp, kThresholds)) << prism::describe(cmp, kThresholds);
+    const image::Image8 instanced = renderScene(describe(c));
+    const image::ImageComparison cmp = image::compareImages(instanced, gs, 3);
+    EXPECT_TRUE(image::passes(cmp, kThresholds)) << prism::image::describe(cmp, kThresholds);
     c.technique = StreakTechnique::PointSprites;
-    const Image8 points = renderScene(describe(c));
+    const image::Image8 points = renderScene(describe(c));
     const double gsLight = addedLight(gs, dry), pointLight = addedLight(points, dry);
     std::cout << "[ info ] light added by the rain: gs " << gsLight << ", instanced " << addedLight(instanced, dry)
               << ", points " << pointLight << "\n";

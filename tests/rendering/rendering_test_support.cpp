@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "prism/shader_meshes.hpp"
+#include "prism/render/shader_meshes.hpp"
 #include "prism/shaders.hpp"
 
 namespace prism::rendering_test {
@@ -17,7 +17,7 @@ namespace {
 
 struct GlState {
     std::unique_ptr<gl::Context> context;
-    std::unique_ptr<ProgramCache> cache;
+    std::unique_ptr<render::ProgramCache> cache;
     std::string error;
 };
 
@@ -46,17 +46,17 @@ const ShaderSpec& shaderSpec(const std::string& label) {
     throw std::invalid_argument("no catalogue shader labelled '" + label + "'");
 }
 
-glm::vec3 brightestAllowed(const ShaderSpec& spec, const Lights& lights, const Material& material) {
+glm::vec3 brightestAllowed(const ShaderSpec& spec, const view::Lights& lights, const view::Material& material) {
     if (!spec.lit) return glm::vec3(material.color);
-    Material m = material;
+    view::Material m = material;
     if (!spec.specular) m.specular = 0.0f;
-    return maxRadiance(lights, m);
+    return view::maxRadiance(lights, m);
 }
 
 void GlEnvironment::SetUp() {
     try {
         state().context = gl::createContext();
-        state().cache = std::make_unique<ProgramCache>(shaders::kCatalog);
+        state().cache = std::make_unique<render::ProgramCache>(shaders::kCatalog);
     } catch (const std::exception& e) {
         state().error = e.what();
     }
@@ -74,7 +74,7 @@ const std::string& contextError() {
     return state().error;
 }
 
-ProgramCache& programCache() {
+render::ProgramCache& programCache() {
     if (!state().cache) throw std::logic_error("no GL context: " + state().error);
     return *state().cache;
 }
@@ -85,17 +85,17 @@ void RenderingTest::SetUp() {
     context()->makeCurrent();
 }
 
-RenderJob jobFor(const ShaderSpec& spec, const geometry::Mesh& mesh, int width, int height) {
-    RenderJob job;
+render::RenderJob jobFor(const ShaderSpec& spec, const geometry::Mesh& mesh, int width, int height) {
+    render::RenderJob job;
     job.shader = spec.shader;
     job.variant = spec.variant;
-    job.mesh = meshForShader(spec.shader, mesh);
+    job.mesh = render::meshForShader(spec.shader, mesh);
     job.width = width;
     job.height = height;
     return job;
 }
 
-std::size_t coveredPixels(const ImageF& image, const glm::vec4& background, float tolerance) {
+std::size_t coveredPixels(const image::ImageF& image, const glm::vec4& background, float tolerance) {
     std::size_t n = 0;
     for (std::size_t i = 0; i < image.data.size(); i += 4)
         for (int c = 0; c < 3; ++c)
@@ -106,7 +106,7 @@ std::size_t coveredPixels(const ImageF& image, const glm::vec4& background, floa
     return n;
 }
 
-std::size_t coveredPixels(const Image8& image, const glm::vec4& background, int tolerance) {
+std::size_t coveredPixels(const image::Image8& image, const glm::vec4& background, int tolerance) {
     std::size_t n = 0;
     for (std::size_t i = 0; i < image.data.size(); i += 4)
         for (int c = 0; c < 3; ++c) {
@@ -119,7 +119,7 @@ std::size_t coveredPixels(const Image8& image, const glm::vec4& background, int 
     return n;
 }
 
-PixelInspection inspectPixels(const ImageF& image, const glm::vec3& bound, float epsilon) {
+PixelInspection inspectPixels(const image::ImageF& image, const glm::vec3& bound, float epsilon) {
     PixelInspection r;
     const auto where = [](int x, int y, int c, float v) {
         return "pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") channel " + std::to_string(c) + " = " +
@@ -127,7 +127,7 @@ PixelInspection inspectPixels(const ImageF& image, const glm::vec3& bound, float
     };
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x) {
-            const RgbaF p = image.at(x, y);
+            const image::RgbaF p = image.at(x, y);
             bool finite = true, over = false, negative = false;
             for (int c = 0; c < 4; ++c) {
                 const float v = p[static_cast<std::size_t>(c)];

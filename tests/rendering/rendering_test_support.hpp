@@ -14,11 +14,11 @@
 #include <string>
 #include <vector>
 
-#include "prism/gl_context.hpp"
-#include "prism/image.hpp"
-#include "prism/offscreen_render.hpp"
-#include "prism/program_cache.hpp"
-#include "prism/scene_lighting.hpp"
+#include "prism/gl/gl_context.hpp"
+#include "prism/image/image.hpp"
+#include "prism/render/offscreen_render.hpp"
+#include "prism/render/program_cache.hpp"
+#include "prism/view/lighting.hpp"
 
 namespace prism::rendering_test {
 
@@ -27,7 +27,7 @@ namespace prism::rendering_test {
 struct ShaderSpec {
     std::string label;      // "phong-blinn"
     std::string shader;     // "phong"
-    VariantValues variant;  // {{"BLINN", "1"}}
+    render::VariantValues variant;  // {{"BLINN", "1"}}
     bool lit = true;        // false: unicolor writes the material colour
     bool specular = true;   // false: flat and smooth are diffuse only
 };
@@ -37,10 +37,10 @@ const std::vector<ShaderSpec>& catalogueShaders();
 const ShaderSpec& shaderSpec(const std::string& label);
 
 // The brightest value `spec` may write per channel: the material colour for the unlit
-// shader, maxRadiance(lights, material) for the specular ones, and maxRadiance with the
+// shader, view::maxRadiance(lights, material) for the specular ones, and maxRadiance with the
 // specular strength zeroed for the diffuse-only ones (a tighter bound that also catches
 // a specular term leaking into flat or smooth shading).
-glm::vec3 brightestAllowed(const ShaderSpec& spec, const Lights& lights, const Material& material);
+glm::vec3 brightestAllowed(const ShaderSpec& spec, const view::Lights& lights, const view::Material& material);
 
 // The process-wide context and program cache, created once by the environment.
 class GlEnvironment : public ::testing::Environment {
@@ -50,7 +50,7 @@ class GlEnvironment : public ::testing::Environment {
 };
 gl::Context* context();             // nullptr when creation failed
 const std::string& contextError();  // why it failed
-ProgramCache& programCache();
+render::ProgramCache& programCache();
 
 // Base fixture of every test that renders: fails (not skips) without a context, since a
 // rendering tier that silently skips would hide a broken headless setup.
@@ -59,12 +59,12 @@ class RenderingTest : public ::testing::Test {
     void SetUp() override;
 };
 
-// A RenderJob for `spec` with the mesh prepared for its shader.
-RenderJob jobFor(const ShaderSpec& spec, const geometry::Mesh& mesh, int width, int height);
+// A render::RenderJob for `spec` with the mesh prepared for its shader.
+render::RenderJob jobFor(const ShaderSpec& spec, const geometry::Mesh& mesh, int width, int height);
 
 // Pixels whose RGB differs from `background` by more than `tolerance` in any channel.
-std::size_t coveredPixels(const ImageF& image, const glm::vec4& background, float tolerance = 1e-4f);
-std::size_t coveredPixels(const Image8& image, const glm::vec4& background, int tolerance = 1);
+std::size_t coveredPixels(const image::ImageF& image, const glm::vec4& background, float tolerance = 1e-4f);
+std::size_t coveredPixels(const image::Image8& image, const glm::vec4& background, int tolerance = 1);
 
 // What a render must never contain, counted over all pixels of an RGBA32F image.
 struct PixelInspection {
@@ -74,7 +74,7 @@ struct PixelInspection {
     std::string firstOverBright;  // "pixel (x, y) channel c = v > limit", for messages
     std::string firstNegative;
 };
-PixelInspection inspectPixels(const ImageF& image, const glm::vec3& bound, float epsilon);
+PixelInspection inspectPixels(const image::ImageF& image, const glm::vec3& bound, float epsilon);
 
 // True when the environment variable is set to something other than "", "0" or "false".
 bool envFlag(const char* name);

@@ -1,7 +1,7 @@
 // Numeric extremes: each case renders every catalogue shader (unicolor, flat, smooth,
 // gouraud, phong, phong BLINN=1) to RGBA32F and checks that no pixel is NaN or Inf, that
 // no channel is brighter than the lights allow (brightestAllowed(), at most
-// maxRadiance(lights, material)) or below zero, and that something was drawn (or, for a
+// view::maxRadiance(lights, material)) or below zero, and that something was drawn (or, for a
 // zero world scale, that nothing was). Cases: shininess 0, 1e-6, 1, 128, 1e4 (and 1e30);
 // grazing, back-facing, touching and no lights; fog of density 0 and 3e38; zero-length,
 // non-unit, scaled and non-finite normals; degenerate triangles; zero, non-uniform, huge
@@ -27,9 +27,9 @@
 #include <utility>
 #include <vector>
 
-#include "prism/image_compare.hpp"
-#include "prism/normals.hpp"
-#include "prism/shader_meshes.hpp"
+#include "prism/image/image_compare.hpp"
+#include "prism/geometry/normals.hpp"
+#include "prism/render/shader_meshes.hpp"
 #include "prism/shaders.hpp"
 #include "rendering_test_support.hpp"
 
@@ -44,7 +44,7 @@ constexpr float kBrightnessEpsilon = 1e-3f;
 constexpr glm::vec4 kBackground{0.02f, 0.02f, 0.03f, 1.0f};
 // Scenes that only differ by a uniform scale of everything (or by near/far) must give
 // the same image; these are the golden thresholds.
-constexpr Thresholds kSameImage{.maxChannelDiff = 3, .maxShareOver = 0.001, .maxMean = 0.5};
+constexpr image::Thresholds kSameImage{.maxChannelDiff = 3, .maxShareOver = 0.001, .maxMean = 0.5};
 
 enum class Expect {
     LitAndDrawn,   // covers >= minCoveredShare, and lights add visibly to the ambient term
@@ -55,10 +55,10 @@ enum class Expect {
 struct Scene {
     geometry::Mesh mesh;  // as given to meshForShader (normals kept when complete)
     glm::mat4 world{1.0f};
-    Material material{.color = {0.8f, 0.35f, 0.25f, 1.0f}, .shininess = 32.0f, .specular = 0.5f};
-    Lights lights = defaultLights();
-    Camera camera = defaultCamera();
-    std::optional<Fog> fog;  // runs the shaders' FOG=1 variants
+    view::Material material{.color = {0.8f, 0.35f, 0.25f, 1.0f}, .shininess = 32.0f, .specular = 0.5f};
+    view::Lights lights = render::defaultLights();
+    view::Camera camera = render::defaultCamera();
+    std::optional<view::Fog> fog;  // runs the shaders' FOG=1 variants
     Expect expect = Expect::LitAndDrawn;
     double minCoveredShare = 0.05;
     bool customNormals = false;  // check the mesh's own normals reach the non-flat shaders
@@ -66,7 +66,7 @@ struct Scene {
 
 Scene sphereScene() {
     Scene s;
-    s.mesh = namedMesh("sphere", 2);
+    s.mesh = render::namedMesh("sphere", 2);
     return s;
 }
 
@@ -76,8 +76,8 @@ std::string fmt(const glm::vec3& v) {
     return o.str();
 }
 
-RenderJob sceneJob(const ShaderSpec& spec, const Scene& scene) {
-    RenderJob job = jobFor(spec, scene.mesh, kSize, kSize);
+render::RenderJob sceneJob(const ShaderSpec& spec, const Scene& scene) {
+    render::RenderJob job = jobFor(spec, scene.mesh, kSize, kSize);
     job.world = scene.world;
     job.material = scene.material;
     job.lights = scene.lights;
@@ -88,8 +88,8 @@ RenderJob sceneJob(const ShaderSpec& spec, const Scene& scene) {
 }
 
 // Renders `scene` with `spec` into `image` and checks the invariants.
-void renderAndCheckShader(const ShaderSpec& spec, const Scene& scene, ImageF& image) {
-    const RenderJob job = sceneJob(spec, scene);
+void renderAndCheckShader(const ShaderSpec& spec, const Scene& scene, image::ImageF& image) {
+    const render::RenderJob job = sceneJob(spec, scene);
     if (scene.customNormals && spec.shader != "flat") {
         EXPECT_EQ(job.mesh.normals.size(), scene.mesh.normals.size());
         // Bitwise, so NaN normals compare equal to themselves.
@@ -104,11 +104,11 @@ void renderAndCheckShader(const ShaderSpec& spec, const Scene& scene, ImageF& im
     ASSERT_TRUE(kBackground.r <= bound.r && kBackground.g <= bound.g && kBackground.b <= bound.b)
         << "test setup: the background " << fmt(glm::vec3(kBackground)) << " is brighter than the bound " << fmt(bound);
 
-    ASSERT_NO_THROW(image = renderImageF(programCache(), job));
+    ASSERT_NO_THROW(image = render::renderImageF(programCache(), job));
     ASSERT_EQ(image.width, kSize);
 
     // countNonFinite is the runtime's own check (prism-render --check-finite uses it).
-    EXPECT_EQ(countNonFinite(image), 0u) << "pixels with NaN or Inf";
+    EXPECT_EQ(image::countNonFinite(image), 0u) << "pixels with NaN or Inf";
     const PixelInspection px = inspectPixels(image, bound, kBrightnessEpsilon);
     EXPECT_EQ(px.overBright, 0u) << "pixels brighter than the lights allow " << fmt(bound)
                                  << "; first: " << px.firstOverBright;
@@ -132,8 +132,8 @@ void renderAndCheckShader(const ShaderSpec& spec, const Scene& scene, ImageF& im
 }
 
 // Renders `scene` with every catalogue shader, checks the invariants, returns the images.
-std::map<std::string, ImageF> renderAndCheck(const Scene& scene) {
-    std::map<std::string, ImageF> images;
+std::map<std::string, image::ImageF> renderAndCheck(const Scene& scene) {
+    std::map<std::string, image::ImageF> images;
     for (const ShaderSpec& spec : catalogueShaders()) {
         SCOPED_TRACE("shader " + spec.label);
         renderAndCheckShader(spec, scene, images[spec.label]);
@@ -142,7 +142,7 @@ std::map<std::string, ImageF> renderAndCheck(const Scene& scene) {
 }
 
 // Largest red channel of the pixels in columns [x0, x1) that show the mesh.
-float brightestRedInColumns(const ImageF& image, int x0, int x1) {
+float brightestRedInColumns(const image::ImageF& image, int x0, int x1) {
     float m = 0.0f;
     for (int y = 0; y < image.height; ++y)
         for (int x = x0; x < x1; ++x) m = std::max(m, image.at(x, y)[0]);
@@ -150,11 +150,11 @@ float brightestRedInColumns(const ImageF& image, int x0, int x1) {
 }
 
 // Every shader's image of `scene` is the same as of `reference` within kSameImage.
-void expectSameImages(const std::map<std::string, ImageF>& scene, const std::map<std::string, ImageF>& reference) {
+void expectSameImages(const std::map<std::string, image::ImageF>& scene, const std::map<std::string, image::ImageF>& reference) {
     for (const auto& [label, image] : scene) {
-        const ImageComparison cmp =
-            compareImages(toImage8(image), toImage8(reference.at(label)), kSameImage.maxChannelDiff);
-        EXPECT_TRUE(passes(cmp, kSameImage)) << label << ": " << describe(cmp, kSameImage);
+        const image::ImageComparison cmp =
+            image::compareImages(image::toImage8(image), image::toImage8(reference.at(label)), kSameImage.maxChannelDiff);
+        EXPECT_TRUE(image::passes(cmp, kSameImage)) << label << ": " << image::describe(cmp, kSameImage);
     }
 }
 
@@ -204,7 +204,7 @@ TEST_F(Extremes, Shininess1e30) {
 // --- Light directions ---------------------------------------------------------------
 
 TEST_F(Extremes, GrazingLightPerpendicularToView) {
-    // Camera on +Z, one light shining along +X: exactly the left half of the sphere is lit.
+    // view::Camera on +Z, one light shining along +X: exactly the left half of the sphere is lit.
     Scene s = sphereScene();
     s.camera.eye = {0.0f, 0.0f, 3.2f};
     s.lights.directional = {{.direction = {1.0f, 0.0f, 0.0f}, .color = glm::vec3(1.0f)}};
@@ -212,7 +212,7 @@ TEST_F(Extremes, GrazingLightPerpendicularToView) {
     const float ambientRed = s.lights.ambient.r * s.material.color.r;
     for (const auto& spec : catalogueShaders()) {
         if (!spec.lit) continue;
-        const ImageF& image = images.at(spec.label);
+        const image::ImageF& image = images.at(spec.label);
         // Right of the centre (beyond one triangle's width) the surface faces away from the light.
         EXPECT_LE(brightestRedInColumns(image, kSize / 2 + 6, kSize), ambientRed + kBrightnessEpsilon) << spec.label;
         EXPECT_GT(brightestRedInColumns(image, 0, kSize / 2 - 6), ambientRed + 0.2f) << spec.label;
@@ -222,7 +222,7 @@ TEST_F(Extremes, GrazingLightPerpendicularToView) {
 TEST_F(Extremes, GrazingLightParallelToSurface) {
     // A grid facing +Y lit along +X: the light only grazes it, so it adds (almost) nothing.
     Scene s;
-    s.mesh = namedMesh("grid", 2);
+    s.mesh = render::namedMesh("grid", 2);
     s.lights.directional = {{.direction = {1.0f, 0.0f, 0.0f}, .color = glm::vec3(1.0f)}};
     s.expect = Expect::DrawnUnlit;
     const auto images = renderAndCheck(s);
@@ -237,14 +237,14 @@ TEST_F(Extremes, BackFacingLight) {
     // The only light shines from behind the sphere towards the camera: every visible
     // point faces away from it, so only the ambient term remains (no specular either).
     Scene s = sphereScene();
-    const Camera cam = s.camera;
+    const view::Camera cam = s.camera;
     s.lights.directional = {{.direction = glm::normalize(cam.eye - cam.target), .color = glm::vec3(1.0f)}};
     s.expect = Expect::DrawnUnlit;
     const auto images = renderAndCheck(s);
     const glm::vec3 ambient = s.lights.ambient * glm::vec3(s.material.color);
     for (const auto& spec : catalogueShaders()) {
         if (!spec.lit) continue;
-        const ImageF& image = images.at(spec.label);
+        const image::ImageF& image = images.at(spec.label);
         for (std::size_t i = 0; i < image.data.size(); i += 4)
             for (int c = 0; c < 3; ++c)
                 ASSERT_LE(image.data[i + static_cast<std::size_t>(c)], ambient[c] + kBrightnessEpsilon)
@@ -255,7 +255,7 @@ TEST_F(Extremes, BackFacingLight) {
 TEST_F(Extremes, PointLightTouchingTheSurface) {
     // The light sits exactly on the front vertex: the direction to it is a zero vector there.
     Scene s = sphereScene();
-    s.mesh = namedMesh("icosphere", 2);  // the light goes onto its front-most vertex
+    s.mesh = render::namedMesh("icosphere", 2);  // the light goes onto its front-most vertex
     glm::vec3 front = s.mesh.positions.front();
     for (const auto& p : s.mesh.positions)
         if (p.z > front.z) front = p;
@@ -296,18 +296,18 @@ TEST_F(Extremes, AmbientLightOnly) {
 
 TEST_F(Extremes, FogDensityZero) {
     Scene s = sphereScene();
-    s.fog = Fog{.color = {0.62f, 0.66f, 0.72f}, .density = 0.0f};
+    s.fog = view::Fog{.color = {0.62f, 0.66f, 0.72f}, .density = 0.0f};
     renderAndCheck(s);
 }
 
 TEST_F(Extremes, FogDensityHuge) {
     // Every fragment is fully fogged: the surface takes the fog colour, never NaN from exp().
     Scene s = sphereScene();
-    s.fog = Fog{.color = {0.62f, 0.66f, 0.72f}, .density = 3e38f};
+    s.fog = view::Fog{.color = {0.62f, 0.66f, 0.72f}, .density = 3e38f};
     s.expect = Expect::DrawnUnlit;
     const auto images = renderAndCheck(s);
     for (const auto& [label, image] : images) {
-        const RgbaF centre = image.at(kSize / 2, kSize / 2);
+        const image::RgbaF centre = image.at(kSize / 2, kSize / 2);
         EXPECT_NEAR(centre[0], 0.62f, 2e-3f) << label;
         EXPECT_NEAR(centre[2], 0.72f, 2e-3f) << label;
     }
@@ -376,7 +376,7 @@ TEST_F(Extremes, DegenerateTriangles) {
                         s2 = add({0.5f, -0.3f, 1.1f});
     m.indices.insert(m.indices.end(), {s0, s1, s2});
 
-    geometry::Mesh withNormals = meshForShader("phong", m);
+    geometry::Mesh withNormals = render::meshForShader("phong", m);
     for (const auto& n : withNormals.normals) {
         ASSERT_TRUE(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z));
         ASSERT_NEAR(glm::length(n), 1.0f, 1e-4f);
@@ -431,7 +431,7 @@ TEST_F(Extremes, NearFarRatio1e8) {
     // near 1e-4, far 1e4: depth precision is thin but the tilted torus must still
     // occlude itself exactly as with the default near 0.1, far 50.
     Scene s = sphereScene();
-    s.mesh = namedMesh("torus", 2);  // self-occluding
+    s.mesh = render::namedMesh("torus", 2);  // self-occluding
     s.world = glm::rotate(glm::mat4(1.0f), glm::radians(60.0f), glm::vec3(1, 0, 0));
     Scene reference = s;
     s.camera.nearPlane = 1e-4f;
@@ -444,7 +444,7 @@ TEST_F(Extremes, NearPlane1e3FarPlane1e4MeshFarAway) {
     // same scene divided by 1500 is the reference.
     constexpr float kDistance = 5000.0f, kScale = 1500.0f;
     Scene s = sphereScene();
-    s.mesh = namedMesh("torus", 2);
+    s.mesh = render::namedMesh("torus", 2);
     const glm::mat4 tilt = glm::rotate(glm::mat4(1.0f), glm::radians(60.0f), glm::vec3(1, 0, 0));
     s.world = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -kDistance)) *
               glm::scale(glm::mat4(1.0f), glm::vec3(kScale)) * tilt;
@@ -523,9 +523,9 @@ class MutantCatalog {
 };
 
 PixelInspection renderMutant(const MutantCatalog& mutant, const Scene& scene) {
-    ProgramCache cache(mutant.catalog());
+    render::ProgramCache cache(mutant.catalog());
     const ShaderSpec& spec = shaderSpec("phong");
-    const ImageF image = renderImageF(cache, sceneJob(spec, scene));
+    const image::ImageF image = render::renderImageF(cache, sceneJob(spec, scene));
     EXPECT_GE(coveredPixels(image, kBackground), image.pixelCount() / 20) << "the mutant drew (almost) nothing";
     return inspectPixels(image, brightestAllowed(spec, scene.lights, scene.material), kBrightnessEpsilon);
 }

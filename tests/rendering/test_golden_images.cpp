@@ -32,9 +32,9 @@
 #include <string_view>
 #include <vector>
 
-#include "prism/image_compare.hpp"
-#include "prism/png_io.hpp"
-#include "prism/shader_meshes.hpp"
+#include "prism/image/image_compare.hpp"
+#include "prism/image/png_io.hpp"
+#include "prism/render/shader_meshes.hpp"
 #include "prism/shaders.hpp"
 #include "rendering_test_support.hpp"
 
@@ -44,16 +44,16 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr int kGoldenSize = 128;
-constexpr Thresholds kGoldenThresholds{.maxChannelDiff = 3, .maxShareOver = 0.001, .maxMean = 0.5};
+constexpr image::Thresholds kGoldenThresholds{.maxChannelDiff = 3, .maxShareOver = 0.001, .maxMean = 0.5};
 
-// A key light by where it shines from; the fill light of defaultLights() stays.
+// A key light by where it shines from; the fill light of render::defaultLights() stays.
 struct NamedLight {
     const char* name;
     glm::vec3 direction;  // from the light into the scene, world space
 };
 // Named by where the light is as seen from the camera (it shines the opposite way).
 constexpr NamedLight kLightUpperLeft{"upper-left", {0.5f, -0.6f, -0.65f}};
-constexpr NamedLight kLightUpperRight{"upper-right", {-0.5f, -0.6f, -0.65f}};  // defaultLights()' key light
+constexpr NamedLight kLightUpperRight{"upper-right", {-0.5f, -0.6f, -0.65f}};  // render::defaultLights()' key light
 constexpr NamedLight kLightRight{"right", {-1.0f, -0.15f, -0.35f}};
 constexpr NamedLight kLightFrontAbove{"front-above", {0.0f, -0.45f, -1.0f}};
 
@@ -67,7 +67,7 @@ constexpr NamedColor kGrey{"grey", {0.7f, 0.7f, 0.7f, 1.0f}};
 
 struct GoldenCase {
     std::string shaderLabel;  // see catalogueShaders()
-    std::string mesh;         // a prism::namedMesh name
+    std::string mesh;         // a prism::render::namedMesh name
     unsigned subdivision = 2;
     float tiltDegrees = 0.0f;  // rotation about X, to show a torus's hole
     float shininess = 32.0f;
@@ -117,15 +117,15 @@ std::vector<GoldenCase> goldenCases() {
     return cases;
 }
 
-Image8 renderGoldenCase(const GoldenCase& c) {
+image::Image8 renderGoldenCase(const GoldenCase& c) {
     const ShaderSpec& spec = shaderSpec(c.shaderLabel);
-    RenderJob job = jobFor(spec, namedMesh(c.mesh, c.subdivision), kGoldenSize, kGoldenSize);
+    render::RenderJob job = jobFor(spec, render::namedMesh(c.mesh, c.subdivision), kGoldenSize, kGoldenSize);
     job.world = glm::rotate(glm::mat4(1.0f), glm::radians(c.tiltDegrees), glm::vec3(1.0f, 0.0f, 0.0f));
     job.material.color = c.color.rgba;
     job.material.shininess = c.shininess;
     job.material.specular = 0.5f;
     job.lights.directional.at(0).direction = c.light.direction;
-    return renderImage8(programCache(), job);
+    return render::renderImage8(programCache(), job);
 }
 
 fs::path outputDir() {
@@ -134,10 +134,10 @@ fs::path outputDir() {
 }
 
 // Writes actual and diff images next to each other; returns where, for the message.
-std::string saveActualAndDiff(const GoldenCase& c, const Image8& actual, const ImageComparison& cmp) {
+std::string saveActualAndDiff(const GoldenCase& c, const image::Image8& actual, const image::ImageComparison& cmp) {
     const fs::path base = outputDir() / c.shaderLabel / c.name();
-    writePng(base.string() + ".actual.png", actual);
-    if (cmp.sizeMatches) writePng(base.string() + ".diff.png", cmp.diff);
+    image::writePng(base.string() + ".actual.png", actual);
+    if (cmp.sizeMatches) image::writePng(base.string() + ".diff.png", cmp.diff);
     return base.string() + ".{actual,diff}.png";
 }
 
@@ -152,25 +152,25 @@ class GoldenImage : public RenderingTest, public ::testing::WithParamInterface<G
 
 TEST_P(GoldenImage, MatchesStoredGoldenWithinThresholds) {
     const GoldenCase& c = GetParam();
-    const Image8 actual = renderGoldenCase(c);
+    const image::Image8 actual = renderGoldenCase(c);
     ASSERT_EQ(actual.width, kGoldenSize);
     // A blank render must never become a golden: the mesh covers a good part of the frame.
-    ASSERT_GT(coveredPixels(actual, RenderJob{}.background), actual.pixelCount() / 10)
+    ASSERT_GT(coveredPixels(actual, render::RenderJob{}.background), actual.pixelCount() / 10)
         << c.name() << " drew (almost) nothing";
 
     if (envFlag("PRISM_UPDATE_GOLDENS")) {
-        writePng(c.goldenPath(), actual);
+        image::writePng(c.goldenPath(), actual);
         GTEST_SKIP() << "PRISM_UPDATE_GOLDENS: rewrote " << c.goldenPath().string();
     }
     ASSERT_TRUE(fs::exists(c.goldenPath()))
         << "no golden image " << c.goldenPath().string() << "; create it with PRISM_UPDATE_GOLDENS=1";
 
-    const Image8 golden = readPng(c.goldenPath());
-    const ImageComparison cmp = compareImages(actual, golden, kGoldenThresholds.maxChannelDiff);
-    const bool ok = passes(cmp, kGoldenThresholds);
+    const image::Image8 golden = image::readPng(c.goldenPath());
+    const image::ImageComparison cmp = image::compareImages(actual, golden, kGoldenThresholds.maxChannelDiff);
+    const bool ok = image::passes(cmp, kGoldenThresholds);
     std::string saved;
     if (!ok || envFlag("PRISM_SAVE_ACTUAL")) saved = saveActualAndDiff(c, actual, cmp);
-    EXPECT_TRUE(ok) << c.goldenPath().string() << ": " << describe(cmp, kGoldenThresholds)
+    EXPECT_TRUE(ok) << c.goldenPath().string() << ": " << image::describe(cmp, kGoldenThresholds)
                     << "\nactual and diff images: " << saved;
 }
 
@@ -207,19 +207,19 @@ class GoldenMutation : public RenderingTest {
 
     // The stored golden of `c`, after checking the unmutated rendering still passes
     // against it (so a failing mutant is due to the mutation, not a stale golden).
-    Image8 goldenThatPasses(const GoldenCase& c) {
-        const Image8 golden = readPng(c.goldenPath());
-        const ImageComparison base = compareImages(renderGoldenCase(c), golden, kGoldenThresholds.maxChannelDiff);
-        EXPECT_TRUE(passes(base, kGoldenThresholds)) << "baseline " << describe(base, kGoldenThresholds);
+    image::Image8 goldenThatPasses(const GoldenCase& c) {
+        const image::Image8 golden = image::readPng(c.goldenPath());
+        const image::ImageComparison base = image::compareImages(renderGoldenCase(c), golden, kGoldenThresholds.maxChannelDiff);
+        EXPECT_TRUE(image::passes(base, kGoldenThresholds)) << "baseline " << image::describe(base, kGoldenThresholds);
         return golden;
     }
 
     // Prints the statistics (the evidence) and returns whether it passed.
-    static bool reportMutant(const std::string& what, const ImageComparison& cmp) {
-        const std::string line = describe(cmp, kGoldenThresholds);
+    static bool reportMutant(const std::string& what, const image::ImageComparison& cmp) {
+        const std::string line = image::describe(cmp, kGoldenThresholds);
         std::cout << "[mutation] " << what << ": " << line << "\n";
         ::testing::Test::RecordProperty("mutation", what + ": " + line);
-        return passes(cmp, kGoldenThresholds);
+        return image::passes(cmp, kGoldenThresholds);
     }
 
     static GoldenCase phongSphere() { return {"phong", "sphere", 2, 0.0f, 32.0f, kLightUpperLeft, kTerracotta}; }
@@ -227,19 +227,19 @@ class GoldenMutation : public RenderingTest {
 
 TEST_F(GoldenMutation, PhongShininess32RenderedAt40FailsAgainstGolden) {
     const GoldenCase original = phongSphere();
-    const Image8 golden = goldenThatPasses(original);
+    const image::Image8 golden = goldenThatPasses(original);
     GoldenCase mutant = original;
     mutant.shininess = 40.0f;
-    const ImageComparison cmp = compareImages(renderGoldenCase(mutant), golden, kGoldenThresholds.maxChannelDiff);
+    const image::ImageComparison cmp = image::compareImages(renderGoldenCase(mutant), golden, kGoldenThresholds.maxChannelDiff);
     EXPECT_FALSE(reportMutant("phong sphere shininess 32 -> 40", cmp));
 }
 
 TEST_F(GoldenMutation, PhongLightMovedFromUpperLeftToUpperRightFailsAgainstGolden) {
     const GoldenCase original = phongSphere();
-    const Image8 golden = goldenThatPasses(original);
+    const image::Image8 golden = goldenThatPasses(original);
     GoldenCase mutant = original;
     mutant.light = kLightUpperRight;
-    const ImageComparison cmp = compareImages(renderGoldenCase(mutant), golden, kGoldenThresholds.maxChannelDiff);
+    const image::ImageComparison cmp = image::compareImages(renderGoldenCase(mutant), golden, kGoldenThresholds.maxChannelDiff);
     EXPECT_FALSE(reportMutant("phong sphere light upper-left -> upper-right", cmp));
 }
 
@@ -247,41 +247,41 @@ TEST_F(GoldenMutation, PhongLightTurnedByFiveDegreesFailsAgainstGolden) {
     // A small change, to show the thresholds are tight: the key light turned 5 degrees
     // about the vertical axis.
     const GoldenCase original = phongSphere();
-    const Image8 golden = goldenThatPasses(original);
+    const image::Image8 golden = goldenThatPasses(original);
     GoldenCase mutant = original;
     mutant.light.direction = glm::vec3(glm::rotate(glm::mat4(1.0f), glm::radians(5.0f), glm::vec3(0, 1, 0)) *
                                        glm::vec4(original.light.direction, 0.0f));
-    const ImageComparison cmp = compareImages(renderGoldenCase(mutant), golden, kGoldenThresholds.maxChannelDiff);
+    const image::ImageComparison cmp = image::compareImages(renderGoldenCase(mutant), golden, kGoldenThresholds.maxChannelDiff);
     EXPECT_FALSE(reportMutant("phong sphere key light turned 5 degrees", cmp));
 }
 
 TEST_F(GoldenMutation, GouraudDiffersFromPhongGoldenBeyondThresholds) {
     for (const GoldenCase& phong :
          {phongSphere(), GoldenCase{"phong", "icosphere", 1, 0.0f, 128.0f, kLightFrontAbove, kTeal}}) {
-        const Image8 golden = goldenThatPasses(phong);
+        const image::Image8 golden = goldenThatPasses(phong);
         GoldenCase gouraud = phong;
         gouraud.shaderLabel = "gouraud";
-        const ImageComparison cmp = compareImages(renderGoldenCase(gouraud), golden, kGoldenThresholds.maxChannelDiff);
+        const image::ImageComparison cmp = image::compareImages(renderGoldenCase(gouraud), golden, kGoldenThresholds.maxChannelDiff);
         EXPECT_FALSE(reportMutant("gouraud instead of phong, " + phong.name(), cmp));
     }
 }
 
 TEST_F(GoldenMutation, BlinnDiffersFromPhongGoldenBeyondThresholds) {
     const GoldenCase phong = phongSphere();
-    const Image8 golden = goldenThatPasses(phong);
+    const image::Image8 golden = goldenThatPasses(phong);
     GoldenCase blinn = phong;
     blinn.shaderLabel = "phong-blinn";
-    const ImageComparison cmp = compareImages(renderGoldenCase(blinn), golden, kGoldenThresholds.maxChannelDiff);
+    const image::ImageComparison cmp = image::compareImages(renderGoldenCase(blinn), golden, kGoldenThresholds.maxChannelDiff);
     EXPECT_FALSE(reportMutant("phong BLINN=1 instead of BLINN=0, " + phong.name(), cmp));
 }
 
 // The premise of the thresholds: llvmpipe gives the same bytes on every repeat.
 TEST_F(GoldenMutation, RepeatedRenderIsByteIdentical) {
     const GoldenCase c{"phong", "torus", 2, 60.0f, 8.0f, kLightRight, kTerracotta};
-    const Image8 first = renderGoldenCase(c);
-    const Image8 second = renderGoldenCase(c);
-    const ImageComparison cmp = compareImages(second, first, 0);
-    EXPECT_EQ(cmp.maxChannelDiff, 0) << describe(cmp, kGoldenThresholds);
+    const image::Image8 first = renderGoldenCase(c);
+    const image::Image8 second = renderGoldenCase(c);
+    const image::ImageComparison cmp = image::compareImages(second, first, 0);
+    EXPECT_EQ(cmp.maxChannelDiff, 0) << image::describe(cmp, kGoldenThresholds);
     EXPECT_TRUE(first == second);
 }
 

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "prism/png_io.hpp"
+#include "prism/image/png_io.hpp"
 #include "prism/shaders.hpp"
 #include "rendering_test_support.hpp"
 
@@ -203,10 +203,10 @@ TEST(PrismRenderCli, SuccessfulRenderWritesPngOfRequestedSize) {
                        dir);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     ASSERT_TRUE(fs::exists(out));
-    const Image8 image = readPng(out);
+    const image::Image8 image = image::readPng(out);
     EXPECT_EQ(image.width, 96);
     EXPECT_EQ(image.height, 64);
-    EXPECT_GT(coveredPixels(image, RenderJob{}.background), image.pixelCount() / 20) << "the image is (almost) blank";
+    EXPECT_GT(coveredPixels(image, render::RenderJob{}.background), image.pixelCount() / 20) << "the image is (almost) blank";
 }
 
 TEST(PrismRenderCli, CheckFiniteWithOutWritesPng) {
@@ -216,7 +216,7 @@ TEST(PrismRenderCli, CheckFiniteWithOutWritesPng) {
                                    "--check-finite", "--out", out.string()},
                                   dir);
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    const Image8 image = readPng(out);
+    const image::Image8 image = image::readPng(out);
     EXPECT_EQ(image.width, 40);
     EXPECT_EQ(image.height, 30);
 }

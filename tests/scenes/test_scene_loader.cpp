@@ -2,10 +2,10 @@
 // JSON path and what was expected (or file:line:col for syntax errors).
 #include <gtest/gtest.h>
 
-#include "prism/scene_loader.hpp"
+#include "prism/scene/scene_loader.hpp"
 
-using prism::parseScene;
-using prism::SceneError;
+using prism::scene::parseScene;
+using prism::scene::SceneError;
 
 namespace {
 
@@ -22,14 +22,14 @@ std::string errorOf(const std::string& text) {
 
 TEST(SceneLoader, ReadsTheExampleScenes) {
     for (const char* name : {"one_light", "four_lights", "fog", "rain", "water"}) {
-        auto scene = prism::loadScene(std::string(PRISM_SCENES_DIR) + "/" + name + ".json");
+        auto scene = prism::scene::loadScene(std::string(PRISM_SCENES_DIR) + "/" + name + ".json");
         EXPECT_FALSE(scene.objects.empty()) << name;
         EXPECT_FALSE(scene.lights.directional.empty()) << name;
     }
-    auto fog = prism::loadScene(std::string(PRISM_SCENES_DIR) + "/fog.json");
+    auto fog = prism::scene::loadScene(std::string(PRISM_SCENES_DIR) + "/fog.json");
     ASSERT_TRUE(fog.fog.has_value());
     EXPECT_FLOAT_EQ(fog.fog->density, 0.12f);
-    auto four = prism::loadScene(std::string(PRISM_SCENES_DIR) + "/four_lights.json");
+    auto four = prism::scene::loadScene(std::string(PRISM_SCENES_DIR) + "/four_lights.json");
     EXPECT_EQ(four.lights.directional.size(), 4u);
     EXPECT_EQ(four.lights.points.size(), 1u);
 }
@@ -103,7 +103,7 @@ TEST(SceneLoader, SyntaxErrorHasLineAndColumn) {
 
 TEST(SceneLoader, MissingFile) {
     try {
-        prism::loadScene("/nonexistent/scene.json");
+        prism::scene::loadScene("/nonexistent/scene.json");
         FAIL() << "no error";
     } catch (const SceneError& e) {
         EXPECT_EQ(std::string(e.what()), "/nonexistent/scene.json: cannot open the scene file; check the path");

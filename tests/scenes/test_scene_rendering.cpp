@@ -9,13 +9,13 @@
 #include <filesystem>
 #include <memory>
 
-#include "prism/feature_variants.hpp"
-#include "prism/gl_context.hpp"
-#include "prism/image_compare.hpp"
-#include "prism/png_io.hpp"
+#include "prism/render/feature_variants.hpp"
+#include "prism/gl/gl_context.hpp"
+#include "prism/image/image_compare.hpp"
+#include "prism/image/png_io.hpp"
 #include "prism/rain/rain_params.hpp"
-#include "prism/scene_loader.hpp"
-#include "prism/scene_renderer.hpp"
+#include "prism/scene/scene_loader.hpp"
+#include "prism/scene/scene_renderer.hpp"
 #include "prism/shaders.hpp"
 
 namespace fs = std::filesystem;
@@ -31,8 +31,8 @@ class ContextEnvironment : public ::testing::Environment {
 };
 const auto* const kEnv = ::testing::AddGlobalTestEnvironment(new ContextEnvironment);
 
-prism::Scene exampleScene(const std::string& name) {
-    return prism::loadScene(std::string(PRISM_SCENES_DIR) + "/" + name + ".json");
+prism::scene::Scene exampleScene(const std::string& name) {
+    return prism::scene::loadScene(std::string(PRISM_SCENES_DIR) + "/" + name + ".json");
 }
 
 bool envFlag(const char* name) {
@@ -43,12 +43,12 @@ bool envFlag(const char* name) {
 // Golden thresholds: llvmpipe renders byte-identically run to run, so these only absorb
 // driver or technique changes (ANCHORS.md): a pixel counts as different above 3/255 in
 // a channel; at most 0.1 % of pixels may, and the mean error must stay <= 0.5/255.
-const prism::Thresholds kThresholds{3, 0.001, 0.5};
+const prism::image::Thresholds kThresholds{3, 0.001, 0.5};
 
 }  // namespace
 
 TEST(SceneRendering, OneLightNoFogProgramHasNoFogUniformsAndLoopBoundOne) {
-    prism::SceneRenderer renderer(prism::shaders::kCatalog);
+    prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
     auto scene = exampleScene("one_light");
     scene.width = scene.height = 64;
     renderer.render(scene);
@@ -57,7 +57,7 @@ TEST(SceneRendering, OneLightNoFogProgramHasNoFogUniformsAndLoopBoundOne) {
         const auto* shader = prism::catalog::findShader(prism::shaders::kCatalog, object.shader);
         ASSERT_NE(shader, nullptr);
         const auto& variant = renderer.programs().variantOf(
-            object.shader, prism::variantFor(*shader, prism::featuresOf(scene.lights, false)));
+            object.shader, prism::render::variantFor(*shader, prism::render::featuresOf(scene.lights, false)));
         for (const auto& d : variant.defines) {
             if (d.name == "DIRECTIONAL_LIGHTS") {
                 EXPECT_EQ(d.value, "1");
@@ -82,7 +82,7 @@ TEST(SceneRendering, OneLightNoFogProgramHasNoFogUniformsAndLoopBoundOne) {
 }
 
 TEST(SceneRendering, DrawsWithTheSameFeatureSetShareOneProgram) {
-    prism::SceneRenderer renderer(prism::shaders::kCatalog);
+    prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
     auto scene = exampleScene("four_lights");  // two phong spheres and a flat floor
     scene.width = scene.height = 64;
     renderer.render(scene);
@@ -94,7 +94,7 @@ TEST(SceneRendering, DrawsWithTheSameFeatureSetShareOneProgram) {
 }
 
 TEST(SceneRendering, FogSceneUsesFogVariantsOnly) {
-    prism::SceneRenderer renderer(prism::shaders::kCatalog);
+    prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
     auto scene = exampleScene("fog");
     scene.width = scene.height = 64;
     renderer.render(scene);
@@ -102,12 +102,12 @@ TEST(SceneRendering, FogSceneUsesFogVariantsOnly) {
 }
 
 TEST(SceneRendering, UnknownShaderListsTheKnownOnes) {
-    prism::SceneRenderer renderer(prism::shaders::kCatalog);
-    auto scene = prism::parseScene(R"({"objects": [{"material": {"shader": "toon"}}]})", "toon.json");
+    prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
+    auto scene = prism::scene::parseScene(R"({"objects": [{"material": {"shader": "toon"}}]})", "toon.json");
     try {
         renderer.render(scene);
         FAIL() << "no error";
-    } catch (const prism::UnknownShaderError& e) {
+    } catch (const prism::render::UnknownShaderError& e) {
         EXPECT_NE(std::string(e.what()).find("unknown shader 'toon'; known shaders: flat, gouraud, phong"),
                   std::string::npos)
             << e.what();
@@ -115,7 +115,7 @@ TEST(SceneRendering, UnknownShaderListsTheKnownOnes) {
 }
 
 TEST(SceneRendering, NoRainNoRainSystemAndNoRainProgram) {
-    prism::SceneRenderer renderer(prism::shaders::kCatalog);
+    prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
     auto scene = exampleScene("one_light");
     scene.width = scene.height = 64;
     renderer.render(scene);
@@ -125,7 +125,7 @@ TEST(SceneRendering, NoRainNoRainSystemAndNoRainProgram) {
 }
 
 TEST(SceneRendering, WaterSceneSimulatesAndDrawsTheWaterMap) {
-    prism::SceneRenderer renderer(prism::shaders::kCatalog);
+    prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
     auto scene = exampleScene("water");
     scene.width = 128;
     scene.height = 96;
@@ -139,7 +139,7 @@ TEST(SceneRendering, WaterSceneSimulatesAndDrawsTheWaterMap) {
 }
 
 TEST(SceneRendering, RainSceneRunsTheRainSystemOverTheObjects) {
-    prism::SceneRenderer renderer(prism::shaders::kCatalog);
+    prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
     auto scene = exampleScene("rain");
     scene.width = 128;
     scene.height = 96;
@@ -152,22 +152,22 @@ TEST(SceneRendering, RainSceneRunsTheRainSystemOverTheObjects) {
     dry.rain.reset();
     auto withoutRain = renderer.render(dry);
     EXPECT_EQ(renderer.rainSystemsCreated(), 1u);  // the dry frame made none
-    auto cmp = prism::compareImages(withRain, withoutRain);
+    auto cmp = prism::image::compareImages(withRain, withoutRain);
     EXPECT_GT(cmp.pixelsOver, 100u) << "the streaks must show";
 }
 
 TEST(SceneRendering, RainSettingsMapToRainParameters) {
-    prism::RainSettings s;
+    prism::scene::RainSettings s;
     s.intensityClass = "cloudburst";
     s.wind = {0.0f, 0.0f, 3.0f};
-    auto p = prism::rainParamsFor(s);
+    auto p = prism::scene::rainParamsFor(s);
     EXPECT_NEAR(p.wind.strength, 3.0f, 1e-6f);
     ASSERT_TRUE(p.wind.directionDegrees.has_value());
     EXPECT_NEAR(*p.wind.directionDegrees, 90.0f, 1e-4f);
     s.rateMillimetresPerHour = 13.81;
-    EXPECT_NEAR(prism::rainParamsFor(s).intensity, 1.381f, 1e-5f);  // mm/h -> cm/h
+    EXPECT_NEAR(prism::scene::rainParamsFor(s).intensity, 1.381f, 1e-5f);  // mm/h -> cm/h
     s.rateMillimetresPerHour = -1.0;
-    EXPECT_THROW(prism::rainParamsFor(s), std::invalid_argument);
+    EXPECT_THROW(prism::scene::rainParamsFor(s), std::invalid_argument);
 }
 
 class SceneGolden : public ::testing::TestWithParam<std::string> {};
@@ -176,22 +176,22 @@ TEST_P(SceneGolden, MatchesTheGoldenImage) {
     auto scene = exampleScene(GetParam());
     scene.width /= 2;  // 256x192: small goldens, same framing
     scene.height /= 2;
-    prism::SceneRenderer renderer(prism::shaders::kCatalog);
+    prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
     const auto actual = renderer.render(scene);
     const fs::path golden = fs::path(PRISM_GOLDEN_DIR) / "scenes" / (GetParam() + ".png");
     if (envFlag("PRISM_UPDATE_GOLDENS")) {
-        prism::writePng(golden, actual);
+        prism::image::writePng(golden, actual);
         GTEST_SKIP() << "rewrote " << golden;
     }
     ASSERT_TRUE(fs::exists(golden)) << golden << " missing; run with PRISM_UPDATE_GOLDENS=1";
-    const auto stats = prism::compareImages(actual, prism::readPng(golden), kThresholds.maxChannelDiff);
-    const bool ok = prism::passes(stats, kThresholds);
+    const auto stats = prism::image::compareImages(actual, prism::image::readPng(golden), kThresholds.maxChannelDiff);
+    const bool ok = prism::image::passes(stats, kThresholds);
     if (!ok || envFlag("PRISM_SAVE_ACTUAL")) {
         const fs::path out = fs::path(PRISM_GOLDEN_FAILURE_DIR) / "scenes";
-        prism::writePng(out / (GetParam() + ".actual.png"), actual);
-        prism::writePng(out / (GetParam() + ".diff.png"), stats.diff);
+        prism::image::writePng(out / (GetParam() + ".actual.png"), actual);
+        prism::image::writePng(out / (GetParam() + ".diff.png"), stats.diff);
     }
-    EXPECT_TRUE(ok) << prism::describe(stats, kThresholds);
+    EXPECT_TRUE(ok) << prism::image::describe(stats, kThresholds);
 }
 
 INSTANTIATE_TEST_SUITE_P(ExampleScenes, SceneGolden,

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <string>
 
-#include "prism/png_io.hpp"
+#include "prism/image/png_io.hpp"
 #include "prism/water/height_field.hpp"
 #include "prism/water/rain_rates.hpp"
 #include "water_test_support.hpp"
@@ -75,8 +75,8 @@ TEST(HeightMaps, EightBitAndRgbUseTheFirstChannel) {
     const HeightField f = loadHeightMap(dir / "h8.png", {.heightScale = 10.0f});
     EXPECT_FLOAT_EQ(f.at(0, 0), 10.0f);
     EXPECT_FLOAT_EQ(f.at(1, 1), 0.0f);
-    Image8 rgba(3, 2, {200, 10, 20, 255});
-    writePng(dir / "rgba.png", rgba);
+    image::Image8 rgba(3, 2, {200, 10, 20, 255});
+    image::writePng(dir / "rgba.png", rgba);
     const HeightField g = loadHeightMap(dir / "rgba.png", {.heightScale = 255.0f});
     EXPECT_FLOAT_EQ(g.at(2, 1), 200.0f) << "the red channel";
 }

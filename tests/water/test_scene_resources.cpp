@@ -3,7 +3,7 @@
 // ripple animation. Shown with the GL objects and programs the renderer created.
 #include <gtest/gtest.h>
 
-#include "prism/feature_variants.hpp"
+#include "prism/render/feature_variants.hpp"
 #include "prism/water/gpu_water_simulation.hpp"
 #include "prism/water/procedural_textures.hpp"
 #include "prism/water/rain_rates.hpp"
@@ -26,12 +26,12 @@ WaterSceneDescription smallScene(bool water, double rainMmPerHour) {
 }
 
 // Whether the renderer's cache already holds `shader` with these extra axis values.
-bool hasProgram(WaterSceneRenderer& r, const WaterScene& scene, const char* shader, const VariantValues& values) {
-    ProgramCache& cache = r.programCache();
+bool hasProgram(WaterSceneRenderer& r, const WaterScene& scene, const char* shader, const render::VariantValues& values) {
+    render::ProgramCache& cache = r.programCache();
     const std::size_t before = cache.size();
     const auto& d = scene.description();
-    cache.get(shader, variantFor(*catalog::findShader(water_shaders::kCatalog, shader),
-                                 featuresOf(d.lights, d.fog.has_value()), values));
+    cache.get(shader, render::variantFor(*catalog::findShader(water_shaders::kCatalog, shader),
+                                 render::featuresOf(d.lights, d.fog.has_value()), values));
     return cache.size() == before;
 }
 
@@ -41,7 +41,7 @@ TEST_F(WaterGlTest, SceneWithoutWaterHasNoWaterMapSimulationOrWaterProgram) {
     EXPECT_EQ(scene.water(), nullptr) << "no water map, no simulation";
     scene.advance(10.0);  // nothing to do
     WaterSceneRenderer renderer(scene);
-    const Image8 img = renderer.renderImage(groundCamera(scene.terrain()), 48, 48);
+    const image::Image8 img = renderer.renderImage(groundCamera(scene.terrain()), 48, 48);
     const SceneRenderStats s = renderer.stats();
     EXPECT_EQ(s.programs, 2u) << "skybox and terrain only";
     EXPECT_FALSE(s.waterSurface);
@@ -94,7 +94,7 @@ TEST_F(WaterGlTest, GpuBackendBuildsComputeProgramsOnlyForWater) {
     EXPECT_EQ(gpu->programCount(), 8u) << "six step passes and two ledger reductions";
     scene.advance(2.0);
     WaterSceneRenderer renderer(scene);
-    const Image8 img = renderer.renderImage(overviewCamera(scene.terrain()), 48, 48);
+    const image::Image8 img = renderer.renderImage(overviewCamera(scene.terrain()), 48, 48);
     EXPECT_EQ(img.width, 48);
     // The same scene without water builds no compute programs at all.
     WaterSceneDescription dry = smallScene(false, 0.0);

@@ -7,7 +7,7 @@
 // rewrites the goldens (tests report SKIPPED), PRISM_SAVE_ACTUAL=1 writes actual and
 // diff images of every case, PRISM_GOLDEN_OUT=DIR says where (default
 // <build>/tests/water/golden-failures); a failing case always writes them.
-// Thresholds as there: a pixel is "over" above 3/255 in a channel; at most 0.1 % of
+// image::Thresholds as there: a pixel is "over" above 3/255 in a channel; at most 0.1 % of
 // pixels over and a mean absolute error of at most 0.5/255.
 #include <gtest/gtest.h>
 
@@ -17,8 +17,8 @@
 #include <iostream>
 #include <string>
 
-#include "prism/image_compare.hpp"
-#include "prism/png_io.hpp"
+#include "prism/image/image_compare.hpp"
+#include "prism/image/png_io.hpp"
 #include "prism/water/rain_rates.hpp"
 #include "prism/water/water_scene.hpp"
 #include "water_gl_support.hpp"
@@ -30,7 +30,7 @@ namespace fs = std::filesystem;
 using test::WaterGlTest;
 
 constexpr int kSize = 160;
-constexpr Thresholds kGoldenThresholds{.maxChannelDiff = 3, .maxShareOver = 0.001, .maxMean = 0.5};
+constexpr image::Thresholds kGoldenThresholds{.maxChannelDiff = 3, .maxShareOver = 0.001, .maxMean = 0.5};
 
 bool envFlag(const char* name) {
     const char* v = std::getenv(name);
@@ -63,45 +63,45 @@ void simulatePuddles(WaterScene& scene) {
     for (int i = 0; i < 120; ++i) scene.advance(2.0);
 }
 
-Camera closeCamera(const HeightField& t) {
-    Camera c = groundCamera(t);
+view::Camera closeCamera(const HeightField& t) {
+    view::Camera c = groundCamera(t);
     c.eye = {-1.5f, 1.1f, 1.8f};  // above the shore of a puddle, looking across it
     c.target = {0.2f, 0.1f, -0.6f};
     return c;
 }
 
-void expectMatchesGolden(const std::string& name, const Image8& actual) {
+void expectMatchesGolden(const std::string& name, const image::Image8& actual) {
     ASSERT_EQ(actual.width, kSize);
     if (envFlag("PRISM_UPDATE_GOLDENS")) {
-        writePng(goldenPath(name), actual);
+        image::writePng(goldenPath(name), actual);
         GTEST_SKIP() << "PRISM_UPDATE_GOLDENS: rewrote " << goldenPath(name).string();
     }
     ASSERT_TRUE(fs::exists(goldenPath(name)))
         << "no golden image " << goldenPath(name).string() << "; create it with PRISM_UPDATE_GOLDENS=1";
-    const ImageComparison cmp = compareImages(actual, readPng(goldenPath(name)), kGoldenThresholds.maxChannelDiff);
-    const bool ok = passes(cmp, kGoldenThresholds);
+    const image::ImageComparison cmp = image::compareImages(actual, image::readPng(goldenPath(name)), kGoldenThresholds.maxChannelDiff);
+    const bool ok = image::passes(cmp, kGoldenThresholds);
     std::string saved;
     if (!ok || envFlag("PRISM_SAVE_ACTUAL")) {
         const fs::path base = outputDir() / name;
-        writePng(base.string() + ".actual.png", actual);
-        if (cmp.sizeMatches) writePng(base.string() + ".diff.png", cmp.diff);
+        image::writePng(base.string() + ".actual.png", actual);
+        if (cmp.sizeMatches) image::writePng(base.string() + ".diff.png", cmp.diff);
         saved = base.string() + ".{actual,diff}.png";
     }
-    EXPECT_TRUE(ok) << goldenPath(name).string() << ": " << describe(cmp, kGoldenThresholds)
+    EXPECT_TRUE(ok) << goldenPath(name).string() << ": " << image::describe(cmp, kGoldenThresholds)
                     << "\nactual and diff images: " << saved;
 }
 
 // Pixels that the water changed: where the image differs from the same view without water.
-std::size_t differingPixels(const Image8& a, const Image8& b) {
-    return compareImages(a, b, 3).pixelsOver;
+std::size_t differingPixels(const image::Image8& a, const image::Image8& b) {
+    return image::compareImages(a, b, 3).pixelsOver;
 }
 
 TEST_F(WaterGlTest, GoldenPuddlesFromTwoViews) {
     WaterScene scene(puddleDescription());
     simulatePuddles(scene);
     WaterSceneRenderer renderer(scene);
-    const Image8 overview = renderer.renderImage(overviewCamera(scene.terrain()), kSize, kSize);
-    const Image8 ground = renderer.renderImage(groundCamera(scene.terrain()), kSize, kSize);
+    const image::Image8 overview = renderer.renderImage(overviewCamera(scene.terrain()), kSize, kSize);
+    const image::Image8 ground = renderer.renderImage(groundCamera(scene.terrain()), kSize, kSize);
     // Puddles must be visible: compare with the same terrain without water.
     WaterSceneDescription dry = puddleDescription();
     dry.water = false;
@@ -119,13 +119,13 @@ TEST_F(WaterGlTest, GoldenRipplesOnAndOff) {
     simulatePuddles(scene);
     scene.advance(0.1);  // a ripple frame between two of the 16
     WaterSceneRenderer renderer(scene);
-    const Camera cam = closeCamera(scene.terrain());
-    const Image8 on = renderer.renderImage(cam, kSize, kSize);
+    const view::Camera cam = closeCamera(scene.terrain());
+    const image::Image8 on = renderer.renderImage(cam, kSize, kSize);
     scene.water()->setRain(0.0);  // the same water, no rain: RIPPLES=0
-    const Image8 off = renderer.renderImage(cam, kSize, kSize);
-    const ImageComparison onVsOff = compareImages(on, off, kGoldenThresholds.maxChannelDiff);
-    std::cout << "[mutation] ripples on vs off: " << describe(onVsOff, kGoldenThresholds) << "\n";
-    EXPECT_FALSE(passes(onVsOff, kGoldenThresholds)) << "the ripples must be visible";
+    const image::Image8 off = renderer.renderImage(cam, kSize, kSize);
+    const image::ImageComparison onVsOff = image::compareImages(on, off, kGoldenThresholds.maxChannelDiff);
+    std::cout << "[mutation] ripples on vs off: " << image::describe(onVsOff, kGoldenThresholds) << "\n";
+    EXPECT_FALSE(image::passes(onVsOff, kGoldenThresholds)) << "the ripples must be visible";
     expectMatchesGolden("ripples-on-cloudburst-close", on);
     expectMatchesGolden("ripples-off-close", off);
 }
@@ -133,7 +133,7 @@ TEST_F(WaterGlTest, GoldenRipplesOnAndOff) {
 TEST_F(WaterGlTest, GoldenDryTerrainInFog) {
     WaterSceneDescription d = puddleDescription();
     d.water = false;
-    d.fog = Fog{.color = {0.66f, 0.68f, 0.70f}, .density = 0.05f};
+    d.fog = view::Fog{.color = {0.66f, 0.68f, 0.70f}, .density = 0.05f};
     WaterScene scene(std::move(d));
     WaterSceneRenderer renderer(scene);
     expectMatchesGolden("dry-terrain-fog", renderer.renderImage(groundCamera(scene.terrain()), kSize, kSize));
@@ -146,11 +146,11 @@ TEST_F(WaterGlTest, GoldenCatchesAChangedFresnelF0) {
     WaterScene scene(std::move(d));
     simulatePuddles(scene);
     WaterSceneRenderer renderer(scene);
-    const Image8 mutant = renderer.renderImage(groundCamera(scene.terrain()), kSize, kSize);
-    const ImageComparison cmp = compareImages(mutant, readPng(goldenPath("puddles-ground-cloudburst-120x2s")),
+    const image::Image8 mutant = renderer.renderImage(groundCamera(scene.terrain()), kSize, kSize);
+    const image::ImageComparison cmp = image::compareImages(mutant, image::readPng(goldenPath("puddles-ground-cloudburst-120x2s")),
                                               kGoldenThresholds.maxChannelDiff);
-    std::cout << "[mutation] F0 0.02 -> 0.2: " << describe(cmp, kGoldenThresholds) << "\n";
-    EXPECT_FALSE(passes(cmp, kGoldenThresholds));
+    std::cout << "[mutation] F0 0.02 -> 0.2: " << image::describe(cmp, kGoldenThresholds) << "\n";
+    EXPECT_FALSE(image::passes(cmp, kGoldenThresholds));
 }
 
 }  // namespace

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "prism/gl_context.hpp"
+#include "prism/gl/gl_context.hpp"
 
 namespace prism::water::test {
 

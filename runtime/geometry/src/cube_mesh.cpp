@@ -1,5 +1,5 @@
 // makeCube: 6 faces with 4 vertices each, so that every face is flat shaded.
-#include "prism/procedural_meshes.hpp"
+#include "prism/geometry/procedural_meshes.hpp"
 
 #include "shape_parameter_checks.hpp"
 

@@ -1,5 +1,5 @@
 // makeGrid: a flat, subdivided plane in XZ facing +Y (a floor or a terrain base).
-#include "prism/procedural_meshes.hpp"
+#include "prism/geometry/procedural_meshes.hpp"
 
 #include "shape_parameter_checks.hpp"
 

@@ -1,7 +1,7 @@
 // makeIcosphere: an icosahedron whose triangles are split into four, `level` times,
 // with new vertices pushed onto the sphere. Each edge midpoint is created once (edge
 // cache), so every vertex is shared: V = 10 * 4^level + 2, F = 20 * 4^level.
-#include "prism/procedural_meshes.hpp"
+#include "prism/geometry/procedural_meshes.hpp"
 
 #include "shape_parameter_checks.hpp"
 

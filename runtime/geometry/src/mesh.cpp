@@ -1,5 +1,5 @@
 // Mesh helpers: bounds, structural validation and splitting vertices per face.
-#include "prism/mesh.hpp"
+#include "prism/geometry/mesh.hpp"
 
 #include <glm/common.hpp>
 

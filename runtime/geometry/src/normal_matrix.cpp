@@ -1,6 +1,6 @@
 // The normal matrix through the cofactor matrix, with the fallbacks documented in
-// prism/normal_matrix.hpp. All arithmetic in double.
-#include "prism/normal_matrix.hpp"
+// prism/geometry/normal_matrix.hpp. All arithmetic in double.
+#include "prism/geometry/normal_matrix.hpp"
 
 #include <glm/geometric.hpp>
 

@@ -1,6 +1,6 @@
 // Face normals and area-weighted vertex normals with a defined fallback (see
-// prism/normals.hpp for the rules).
-#include "prism/normals.hpp"
+// prism/geometry/normals.hpp for the rules).
+#include "prism/geometry/normals.hpp"
 
 #include <glm/geometric.hpp>
 

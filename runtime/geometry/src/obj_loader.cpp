@@ -1,10 +1,10 @@
 // loadObj: reads the file, pre-validates it (file:line errors), lets tinyobjloader
 // parse and triangulate it, and turns the result into a split-per-face Mesh.
-#include "prism/obj_loader.hpp"
+#include "prism/geometry/obj_loader.hpp"
 
 #include "obj_validation.hpp"
-#include "prism/normals.hpp"
-#include "prism/weld.hpp"
+#include "prism/geometry/normals.hpp"
+#include "prism/geometry/weld.hpp"
 
 #include <tiny_obj_loader.h>
 

@@ -1,5 +1,5 @@
 // makeTorus: a ring around the Y axis with a circular tube, uv seams duplicated.
-#include "prism/procedural_meshes.hpp"
+#include "prism/geometry/procedural_meshes.hpp"
 
 #include "shape_parameter_checks.hpp"
 

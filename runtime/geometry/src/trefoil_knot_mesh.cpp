@@ -2,9 +2,9 @@
 // trefoil knot. The tube's cross-section frame is parallel-transported along the
 // curve (no Frenet flips) and its leftover twist after one loop is spread evenly, so
 // the surface closes without a seam. Normals are the mesh's own area-weighted ones.
-#include "prism/procedural_meshes.hpp"
+#include "prism/geometry/procedural_meshes.hpp"
 
-#include "prism/normals.hpp"
+#include "prism/geometry/normals.hpp"
 #include "shape_parameter_checks.hpp"
 
 #include <glm/ext/scalar_constants.hpp>

@@ -1,6 +1,6 @@
 // makeUvSphere: latitude/longitude sphere with one pole vertex per segment and a
 // duplicated seam column, so that uvs are continuous and every vertex is used.
-#include "prism/procedural_meshes.hpp"
+#include "prism/geometry/procedural_meshes.hpp"
 
 #include "shape_parameter_checks.hpp"
 

@@ -1,7 +1,7 @@
 // O(n) welding: an open-addressing hash table from exact position (float bit
 // patterns, -0.0 folded into 0.0) to the first group at that position; further groups
 // at the same position (creases, uv seams) hang off it in a creation-ordered chain.
-#include "prism/weld.hpp"
+#include "prism/geometry/weld.hpp"
 
 #include "weld_rules.hpp"
 

@@ -2,7 +2,7 @@
 // meshes, chapter 6.3): compare every vertex's position against the others. O(n^2);
 // kept as the reference for cross-checks and the benchmark. Same rules and result as
 // weldVertices.
-#include "prism/weld.hpp"
+#include "prism/geometry/weld.hpp"
 
 #include "weld_rules.hpp"
 

@@ -1,7 +1,7 @@
 // The merge rules shared by both welding methods and the assembly of the welded mesh.
 #include "weld_rules.hpp"
 
-#include "prism/normals.hpp"
+#include "prism/geometry/normals.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>

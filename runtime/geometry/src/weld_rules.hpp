@@ -2,7 +2,7 @@
 // how a grouping of vertices becomes the welded mesh. Not installed.
 #pragma once
 
-#include "prism/weld.hpp"
+#include "prism/geometry/weld.hpp"
 
 #include <glm/vec3.hpp>
 

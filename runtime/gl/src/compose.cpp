@@ -1,5 +1,5 @@
 // Module dependency ordering and source layout for run-time composed programs.
-#include "prism/compose.hpp"
+#include "prism/gl/compose.hpp"
 
 #include <cctype>
 

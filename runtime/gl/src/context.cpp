@@ -4,7 +4,7 @@
 
 #include "context_backends.hpp"
 #include "gl_loader.hpp"
-#include "prism/gl_context.hpp"
+#include "prism/gl/gl_context.hpp"
 
 namespace prism::gl {
 namespace {

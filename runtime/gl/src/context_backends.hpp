@@ -4,7 +4,7 @@
 
 #include <memory>
 
-#include "prism/gl_context.hpp"
+#include "prism/gl/gl_context.hpp"
 
 namespace prism::gl::detail {
 

@@ -1,5 +1,5 @@
 // Rewrites driver log lines (Mesa, NVIDIA, AMD shapes) to `path:line[:column]: message`.
-#include "prism/driver_log.hpp"
+#include "prism/gl/driver_log.hpp"
 
 #include <cctype>
 #include <optional>

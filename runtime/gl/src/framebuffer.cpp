@@ -1,10 +1,10 @@
 // Framebuffer objects with a colour texture and depth renderbuffer, and readback.
-#include "prism/framebuffer.hpp"
+#include "prism/gl/framebuffer.hpp"
 
 #include <string>
 #include <utility>
 
-#include "prism/gl.hpp"
+#include "prism/gl/gl.hpp"
 
 namespace prism::gl {
 namespace {
@@ -134,16 +134,16 @@ void Framebuffer::clear(std::array<float, 4> rgba, float depth) const {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 }
 
-Image8 Framebuffer::readImage8() const {
-    Image8 bottomUp(width_, height_);
+image::Image8 Framebuffer::readImage8() const {
+    image::Image8 bottomUp(width_, height_);
     readPixels(*this, GL_UNSIGNED_BYTE, bottomUp.data);
-    return flippedVertically(bottomUp);
+    return image::flippedVertically(bottomUp);
 }
 
-ImageF Framebuffer::readImageF() const {
-    ImageF bottomUp(width_, height_);
+image::ImageF Framebuffer::readImageF() const {
+    image::ImageF bottomUp(width_, height_);
     readPixels(*this, GL_FLOAT, bottomUp.data);
-    return flippedVertically(bottomUp);
+    return image::flippedVertically(bottomUp);
 }
 
 }  // namespace prism::gl

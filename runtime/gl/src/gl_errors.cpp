@@ -1,5 +1,5 @@
 // Names of GL error codes and the error check used after GL calls.
-#include "prism/gl.hpp"
+#include "prism/gl/gl.hpp"
 
 namespace prism::gl {
 

@@ -4,8 +4,8 @@
 
 #include <mutex>
 
-#include "prism/gl.hpp"
-#include "prism/gl_context.hpp"
+#include "prism/gl/gl.hpp"
+#include "prism/gl/gl_context.hpp"
 
 namespace prism::gl::detail {
 namespace {

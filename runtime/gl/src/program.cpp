@@ -1,12 +1,12 @@
 // Compiling stages, binding contract attributes and linking a Program; compile and
 // link failures become ShaderBuildError with file:line messages.
-#include "prism/program.hpp"
+#include "prism/gl/program.hpp"
 
 #include <iostream>
 #include <mutex>
 #include <utility>
 
-#include "prism/gl.hpp"
+#include "prism/gl/gl.hpp"
 
 namespace prism::gl {
 namespace {

@@ -5,8 +5,8 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "prism/gl.hpp"
-#include "prism/program.hpp"
+#include "prism/gl/gl.hpp"
+#include "prism/gl/program.hpp"
 
 namespace prism::gl {
 

@@ -1,4 +1,4 @@
-// Fog parameters, the animated noise array and the billboard motion
+// view::Fog parameters, the animated noise array and the billboard motion
 // (see prism/rain/fog_billboards.hpp).
 #include "prism/rain/fog_billboards.hpp"
 

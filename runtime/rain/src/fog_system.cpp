@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "prism/gl.hpp"
+#include "prism/gl/gl.hpp"
 #include "prism/rain/rain_params.hpp"
 
 namespace prism::rain {
@@ -51,7 +51,7 @@ void FogSystem::setStrength(float strength) {
     params_.strength = strength;
 }
 
-void FogSystem::draw(const Camera& camera, float aspect, const Fog* distanceFog, float timeSeconds) {
+void FogSystem::draw(const view::Camera& camera, float aspect, const view::Fog* distanceFog, float timeSeconds) {
     if (params_.strength <= 0.0f) return;
     gl::Program& p = programs_.get("fog_billboards", {{"FOG", distanceFog ? "1" : "0"}});
     p.use();

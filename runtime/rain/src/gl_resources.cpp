@@ -3,7 +3,7 @@
 
 #include <atomic>
 
-#include "prism/gl.hpp"
+#include "prism/gl/gl.hpp"
 
 namespace prism::rain {
 namespace {

@@ -11,7 +11,7 @@ const catalog::Catalog& rainCatalog() {
 
 RainPrograms::RainPrograms() : cache_(rain_shaders::kCatalog) {}
 
-gl::Program& RainPrograms::get(std::string_view shader, const VariantValues& variant) {
+gl::Program& RainPrograms::get(std::string_view shader, const render::VariantValues& variant) {
     gl::Program& p = cache_.get(shader, variant);
     used_.insert(std::string(shader) + " (" + std::string(cache_.variantOf(shader, variant).name) + ")");
     return p;

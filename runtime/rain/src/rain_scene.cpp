@@ -7,9 +7,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "prism/gl.hpp"
-#include "prism/normals.hpp"
-#include "prism/procedural_meshes.hpp"
+#include "prism/gl/gl.hpp"
+#include "prism/geometry/normals.hpp"
+#include "prism/geometry/procedural_meshes.hpp"
 
 namespace prism::rain {
 namespace {
@@ -54,8 +54,8 @@ RainSceneDesc defaultRainScene() {
     return d;
 }
 
-Camera rainSceneView(int view) {
-    Camera c;
+view::Camera rainSceneView(int view) {
+    view::Camera c;
     c.fovYDegrees = 60.0f;
     c.nearPlane = 0.1f;
     c.farPlane = 250.0f;
@@ -81,10 +81,10 @@ RainScene::RainScene(const RainSceneDesc& desc) : desc_(desc), programs_(std::ma
     if (desc_.fog) validate(*desc_.fog);
     validateEye(desc_.camera.eye);
     const auto& contract = programs_->catalog().contractAttributes;
-    ground_ = std::make_unique<GpuMesh>(makeRainGround(desc_.ground), contract);
+    ground_ = std::make_unique<render::GpuMesh>(makeRainGround(desc_.ground), contract);
     if (desc_.showLampBulb) {
-        bulb_ = std::make_unique<GpuMesh>(geometry::makeIcosphere(1.0f, 2), contract);
-        post_ = std::make_unique<GpuMesh>(geometry::makeCube(1.0f), contract);
+        bulb_ = std::make_unique<render::GpuMesh>(geometry::makeIcosphere(1.0f, 2), contract);
+        post_ = std::make_unique<render::GpuMesh>(geometry::makeCube(1.0f), contract);
     }
     // Only what the scene has: the rain system (buffers, compute, streak texture) and
     // the fog billboards exist only when asked for.
@@ -95,7 +95,7 @@ RainScene::RainScene(const RainSceneDesc& desc) : desc_(desc), programs_(std::ma
 
 RainScene::~RainScene() = default;
 
-void RainScene::setCamera(const Camera& camera) {
+void RainScene::setCamera(const view::Camera& camera) {
     validateEye(camera.eye);
     desc_.camera = camera;
 }
@@ -114,7 +114,7 @@ std::vector<std::string> RainScene::programsInUse() const {
 void RainScene::draw(int width, int height) {
     if (width <= 0 || height <= 0) throw std::invalid_argument("rain: scene size must be positive");
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
-    const Fog* fog = desc_.fog ? &desc_.fog->distance : nullptr;
+    const view::Fog* fog = desc_.fog ? &desc_.fog->distance : nullptr;
     glViewport(0, 0, width, height);
     // The sky is the farthest thing there is: with fog it takes the fog's colour as
     // applyFog() would at the far plane.
@@ -182,12 +182,12 @@ void RainScene::draw(int width, int height) {
     gl::throwIfGlError("rain: drawing the scene");
 }
 
-Image8 RainScene::render(int width, int height) {
+image::Image8 RainScene::render(int width, int height) {
     gl::Framebuffer fb(width, height, gl::ColorFormat::Rgba8);
     fb.bind();
     draw(width, height);
     glFinish();
-    Image8 image = fb.readImage8();
+    image::Image8 image = fb.readImage8();
     gl::Framebuffer::bindDefault();
     return image;
 }

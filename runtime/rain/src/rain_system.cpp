@@ -7,7 +7,7 @@
 #include <cctype>
 #include <string>
 
-#include "prism/gl.hpp"
+#include "prism/gl/gl.hpp"
 #include "prism/rain/streak_texture.hpp"
 
 namespace prism::rain {
@@ -21,7 +21,7 @@ int locationOf(const catalog::Catalog& c, std::string_view name) {
     throw std::logic_error("rain: the binding contract has no attribute '" + std::string(name) + "'");
 }
 
-VariantValues fogVariant(const Fog* fog) {
+render::VariantValues fogVariant(const view::Fog* fog) {
     return {{"FOG", fog ? "1" : "0"}};
 }
 

@@ -1,11 +1,11 @@
-// Scene features to variant values (see prism/feature_variants.hpp).
-#include "prism/feature_variants.hpp"
+// scene::Scene features to variant values (see prism/render/feature_variants.hpp).
+#include "prism/render/feature_variants.hpp"
 
 #include <charconv>
 #include <limits>
 #include <stdexcept>
 
-namespace prism {
+namespace prism::render {
 namespace {
 
 int asNumber(std::string_view text) {
@@ -30,7 +30,7 @@ std::string smallestHolding(const catalog::Shader& shader, const catalog::Varian
 
 }  // namespace
 
-FeatureSet featuresOf(const Lights& lights, bool fog) {
+FeatureSet featuresOf(const view::Lights& lights, bool fog) {
     return {static_cast<int>(lights.directional.size()), static_cast<int>(lights.points.size()), fog};
 }
 
@@ -64,4 +64,4 @@ VariantValues variantFor(const catalog::Shader& shader, const FeatureSet& f, con
     return values;
 }
 
-}  // namespace prism
+}  // namespace prism::render

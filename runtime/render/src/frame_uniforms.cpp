@@ -1,5 +1,5 @@
 // The contract's uniforms from camera, lights, world matrix and material.
-#include "prism/frame_uniforms.hpp"
+#include "prism/render/frame_uniforms.hpp"
 
 #include <glm/mat3x3.hpp>
 
@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "prism/normal_matrix.hpp"
+#include "prism/geometry/normal_matrix.hpp"
 
-namespace prism {
+namespace prism::render {
 namespace {
 
 template <class T>
@@ -40,8 +40,8 @@ void setLightArray(gl::Program& p, std::string_view countName, std::string_view 
 
 }  // namespace
 
-void setFrameUniforms(gl::Program& p, const Camera& camera, float aspect, const Lights& lights, const glm::mat4& world,
-                      const Material& material, const Fog* fog) {
+void setFrameUniforms(gl::Program& p, const view::Camera& camera, float aspect, const view::Lights& lights, const glm::mat4& world,
+                      const view::Material& material, const view::Fog* fog) {
     const glm::mat4 view = camera.view();
     setIfPresent(p, "u_world", world);
     setIfPresent(p, "u_view", view);
@@ -68,4 +68,4 @@ void setFrameUniforms(gl::Program& p, const Camera& camera, float aspect, const 
     setLightArray(p, "u_pointLightCount", "u_pointLightPosition", "u_pointLightColor", positions, pointColors);
 }
 
-}  // namespace prism
+}  // namespace prism::render

@@ -1,13 +1,13 @@
-// Vertex buffers for a Mesh (see prism/gpu_mesh.hpp).
-#include "prism/gpu_mesh.hpp"
+// Vertex buffers for a Mesh (see prism/render/gpu_mesh.hpp).
+#include "prism/render/gpu_mesh.hpp"
 
 #include <stdexcept>
 #include <string>
 #include <utility>
 
-#include "prism/gl.hpp"
+#include "prism/gl/gl.hpp"
 
-namespace prism {
+namespace prism::render {
 namespace {
 
 int locationOf(std::span<const catalog::Attribute> contract, std::string_view name) {
@@ -87,4 +87,4 @@ void GpuMesh::draw() const {
     glBindVertexArray(0);
 }
 
-}  // namespace prism
+}  // namespace prism::render

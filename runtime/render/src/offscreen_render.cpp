@@ -1,25 +1,25 @@
-// Off-screen rendering of a RenderJob (see prism/offscreen_render.hpp).
-#include "prism/offscreen_render.hpp"
+// Off-screen rendering of a RenderJob (see prism/render/offscreen_render.hpp).
+#include "prism/render/offscreen_render.hpp"
 
 #include <stdexcept>
 
-#include "prism/feature_variants.hpp"
-#include "prism/frame_uniforms.hpp"
-#include "prism/gl.hpp"
-#include "prism/gpu_mesh.hpp"
+#include "prism/render/feature_variants.hpp"
+#include "prism/render/frame_uniforms.hpp"
+#include "prism/gl/gl.hpp"
+#include "prism/render/gpu_mesh.hpp"
 
-namespace prism {
+namespace prism::render {
 
-Lights defaultLights() {
-    Lights l;
+view::Lights defaultLights() {
+    view::Lights l;
     l.ambient = glm::vec3(0.12f);
     l.directional.push_back({glm::vec3(-0.5f, -0.6f, -0.65f), glm::vec3(0.85f)});
     l.directional.push_back({glm::vec3(0.7f, 0.2f, -0.4f), glm::vec3(0.2f, 0.22f, 0.3f)});
     return l;
 }
 
-Camera defaultCamera() {
-    Camera c;
+view::Camera defaultCamera() {
+    view::Camera c;
     c.eye = {0.0f, 0.6f, 3.2f};
     c.target = {0.0f, 0.0f, 0.0f};
     c.fovYDegrees = 45.0f;
@@ -61,16 +61,16 @@ void renderInto(gl::Framebuffer& fb, ProgramCache& cache, const RenderJob& job) 
 
 }  // namespace
 
-Image8 renderImage8(ProgramCache& cache, const RenderJob& job) {
+image::Image8 renderImage8(ProgramCache& cache, const RenderJob& job) {
     gl::Framebuffer fb(job.width, job.height, gl::ColorFormat::Rgba8);
     renderInto(fb, cache, job);
     return fb.readImage8();
 }
 
-ImageF renderImageF(ProgramCache& cache, const RenderJob& job) {
+image::ImageF renderImageF(ProgramCache& cache, const RenderJob& job) {
     gl::Framebuffer fb(job.width, job.height, gl::ColorFormat::Rgba32F);
     renderInto(fb, cache, job);
     return fb.readImageF();
 }
 
-}  // namespace prism
+}  // namespace prism::render

@@ -1,7 +1,7 @@
-// Lazily built, shared programs (see prism/program_cache.hpp).
-#include "prism/program_cache.hpp"
+// Lazily built, shared programs (see prism/render/program_cache.hpp).
+#include "prism/render/program_cache.hpp"
 
-namespace prism {
+namespace prism::render {
 
 std::vector<std::string> ProgramCache::shaderNames() const {
     std::vector<std::string> names;
@@ -37,4 +37,4 @@ gl::Program& ProgramCache::get(std::string_view shader, const VariantValues& val
     return *it->second;
 }
 
-}  // namespace prism
+}  // namespace prism::render

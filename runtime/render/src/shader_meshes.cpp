@@ -1,14 +1,14 @@
-// Mesh preparation per shader and the named meshes (see prism/shader_meshes.hpp).
-#include "prism/shader_meshes.hpp"
+// Mesh preparation per shader and the named meshes (see prism/render/shader_meshes.hpp).
+#include "prism/render/shader_meshes.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 
-#include "prism/normals.hpp"
-#include "prism/obj_loader.hpp"
-#include "prism/procedural_meshes.hpp"
+#include "prism/geometry/normals.hpp"
+#include "prism/geometry/obj_loader.hpp"
+#include "prism/geometry/procedural_meshes.hpp"
 
-namespace prism {
+namespace prism::render {
 
 geometry::Mesh meshForShader(std::string_view shader, const geometry::Mesh& mesh) {
     if (shader == "flat") return geometry::makeFlatShaded(mesh);
@@ -40,4 +40,4 @@ geometry::Mesh namedMesh(const std::string& name, unsigned subdivision) {
     throw std::invalid_argument("unknown mesh '" + name + "'; use one of " + known + " or a path to an .obj file");
 }
 
-}  // namespace prism
+}  // namespace prism::render

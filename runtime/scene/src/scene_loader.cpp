@@ -1,5 +1,5 @@
-// JSON scene reading with path-precise errors (see prism/scene_loader.hpp).
-#include "prism/scene_loader.hpp"
+// JSON scene reading with path-precise errors (see prism/scene/scene_loader.hpp).
+#include "prism/scene/scene_loader.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
@@ -11,7 +11,7 @@
 #include <set>
 #include <sstream>
 
-namespace prism {
+namespace prism::scene {
 namespace {
 
 using nlohmann::json;
@@ -79,9 +79,9 @@ class Reader {
     std::string file_;
 };
 
-Camera readCamera(const Reader& r, const json& j) {
+view::Camera readCamera(const Reader& r, const json& j) {
     r.object(j, "/camera", {"eye", "target", "up", "fovY", "near", "far"});
-    Camera c;
+    view::Camera c;
     if (j.contains("eye")) c.eye = r.vec3(j["eye"], "/camera/eye");
     if (j.contains("target")) c.target = r.vec3(j["target"], "/camera/target");
     if (j.contains("up")) c.up = r.vec3(j["up"], "/camera/up");
@@ -94,7 +94,7 @@ Camera readCamera(const Reader& r, const json& j) {
     return c;
 }
 
-void readLights(const Reader& r, const json& j, Lights& lights) {
+void readLights(const Reader& r, const json& j, view::Lights& lights) {
     if (!j.is_array()) r.fail("/lights", "an array of lights");
     lights.ambient = glm::vec3(0.0f);
     for (std::size_t i = 0; i < j.size(); ++i) {
@@ -108,14 +108,14 @@ void readLights(const Reader& r, const json& j, Lights& lights) {
         } else if (type == "directional") {
             r.object(l, at, {"type", "direction", "color"});
             if (!l.contains("direction")) r.fail(at + "/direction", "3 numbers");
-            DirectionalLight d{r.vec3(l["direction"], at + "/direction"), glm::vec3(1.0f)};
+            view::DirectionalLight d{r.vec3(l["direction"], at + "/direction"), glm::vec3(1.0f)};
             if (glm::dot(d.direction, d.direction) < 1e-20f) r.fail(at + "/direction", "a non-zero direction");
             if (l.contains("color")) d.color = r.color(l["color"], at + "/color");
             lights.directional.push_back(d);
         } else if (type == "point") {
             r.object(l, at, {"type", "position", "color"});
             if (!l.contains("position")) r.fail(at + "/position", "3 numbers");
-            PointLight p{r.vec3(l["position"], at + "/position"), glm::vec3(1.0f)};
+            view::PointLight p{r.vec3(l["position"], at + "/position"), glm::vec3(1.0f)};
             if (l.contains("color")) p.color = r.color(l["color"], at + "/color");
             lights.points.push_back(p);
         } else {
@@ -244,7 +244,7 @@ Scene parseScene(const std::string& text, const std::string& fileName) {
     if (j.contains("lights")) readLights(r, j["lights"], s.lights);
     if (j.contains("fog")) {
         r.object(j["fog"], "/fog", {"color", "density"});
-        Fog f;
+        view::Fog f;
         if (j["fog"].contains("color")) f.color = r.color(j["fog"]["color"], "/fog/color");
         if (j["fog"].contains("density"))
             f.density = static_cast<float>(r.number(j["fog"]["density"], "/fog/density", 0.0, 1e6));
@@ -268,4 +268,4 @@ Scene loadScene(const std::string& path) {
     return parseScene(ss.str(), path);
 }
 
-}  // namespace prism
+}  // namespace prism::scene

@@ -1,15 +1,15 @@
-// Scene drawing with minimal, shared programs (see prism/scene_renderer.hpp).
-#include "prism/scene_renderer.hpp"
+// Scene drawing with minimal, shared programs (see prism/scene/scene_renderer.hpp).
+#include "prism/scene/scene_renderer.hpp"
 
-#include "prism/feature_variants.hpp"
-#include "prism/frame_uniforms.hpp"
-#include "prism/framebuffer.hpp"
-#include "prism/gl.hpp"
-#include "prism/gpu_mesh.hpp"
+#include "prism/render/feature_variants.hpp"
+#include "prism/render/frame_uniforms.hpp"
+#include "prism/gl/framebuffer.hpp"
+#include "prism/gl/gl.hpp"
+#include "prism/render/gpu_mesh.hpp"
 #include "prism/rain/rain_params.hpp"
 #include "prism/rain/rain_programs.hpp"
 #include "prism/rain/rain_system.hpp"
-#include "prism/shader_meshes.hpp"
+#include "prism/render/shader_meshes.hpp"
 #include "prism/water/rain_rates.hpp"
 #include "prism/water/water_scene.hpp"
 
@@ -18,7 +18,7 @@
 
 #include <cmath>
 
-namespace prism {
+namespace prism::scene {
 
 rain::RainParams rainParamsFor(const RainSettings& settings) {
     rain::RainParams p;
@@ -105,8 +105,8 @@ void SceneRenderer::drawWater(const Scene& scene) {
                                   std::to_string(static_cast<int>(w.seconds)) + " s of rain");
 }
 
-Image8 SceneRenderer::render(const Scene& scene) {
-    const FeatureSet features = featuresOf(scene.lights, scene.fog.has_value());
+image::Image8 SceneRenderer::render(const Scene& scene) {
+    const render::FeatureSet features = render::featuresOf(scene.lights, scene.fog.has_value());
     const float aspect = static_cast<float>(scene.width) / static_cast<float>(scene.height);
     lastFrame_ = {};
 
@@ -124,13 +124,13 @@ Image8 SceneRenderer::render(const Scene& scene) {
 
     for (const auto& object : scene.objects) {
         const auto* shader = catalog::findShader(programs_.catalog(), object.shader);
-        if (!shader) programs_.variantOf(object.shader, {});  // throws UnknownShaderError with the list
-        const VariantValues variant = variantFor(*shader, features, object.variantOverrides);
+        if (!shader) programs_.variantOf(object.shader, {});  // throws render::UnknownShaderError with the list
+        const render::VariantValues variant = render::variantFor(*shader, features, object.variantOverrides);
         gl::Program& program = programs_.get(object.shader, variant);
-        GpuMesh mesh(meshForShader(object.shader, namedMesh(object.mesh, object.subdivision)),
+        render::GpuMesh mesh(render::meshForShader(object.shader, render::namedMesh(object.mesh, object.subdivision)),
                      programs_.catalog().contractAttributes);
         program.use();
-        setFrameUniforms(program, scene.camera, aspect, scene.lights, object.world, object.material,
+        render::setFrameUniforms(program, scene.camera, aspect, scene.lights, object.world, object.material,
                          scene.fog ? &*scene.fog : nullptr);
         mesh.draw();
         ++lastFrame_.draws;
@@ -143,4 +143,4 @@ Image8 SceneRenderer::render(const Scene& scene) {
     return fb.readImage8();
 }
 
-}  // namespace prism
+}  // namespace prism::scene

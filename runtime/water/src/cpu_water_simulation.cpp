@@ -7,7 +7,6 @@
 #include <cmath>
 #include <cstring>
 
-#include "prism/gl.hpp"
 #include "prism/water/water_simulation.hpp"
 
 #if defined(__x86_64__) || defined(__i386__) || defined(_M_X64)
@@ -113,14 +112,6 @@ std::vector<glm::vec2> CpuWaterSimulation::edgeVelocities() const {
 void CpuWaterSimulation::lossTotals(double& infiltrated, double& lost) const {
     infiltrated = infiltrated_;
     lost = lost_;
-}
-
-void CpuWaterSimulation::uploadDepthTexture(unsigned texture) const {
-    const std::vector<glm::vec2> pairs = depthPairs();
-    glBindTexture(GL_TEXTURE_2D, texture);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width(), height(), GL_RG, GL_FLOAT, pairs.data());
-    glBindTexture(GL_TEXTURE_2D, 0);
 }
 
 void CpuWaterSimulation::swapWater() {

@@ -1,9 +1,8 @@
-// GL 4.3 entry points the water system needs beyond the project's GL 3.3 loader
-// (glDispatchCompute, glMemoryBarrier), fetched through the get-proc-address function
-// of whichever context backend is current (OSMesa, EGL or GLFW). Internal.
+// The compute entry points the water system uses, from prism_gl's GL 4.5 loader. Internal.
 #pragma once
 
-#include "prism/gl.hpp"
+#include "prism/gl/compute.hpp"
+#include "prism/gl/gl.hpp"
 
 namespace prism::water::detail {
 
@@ -16,11 +15,15 @@ struct ComputeFunctions {
     void (*memoryBarrier)(GLbitfield) = nullptr;
 };
 
-// Loads them for the current context; throws prism::gl::ContextError when the context
-// is older than GL 4.3 or the functions cannot be found.
-ComputeFunctions loadComputeFunctions();
+// The loader's glDispatchCompute/glMemoryBarrier; throws gl::ComputeUnavailableError
+// when the current context is older than GL 4.3.
+inline ComputeFunctions loadComputeFunctions() {
+    gl::requireCompute("prism water: the GPU simulation (or use the CPU simulation)");
+    return {glad_glDispatchCompute, glad_glMemoryBarrier};
+}
 
-// GL_MAJOR_VERSION.GL_MINOR_VERSION of the current context as 10 * major + minor.
-int currentGlVersion();
+inline int currentGlVersion() {
+    return gl::currentContextVersion();
+}
 
 }  // namespace prism::water::detail

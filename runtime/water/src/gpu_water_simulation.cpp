@@ -9,7 +9,7 @@
 #include <glm/vec2.hpp>
 
 #include "gl_compute.hpp"
-#include "prism/program.hpp"
+#include "prism/gl/program.hpp"
 #include "prism/water_shaders.hpp"
 
 namespace prism::water {

@@ -7,10 +7,10 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "prism/feature_variants.hpp"
-#include "prism/frame_uniforms.hpp"
-#include "prism/framebuffer.hpp"
-#include "prism/gl.hpp"
+#include "prism/render/feature_variants.hpp"
+#include "prism/render/frame_uniforms.hpp"
+#include "prism/gl/framebuffer.hpp"
+#include "prism/gl/gl.hpp"
 #include "prism/water/gpu_water_simulation.hpp"
 #include "prism/water/rain_rates.hpp"
 #include "prism/water/terrain_mesh.hpp"
@@ -18,10 +18,10 @@
 
 namespace prism::water {
 
-// --- Scene -----------------------------------------------------------------------------
+// --- scene::Scene -----------------------------------------------------------------------------
 
-Lights WaterSceneDescription::defaultSun() {
-    Lights l;
+view::Lights WaterSceneDescription::defaultSun() {
+    view::Lights l;
     l.ambient = {0.32f, 0.35f, 0.40f};
     l.directional.push_back({.direction = {-0.45f, -0.55f, 0.70f}, .color = {0.85f, 0.82f, 0.74f}});
     return l;
@@ -70,6 +70,20 @@ glm::mat4 WaterScene::world() const {
 
 namespace {
 
+// Copies the compensated depths of either simulation into the RG32F depth texture:
+// on the GPU for the compute path, from the CPU arrays otherwise.
+void uploadDepthTexture(const WaterSimulation& simulation, GLuint texture) {
+    if (const auto* gpu = dynamic_cast<const GpuWaterSimulation*>(&simulation)) {
+        gpu->uploadDepthTexture(texture);
+        return;
+    }
+    const std::vector<glm::vec2> pairs = simulation.depthPairs();
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, simulation.width(), simulation.height(), GL_RG, GL_FLOAT, pairs.data());
+    glBindTexture(GL_TEXTURE_2D, 0);
+}
+
 float meanHeight(const HeightField& t) {
     double s = 0.0;
     for (float h : t.heights) s += h;
@@ -82,9 +96,9 @@ float extent(const HeightField& t) {
 
 }  // namespace
 
-Camera overviewCamera(const HeightField& t) {
+view::Camera overviewCamera(const HeightField& t) {
     const float e = extent(t), mid = meanHeight(t);
-    Camera c;
+    view::Camera c;
     c.eye = {0.66f * e, mid + 0.40f * e, 0.84f * e};
     c.target = {0.0f, mid - 0.08f * e, 0.0f};
     c.fovYDegrees = 45.0f;
@@ -93,9 +107,9 @@ Camera overviewCamera(const HeightField& t) {
     return c;
 }
 
-Camera groundCamera(const HeightField& t) {
+view::Camera groundCamera(const HeightField& t) {
     const float e = extent(t), mid = meanHeight(t);
-    Camera c;
+    view::Camera c;
     c.eye = {-0.42f * e, mid + 0.16f * e, 0.40f * e};
     c.target = {0.08f * e, mid - 0.04f * e, -0.05f * e};
     c.fovYDegrees = 50.0f;
@@ -127,7 +141,7 @@ void setIfPresent(gl::Program& p, std::string_view name, const T& value) {
 
 struct WaterSceneRenderer::Impl {
     const WaterScene& scene;
-    ProgramCache cache{ws::kCatalog};
+    render::ProgramCache cache{ws::kCatalog};
     SceneRenderStats counts;
     GLuint terrainVao = 0, terrainBuffers[5] = {0, 0, 0, 0, 0};  // positions, normals, uvs, colours, indices
     GLsizei terrainIndexCount = 0;
@@ -271,20 +285,20 @@ struct WaterSceneRenderer::Impl {
         counts.rippleTextures = true;
     }
 
-    gl::Program& program(const char* name, const VariantValues& requested) {
+    gl::Program& program(const char* name, const render::VariantValues& requested) {
         const auto& d = scene.description();
         const catalog::Shader* shader = catalog::findShader(ws::kCatalog, name);
-        return cache.get(name, variantFor(*shader, featuresOf(d.lights, d.fog.has_value()), requested));
+        return cache.get(name, render::variantFor(*shader, render::featuresOf(d.lights, d.fog.has_value()), requested));
     }
 
-    void frameUniforms(gl::Program& p, const Camera& camera, float aspect) {
+    void frameUniforms(gl::Program& p, const view::Camera& camera, float aspect) {
         const auto& d = scene.description();
-        setFrameUniforms(p, camera, aspect, d.lights, scene.world(), Material{}, d.fog ? &*d.fog : nullptr);
+        render::setFrameUniforms(p, camera, aspect, d.lights, scene.world(), view::Material{}, d.fog ? &*d.fog : nullptr);
         setIfPresent(p, "u_skyFogDistance", 2.0f * extent(scene.terrain()));
         setIfPresent(p, "u_cameraPosition", camera.eye);
     }
 
-    void draw(const Camera& camera, int width, int height) {
+    void draw(const view::Camera& camera, int width, int height) {
         const auto& d = scene.description();
         const WaterSystem* water = scene.water();
         const float aspect = static_cast<float>(width) / static_cast<float>(std::max(1, height));
@@ -295,7 +309,7 @@ struct WaterSceneRenderer::Impl {
         glActiveTexture(GL_TEXTURE0);
         glBindTexture(GL_TEXTURE_CUBE_MAP, skyTexture);
         if (water) {
-            water->simulation().uploadDepthTexture(depthTexture);
+            uploadDepthTexture(water->simulation(), depthTexture);
             glActiveTexture(GL_TEXTURE1);
             glBindTexture(GL_TEXTURE_2D, depthTexture);
             glActiveTexture(GL_TEXTURE2);
@@ -379,15 +393,15 @@ WaterSceneRenderer::WaterSceneRenderer(const WaterScene& scene) : impl_(std::mak
 
 WaterSceneRenderer::~WaterSceneRenderer() = default;
 
-void WaterSceneRenderer::draw(const Camera& camera, int width, int height) {
+void WaterSceneRenderer::draw(const view::Camera& camera, int width, int height) {
     impl_->draw(camera, width, height);
 }
 
-Image8 WaterSceneRenderer::renderImage(const Camera& camera, int width, int height) {
+image::Image8 WaterSceneRenderer::renderImage(const view::Camera& camera, int width, int height) {
     gl::Framebuffer fb(width, height);
     fb.bind();
     impl_->draw(camera, width, height);
-    Image8 image = fb.readImage8();
+    image::Image8 image = fb.readImage8();
     gl::Framebuffer::bindDefault();
     return image;
 }
@@ -398,7 +412,7 @@ SceneRenderStats WaterSceneRenderer::stats() const {
     return s;
 }
 
-ProgramCache& WaterSceneRenderer::programCache() {
+render::ProgramCache& WaterSceneRenderer::programCache() {
     return impl_->cache;
 }
 

@@ -17,7 +17,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "prism/scene_lighting.hpp"
+#include "prism/view/lighting.hpp"
 
 namespace prism::rain {
 
@@ -35,7 +35,7 @@ struct FogBillboardParams {
 };
 
 struct SceneFog {
-    Fog distance{glm::vec3(0.42f, 0.45f, 0.50f), 0.035f};  // modules/fog.glsl; the sky fogs fully
+    view::Fog distance{glm::vec3(0.42f, 0.45f, 0.50f), 0.035f};  // modules/fog.glsl; the sky fogs fully
     FogBillboardParams billboards;
 };
 

@@ -10,7 +10,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "prism/camera.hpp"
+#include "prism/view/camera.hpp"
 #include "prism/rain/rain_programs.hpp"
 #include "prism/rain/fog_billboards.hpp"
 #include "prism/rain/gl_resources.hpp"
@@ -26,7 +26,7 @@ class FogSystem {
     void update(float dt, const glm::vec3& eye, const glm::vec3& wind);
     // Premultiplied blending, depth test on, depth writes off; `distanceFog` non-null
     // selects the FOG=1 variant.
-    void draw(const Camera& camera, float aspect, const Fog* distanceFog, float timeSeconds);
+    void draw(const view::Camera& camera, float aspect, const view::Fog* distanceFog, float timeSeconds);
     void setStrength(float strength);  // [0, 1]
     float strength() const { return params_.strength; }
     const FogBillboardSimulation& simulation() const { return simulation_; }

@@ -1,4 +1,4 @@
-// The rain system's programs: a ProgramCache over the rain catalogue
+// The rain system's programs: a render::ProgramCache over the rain catalogue
 // (prism/rain_shaders.hpp, built from shader_sources/rain against modules/ and the
 // two contracts) that also records which programs were asked for, so a test can show
 // which programs a scene uses (e.g. none of the rain ones without rain, no FOG=1
@@ -16,8 +16,8 @@
 #include <string_view>
 #include <vector>
 
-#include "prism/program_cache.hpp"
-#include "prism/shader_catalog.hpp"
+#include "prism/render/program_cache.hpp"
+#include "prism/catalog/shader_catalog.hpp"
 
 namespace prism::rain {
 
@@ -26,15 +26,15 @@ const catalog::Catalog& rainCatalog();
 class RainPrograms {
   public:
     RainPrograms();
-    gl::Program& get(std::string_view shader, const VariantValues& variant = {});
+    gl::Program& get(std::string_view shader, const render::VariantValues& variant = {});
     // "shader (variant name)" of every program asked for, sorted.
     std::vector<std::string> used() const { return {used_.begin(), used_.end()}; }
     std::size_t built() const { return cache_.size(); }
-    ProgramCache& cache() { return cache_; }
+    render::ProgramCache& cache() { return cache_; }
     const catalog::Catalog& catalog() const { return cache_.catalog(); }
 
   private:
-    ProgramCache cache_;
+    render::ProgramCache cache_;
     std::set<std::string> used_;
 };
 

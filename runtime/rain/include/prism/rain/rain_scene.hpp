@@ -10,7 +10,7 @@
 //     desc.rain->wind.strength = 5.0f;
 //     prism::rain::RainScene scene(desc);     // needs a current GL context (4.3 with rain)
 //     scene.update(1.0f / 60.0f);             // rain and fog billboards
-//     prism::Image8 image = scene.render(800, 800);
+//     prism::image::Image8 image = scene.render(800, 800);
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -20,10 +20,10 @@
 #include <string>
 #include <vector>
 
-#include "prism/camera.hpp"
-#include "prism/framebuffer.hpp"
-#include "prism/gpu_mesh.hpp"
-#include "prism/image.hpp"
+#include "prism/view/camera.hpp"
+#include "prism/gl/framebuffer.hpp"
+#include "prism/render/gpu_mesh.hpp"
+#include "prism/image/image.hpp"
 #include "prism/rain/rain_programs.hpp"
 #include "prism/rain/fog_billboards.hpp"
 #include "prism/rain/fog_system.hpp"
@@ -43,7 +43,7 @@ struct GroundDesc {
 };
 
 struct RainSceneDesc {
-    Camera camera;
+    view::Camera camera;
     glm::vec3 skyColor{0.33f, 0.36f, 0.42f};  // an overcast dusk: lit drops show
     RainLights lights;
     GroundDesc ground;
@@ -59,7 +59,7 @@ RainSceneDesc defaultRainScene();
 // The views the example and the golden images use: 0 looks past the lamp (lit from the
 // side and behind), 1 looks back up the road towards the sun's side, 2 stands close to
 // the lamp and looks up past it into the rain.
-Camera rainSceneView(int view);
+view::Camera rainSceneView(int view);
 
 class RainScene {
   public:
@@ -70,12 +70,12 @@ class RainScene {
 
     // Advances rain and fog billboards by dt seconds around the current camera.
     void update(float dt);
-    void setCamera(const Camera& camera);
-    const Camera& camera() const { return desc_.camera; }
+    void setCamera(const view::Camera& camera);
+    const view::Camera& camera() const { return desc_.camera; }
     // Draws everything into the bound framebuffer of width x height pixels.
     void draw(int width, int height);
     // Renders into an own RGBA8 framebuffer and reads it back.
-    Image8 render(int width, int height);
+    image::Image8 render(int width, int height);
 
     RainSystem* rain() { return rain_.get(); }
     FogSystem* fogBillboards() { return fog_.get(); }
@@ -90,9 +90,9 @@ class RainScene {
   private:
     RainSceneDesc desc_;
     std::unique_ptr<RainPrograms> programs_;
-    std::unique_ptr<GpuMesh> ground_;
-    std::unique_ptr<GpuMesh> bulb_;
-    std::unique_ptr<GpuMesh> post_;
+    std::unique_ptr<render::GpuMesh> ground_;
+    std::unique_ptr<render::GpuMesh> bulb_;
+    std::unique_ptr<render::GpuMesh> post_;
     std::unique_ptr<RainSystem> rain_;
     std::unique_ptr<FogSystem> fog_;
     float time_ = 0.0f;

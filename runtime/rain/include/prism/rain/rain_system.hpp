@@ -22,13 +22,13 @@
 #include <string_view>
 #include <vector>
 
-#include "prism/camera.hpp"
+#include "prism/view/camera.hpp"
 #include "prism/rain/rain_programs.hpp"
 #include "prism/rain/compute.hpp"
 #include "prism/rain/gl_resources.hpp"
 #include "prism/rain/rain_params.hpp"
 #include "prism/rain/rain_simulation.hpp"
-#include "prism/scene_lighting.hpp"
+#include "prism/view/lighting.hpp"
 
 namespace prism::rain {
 
@@ -41,17 +41,17 @@ std::string_view techniqueShader(StreakTechnique t);                   // rain_s
 // (modules/rain/drop_lights.glsl).
 struct RainLights {
     glm::vec3 ambient{0.13f, 0.14f, 0.16f};
-    DirectionalLight sun{glm::vec3(-0.3f, -0.8f, -0.5f), glm::vec3(0.42f, 0.42f, 0.48f)};
-    PointLight lamp{glm::vec3(2.0f, 3.2f, -6.0f), glm::vec3(8.0f, 6.2f, 3.8f)};
+    view::DirectionalLight sun{glm::vec3(-0.3f, -0.8f, -0.5f), glm::vec3(0.42f, 0.42f, 0.48f)};
+    view::PointLight lamp{glm::vec3(2.0f, 3.2f, -6.0f), glm::vec3(8.0f, 6.2f, 3.8f)};
     float lampRange = 1.5f;  // m: the lamp's light halves at this distance
 };
 
 struct RainDrawInputs {
-    Camera camera;
+    view::Camera camera;
     float aspect = 1.0f;
     int viewportHeight = 512;  // pixels (minimum streak width)
     RainLights lights;
-    const Fog* fog = nullptr;  // non-null: the FOG=1 variant
+    const view::Fog* fog = nullptr;  // non-null: the FOG=1 variant
     StreakTechnique technique = StreakTechnique::GeometryShader;
 };
 

@@ -35,7 +35,8 @@ class GpuWaterSimulation final : public WaterSimulation {
     std::vector<glm::vec2> depthPairs() const override;
     std::vector<glm::vec2> edgeVelocities() const override;
     std::string_view backendName() const override { return "gpu"; }
-    void uploadDepthTexture(unsigned texture) const override;
+    // Copies the compensated depths into an RG32F texture of the grid's size on the GPU.
+    void uploadDepthTexture(unsigned texture) const;
 
     // The storage buffer that holds the current (hi, lo) depth pairs.
     unsigned depthBuffer() const;

@@ -1,5 +1,5 @@
 // Terrain height fields and permeability ("attribute") maps for the water system:
-// loaded from 8- or 16-bit PNG files with Prism's own libpng read path (prism::readPng
+// loaded from 8- or 16-bit PNG files with Prism's own libpng read path (prism::image::readPng
 // would reduce 16-bit maps to 8 bits), or generated procedurally.
 //
 //     using namespace prism::water;

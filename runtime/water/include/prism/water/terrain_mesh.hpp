@@ -11,7 +11,7 @@
 
 #include <vector>
 
-#include "prism/mesh.hpp"
+#include "prism/geometry/mesh.hpp"
 #include "prism/water/height_field.hpp"
 
 namespace prism::water {

@@ -8,12 +8,12 @@
 //     WaterSceneDescription d;
 //     d.terrain = proceduralTerrain({.width = 256, .height = 256});   // default: 512 x 512
 //     d.rainMmPerHour = rainRateMmPerHour(RainClass::Heavy);
-//     d.fog = prism::Fog{};
+//     d.fog = prism::view::Fog{};
 //     WaterScene scene(std::move(d));
 //     scene.advance(1.0);                                        // one second of rain
 //     auto ctx = prism::gl::createContext({.majorVersion = 4, .minorVersion = 3});
 //     WaterSceneRenderer renderer(scene);
-//     prism::Image8 img = renderer.renderImage(overviewCamera(scene.terrain()), 640, 480);
+//     prism::image::Image8 img = renderer.renderImage(overviewCamera(scene.terrain()), 640, 480);
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -23,10 +23,10 @@
 #include <optional>
 #include <vector>
 
-#include "prism/camera.hpp"
-#include "prism/image.hpp"
-#include "prism/program_cache.hpp"
-#include "prism/scene_lighting.hpp"
+#include "prism/view/camera.hpp"
+#include "prism/image/image.hpp"
+#include "prism/render/program_cache.hpp"
+#include "prism/view/lighting.hpp"
 #include "prism/water/height_field.hpp"
 #include "prism/water/procedural_textures.hpp"
 #include "prism/water/water_simulation.hpp"
@@ -53,13 +53,13 @@ struct WaterSceneDescription {
     double rainMmPerHour = 0.0;       // constant rain rate (see rain_rates.hpp for classes)
     SimulationBackend backend = SimulationBackend::Cpu;
     WaterParams params;
-    Lights lights = defaultSun();
-    std::optional<Fog> fog;
+    view::Lights lights = defaultSun();
+    std::optional<view::Fog> fog;
     SkyOptions sky;
     WaterLook look;
 
     // A low sun from the upper right with a bluish overcast ambient.
-    static Lights defaultSun();
+    static view::Lights defaultSun();
 };
 
 // The water map with its rain and ripple clock; exists only in scenes with water.
@@ -97,8 +97,8 @@ class WaterScene {
     WaterSystem* water() { return water_.get(); }
     const WaterSystem* water() const { return water_.get(); }
 
-    // Fog on or off; the renderer picks the FOG=1 or FOG=0 programs at the next draw.
-    void setFog(std::optional<Fog> fog) { description_.fog = fog; }
+    // view::Fog on or off; the renderer picks the FOG=1 or FOG=0 programs at the next draw.
+    void setFog(std::optional<view::Fog> fog) { description_.fog = fog; }
 
     // Advances the water by dt seconds (nothing to do in a scene without water).
     void advance(double dt);
@@ -112,8 +112,8 @@ class WaterScene {
 
 // Cameras that frame a terrain: from above a corner, and low over the ground looking
 // across towards the centre.
-Camera overviewCamera(const HeightField& terrain);
-Camera groundCamera(const HeightField& terrain);
+view::Camera overviewCamera(const HeightField& terrain);
+view::Camera groundCamera(const HeightField& terrain);
 
 // GL objects a renderer created: the evidence for "only what the scene needs".
 struct SceneRenderStats {
@@ -136,12 +136,12 @@ class WaterSceneRenderer {
     WaterSceneRenderer& operator=(const WaterSceneRenderer&) = delete;
 
     // Draws into the bound framebuffer, setting the viewport to width x height.
-    void draw(const Camera& camera, int width, int height);
+    void draw(const view::Camera& camera, int width, int height);
     // Draws into an off-screen RGBA8 target and reads it back (row 0 at the top).
-    Image8 renderImage(const Camera& camera, int width, int height);
+    image::Image8 renderImage(const view::Camera& camera, int width, int height);
 
     SceneRenderStats stats() const;
-    ProgramCache& programCache();
+    render::ProgramCache& programCache();
 
   private:
     struct Impl;

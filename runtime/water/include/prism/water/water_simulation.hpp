@@ -151,10 +151,6 @@ class WaterSimulation {
 
     virtual std::string_view backendName() const = 0;
 
-    // Copies the compensated depths into an RG32F texture of the grid's size (for the
-    // water-surface shader); needs a current GL context.
-    virtual void uploadDepthTexture(unsigned texture) const = 0;
-
   protected:
     WaterSimulation(HeightField terrain, std::vector<float> permeability, WaterParams params);
     virtual void runSubsteps(const StepConstants& constants, long count) = 0;
@@ -183,7 +179,6 @@ class CpuWaterSimulation final : public WaterSimulation {
     std::vector<glm::vec2> depthPairs() const override;
     std::vector<glm::vec2> edgeVelocities() const override;
     std::string_view backendName() const override { return "cpu"; }
-    void uploadDepthTexture(unsigned texture) const override;
 
   protected:
     void runSubsteps(const StepConstants& constants, long count) override;

@@ -1,0 +1,175 @@
+// Linked GL programs built from the shader catalogue (or from raw stage sources),
+// with driver errors mapped back to module files and checked uniform setters.
+//
+// Usage:
+//
+//     #include "prism/shaders.hpp"   // generated catalogue
+//     const auto& phong = prism::shaders::shader(prism::shaders::ShaderId::phong);
+//     const auto* variant = prism::catalog::findVariant(phong, {{"FOG", "1"}});
+//     prism::gl::Program program(*variant, prism::shaders::kCatalog.contractAttributes, "phong");
+//
+//     program.use();
+//     program.set("u_color", glm::vec4(1, 0, 0, 1));
+//     program.set("u_lightDirections", std::span<const glm::vec3>(dirs));  // array from element 0
+//     program.set("u_lightDirections[2]", glm::vec3(0, 1, 0));             // one element
+//
+// Building: every stage is compiled, each contract attribute is bound to its
+// location with glBindAttribLocation, then the program is linked. A compile or link
+// failure throws prism::gl::ShaderBuildError whose message has the driver's log
+// translated to `path:line:column: error: ...` through the stage's files table
+// (see prism/gl/driver_log.hpp). Needs a current context; move-only.
+//
+// Uniforms: locations come from the variant's reflection table once, at link time
+// (an array `a` of n elements also answers to `a[0]`..`a[n-1]`). Programs built from
+// raw sources without a table ask the driver for its active uniforms instead. A name
+// missing from the table is looked up in the driver once (struct members such as
+// `lights[1].color`) and cached. Every set() makes this program current.
+// A uniform the program does not have, or a set() whose C++ type does not fit the
+// uniform's GLSL type, is reported ONCE per (program, name) through the warning
+// handler (stderr by default) and recorded in unknownUniformReports() /
+// typeMismatchReports(); the set is then skipped. A uniform that exists in the
+// table but was optimised away by the driver (location -1) is set silently as a
+// no-op, as GL does. Too many array elements throw std::length_error.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <set>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/fwd.hpp>
+
+#include "prism/gl/driver_log.hpp"
+#include "prism/catalog/shader_catalog.hpp"
+
+namespace prism::gl {
+
+namespace detail {
+enum class UniformSetterKind : int;  // what a set() overload passes; defined in program_uniforms.cpp
+}
+
+// The source of one stage with its source-number table.
+struct StageText {
+    catalog::Stage stage = catalog::Stage::Vertex;
+    std::string source;
+    std::vector<SourceName> files;
+};
+
+struct AttributeBinding {
+    std::string name;
+    int location = 0;
+};
+
+struct UniformDecl {
+    std::string name;          // as reflected: "u_color", "u_lights" or "u_lights[0]"
+    std::uint32_t glType = 0;  // GL_FLOAT_VEC3 etc.; 0 = unknown (no type check)
+    int arraySize = 1;
+};
+
+// Everything needed to build a Program without a catalogue variant.
+struct ProgramSources {
+    std::string label;                                 // names the program in errors and warnings
+    std::vector<StageText> stages;                     // in pipeline order
+    std::vector<AttributeBinding> attributes;          // bound before linking
+    std::optional<std::vector<UniformDecl>> uniforms;  // reflection; nullopt = ask the driver
+};
+
+// The catalogue variant's stages (chunks joined), contract attributes and uniforms.
+ProgramSources sourcesFromVariant(const catalog::Variant& variant,
+                                  std::span<const catalog::Attribute> contractAttributes, std::string label = {});
+
+// Thrown when a stage fails to compile or the program fails to link.
+class ShaderBuildError : public std::runtime_error {
+  public:
+    ShaderBuildError(const std::string& message, std::string driverLog)
+        : std::runtime_error(message), driverLog_(std::move(driverLog)) {}
+    const std::string& driverLog() const { return driverLog_; }  // untranslated
+
+  private:
+    std::string driverLog_;
+};
+
+using WarningHandler = std::function<void(std::string_view message)>;
+
+// The handler new Programs start with; an empty function restores the default,
+// which writes "prism: warning: ..." lines to stderr.
+void setDefaultWarningHandler(WarningHandler handler);
+
+class Program {
+  public:
+    Program(const catalog::Variant& variant, std::span<const catalog::Attribute> contractAttributes,
+            std::string label = {});
+    explicit Program(ProgramSources sources);
+    ~Program();
+    Program(Program&& other) noexcept;
+    Program& operator=(Program&& other) noexcept;
+    Program(const Program&) = delete;
+    Program& operator=(const Program&) = delete;
+
+    void use() const;
+    unsigned id() const { return program_; }
+    const std::string& label() const { return label_; }
+
+    bool hasUniform(std::string_view name) const;
+    int uniformLocation(std::string_view name) const;  // -1 when unknown or optimised away
+
+    void set(std::string_view name, float value);
+    void set(std::string_view name, double value) { set(name, static_cast<float>(value)); }
+    void set(std::string_view name, int value);  // also bool and sampler uniforms
+    void set(std::string_view name, unsigned value);
+    void set(std::string_view name, bool value);
+    void set(std::string_view name, const glm::vec2& value);
+    void set(std::string_view name, const glm::vec3& value);
+    void set(std::string_view name, const glm::vec4& value);
+    void set(std::string_view name, const glm::ivec2& value);
+    void set(std::string_view name, const glm::ivec3& value);
+    void set(std::string_view name, const glm::ivec4& value);
+    void set(std::string_view name, const glm::mat3& value);
+    void set(std::string_view name, const glm::mat4& value);
+    void set(std::string_view name, std::span<const float> values);
+    void set(std::string_view name, std::span<const int> values);
+    void set(std::string_view name, std::span<const glm::vec2> values);
+    void set(std::string_view name, std::span<const glm::vec3> values);
+    void set(std::string_view name, std::span<const glm::vec4> values);
+    void set(std::string_view name, std::span<const glm::mat3> values);
+    void set(std::string_view name, std::span<const glm::mat4> values);
+
+    // Replaces where this program's warnings go (empty function: the default handler).
+    void setWarningHandler(WarningHandler handler);
+    // Names set() was called with that the program does not have, each once, in order.
+    const std::vector<std::string>& unknownUniformReports() const { return unknownReports_; }
+    // Names set() was called with using a C++ type that does not fit, each once.
+    const std::vector<std::string>& typeMismatchReports() const { return mismatchReports_; }
+
+  private:
+    struct UniformSlot {
+        int location = -1;
+        std::uint32_t glType = 0;  // 0: unknown, no type check
+        int elements = 1;          // elements from this slot to the end of its array
+    };
+    using SetterKind = detail::UniformSetterKind;
+
+    void build(ProgramSources sources);
+    void buildUniformTable(const std::optional<std::vector<UniformDecl>>& reflected);
+    void addUniform(const std::string& name, std::uint32_t glType, int arraySize);
+    const UniformSlot* slotFor(std::string_view name);
+    const UniformSlot* prepare(std::string_view name, SetterKind kind, std::size_t count);
+    void warn(const std::string& message) const;
+    void release() noexcept;
+
+    unsigned program_ = 0;
+    std::string label_;
+    std::map<std::string, UniformSlot, std::less<>> uniforms_;
+    std::set<std::string, std::less<>> reported_;
+    std::vector<std::string> unknownReports_;
+    std::vector<std::string> mismatchReports_;
+    WarningHandler warningHandler_;
+};
+
+}  // namespace prism::gl

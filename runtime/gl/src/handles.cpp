@@ -1,0 +1,67 @@
+// Creation, deletion and counting of GL object names (see prism/gl/handles.hpp).
+#include "prism/gl/handles.hpp"
+
+#include <atomic>
+#include <string>
+
+#include "prism/gl/gl.hpp"
+
+namespace prism::gl {
+namespace {
+
+constexpr int kKinds = static_cast<int>(ObjectKind::Count);
+std::array<std::atomic<std::uint64_t>, kKinds> g_created{}, g_live{};
+
+const char* kindName(ObjectKind kind) {
+    constexpr const char* names[] = {"buffer", "texture", "vertex array", "framebuffer",
+                                     "renderbuffer", "shader", "program", "query"};
+    return names[static_cast<int>(kind)];
+}
+
+}  // namespace
+
+ObjectCounts objectCounts() {
+    ObjectCounts counts;
+    for (int k = 0; k < kKinds; ++k) {
+        counts.createdByKind[k] = g_created[k].load();
+        counts.liveByKind[k] = g_live[k].load();
+    }
+    return counts;
+}
+
+unsigned detail::createObject(ObjectKind kind, unsigned shaderType) {
+    GLuint id = 0;
+    switch (kind) {
+        case ObjectKind::Buffer: glGenBuffers(1, &id); break;
+        case ObjectKind::Texture: glGenTextures(1, &id); break;
+        case ObjectKind::VertexArray: glGenVertexArrays(1, &id); break;
+        case ObjectKind::Framebuffer: glGenFramebuffers(1, &id); break;
+        case ObjectKind::Renderbuffer: glGenRenderbuffers(1, &id); break;
+        case ObjectKind::Shader: id = glCreateShader(shaderType); break;
+        case ObjectKind::Program: id = glCreateProgram(); break;
+        case ObjectKind::Query: glGenQueries(1, &id); break;
+        case ObjectKind::Count: break;
+    }
+    if (id == 0) throw GlError(std::string("GL could not create a ") + kindName(kind) + " (is a context current?)");
+    ++g_created[static_cast<int>(kind)];
+    ++g_live[static_cast<int>(kind)];
+    return id;
+}
+
+void detail::deleteObject(ObjectKind kind, unsigned id) noexcept {
+    GLuint name = id;
+    switch (kind) {
+        case ObjectKind::Buffer: glDeleteBuffers(1, &name); break;
+        case ObjectKind::Texture: glDeleteTextures(1, &name); break;
+        case ObjectKind::VertexArray: glDeleteVertexArrays(1, &name); break;
+        case ObjectKind::Framebuffer: glDeleteFramebuffers(1, &name); break;
+        case ObjectKind::Renderbuffer: glDeleteRenderbuffers(1, &name); break;
+        case ObjectKind::Shader: glDeleteShader(name); break;
+        case ObjectKind::Program: glDeleteProgram(name); break;
+        case ObjectKind::Query: glDeleteQueries(1, &name); break;
+        case ObjectKind::Count: break;
+    }
+    --g_live[static_cast<int>(kind)];
+}
+
+}  // namespace prism::gl

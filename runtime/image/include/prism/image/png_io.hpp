@@ -1,0 +1,29 @@
+// PNG files for 8-bit RGBA images (golden images, galleries, contact sheets).
+//
+// Usage:
+//
+//     prism::image::writePng("out/phong.png", image);        // atomic: temp file + rename
+//     prism::image::Image8 golden = prism::image::readPng("tests/golden/phong.png");
+//
+// writePng creates missing parent directories and never leaves a half-written file
+// under the final name: it writes `<path>.tmp-<pid>` and renames it. Any failure
+// throws prism::image::PngError whose message names the file and the reason. readPng
+// converts every PNG flavour (grey, palette, 16-bit, no alpha) to 8-bit RGBA.
+#pragma once
+
+#include <filesystem>
+#include <stdexcept>
+
+#include "prism/image/image.hpp"
+
+namespace prism::image {
+
+class PngError : public std::runtime_error {
+  public:
+    using std::runtime_error::runtime_error;
+};
+
+void writePng(const std::filesystem::path& path, const Image8& image);
+Image8 readPng(const std::filesystem::path& path);
+
+}  // namespace prism::image

@@ -1,0 +1,66 @@
+// A scene as a JSON file describes it (docs/scenes.md): camera, lights, fog, objects
+// (mesh, transform, material with its shader) and the optional rain and water
+// settings. Plain data; prism/scene/scene_loader.hpp reads it, prism/scene/scene_renderer.hpp
+// draws it with only the shader variants it needs.
+#pragma once
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "prism/view/camera.hpp"
+#include "prism/view/lighting.hpp"
+
+namespace prism::scene {
+
+struct SceneObject {
+    std::string mesh = "sphere";  // built-in name or a path to an .obj file
+    unsigned subdivision = 3;
+    glm::mat4 world{1.0f};
+    std::string shader = "phong";
+    std::vector<std::pair<std::string, std::string>> variantOverrides;  // e.g. BLINN=1
+    view::Material material;
+};
+
+// Rain as a scene asks for it: an intensity class (the seed's Table 2) or a rate.
+struct RainSettings {
+    std::string intensityClass = "moderate";       // drizzle, light, moderate, heavy, excessive, cloudburst
+    std::optional<double> rateMillimetresPerHour;  // overrides the class when given
+    glm::vec3 wind{0.0f};
+    unsigned seed = 1;
+    float cylinderRadius = 20.0f;
+    float cylinderHeight = 20.0f;
+    std::optional<unsigned> particleBudget;
+};
+
+// Water as a scene asks for it (docs/water.md): a procedural terrain of gridSize^2
+// cells, the rain rate (the scene's rain, else rainRateMillimetresPerHour), how long it
+// has rained before the frame, and how fast loose soil soaks water up.
+struct WaterSettings {
+    unsigned gridSize = 128;
+    float cellSize = 0.25f;                    // metres per cell
+    double rainRateMillimetresPerHour = 10.0;  // used when the scene has no rain
+    double seconds = 60.0;                     // simulated rain before the frame
+    double soilMillimetresPerHour = 12.0;      // infiltration of loose soil (clay: 0.5)
+    unsigned seed = 1;                         // of the procedural terrain
+};
+
+struct Scene {
+    std::string file;  // where it was read from, for messages
+    view::Camera camera;
+    int width = 512;
+    int height = 512;
+    glm::vec4 background{0.05f, 0.06f, 0.08f, 1.0f};
+    view::Lights lights;
+    std::optional<view::Fog> fog;
+    std::vector<SceneObject> objects;
+    std::optional<RainSettings> rain;
+    std::optional<WaterSettings> water;
+};
+
+}  // namespace prism::scene

@@ -1,0 +1,74 @@
+// Draws a Scene with only what it needs: each object's program is the variant of its
+// shader that matches the scene's feature set (light counts, fog; see
+// prism/render/feature_variants.hpp), programs are built once and shared by every draw with
+// the same shader and feature set, and nothing else is built. A scene with `rain` gets
+// a rain system (prism/rain/rain_system.hpp) drawn over the objects; one without gets
+// none: no particle buffer, no compute update, no rain program. A scene with `water`
+// is drawn on a rain-fed water scene (terrain, sky, water map; prism/water/water_scene.hpp)
+// simulated for its `seconds`; one without creates no water map.
+//
+//     prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
+//     prism::image::Image8 image = renderer.render(prism::scene::loadScene("examples/scenes/one_light.json"));
+//     renderer.programs().size();          // programs built so far
+//     renderer.lastFrame().variants;       // "phong DIRECTIONAL_LIGHTS=1,..." per draw
+//
+// Needs a current context.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "prism/image/image.hpp"
+#include "prism/render/program_cache.hpp"
+#include "prism/scene/scene.hpp"
+
+namespace prism::rain {
+class RainPrograms;
+struct RainParams;
+}  // namespace prism::rain
+
+namespace prism::scene {
+
+// The rain system's parameters for a scene's rain settings (intensity class or rate,
+// wind as a world vector, seed, cylinder, budget). Throws rain::RainParameterError.
+rain::RainParams rainParamsFor(const RainSettings& settings);
+
+struct SceneFrameInfo {
+    std::size_t draws = 0;
+    std::vector<std::string> variants;  // "<shader> <variant name>" of each draw, in order
+};
+
+class SceneRenderer {
+  public:
+    explicit SceneRenderer(const catalog::Catalog& catalog);
+    ~SceneRenderer();
+
+    image::Image8 render(const Scene& scene);
+    render::ProgramCache& programs() { return programs_; }
+    const SceneFrameInfo& lastFrame() const { return lastFrame_; }
+    // Rain systems created so far: one per rendered frame of a scene with rain, none
+    // for scenes without (so no particle buffer, no update and no rain program).
+    std::size_t rainSystemsCreated() const { return rainSystemsCreated_; }
+    // Programs the rain draws used (0 until a scene with rain is rendered).
+    std::size_t rainProgramsBuilt() const;
+    // Water maps created so far: one per rendered frame of a scene with water.
+    std::size_t waterSystemsCreated() const { return waterSystemsCreated_; }
+
+    // Simulated time before a rain frame is drawn, so drops fill the cylinder as in a
+    // running scene; fixed steps, so the image is the same on every render.
+    static constexpr int kRainWarmupSteps = 30;
+    static constexpr float kRainStep = 1.0f / 60.0f;
+
+  private:
+    void drawRain(const Scene& scene);
+    void drawWater(const Scene& scene);
+
+    render::ProgramCache programs_;
+    SceneFrameInfo lastFrame_;
+    std::unique_ptr<rain::RainPrograms> rainPrograms_;
+    std::size_t rainSystemsCreated_ = 0;
+    std::size_t waterSystemsCreated_ = 0;
+};
+
+}  // namespace prism::scene
