@@ -23,7 +23,7 @@ enum class ShaderId : std::uint32_t {
 };
 inline constexpr std::size_t kShaderCount = 5;
 
-// The FUDGE SHADER_MODULE: every module, with its own source and dependencies.
+// Every module of the include directories, with its own source and its dependencies.
 enum class ModuleId : std::uint32_t {
     fog = 0,  // modules/fog.glsl
     fragment_output = 1,  // modules/fragment_output.glsl
