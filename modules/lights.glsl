@@ -1,5 +1,5 @@
 // Provides: ambient light plus DIRECTIONAL_LIGHTS directional and POINT_LIGHTS point
-// lights (as in the FUDGE seed), with their directions in eye space. Both counts are
+// lights, with their directions in eye space. Both counts are
 // variant axes: a scene's draws use the variant whose arrays just hold its lights, so
 // light loops are bounded by the scene (and a scene without point lights has no point
 // light code). u_*Count says how many entries are in use. Directions point from the

@@ -1,6 +1,6 @@
 // Provides: specular highlight terms, Phong (reflected light vs view) and Blinn-Phong
-// (half vector vs normal), without the seed's constant added to the highlight and
-// without evaluating pow(0, 0).
+// (half vector vs normal). Nothing is added to the highlight, and pow(0, 0) is never
+// evaluated (docs/references.md: the bugs of the shaders Prism replaced).
 #include "math_utils.glsl"
 
 float phongSpecular(vec3 toLight, vec3 toEye, vec3 normal, float shininess) {

@@ -1,6 +1,6 @@
 // Flat: one colour per triangle. The mesh carries face normals (vertices split per
 // face); the lit colour of the provoking vertex is passed on `flat`, unchanged over
-// the triangle. Diffuse only, as the FUDGE seed's flat shader.
+// the triangle. Diffuse only (no specular term).
 #include <version.glsl>
 #include <transforms.glsl>
 #include <normals.glsl>

@@ -1,7 +1,7 @@
 // Gouraud: diffuse and specular lighting per vertex, interpolated. It cannot show a
 // highlight that falls inside a triangle; see docs/tradeoffs.md for what that costs.
-// Unlike the seed, the position (not the normal) is transformed and the view vector
-// comes from the camera.
+// The vertex position (never the normal) is transformed to eye space, and the view
+// vector runs from it to the camera (docs/references.md lists the bugs this avoids).
 #include <version.glsl>
 #include <transforms.glsl>
 #include <normals.glsl>

@@ -1,6 +1,6 @@
 // prism_bench_normals: how long smooth normals take for an imported (split per face)
 // mesh: weld by position + area-weighted normals, with the O(n) hash weld against
-// the FUDGE thesis' O(n^2) search. Prints medians from one run and their ratio.
+// the O(n^2) search of the FUDGE shader thesis (§6.3). Prints medians from one run and their ratio.
 //
 //     prism_bench_normals [--repeats N] [--quadratic-max-vertices N] [--sizes 10000,30000,100000,1000000]
 //

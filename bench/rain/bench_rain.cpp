@@ -1,4 +1,4 @@
-// prism_bench_rain: rain particles per frame, the seed's Table 5 redone (docs/rain.md).
+// prism_bench_rain: rain particles per frame, RainCL Table 5 (§4.6) redone (docs/rain.md).
 //
 //     LP_NUM_THREADS=2 prism_bench_rain --out bench/rain/results [--size 800] [--min-exp 14]
 //                                       [--max-exp 24] [--frames 9] [--backend egl|osmesa]
@@ -253,7 +253,7 @@ void writeSvg(const std::filesystem::path& path, const std::vector<Row>& rows, c
 
 int main(int argc, char** argv) {
     Options o;
-    CLI::App app{"prism_bench_rain: rain update and draw time per particle count (the seed's Table 5)"};
+    CLI::App app{"prism_bench_rain: rain update and draw time per particle count (RainCL Table 5)"};
     app.add_option("--out", o.out, "directory for rain_bench.csv and rain_bench.svg")->capture_default_str();
     app.add_option("--size", o.size, "framebuffer edge in pixels")->capture_default_str()->check(CLI::Range(16, 4096));
     app.add_option("--min-exp", o.minExp, "smallest count 2^e")->capture_default_str()->check(CLI::Range(0, 24));

@@ -385,7 +385,7 @@ int main(int argc, char** argv) {
             out << "\n";
         }
 
-        // Gouraud vs Phong per level: the seed's two claims.
+        // Gouraud vs Phong per level: the two claims of the FUDGE shader thesis §5.4.
         out << "\n## Gouraud vs Phong per level\n\n"
             << "| level | triangles | gouraud ms | phong ms | phong / gouraud | gouraud err | phong err | "
                "gouraud highlight err px | phong highlight err px | mean abs(gouraud - phong) | max abs(gouraud - "

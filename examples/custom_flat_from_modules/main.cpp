@@ -1,5 +1,6 @@
-// custom_flat_from_modules: the FUDGE seed's "flat shader from modules" example, done
-// with Prism's composition API. The seed concatenated SHADER_MODULE strings
+// custom_flat_from_modules: the "flat shader from modules" example of the FUDGE shader
+// thesis (§7.1 and its appendix "Custom Shader Beispiel"), done with Prism's composition
+// API. The thesis concatenated SHADER_MODULE strings
 // (HEAD_VERT + LIGHTS + NORMAL_FACE + ... + FLAT_MAIN_VERT); here the modules are
 // named by ModuleId, their dependencies (math_utils, transforms) come in once and in
 // order, one #version is emitted, and a GLSL error would point at the module's own
@@ -77,7 +78,7 @@ int main(int argc, char** argv) {
         }
         auto program = prism::gl::composeProgram(prism::shaders::kCatalog, stages, "custom flat");
 
-        // Face normals on vertices split per face: the seed's NORMAL_FACE.
+        // Face normals on vertices split per face: the thesis's NORMAL_FACE module.
         auto mesh = prism::geometry::makeFlatShaded(prism::geometry::makeIcosphere(1.0f, 2));
         prism::render::GpuMesh gpu(mesh, prism::shaders::kCatalog.contractAttributes);
         prism::gl::Framebuffer fb(256, 256);

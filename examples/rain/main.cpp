@@ -3,7 +3,7 @@
 //   prism-rain [--out DIR]                       the standard shots + a contact sheet
 //   prism-rain --view 0 --intensity heavy --wind 6 --fog --out DIR   one image, rain.png
 //   prism-rain --window                          a GLFW window (xvfb-run -a when headless)
-//       I / K   heavier / lighter rain (the six classes of Table 2)
+//       I / K   heavier / lighter rain (the six classes of RainCL Table 2)
 //       W       stronger wind (+2 m/s, back to calm after 12); Shift+W turns it by 45 deg
 //       F       fog on/off (the scene is rebuilt: no fog programs without fog)
 //       T       next streak technique (gs-quads, instanced-quads, point-sprites)

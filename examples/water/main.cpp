@@ -129,7 +129,7 @@ int runOffscreen(const Options& o) {
 #ifdef PRISM_WATER_HAVE_GLFW
 struct ViewState {
     float yaw = 0.9f, pitch = 0.55f, zoom = 1.0f;
-    int rainIndex = 6;  // 0 none, 1..6 the Table 2 classes
+    int rainIndex = 6;  // 0 none, 1..6 the RainCL Table 2 classes
     bool rainChanged = false, fogToggled = false, paused = false;
 };
 

@@ -3,10 +3,10 @@
 //   rainSeedParticle(): a new drop in the camera's cylinder, placed in level-of-detail
 //     rings (ring k of K holds a share falloff^k * (2k+1), area-uniform inside it);
 //   rainStepParticle(): fall at the drop's terminal speed plus wind, then wrap: out of
-//     the bottom -> respawn at the top from the seed (toroidal in height, relative to the
+//     the bottom -> respawn at the top in its home column (toroidal in height, relative to the
 //     current cylinder); out of the side -> fold to the opposite side of the cylinder
 //     (antipodal, so a fast camera move neither empties nor floods a region); further
-//     than 3 radii away (a teleport) -> back to the seed column.
+//     than 3 radii away (a teleport) -> back to its home column (`seed.xz`).
 // Positions are world space; the cylinder is centred on u_cylinderCenter (the camera
 // shifted vertically, see RainParams::below).
 #include <rain/random.glsl>
@@ -31,7 +31,7 @@ const float RAIN_TWO_PI = 6.28318530717958647692;
 
 // Folds a horizontal offset back into the cylinder of radius R: unchanged inside;
 // between R and 3R mirrored through the axis to radius 2R - r on the opposite side;
-// further out (or not finite) the seed column.
+// further out (or not finite) the home column.
 vec2 rainFoldIntoCylinder(vec2 xz, vec2 seedXZ, float R) {
     float r = length(xz);
     if (r <= R) return xz;
@@ -40,7 +40,7 @@ vec2 rainFoldIntoCylinder(vec2 xz, vec2 seedXZ, float R) {
 }
 
 // Horizontal offset of a drop at height y (relative to the centre) whose column passes
-// through its seed at mid-height: upwind above, downwind below, so that with wind the
+// through its home offset at mid-height: upwind above, downwind below, so that with wind the
 // level-of-detail rings stay centred on the camera on average.
 vec2 rainWindShear(vec2 seedXZ, vec3 wind, float y, float fallSpeed) {
     return seedXZ - wind.xz * (y / fallSpeed);
@@ -97,7 +97,7 @@ RainParticle rainStepParticle(RainParticle p, vec3 center, float dt, vec3 wind, 
     vec3 local = pos - center;
     if (local.y < -halfH) {
         // Out of the bottom: a new drop enters at the top (same phase, so the flux is
-        // continuous), in its seed column, falling at the current intensity's speed.
+        // continuous), in its home column, falling at the current intensity's speed.
         local.y -= H * floor((local.y + halfH) / H);
         float v = fallSpeed * p.velocity.w;
         p.velocity.y = -v;

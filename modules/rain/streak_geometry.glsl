@@ -1,4 +1,4 @@
-// Provides: the camera-facing streak quad of one rain particle (the seed's Listing 3,
+// Provides: the camera-facing streak quad of one rain particle (RainCL §4.1.3, Listing 3,
 // after Tariq 2007): the quad runs from the drop's position back along its velocity
 // (fall + wind) for the exposure time, so it is as long as fall speed x exposure and
 // tilts with the wind; its width grows with distance (never below ~1.5 pixels, with the

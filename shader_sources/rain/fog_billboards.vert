@@ -1,5 +1,5 @@
-// fog_billboards: volumetric fog as a few large, slow, camera-facing sprites (seed
-// section 4.4). The vertex stage passes each billboard centre (xyz) and its random (w).
+// fog_billboards: volumetric fog as a few large, slow, camera-facing sprites
+// (RainCL §4.4). The vertex stage passes each billboard centre (xyz) and its random (w).
 #include <version.glsl>
 
 in vec4 a_fogBillboard;

@@ -1,5 +1,5 @@
 // rain_streaks: expands one particle into a camera-facing streak quad (two triangles
-// of a strip, seed Listing 3) along the drop's velocity; drops too faint to show
+// of a strip, RainCL §4.1.3, Listing 3) along the drop's velocity; drops too faint to show
 // (beyond the falloff, at the cylinder's edge) emit nothing.
 #include <version.glsl>
 #include <rain/streak_varyings.glsl>

@@ -1,4 +1,4 @@
-// Water step 4a, distribution (seed 4.2.5, Algorithm 1, after Mueller's height-field
+// Water step 4a, distribution (RainCL §4.2.5, Algorithm 1, after Mueller's height-field
 // fluid) written per von Neumann edge so that it conserves mass: each cell owns the
 // velocity of its east and south edge (q > 0: water moves from this cell to the
 // neighbour). q += c^2/h^2 (s_a - s_b) dt, times the damping factor; the epsilon rule:

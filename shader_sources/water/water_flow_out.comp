@@ -1,4 +1,4 @@
-// Water step 3a, tangential flow (seed 4.2.4, Listing 4): the Sobel gradient of the free
+// Water step 3a, tangential flow (RainCL §4.2.4, Listing 4): the Sobel gradient of the free
 // surface (terrain + water, clamped at the border) picks the downhill Moore neighbour;
 // the amount is the cell's water times min(maxFraction, flowRate * dt * |slope|), never
 // more than half the surface drop to that neighbour (no overshoot uphill). Writes

@@ -1,4 +1,4 @@
-// Water step 1 and 2 (seed 4.2.3): rain adds u_rainDepth (intensity x dt) to every
+// Water step 1 and 2 (RainCL §4.2.3): rain adds u_rainDepth (intensity x dt) to every
 // cell, then infiltration removes permeability x dt, or all the water when that is as
 // much (the compensated pair is emptied exactly, so the ground never goes below zero).
 // Adds the infiltrated depth to the cell's double-precision ledger accumulator.

@@ -1,4 +1,4 @@
-// Water step 5: Gaussian smoothing of the free surface (seed 4.2.5, last paragraph) in
+// Water step 5: Gaussian smoothing of the free surface (RainCL §4.2.5, last paragraph) in
 // flux form: every pair of cells within the kernel exchanges weight x (s_a - s_b),
 // weight = strength x g(dx) g(dz) from the normalised 1D Gaussian g, limited to weight
 // x the giver's water. Each pair's exchange is computed identically by both cells, so

@@ -1,4 +1,4 @@
-// Water surface (seed 4.3): the skybox reflected through reflect() on the (rippled)
+// Water surface (RainCL §4.3): the skybox reflected through reflect() on the (rippled)
 // normal, mixed by Schlick's Fresnel term (F0 = u_fresnelF0, 0.02 for water) with a
 // body colour whose opacity grows with depth, so shallow water looking down shows the
 // terrain through it and grazing views mirror the sky. The directional light adds a

@@ -99,7 +99,7 @@ void writeEnums(std::ostringstream& out, const CatalogData& c) {
     for (std::size_t i = 0; i < c.shaders.size(); ++i)
         out << "    " << cppIdentifier(c.shaders[i].name) << " = " << i << ",\n";
     out << "};\ninline constexpr std::size_t kShaderCount = " << c.shaders.size() << ";\n\n";
-    out << "// The FUDGE SHADER_MODULE: every module, with its own source and dependencies.\n";
+    out << "// Every module of the include directories, with its own source and its dependencies.\n";
     out << "enum class ModuleId : std::uint32_t {\n";
     for (std::size_t i = 0; i < c.modules.size(); ++i)
         out << "    " << cppIdentifier(c.modules[i].identifier) << " = " << i << ",  // " << c.modules[i].path << "\n";
@@ -177,32 +177,27 @@ std::string writeShaders(std::ostringstream& out, ArrayEmitter& arrays, const Ca
 }
 
 void writeLookups(std::ostringstream& out) {
+    // The raw string is emitted text: kept exactly as the generated header shows it.
+    // clang-format off
     out << R"cpp(
-        constexpr const prism::catalog::Shader& shaderInfo(ShaderId id) {
-            return kCatalog.shaders[static_cast<std::size_t>(id)];
-        }
-        constexpr const prism::catalog::Module& moduleInfo(ModuleId id) {
-            return kCatalog.modules[static_cast<std::size_t>(id)];
-        }
-        constexpr std::string_view name(ShaderId id) {
-            return shaderInfo(id).name;
-        }
-        constexpr std::string_view name(ModuleId id) {
-            return moduleInfo(id).name;
-        }
+constexpr const prism::catalog::Shader& shaderInfo(ShaderId id) { return kCatalog.shaders[static_cast<std::size_t>(id)]; }
+constexpr const prism::catalog::Module& moduleInfo(ModuleId id) { return kCatalog.modules[static_cast<std::size_t>(id)]; }
+constexpr std::string_view name(ShaderId id) { return shaderInfo(id).name; }
+constexpr std::string_view name(ModuleId id) { return moduleInfo(id).name; }
 
-        constexpr std::optional<ShaderId> shaderIdFromName(std::string_view n) {
-            for (std::size_t i = 0; i < kShaderCount; ++i)
-                if (kCatalog.shaders[i].name == n) return static_cast<ShaderId>(i);
-            return std::nullopt;
-        }
+constexpr std::optional<ShaderId> shaderIdFromName(std::string_view n) {
+    for (std::size_t i = 0; i < kShaderCount; ++i)
+        if (kCatalog.shaders[i].name == n) return static_cast<ShaderId>(i);
+    return std::nullopt;
+}
 
-        constexpr std::optional<ModuleId> moduleIdFromName(std::string_view n) {
-            for (std::size_t i = 0; i < kModuleCount; ++i)
-                if (kCatalog.modules[i].name == n) return static_cast<ModuleId>(i);
-            return std::nullopt;
-        }
-    )cpp";
+constexpr std::optional<ModuleId> moduleIdFromName(std::string_view n) {
+    for (std::size_t i = 0; i < kModuleCount; ++i)
+        if (kCatalog.modules[i].name == n) return static_cast<ModuleId>(i);
+    return std::nullopt;
+}
+)cpp";
+    // clang-format on
 }
 
 }  // namespace

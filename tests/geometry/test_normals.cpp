@@ -1,4 +1,4 @@
-// Tests of face and area-weighted vertex normals: the thesis' worked example,
+// Tests of face and area-weighted vertex normals: the worked example of the FUDGE shader thesis §6.2,
 // degenerate input, the fallback chain and extreme scales.
 #include "prism/geometry/normals.hpp"
 #include "prism/geometry/procedural_meshes.hpp"
@@ -20,7 +20,7 @@ using testing::isFinite;
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
-// FUDGE thesis, chapter 6.2: triangle A(0,0,0) B(6,0,0) C(3,5,0) (area 15, cross
+// FUDGE shader thesis §6.2: triangle A(0,0,0) B(6,0,0) C(3,5,0) (area 15, cross
 // (0,0,30)) and triangle A(0,0,0) B(0,12,0) C(0,6,10) (area 60, cross (120,0,0))
 // share the vertex A; its area-weighted normal is (120,0,30) normalised.
 Mesh thesisExample() {
@@ -46,7 +46,7 @@ TEST(AreaWeightedNormals, ThesisWorkedExampleGivesTheThesisNormal) {
 }
 
 TEST(AreaWeightedNormals, ThesisExampleImportedSplitThenWeldedGivesTheSameNormal) {
-    const Mesh split = splitVerticesPerFace(thesisExample());  // as the thesis' MeshObj has it
+    const Mesh split = splitVerticesPerFace(thesisExample());  // as the thesis's MeshObj has it (§6.3)
     ASSERT_EQ(split.positions.size(), 6u);
     const WeldResult welded = weldVertices(split);
     ASSERT_EQ(welded.mesh.positions.size(), 5u);

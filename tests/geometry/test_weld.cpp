@@ -1,5 +1,5 @@
 // Tests of welding: split cubes and spheres, crease angles, uv seams, -0.0, NaN, and
-// agreement of the O(n) hash weld with the thesis' O(n^2) search.
+// agreement of the O(n) hash weld with the O(n^2) search of the FUDGE shader thesis (§6.3).
 #include "prism/geometry/normals.hpp"
 #include "prism/geometry/procedural_meshes.hpp"
 #include "prism/geometry/weld.hpp"

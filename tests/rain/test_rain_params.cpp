@@ -1,4 +1,4 @@
-// Rain parameters: the seed's Table 2, the rate interpolation, the particle-count
+// Rain parameters: RainCL Table 2, the rate interpolation, the particle-count
 // formula (docs/rain.md) with its budget, and clear errors for bad parameters.
 #include <gtest/gtest.h>
 

@@ -7,7 +7,8 @@
 // non-unit, scaled and non-finite normals; degenerate triangles; zero, non-uniform, huge
 // and tiny world scales; extreme near/far ratios. Scale and near/far cases are also
 // compared with the equivalent unit-scale scene: the image must not change. Finally the
-// checks are shown to catch two of the seed's bugs put back into the Phong shader.
+// checks are shown to catch two bugs of the FUDGE shader thesis's Phong shader (appendix
+// ShaderPhong.frag) put back into Prism's.
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
@@ -163,7 +164,8 @@ class Extremes : public RenderingTest {};
 // --- Shininess --------------------------------------------------------------------
 
 TEST_F(Extremes, ShininessZero) {
-    // pow(x, 0) is undefined in GLSL for x == 0 (the seed's bug); safePow never evaluates it.
+    // pow(x, 0) is undefined in GLSL for x == 0 (a bug of the FUDGE shader thesis's shaders,
+    // §5.3); safePow never evaluates it.
     Scene s = sphereScene();
     s.material.shininess = 0.0f;
     renderAndCheck(s);
@@ -462,9 +464,9 @@ TEST_F(Extremes, NearPlane1e3FarPlane1e4MeshFarAway) {
     expectSameImages(renderAndCheck(s), renderAndCheck(reference));
 }
 
-// --- The checks above catch the seed's shader bugs ------------------------------------
+// --- The checks above catch the bugs of the FUDGE shader thesis's shaders ---------------
 // A copy of one catalogue shader, every variant, with text replaced in its stages, as
-// its own one-shader catalogue: the seed's bugs put back into the current shaders.
+// its own one-shader catalogue: the thesis's bugs put back into the current shaders.
 class MutantCatalog {
   public:
     MutantCatalog(std::string_view shaderName, const std::vector<std::pair<std::string, std::string>>& replacements) {
@@ -530,29 +532,29 @@ PixelInspection renderMutant(const MutantCatalog& mutant, const Scene& scene) {
     return inspectPixels(image, brightestAllowed(spec, scene.lights, scene.material), kBrightnessEpsilon);
 }
 
-class ExtremeChecksCatchSeedBugs : public RenderingTest {};
+class ExtremeChecksCatchThesisShaderBugs : public RenderingTest {};
 
-TEST_F(ExtremeChecksCatchSeedBugs, ConstantAddedToHighlightIsOverBright) {
-    // The seed's calculateReflection added 1 to the highlight.
+TEST_F(ExtremeChecksCatchThesisShaderBugs, ConstantAddedToHighlightIsOverBright) {
+    // calculateReflection (FUDGE shader thesis §5.3) added 1 to the highlight.
     const MutantCatalog mutant("phong", {{"return safePow(max(dot(r, toEye), 0.0), shininess);",
                                           "return safePow(max(dot(r, toEye), 0.0), shininess) + 1.0;"}});
     const PixelInspection px = renderMutant(mutant, sphereScene());
     EXPECT_GT(px.overBright, 0u);
-    std::cout << "[seed bug] highlight + 1: " << px.overBright << " over-bright pixels, first " << px.firstOverBright
-              << "\n";
+    std::cout << "[thesis shader bug] highlight + 1: " << px.overBright << " over-bright pixels, first "
+              << px.firstOverBright << "\n";
 }
 
-// The seed's pow(0, 0) (shininess 0 by default) is undefined in GLSL, but llvmpipe
+// The thesis shaders' pow(0, 0) (shininess 0 by default, §5.3) is undefined in GLSL, but llvmpipe
 // returns a finite value for it, so no pixel check can show it on this driver; the
 // ShininessZero case above still guards safePow on drivers that return NaN.
 
-TEST_F(ExtremeChecksCatchSeedBugs, NormalizeOfZeroNormalIsNonFinite) {
+TEST_F(ExtremeChecksCatchThesisShaderBugs, NormalizeOfZeroNormalIsNonFinite) {
     const MutantCatalog mutant(
         "phong", {{"vec3 n = safeNormalize(v_eyeNormal, vec3(0.0, 0.0, 1.0));", "vec3 n = normalize(v_eyeNormal);"}});
     Scene s = sphereWithNormals([](std::size_t, const glm::vec3&) { return glm::vec3(0.0f); });
     const PixelInspection px = renderMutant(mutant, s);
     EXPECT_GT(px.nonFinite, 0u);
-    std::cout << "[seed bug] normalize(0): " << px.nonFinite << " non-finite pixels\n";
+    std::cout << "[thesis shader bug] normalize(0): " << px.nonFinite << " non-finite pixels\n";
 }
 
 }  // namespace

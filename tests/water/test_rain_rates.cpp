@@ -1,4 +1,4 @@
-// The rain classes of the seed's Table 2 as rain rates for the water system.
+// The rain classes of RainCL Table 2 as rain rates for the water system.
 #include <gtest/gtest.h>
 
 #include <stdexcept>
@@ -9,7 +9,7 @@ namespace prism::water {
 namespace {
 
 TEST(RainRates, TableTwoIntensitiesInMillimetresPerHour) {
-    // Table 2, "Intensität [cm/h]", x 10.
+    // RainCL Table 2, "Intensität [cm/h]", x 10.
     EXPECT_DOUBLE_EQ(rainRateMmPerHour(RainClass::Drizzle), 0.25);
     EXPECT_DOUBLE_EQ(rainRateMmPerHour(RainClass::Light), 1.02);
     EXPECT_DOUBLE_EQ(rainRateMmPerHour(RainClass::Moderate), 13.81);

@@ -1,5 +1,5 @@
-// The FUDGE thesis' way to find shared vertices (createVertexNormals() for imported
-// meshes, chapter 6.3): compare every vertex's position against the others. O(n^2);
+// The FUDGE shader thesis's way to find shared vertices (createVertexNormals() for
+// imported meshes, §6.3): compare every vertex's position against the others. O(n^2);
 // kept as the reference for cross-checks and the benchmark. Same rules and result as
 // weldVertices.
 #include "prism/geometry/weld.hpp"

@@ -1,4 +1,4 @@
-// Table 2, the rate interpolation, validation and the particle-count formula
+// RainCL Table 2, the rate interpolation, validation and the particle-count formula
 // (see prism/rain/rain_params.hpp).
 #include "prism/rain/rain_params.hpp"
 
@@ -16,7 +16,7 @@
 namespace prism::rain {
 namespace {
 
-// The seed's Table 2 (intensity cm/h, "Menge" mm, fall speed m/s, drops per m^2 per s).
+// RainCL Table 2 (§3.1.2; intensity cm/h, "Menge" mm, fall speed m/s, drops per m^2 per s).
 constexpr std::array<RainClassInfo, 6> kClasses = {{
     {RainClass::Drizzle, "drizzle", 0.025f, 0.96f, 4.1f, 151.0f},
     {RainClass::Light, "light", 0.102f, 1.24f, 4.8f, 280.0f},
@@ -62,7 +62,7 @@ std::optional<RainClass> parseRainClass(std::string_view name) {
 
 void validateIntensity(float intensity) {
     if (!std::isfinite(intensity) || intensity < 0.0f)
-        fail("intensity must be a finite number >= 0 cm/h (Table 2: drizzle 0.025 ... cloudburst 10.16; got " +
+        fail("intensity must be a finite number >= 0 cm/h (RainCL Table 2: drizzle 0.025 ... cloudburst 10.16; got " +
              str(intensity) + ")");
 }
 

@@ -1,4 +1,4 @@
-// The rain classes of the seed's Table 2 and their parsing (see rain_rates.hpp).
+// The rain classes of RainCL Table 2 and their parsing (see rain_rates.hpp).
 #include "prism/water/rain_rates.hpp"
 
 #include <array>

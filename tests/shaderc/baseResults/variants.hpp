@@ -21,7 +21,7 @@ enum class ShaderId : std::uint32_t {
 };
 inline constexpr std::size_t kShaderCount = 3;
 
-// The FUDGE SHADER_MODULE: every module, with its own source and dependencies.
+// Every module of the include directories, with its own source and its dependencies.
 enum class ModuleId : std::uint32_t {
     common = 0,  // tests/shaderc/fixtures/variants/modules/common.glsl
     fog = 1,  // tests/shaderc/fixtures/variants/modules/fog.glsl

@@ -100,7 +100,7 @@ struct Shader {
     std::span<const std::uint32_t> modules;  // ModuleId values of every module any variant uses
 };
 
-// A reusable GLSL module (the FUDGE SHADER_MODULE). `chunks` hold the module's own
+// A reusable GLSL module (what SHADER_MODULE is in the FUDGE shader thesis §7.1). `chunks` hold the module's own
 // text with its #include, #version and #pragma once lines blanked (line numbers kept);
 // `dependencies` are its direct includes (ModuleId values) in include order.
 struct Module {

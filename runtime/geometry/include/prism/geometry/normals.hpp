@@ -9,7 +9,7 @@
 // Area weighting: a vertex normal is the sum of the *unnormalised* cross products
 // (b - a) x (c - a) of the triangles around it, then normalised. The length of a
 // cross product is twice the triangle's area, so big triangles pull harder than
-// small ones (the method of the FUDGE thesis, chapter 6.2).
+// small ones (the method of the FUDGE shader thesis §6.2).
 //
 // Robustness:
 //  * Cross products and sums are computed in double, so no finite float input can

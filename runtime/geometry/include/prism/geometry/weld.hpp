@@ -24,7 +24,7 @@
 //    uv of its first vertex. Triangles are kept (re-indexed), none are removed.
 //
 // weldVertices is O(n): an open-addressing hash table keyed on the float bit patterns.
-// weldQuadraticReference is the FUDGE thesis' createVertexNormals() search (every vertex
+// weldQuadraticReference is the createVertexNormals() search of the FUDGE shader thesis (§6.3) (every vertex
 // compared against all earlier ones), O(n^2): for cross-checks and the benchmark only.
 #pragma once
 
@@ -55,7 +55,7 @@ struct WeldResult {
 // O(n) welding with a hash table. Throws std::invalid_argument for an invalid mesh.
 WeldResult weldVertices(const Mesh& mesh, const WeldOptions& options = {});
 
-// The seed's O(n^2) search; same result as weldVertices.
+// The O(n^2) search of the FUDGE shader thesis (§6.3); same result as weldVertices.
 WeldResult weldQuadraticReference(const Mesh& mesh, const WeldOptions& options = {});
 
 }  // namespace prism::geometry

@@ -1,5 +1,5 @@
 // Run-time composition of programs from catalogue modules plus your own GLSL: the
-// FUDGE `SHADER_MODULE.LIGHTS + ...` idea, with dependencies pulled in once, in order,
+// `SHADER_MODULE.LIGHTS + ...` idea of the FUDGE shader thesis (§7.1), with dependencies pulled in once, in order,
 // and driver errors mapped back to each module's file and line.
 //
 // Usage:

@@ -1,4 +1,4 @@
-// Volumetric fog for the rain scene (seed section 4.4): the distance fog of
+// Volumetric fog for the rain scene (RainCL §4.4): the distance fog of
 // modules/fog.glsl (the FOG shader variant) plus a few large, slowly drifting,
 // camera-facing billboards textured with animated noise, whose strength is adjustable.
 // This header is the CPU part: parameters, the noise texture array and the billboard

@@ -1,4 +1,4 @@
-// What a rain system is asked to simulate and draw: intensity (the seed's Table 2), the
+// What a rain system is asked to simulate and draw: intensity (RainCL Table 2), the
 // cylinder around the camera with its level-of-detail rings, wind, jitter, the
 // particle budget and the streak style; plus the particle-count formula.
 //
@@ -15,7 +15,7 @@
 // at full density, and the count is
 //     count = min(budget, round(particlesPerDrop * N(I) / v(I) * V_LOD))
 // (fixedCount replaces the formula; the hard maximum is kMaxParticles = 2^24).
-// N and v are interpolated between the Table 2 rows linearly in log(intensity); below
+// N and v are interpolated between the RainCL Table 2 rows linearly in log(intensity); below
 // drizzle N falls linearly to 0 at intensity 0, above cloudburst N grows in proportion.
 #pragma once
 
@@ -39,7 +39,7 @@ class RainParameterError : public std::invalid_argument {
 
 enum class RainClass { Drizzle, Light, Moderate, Heavy, Excessive, Cloudburst };
 
-// One row of the seed's Table 2 ("Regenformen und -daten", after [13, p. 13]).
+// One row of RainCL Table 2 (§3.1.2, "Regenformen und -daten", after its [13], Lull 1959, p. 13).
 struct RainClassInfo {
     RainClass id;
     std::string_view name;  // "drizzle", "light", "moderate", "heavy", "excessive", "cloudburst"
@@ -74,7 +74,7 @@ struct WindParams {
 struct StreakStyle {
     float exposure = 1.0f / 30.0f;  // s: streak length = speed x exposure
     float width = 0.004f;           // m at distance 0
-    float widthPerMetre = 0.0015f;  // m of extra width per m of distance (seed: wider far away)
+    float widthPerMetre = 0.0015f;  // m of extra width per m of distance (RainCL §4.1.3: wider far away)
     float opacity = 0.9f;           // of a drop at distance 0
     float falloffDistance = 10.0f;  // m: opacity / (1 + (d / falloff)^2), Tariq's 1/d^2
 };
@@ -82,7 +82,7 @@ struct StreakStyle {
 inline constexpr std::uint32_t kMaxParticles = 1u << 24;
 
 struct RainParams {
-    float intensity = 1.381f;                 // cm/h (Table 2: moderate); 0 = no drops
+    float intensity = 1.381f;                 // cm/h (RainCL Table 2: moderate); 0 = no drops
     float radius = 25.0f;                     // m, cylinder around the camera
     float height = 20.0f;                     // m
     float below = 4.0f;                       // m of the cylinder below the camera, in [0, height]

@@ -9,10 +9,10 @@
 //
 // Model (docs/rain.md): a drop falls at its terminal speed (constant per drop: the
 // intensity's speed x a factor in [0.9, 1.1]) plus the wind plus a small constant
-// sideways jitter. Out of the bottom of the cylinder it respawns at the top in its seed
-// column (relative to the current camera); out of the side it is folded to the
+// sideways jitter. Out of the bottom of the cylinder it respawns at the top in its home
+// column (`seed.xz`) (relative to the current camera); out of the side it is folded to the
 // opposite side (antipodal); more than 3 radii away (a teleport) it returns to its
-// seed column. So every particle stays inside the cylinder after any camera move, and a
+// home column. So every particle stays inside the cylinder after any camera move, and a
 // fast move neither leaves gaps nor makes all drops respawn at once.
 #pragma once
 

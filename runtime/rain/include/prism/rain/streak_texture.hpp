@@ -9,7 +9,7 @@
 //     std::uint8_t t = tex.at(layer, 8, 32);
 //
 // The model (docs/rain.md, "Streak texture model"), for a light at (theta, phi) seen
-// from the side (theta_view = 90 deg, as the seed also assumed):
+// from the side (theta_view = 90 deg, as RainCL §4.1.4 also assumed):
 //   scattering angle alpha = acos(-sin(theta) cos(phi)), 0 = light straight behind the drop;
 //   brightness B = 0.10 (sky) + 0.70 exp(-(alpha/50)^2)      refraction: the drop as a lens
 //                + 0.30 exp(-((alpha-138)/6)^2)               primary-rainbow internal reflection

@@ -3,8 +3,8 @@
 //     geometry::Mesh m = prism::render::namedMesh("torus", /*subdivision*/ 3);
 //     geometry::Mesh ready = prism::render::meshForShader("flat", m);   // split per face, face normals
 //
-// The flat shader needs face normals on vertices split per face (the seed's
-// NORMAL_FACE); every other shader gets area-weighted vertex normals (computed when
+// The flat shader needs face normals on vertices split per face (the NORMAL_FACE
+// module of the FUDGE shader thesis's appendix); every other shader gets area-weighted vertex normals (computed when
 // the mesh has none). Names: sphere (UV sphere), icosphere, torus, cube, trefoil,
 // grid, or a path ending in .obj (loaded and welded, see prism/geometry/obj_loader.hpp).
 #pragma once

@@ -27,7 +27,7 @@ struct SceneObject {
     view::Material material;
 };
 
-// Rain as a scene asks for it: an intensity class (the seed's Table 2) or a rate.
+// Rain as a scene asks for it: an intensity class (RainCL Table 2) or a rate.
 struct RainSettings {
     std::string intensityClass = "moderate";       // drizzle, light, moderate, heavy, excessive, cloudburst
     std::optional<double> rateMillimetresPerHour;  // overrides the class when given

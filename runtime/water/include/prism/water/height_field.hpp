@@ -10,7 +10,7 @@
 //
 // Grid layout: row-major, x across, z down; cell (x, z) is pixel (x, z) of the PNG
 // (row 0 = top row) and sits at local position (x h, height, z h). Maps may be
-// rectangular. Colour PNGs use their first (red) channel, as the seed's scalar maps do;
+// rectangular. Colour PNGs use their first (red) channel, as RainCL's scalar maps do (§4.2.3);
 // an alpha channel is ignored. Palette images and 1/2/4-bit images are rejected.
 // Every load error is a HeightMapError whose message starts with the file name.
 #pragma once
@@ -80,7 +80,7 @@ struct ProceduralTerrainOptions {
 // bowl-shaped depressions; deterministic for a seed on every platform.
 HeightField proceduralTerrain(const ProceduralTerrainOptions& options = {});
 
-// --- Permeability (the seed's attribute map): maximum infiltration rate, m/s, per cell ---
+// --- Permeability (the attribute map of RainCL §4.2.3): maximum infiltration rate, m/s, per cell ---
 
 // Sample value v of the PNG maps to maxRate * v / maxValue. The image must have the
 // terrain's size; otherwise a HeightMapError names the file and both sizes.

@@ -1,6 +1,6 @@
 // Textures the water scene makes itself (no image files): the cloudy sky cube map of
-// the skybox and the 16 capillary-ripple frames of the water surface (seed 4.3.2 and
-// 4.5). Pure CPU, deterministic for a seed.
+// the skybox and the 16 capillary-ripple frames of the water surface (RainCL §4.3.2
+// and §4.5). Pure CPU, deterministic for a random seed.
 //
 //     prism::water::CubeFaces sky = prism::water::proceduralSky({.faceSize = 128});
 //     prism::water::RippleFrames ripples = prism::water::proceduralRipples({});
@@ -52,7 +52,7 @@ struct RippleFrames {
 RippleFrames proceduralRipples(const RippleOptions& options = {});
 
 // Frames per second of the ripple animation for a rain rate: 0 without rain, faster
-// with heavier rain (seed 4.3.2: the frame rate follows the rain intensity).
+// with heavier rain (RainCL §4.3.2: the frame rate follows the rain intensity).
 double rippleFramesPerSecond(double rainMmPerHour);
 // How strongly the ripples tilt the surface normal for a rain rate (0 without rain).
 float rippleStrength(double rainMmPerHour);

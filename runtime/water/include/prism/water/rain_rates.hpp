@@ -1,5 +1,5 @@
-// Rain intensity for the water system: the six rain classes of the seed's Table 2
-// (Bruder 2013, "Regenformen und -daten", after Lull 1959) mapped to a rain rate, and
+// Rain intensity for the water system: the six rain classes of RainCL Table 2
+// (Bruder 2013, §3.1.2, "Regenformen und -daten", after Lull 1959) mapped to a rain rate, and
 // unit conversions. The water simulation itself takes a plain rate (m/s), so a constant
 // rain rate works without any class.
 //
@@ -8,7 +8,7 @@
 //     double r = prism::water::parseRainRateMmPerHour("cloudburst");                 // 101.6
 //     double c = prism::water::parseRainRateMmPerHour("12.5");                       // 12.5 (mm/h)
 //
-// Table 2 gives the intensity in cm/h; the rates here are those values x 10 (mm/h):
+// RainCL Table 2 gives the intensity in cm/h; the rates here are those values x 10 (mm/h):
 //   drizzle 0.025 cm/h, light 0.102, moderate 1.381, heavy 1.520, excessive 4.064,
 //   cloudburst 10.160. (Moderate and heavy are close in the source; kept as printed.)
 // The rain engineer's runtime/rain has its own copy of the table; the lead unifies them.
@@ -26,14 +26,14 @@ enum class RainClass { Drizzle, Light, Moderate, Heavy, Excessive, Cloudburst };
 struct RainClassInfo {
     RainClass rainClass;
     std::string_view name;        // "drizzle", "light", "moderate", "heavy", "excessive", "cloudburst"
-    std::string_view germanName;  // as in the seed: "Nieselregen", ...
+    std::string_view germanName;  // as in RainCL: "Nieselregen", ...
     double intensityCmPerHour;    // Table 2, column "Intensität [cm/h]"
     double dropDiameterMm;        // Table 2, "Menge [mm]" (the drop size)
     double fallSpeedMetresPerSecond;
     double dropsPerSecondPerSquareMetre;
 };
 
-// The six rows of Table 2, drizzle first.
+// The six rows of RainCL Table 2, drizzle first.
 std::span<const RainClassInfo> rainClassTable();
 const RainClassInfo& rainClassInfo(RainClass rainClass);
 

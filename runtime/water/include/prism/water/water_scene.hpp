@@ -35,7 +35,7 @@ namespace prism::water {
 
 enum class SimulationBackend { Cpu, Gpu };
 
-// How the water surface looks (seed 4.3).
+// How the water surface looks (RainCL §4.3).
 struct WaterLook {
     float threshold = 0.001f;             // m: shallower water is not drawn
     float shoreFadeDepth = 0.006f;        // m: the surface fades in between threshold and this

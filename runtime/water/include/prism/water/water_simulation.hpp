@@ -1,4 +1,4 @@
-// The rain-fed water map of the seed (Bruder 2013, 4.2): a grid over the terrain whose
+// The rain-fed water map of RainCL (Bruder 2013, §4.2): a grid over the terrain whose
 // cells hold a water depth and a velocity, advanced by a fixed sequence of steps. Two
 // implementations run the same step: CpuWaterSimulation (the reference) and
 // GpuWaterSimulation (compute shaders, gpu_water_simulation.hpp).
@@ -17,11 +17,11 @@
 //  1. rain: every cell gains rainRate x dt;
 //  2. infiltration: a cell loses permeability x dt, or all its water when that is as
 //     much (emptied exactly, never below zero);
-//  3. tangential flow (seed 4.2.4): the Sobel gradient of the free surface (terrain +
+//  3. tangential flow (RainCL §4.2.4): the Sobel gradient of the free surface (terrain +
 //     water) picks the downhill Moore neighbour; a cell sends min(maxFlowFraction,
 //     flowRate x dt x |slope|) of its water there, at most half the surface drop; with
 //     an open border, water aimed outside the grid leaves (lost through the border);
-//  4. distribution (seed Algorithm 1 after Mueller's height-field fluid, per von
+//  4. distribution (RainCL §4.2.5, Algorithm 1, after Mueller's height-field fluid, per von
 //     Neumann edge): q += c^2/h^2 (s_a - s_b) dt, q *= exp(-damping dt); the epsilon rule
 //     stops an edge whose receiver stands >= epsilon above the giver's surface; each
 //     edge moves q dt, at most a quarter of the giver's water;
@@ -50,14 +50,14 @@ namespace prism::water {
 
 enum class BorderMode {
     Open,    // tangential flow carries water off the map (the ledger's "lost through the border")
-    Closed,  // the seed's rule: no tangent at the border, water stays on the map
+    Closed,  // RainCL's rule (§4.2.4): no tangent at the border, water stays on the map
 };
 
 struct WaterParams {
     float waveSpeed = 0.5f;         // c, m/s, of the distribution's height-field waves
     float courantNumber = 0.7f;     // c dt / h of a substep; at most 1/sqrt(2) = 0.7071
     float dampingPerSecond = 2.0f;  // edge velocity factor exp(-damping dt) per substep
-    float epsilon = 0.002f;         // m, the epsilon of Algorithm 1
+    float epsilon = 0.002f;         // m, the epsilon of RainCL Algorithm 1
     float flowRate = 4.0f;          // 1/s per unit slope, tangential flow
     float maxFlowFraction = 0.5f;   // at most this share of a cell's water per tangential step
     int smoothingKernel = 5;        // odd, 1..15; 1 switches smoothing off
