@@ -271,7 +271,7 @@ check_installed() {
   pass "install: cmake --install Prism into $prefix"
   local config; config=$(find "$prefix" -name PrismConfig.cmake -print -quit)
   check "install: prefix has bin/prism-shaderc" test -x "$prefix/bin/prism-shaderc"
-  check "install: prefix has include/prism/shader_catalog.hpp" test -f "$prefix/include/prism/shader_catalog.hpp"
+  check "install: prefix has include/prism/catalog/shader_catalog.hpp" test -f "$prefix/include/prism/catalog/shader_catalog.hpp"
   check "install: prefix has share/prism/modules/contract.json" test -f "$prefix/share/prism/modules/contract.json"
   check "install: prefix has PrismConfig.cmake and PrismShaders.cmake" \
     test -n "$config" -a -f "$(dirname "${config:-/nonexistent}")/PrismShaders.cmake"

@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# Integration test of the installed runtime: installs this Prism build (runtime included)
+# into a prefix, then builds examples/consumer against that prefix alone with Ninja and
+# with Unix Makefiles (find_package(Prism)), runs its prism_consumer_render, and compares
+# the PNG with tests/golden/consumer/tinted_phong.png (thresholds in render_png.cpp).
+# Also checks that the prefix holds the runtime's headers, libraries, generated
+# catalogues and glad headers, and no path of the source tree leaks into the build.
+#
+# Usage: installed_runtime.sh --source <prism source> --build <prism build> --work <scratch dir>
+#          [--cmake <cmake>] [--jobs <n>]
+set -uo pipefail
+SOURCE="" BUILD="" WORK="" CMAKE=cmake JOBS=2
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --source) SOURCE=$2; shift 2 ;;
+    --build) BUILD=$2; shift 2 ;;
+    --work) WORK=$2; shift 2 ;;
+    --cmake) CMAKE=$2; shift 2 ;;
+    --jobs) JOBS=$2; shift 2 ;;
+    *) echo "installed_runtime.sh: unknown argument '$1'" >&2; exit 2 ;;
+  esac
+done
+if [ -z "$SOURCE" ] || [ -z "$BUILD" ] || [ -z "$WORK" ]; then
+  echo "usage: installed_runtime.sh --source <prism source> --build <prism build> --work <scratch dir>" >&2
+  exit 2
+fi
+unset MAKEFLAGS MFLAGS MAKELEVEL DESTDIR CMAKE_GENERATOR CMAKE_BUILD_PARALLEL_LEVEL
+rm -rf "$WORK" && mkdir -p "$WORK"
+PREFIX=$WORK/prefix
+FAILURES=0
+pass() { echo "PASS: $*"; }
+fail() { echo "FAIL: $*"; FAILURES=$((FAILURES + 1)); }
+show_log() { echo "  --- last lines of $1:"; tail -n 25 "$1" | sed 's/^/  | /'; }
+
+if "$CMAKE" --install "$BUILD" --prefix "$PREFIX" >"$WORK/install.log" 2>&1; then
+  pass "cmake --install the Prism build into $PREFIX"
+else
+  fail "cmake --install the Prism build"; show_log "$WORK/install.log"; exit 1
+fi
+for f in include/prism/gl/program.hpp include/prism/render/gpu_mesh.hpp include/prism/geometry/mesh.hpp \
+         include/prism/image/png_io.hpp include/prism/view/camera.hpp include/prism/scene/scene_loader.hpp \
+         include/prism/catalog/shader_catalog.hpp include/prism/shaders.hpp include/glad/gl.h \
+         lib/libprism_gl.a lib/libprism_render.a lib/cmake/Prism/PrismTargets.cmake bin/prism-shaderc; do
+  if [ -e "$PREFIX/$f" ]; then pass "prefix has $f"; else fail "prefix lacks $f"; fi
+done
+
+for gen in Ninja "Unix Makefiles"; do
+  tag=${gen// /-}
+  src=$WORK/$tag/consumer bld=$WORK/$tag/build
+  mkdir -p "$WORK/$tag" && cp -r "$SOURCE/examples/consumer" "$src"
+  if ! "$CMAKE" -S "$src" -B "$bld" -G "$gen" -DCMAKE_PREFIX_PATH="$PREFIX" -DCMAKE_BUILD_TYPE=Release \
+       >"$WORK/$tag/configure.log" 2>&1; then
+    fail "$gen: configure the consumer against the prefix"; show_log "$WORK/$tag/configure.log"; continue
+  fi
+  pass "$gen: configure the consumer against the prefix"
+  if grep -q -F "$SOURCE/runtime" "$bld/CMakeCache.txt"; then
+    fail "$gen: the consumer's cache names Prism's source tree"
+  else
+    pass "$gen: nothing of Prism's source tree in the consumer's cache"
+  fi
+  if ! "$CMAKE" --build "$bld" --parallel "$JOBS" >"$WORK/$tag/build.log" 2>&1; then
+    fail "$gen: build the consumer with the installed runtime"; show_log "$WORK/$tag/build.log"; continue
+  fi
+  pass "$gen: build the consumer with the installed runtime"
+  if "$bld/prism_consumer_render" "$WORK/$tag/tinted_phong.png" --golden "$SOURCE/tests/golden/consumer/tinted_phong.png" \
+       >"$WORK/$tag/run.log" 2>&1; then
+    pass "$gen: rendered PNG matches the golden ($(grep golden "$WORK/$tag/run.log"))"
+  else
+    fail "$gen: prism_consumer_render against the golden"; show_log "$WORK/$tag/run.log"
+  fi
+done
+echo "installed_runtime: $FAILURES failed check(s)"
+[ "$FAILURES" -eq 0 ]
