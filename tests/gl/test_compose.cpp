@@ -4,6 +4,7 @@
 
 #include "gl_test_support.hpp"
 #include "prism/gl/compose.hpp"
+#include "prism/gl/module_library.hpp"
 
 namespace {
 
@@ -144,10 +145,12 @@ TEST_F(ComposeGl, ErrorInModuleMapsToModulePathAndLine) {
         try {
             prism::gl::composeProgram(*catalog, stages, "faulty");
             ADD_FAILURE() << "the faulty module compiled under " << catalog->versionDirective;
-        } catch (const prism::gl::ShaderBuildError& e) {
-            const std::string what = e.what();
-            EXPECT_NE(what.find("modules/faulty.glsl:3:"), std::string::npos) << catalog->versionDirective << "\n"
-                                                                              << what;
+        } catch (const CompositionError& e) {
+            // Found by the build step's glslang check, before the driver sees it.
+            ASSERT_FALSE(e.diagnostics.empty()) << e.what();
+            EXPECT_NE(e.diagnostics.front().find("modules/faulty.glsl:3:"), std::string::npos)
+                << catalog->versionDirective << "\n"
+                << e.what();
         }
     }
 }
@@ -159,9 +162,131 @@ TEST_F(ComposeGl, ErrorInUserCodeMapsToUserName) {
     try {
         prism::gl::composeProgram(kCatalog, stages, "mine");
         FAIL() << "user code calling an undefined function compiled";
-    } catch (const prism::gl::ShaderBuildError& e) {
-        EXPECT_NE(std::string(e.what()).find("app/mine.frag:3:"), std::string::npos) << e.what();
+    } catch (const CompositionError& e) {
+        EXPECT_NE(std::string(e.what()).find("app/mine.frag:3:27: error: 'nope'"), std::string::npos) << e.what();
     }
+}
+
+// The checks of the build step run at composition: a misspelled contract attribute in a
+// module is an error at the module's file and line, with the contract's name suggested.
+inline constexpr std::string_view kMisspelled[] = {
+    "// misspelled attribute\n"
+    "in vec2 a_positon;\n"
+    "vec4 misspelledPosition() { return vec4(a_positon, 0.0, 1.0); }\n"};
+inline constexpr cat::Module kMisspelledModules[] = {{"misspelled", "lib/misspelled.glsl", "", kMisspelled, {}}};
+inline constexpr cat::Catalog kMisspelledCatalog{
+    {}, kMisspelledModules, prism::test::kContractAttributes, {}, "#version 330 core"};
+
+TEST_F(ComposeGl, MisspelledAttributeIsAnErrorAtTheModuleLineWithASuggestion) {
+    const ComposeStage stages[] = {
+        {cat::Stage::Vertex, {0}, "void main() { gl_Position = misspelledPosition(); }\n", "app/misspelled.vert"},
+        {cat::Stage::Fragment, {}, "out vec4 fragColor;\nvoid main() { fragColor = vec4(1.0); }\n", "app/plain.frag"}};
+    try {
+        prism::gl::composeProgram(kMisspelledCatalog, stages, "misspelled");
+        FAIL() << "a_positon, which the runtime never provides, linked silently";
+    } catch (const CompositionError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("lib/misspelled.glsl:2:"), std::string::npos) << what;
+        EXPECT_NE(what.find("a_positon"), std::string::npos) << what;
+        EXPECT_NE(what.find("did you mean 'a_position'"), std::string::npos) << what;
+    }
+}
+
+// A varying declared vec3 in one stage and vec4 in the next names both stages.
+TEST_F(ComposeGl, VaryingTypeMismatchNamesBothStages) {
+    const ComposeStage stages[] = {
+        {cat::Stage::Vertex, {},
+         "in vec2 a_position;\nout vec3 v_tint;\n"
+         "void main() { v_tint = vec3(1.0); gl_Position = vec4(a_position, 0.0, 1.0); }\n",
+         "app/tint.vert"},
+        {cat::Stage::Fragment, {}, "in vec4 v_tint;\nout vec4 fragColor;\nvoid main() { fragColor = v_tint; }\n",
+         "app/tint.frag"}};
+    try {
+        prism::gl::composeProgram(kCatalog, stages, "tint");
+        FAIL() << "a vec3/vec4 varying mismatch composed";
+    } catch (const CompositionError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("app/tint.frag:1:"), std::string::npos) << what;
+        EXPECT_NE(what.find("v_tint"), std::string::npos) << what;
+        EXPECT_NE(what.find("vert output"), std::string::npos) << what;
+        EXPECT_NE(what.find("vec3"), std::string::npos) << what;
+        EXPECT_NE(what.find("vec4"), std::string::npos) << what;
+    }
+}
+
+}  // namespace
+
+namespace {
+
+// Composition with no generated catalogue: modules and the contract read at run time by the
+// tool's own stages. tint.glsl includes halve.glsl, which must come first.
+const char* kLibraryContract = R"({"attributes": [{"name": "a_position", "type": "vec2", "location": 0}],
+  "uniforms": [{"name": "u_gain", "type": "float"}]})";
+
+TEST_F(ComposeGl, ModuleLibraryFromStringsComposesAndRenders) {
+    const auto library = prism::gl::ModuleLibrary::fromStrings(
+        {{"lib/halve.glsl", "// Provides halve().\nfloat halve(float x) { return 0.5 * x; }\n"},
+         {"lib/tint.glsl", "// Provides tint().\n#include \"halve.glsl\"\nuniform float u_gain;\n"
+                           "vec4 tint() { return vec4(halve(u_gain), 1.0, 0.0, 1.0); }\n"}},
+        kLibraryContract);
+    EXPECT_EQ(library.catalog().modules[library.id("tint")].description, "Provides tint().");
+    const ComposeStage stages[] = {
+        {cat::Stage::Vertex, {}, kVertexSource, "app/lib.vert"},
+        {cat::Stage::Fragment, {library.id("tint")}, "out vec4 fragColor;\nvoid main() { fragColor = tint(); }\n",
+         "app/lib.frag"}};
+    prism::gl::Program program = prism::gl::composeProgram(library.catalog(), stages, "library");
+    program.set("u_gain", 1.0f);
+    prism::gl::Framebuffer fb(prism::test::kSize, prism::test::kSize);
+    prism::test::drawTriangle(fb, program);
+    EXPECT_EQ(fb.readImage8().at(prism::test::kSize / 2, prism::test::kSize / 2), (prism::image::Rgba8{128, 255, 0, 255}));
+}
+
+TEST_F(ComposeGl, ModuleLibraryUniformOutsideTheContractIsAnError) {
+    const auto library = prism::gl::ModuleLibrary::fromStrings(
+        {{"lib/gain.glsl", "// gain\nuniform float u_gian;\nfloat gain() { return u_gian; }\n"}}, kLibraryContract);
+    const ComposeStage stages[] = {
+        {cat::Stage::Vertex, {}, kVertexSource, "app/lib.vert"},
+        {cat::Stage::Fragment, {library.id("gain")}, "out vec4 fragColor;\nvoid main() { fragColor = vec4(gain()); }\n",
+         "app/lib.frag"}};
+    try {
+        prism::gl::composeProgram(library.catalog(), stages, "gain");
+        FAIL() << "u_gian, which the runtime never provides, composed";
+    } catch (const CompositionError& e) {
+        EXPECT_NE(std::string(e.what()).find("lib/gain.glsl:2:"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("did you mean 'u_gain'"), std::string::npos) << e.what();
+    }
+}
+
+TEST(ModuleLibrary, ErrorsNameTheFileAndLine) {
+    try {
+        prism::gl::ModuleLibrary::fromStrings({{"lib/a.glsl", "// a\n\n#include \"missing.glsl\"\n"}}, kLibraryContract);
+        FAIL() << "a missing include was accepted";
+    } catch (const CompositionError& e) {
+        EXPECT_NE(std::string(e.what()).find("lib/a.glsl:3:"), std::string::npos) << e.what();
+    }
+    try {
+        prism::gl::ModuleLibrary::fromStrings({}, "{\"attributes\": [}");
+        FAIL() << "malformed contract JSON was accepted";
+    } catch (const CompositionError& e) {
+        EXPECT_NE(std::string(e.what()).find("<contract>.json:1:"), std::string::npos) << e.what();
+    }
+    const auto library = prism::gl::ModuleLibrary::fromStrings({{"lib/tint.glsl", "// t\n"}}, kLibraryContract);
+    try {
+        library.id("tnit");
+        FAIL() << "an unknown module name was accepted";
+    } catch (const CompositionError& e) {
+        EXPECT_NE(std::string(e.what()).find("did you mean 'tint'"), std::string::npos) << e.what();
+    }
+}
+
+TEST_F(ComposeGl, ModuleLibraryFromPrismsOwnModuleFiles) {
+    const std::string modules = PRISM_SOURCE_DIR "/modules/";
+    const std::string files[] = {modules + "version.glsl", modules + "math_utils.glsl", modules + "transforms.glsl"};
+    const std::string contracts[] = {modules + "contract.json"};
+    const auto library = prism::gl::ModuleLibrary::fromFiles(files, contracts);
+    EXPECT_EQ(library.catalog().modules.size(), 3u);
+    EXPECT_FALSE(library.catalog().contractUniforms.empty());
+    EXPECT_NE(library.catalog().modules[library.id("transforms")].description.find("u_"), std::string_view::npos);
 }
 
 }  // namespace

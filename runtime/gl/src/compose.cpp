@@ -3,6 +3,8 @@
 
 #include <cctype>
 
+#include "compose_check.hpp"
+
 namespace prism::gl {
 namespace {
 
@@ -140,7 +142,14 @@ ProgramSources composeSources(const catalog::Catalog& catalog, std::span<const C
 
 Program composeProgram(const catalog::Catalog& catalog, std::span<const ComposeStage> stages, std::string label,
                        std::span<const catalog::Define> defines) {
-    return Program(composeSources(catalog, stages, std::move(label), defines));
+    ProgramSources sources = composeSources(catalog, stages, std::move(label), defines);
+    const std::vector<std::string> problems = detail::checkComposedSources(catalog, sources);
+    if (!problems.empty()) {
+        std::string message = "prism compose: " + sources.label + " failed the build step's checks:";
+        for (const auto& p : problems) message += "\n" + p;
+        throw CompositionError(message, problems);
+    }
+    return Program(std::move(sources));
 }
 
 }  // namespace prism::gl

@@ -38,6 +38,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "prism/gl/program.hpp"
@@ -45,9 +46,13 @@
 
 namespace prism::gl {
 
+// A composition problem. `diagnostics` holds one GCC-style line per problem found by the
+// build step's checks (`path:line:col: error: message`), empty for errors found before them.
 class CompositionError : public std::runtime_error {
   public:
-    using std::runtime_error::runtime_error;
+    explicit CompositionError(const std::string& message, std::vector<std::string> diagnostics = {})
+        : std::runtime_error(message), diagnostics(std::move(diagnostics)) {}
+    std::vector<std::string> diagnostics;
 };
 
 struct ComposeStage {
@@ -69,6 +74,10 @@ StageText composeStage(const catalog::Catalog& catalog, const ComposeStage& stag
 ProgramSources composeSources(const catalog::Catalog& catalog, std::span<const ComposeStage> stages,
                               std::string label = "composed", std::span<const catalog::Define> defines = {});
 
+// Composes, then runs the same checks as prism-shaderc's build step (glslang compile and
+// link, cross-stage interfaces, the contract of `catalog`: an unknown `a_`/`u_` name is an
+// error with "did you mean"); throws CompositionError listing every diagnostic, at each
+// module's own file:line. Then links with the driver (ShaderBuildError on failure).
 Program composeProgram(const catalog::Catalog& catalog, std::span<const ComposeStage> stages,
                        std::string label = "composed", std::span<const catalog::Define> defines = {});
 

@@ -1,0 +1,19 @@
+// Run-time composition's checks, done by the shader tool's own stages (prism_shaderc_lib):
+// glslang compilation and linking, the cross-stage interface check and the contract
+// check, with diagnostics at each module's file:line. Internal to prism_gl.
+#pragma once
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "prism/catalog/shader_catalog.hpp"
+#include "prism/gl/program.hpp"
+
+namespace prism::gl::detail {
+
+// GCC-style diagnostics (`path:line:col: error: message`) for the composed stages; empty
+// when the program is valid. Warnings are included only when there is an error.
+std::vector<std::string> checkComposedSources(const catalog::Catalog& catalog, const ProgramSources& sources);
+
+}  // namespace prism::gl::detail
