@@ -103,3 +103,16 @@ TEST(GeneratedCatalogue, LineTablesMapSourceNumbersToModules) {
     for (const auto& f : vert.files) mentionsLights = mentionsLights || f.path == "modules/lights.glsl";
     EXPECT_TRUE(mentionsLights);
 }
+
+// The one contract lookup the runtime uses (catalog::attributeLocation): the locations
+// modules/contract.json declares, and a clear error for a name the runtime never provides.
+TEST(GeneratedCatalogue, AttributeLocationsComeFromTheContract) {
+    EXPECT_EQ(prism::catalog::attributeLocation(prism::shaders::kCatalog, "a_position"), 0);
+    EXPECT_EQ(prism::catalog::attributeLocation(prism::shaders::kCatalog, "a_normal"), 1);
+    try {
+        prism::catalog::attributeLocation(prism::shaders::kCatalog, "a_normall");
+        FAIL() << "a misspelled attribute got a location";
+    } catch (const std::out_of_range& e) {
+        EXPECT_NE(std::string(e.what()).find("'a_normall'"), std::string::npos) << e.what();
+    }
+}

@@ -11,12 +11,6 @@ namespace {
 
 constexpr int kNoiseTextureUnit = 1;
 
-int locationOf(const catalog::Catalog& c, std::string_view name) {
-    for (const auto& a : c.contractAttributes)
-        if (a.name == name) return a.location;
-    throw std::logic_error("rain: the binding contract has no attribute '" + std::string(name) + "'");
-}
-
 }  // namespace
 
 FogSystem::FogSystem(RainPrograms& programs, const SceneFog& fog, const glm::vec3& eye)
@@ -28,7 +22,7 @@ FogSystem::FogSystem(RainPrograms& programs, const SceneFog& fog, const glm::vec
       noiseTexture_(uploadR8TextureArray(noise_.size, noise_.size, noise_.layers, noise_.texels.data(), true)) {
     glBindVertexArray(vao_.id());
     glBindBuffer(GL_ARRAY_BUFFER, buffer_.id());
-    const auto location = static_cast<GLuint>(locationOf(programs_.catalog(), "a_fogBillboard"));
+    const auto location = static_cast<GLuint>(catalog::attributeLocation(programs_.catalog(), "a_fogBillboard"));
     glEnableVertexAttribArray(location);
     glVertexAttribPointer(location, 4, GL_FLOAT, GL_FALSE, sizeof(glm::vec4), nullptr);
     glBindVertexArray(0);

@@ -15,12 +15,6 @@ namespace {
 
 constexpr int kStreakTextureUnit = 0;
 
-int locationOf(const catalog::Catalog& c, std::string_view name) {
-    for (const auto& a : c.contractAttributes)
-        if (a.name == name) return a.location;
-    throw std::logic_error("rain: the binding contract has no attribute '" + std::string(name) + "'");
-}
-
 render::VariantValues fogVariant(const view::Fog* fog) {
     return {{"FOG", fog ? "1" : "0"}};
 }
@@ -169,7 +163,7 @@ void RainSystem::bindAttributes(GlVertexArray& vao, unsigned divisor) {
         {"a_rainVelocity", offsetof(Particle, velocity)},
     };
     for (const auto& [name, offset] : attributes) {
-        const auto location = static_cast<GLuint>(locationOf(c, name));
+        const auto location = static_cast<GLuint>(catalog::attributeLocation(c, name));
         glEnableVertexAttribArray(location);
         glVertexAttribPointer(location, 4, GL_FLOAT, GL_FALSE, sizeof(Particle), reinterpret_cast<const void*>(offset));
         glVertexAttribDivisor(location, divisor);

@@ -10,12 +10,6 @@
 namespace prism::render {
 namespace {
 
-int locationOf(std::span<const catalog::Attribute> contract, std::string_view name) {
-    for (const auto& a : contract)
-        if (a.name == name) return a.location;
-    throw std::invalid_argument("GpuMesh: the binding contract has no attribute '" + std::string(name) + "'");
-}
-
 unsigned uploadVec3(const std::vector<glm::vec3>& data, int location) {
     unsigned buffer = 0;
     glGenBuffers(1, &buffer);
@@ -33,8 +27,8 @@ GpuMesh::GpuMesh(const geometry::Mesh& mesh, std::span<const catalog::Attribute>
     geometry::requireValidMesh(mesh, "GpuMesh");
     glGenVertexArrays(1, &vao_);
     glBindVertexArray(vao_);
-    positions_ = uploadVec3(mesh.positions, locationOf(contract, "a_position"));
-    const int normalLocation = locationOf(contract, "a_normal");
+    positions_ = uploadVec3(mesh.positions, catalog::attributeLocation(contract, "a_position"));
+    const int normalLocation = catalog::attributeLocation(contract, "a_normal");
     if (!mesh.normals.empty()) {
         normals_ = uploadVec3(mesh.normals, normalLocation);
     } else {

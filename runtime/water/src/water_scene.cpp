@@ -126,12 +126,6 @@ namespace ws = prism::water_shaders;
 
 constexpr GLenum kTextureCubeMapSeamless = 0x884F;  // GL_TEXTURE_CUBE_MAP_SEAMLESS (3.2 core)
 
-int attributeLocation(std::string_view name) {
-    for (const auto& a : ws::kCatalog.contractAttributes)
-        if (a.name == name) return a.location;
-    throw std::logic_error("water renderer: the binding contract has no attribute " + std::string(name));
-}
-
 template <class T>
 void setIfPresent(gl::Program& p, std::string_view name, const T& value) {
     if (p.hasUniform(name)) p.set(name, value);
@@ -194,7 +188,7 @@ struct WaterSceneRenderer::Impl {
         const auto attribute = [&](int slot, std::string_view name, int components, const void* data,
                                    std::size_t bytes) {
             terrainBuffers[slot] = newBuffer(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(bytes), data);
-            const GLuint loc = static_cast<GLuint>(attributeLocation(name));
+            const GLuint loc = static_cast<GLuint>(catalog::attributeLocation(ws::kCatalog, name));
             glEnableVertexAttribArray(loc);
             glVertexAttribPointer(loc, components, GL_FLOAT, GL_FALSE, 0, nullptr);
         };
@@ -234,7 +228,7 @@ struct WaterSceneRenderer::Impl {
         skyVao = newVertexArray();
         glBindVertexArray(skyVao);
         skyVbo = newBuffer(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(v.size() * sizeof(float)), v.data());
-        const GLuint loc = static_cast<GLuint>(attributeLocation("a_position"));
+        const GLuint loc = static_cast<GLuint>(catalog::attributeLocation(ws::kCatalog, "a_position"));
         glEnableVertexAttribArray(loc);
         glVertexAttribPointer(loc, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
         glBindVertexArray(0);

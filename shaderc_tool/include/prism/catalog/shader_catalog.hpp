@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <initializer_list>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -139,6 +140,18 @@ constexpr const Module* findModule(const Catalog& c, std::string_view name) {
     for (const auto& m : c.modules)
         if (m.name == name) return &m;
     return nullptr;
+}
+
+// The location the binding contract gives attribute `name` (e.g. "a_position"); throws
+// std::out_of_range naming the attribute when the contract has no such attribute.
+inline std::int32_t attributeLocation(std::span<const Attribute> contract, std::string_view name) {
+    for (const auto& a : contract)
+        if (a.name == name) return a.location;
+    throw std::out_of_range("the binding contract has no attribute '" + std::string(name) +
+                            "'; declare it in the contract JSON (modules/contract.json) or use a contract name");
+}
+inline std::int32_t attributeLocation(const Catalog& c, std::string_view name) {
+    return attributeLocation(c.contractAttributes, name);
 }
 
 namespace detail {
