@@ -1,20 +1,10 @@
-// Gouraud: writes the interpolated vertex colour.
-#pragma prism variant FOG
+// Gouraud: writes the interpolated vertex colour (fogged in the FOG variant).
 #include <version.glsl>
 #include <fragment_output.glsl>
-#if FOG
-#include <fog.glsl>
-#endif
+#include <fog_fragment.glsl>
 
 in vec4 v_color;
 
-#if FOG
-in float v_fogDistance;
-#endif
-
 void main() {
-    frag = v_color;
-#if FOG
-    frag.rgb = applyFog(frag.rgb, v_fogDistance);
-#endif
+    frag = vec4(fogged(v_color.rgb), v_color.a);
 }

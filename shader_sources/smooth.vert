@@ -1,22 +1,10 @@
 // Smooth: diffuse lighting per vertex from area-weighted vertex normals; the colour
 // is interpolated over the triangle.
 #include <version.glsl>
-#include <transforms.glsl>
-#include <normals.glsl>
-#include <lighting.glsl>
+#include <vertex_lighting.glsl>
 
-in vec3 a_position;
-in vec3 a_normal;
 out vec4 v_color;
-#if FOG
-out float v_fogDistance;
-#endif
 
 void main() {
-    vec4 eye = eyePosition(a_position);
-    v_color = vec4(shade(eye.xyz, eyeNormal(a_normal), false), 1.0);
-#if FOG
-    v_fogDistance = length(eye.xyz);
-#endif
-    gl_Position = clipPosition(eye);
+    v_color = litVertexColor(false);
 }

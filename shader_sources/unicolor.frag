@@ -1,20 +1,9 @@
-// Unicolor: the material colour, unlit.
-#pragma prism variant FOG
+// Unicolor: the material colour, unlit (fogged in the FOG variant).
 #include <version.glsl>
 #include <material.glsl>
 #include <fragment_output.glsl>
-#if FOG
-#include <fog.glsl>
-#endif
-
-#if FOG
-in float v_fogDistance;
-#endif
+#include <fog_fragment.glsl>
 
 void main() {
-    vec3 color = u_color.rgb;
-#if FOG
-    color = applyFog(color, v_fogDistance);
-#endif
-    frag = vec4(color, 1.0);
+    frag = vec4(fogged(u_color.rgb), 1.0);
 }

@@ -1,16 +1,12 @@
 // Unicolor: positions only; every fragment gets the material colour.
 #include <version.glsl>
 #include <transforms.glsl>
+#include <fog_vertex.glsl>
 
 in vec3 a_position;
-#if FOG
-out float v_fogDistance;
-#endif
 
 void main() {
     vec4 eye = eyePosition(a_position);
-#if FOG
-    v_fogDistance = length(eye.xyz);
-#endif
+    passFogDistance(eye);
     gl_Position = clipPosition(eye);
 }
