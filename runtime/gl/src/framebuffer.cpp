@@ -49,11 +49,11 @@ Framebuffer::Framebuffer(int width, int height, ColorFormat format) : width_(wid
         throw GlError("prism: framebuffer size " + sizeText(width, height) + " is outside 1.." +
                       std::to_string(maxSize) + " (GL_MAX_RENDERBUFFER_SIZE)");
 
-    glGenFramebuffers(1, &framebuffer_);
-    glGenTextures(1, &color_);
-    glGenRenderbuffers(1, &depth_);
+    framebuffer_ = FramebufferObject::create();
+    color_ = Texture::create();
+    depth_ = Renderbuffer::create();
 
-    glBindTexture(GL_TEXTURE_2D, color_);
+    glBindTexture(GL_TEXTURE_2D, color_.id());
     if (format == ColorFormat::Rgba8)
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
     else
@@ -64,60 +64,22 @@ Framebuffer::Framebuffer(int width, int height, ColorFormat format) : width_(wid
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     glBindTexture(GL_TEXTURE_2D, 0);
 
-    glBindRenderbuffer(GL_RENDERBUFFER, depth_);
+    glBindRenderbuffer(GL_RENDERBUFFER, depth_.id());
     glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
     glBindRenderbuffer(GL_RENDERBUFFER, 0);
 
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_, 0);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_.id(), 0);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
     const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-    if (status != GL_FRAMEBUFFER_COMPLETE) {
-        release();
+    if (status != GL_FRAMEBUFFER_COMPLETE) {  // the handles delete what was made
         throw GlError("prism: " + sizeText(width, height) + " framebuffer is incomplete: " + statusName(status));
     }
-    try {
-        throwIfGlError("creating a " + sizeText(width, height) + " framebuffer");
-    } catch (...) {
-        release();
-        throw;
-    }
-}
-
-Framebuffer::~Framebuffer() {
-    release();
-}
-
-Framebuffer::Framebuffer(Framebuffer&& other) noexcept
-    : width_(other.width_),
-      height_(other.height_),
-      format_(other.format_),
-      framebuffer_(std::exchange(other.framebuffer_, 0u)),
-      color_(std::exchange(other.color_, 0u)),
-      depth_(std::exchange(other.depth_, 0u)) {}
-
-Framebuffer& Framebuffer::operator=(Framebuffer&& other) noexcept {
-    if (this != &other) {
-        release();
-        width_ = other.width_;
-        height_ = other.height_;
-        format_ = other.format_;
-        framebuffer_ = std::exchange(other.framebuffer_, 0u);
-        color_ = std::exchange(other.color_, 0u);
-        depth_ = std::exchange(other.depth_, 0u);
-    }
-    return *this;
-}
-
-void Framebuffer::release() noexcept {
-    if (framebuffer_) glDeleteFramebuffers(1, &framebuffer_);
-    if (color_) glDeleteTextures(1, &color_);
-    if (depth_) glDeleteRenderbuffers(1, &depth_);
-    framebuffer_ = color_ = depth_ = 0;
+    throwIfGlError("creating a " + sizeText(width, height) + " framebuffer");
 }
 
 void Framebuffer::bind() const {
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
     glViewport(0, 0, width_, height_);
 }
 

@@ -105,40 +105,8 @@ Program::Program(ProgramSources sources) {
     build(std::move(sources));
 }
 
-Program::~Program() {
-    release();
-}
-
-Program::Program(Program&& other) noexcept
-    : program_(std::exchange(other.program_, 0u)),
-      label_(std::move(other.label_)),
-      uniforms_(std::move(other.uniforms_)),
-      reported_(std::move(other.reported_)),
-      unknownReports_(std::move(other.unknownReports_)),
-      mismatchReports_(std::move(other.mismatchReports_)),
-      warningHandler_(std::move(other.warningHandler_)) {}
-
-Program& Program::operator=(Program&& other) noexcept {
-    if (this != &other) {
-        release();
-        program_ = std::exchange(other.program_, 0u);
-        label_ = std::move(other.label_);
-        uniforms_ = std::move(other.uniforms_);
-        reported_ = std::move(other.reported_);
-        unknownReports_ = std::move(other.unknownReports_);
-        mismatchReports_ = std::move(other.mismatchReports_);
-        warningHandler_ = std::move(other.warningHandler_);
-    }
-    return *this;
-}
-
-void Program::release() noexcept {
-    if (program_) glDeleteProgram(program_);
-    program_ = 0;
-}
-
 void Program::use() const {
-    glUseProgram(program_);
+    glUseProgram(program_.id());
 }
 
 void Program::setWarningHandler(WarningHandler handler) {
@@ -160,22 +128,17 @@ void Program::build(ProgramSources sources) {
     label_ = std::move(sources.label);
     if (sources.stages.empty()) throw ShaderBuildError(programName(label_) + " has no stages", "");
 
-    std::vector<GLuint> shaders;
-    auto deleteShaders = [&] {
-        for (GLuint s : shaders) glDeleteShader(s);
-        shaders.clear();
-    };
-
+    std::vector<ShaderObject> shaders;  // deleted when this function returns or throws
     for (const StageText& stage : sources.stages) {
-        const GLuint shader = glCreateShader(shaderType(stage.stage));
-        if (shader == 0) {
-            deleteShaders();
+        try {
+            shaders.push_back(ShaderObject::create(shaderType(stage.stage)));
+        } catch (const GlError&) {
             throw ShaderBuildError("prism: cannot create a " + std::string(stageWord(stage.stage)) + " shader for " +
                                        programName(label_) +
                                        " (is a GL context current, and does it support this stage?)",
                                    "");
         }
-        shaders.push_back(shader);
+        const GLuint shader = shaders.back().id();
         const GLchar* text = stage.source.c_str();
         const GLint length = static_cast<GLint>(stage.source.size());
         glShaderSource(shader, 1, &text, &length);
@@ -184,7 +147,6 @@ void Program::build(ProgramSources sources) {
         glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
         const std::string log = shaderLog(shader);
         if (!ok) {
-            deleteShaders();
             throw ShaderBuildError("prism: cannot compile the " + std::string(stageWord(stage.stage)) + " shader of " +
                                        programName(label_) + ":\n" + translateDriverLog(log, stage.files),
                                    log);
@@ -194,25 +156,26 @@ void Program::build(ProgramSources sources) {
                  translateDriverLog(log, stage.files));
     }
 
-    program_ = glCreateProgram();
-    for (GLuint s : shaders) glAttachShader(program_, s);
+    program_ = ProgramObject::create();
+    const GLuint program = program_.id();
+    for (const auto& s : shaders) glAttachShader(program, s.id());
     for (const auto& a : sources.attributes)
-        if (a.location >= 0) glBindAttribLocation(program_, static_cast<GLuint>(a.location), a.name.c_str());
-    glLinkProgram(program_);
-    for (GLuint s : shaders) glDetachShader(program_, s);
-    deleteShaders();
+        if (a.location >= 0) glBindAttribLocation(program, static_cast<GLuint>(a.location), a.name.c_str());
+    glLinkProgram(program);
+    for (const auto& s : shaders) glDetachShader(program, s.id());
+    shaders.clear();
 
     GLint linked = GL_FALSE;
-    glGetProgramiv(program_, GL_LINK_STATUS, &linked);
+    glGetProgramiv(program, GL_LINK_STATUS, &linked);
     if (!linked) {
-        const std::string log = programLog(program_);
-        release();
+        const std::string log = programLog(program);
+        program_.reset();
         throw ShaderBuildError("prism: cannot link " + programName(label_) + ":\n" + log, log);
     }
     try {
         throwIfGlError("building " + programName(label_));
     } catch (const GlError& e) {
-        release();
+        program_.reset();
         throw ShaderBuildError(e.what(), "");
     }
     buildUniformTable(sources.uniforms);

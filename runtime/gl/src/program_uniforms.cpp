@@ -186,13 +186,13 @@ void Program::addUniform(const std::string& reflectedName, std::uint32_t glType,
     const std::string base = withoutFirstIndex(reflectedName);
     const bool isArray = arraySize > 1 || base != reflectedName;
     if (!isArray) {
-        uniforms_[base] = {glGetUniformLocation(program_, base.c_str()), glType, 1};
+        uniforms_[base] = {glGetUniformLocation(program_.id(), base.c_str()), glType, 1};
         return;
     }
     const int n = std::max(arraySize, 1);
     for (int i = 0; i < n; ++i) {
         const std::string element = base + "[" + std::to_string(i) + "]";
-        uniforms_[element] = {glGetUniformLocation(program_, element.c_str()), glType, n - i};
+        uniforms_[element] = {glGetUniformLocation(program_.id(), element.c_str()), glType, n - i};
     }
     uniforms_[base] = uniforms_[base + "[0]"];
 }
@@ -204,16 +204,16 @@ void Program::buildUniformTable(const std::optional<std::vector<UniformDecl>>& r
         return;
     }
     GLint count = 0, maxLength = 0;
-    glGetProgramiv(program_, GL_ACTIVE_UNIFORMS, &count);
-    glGetProgramiv(program_, GL_ACTIVE_UNIFORM_MAX_LENGTH, &maxLength);
+    glGetProgramiv(program_.id(), GL_ACTIVE_UNIFORMS, &count);
+    glGetProgramiv(program_.id(), GL_ACTIVE_UNIFORM_MAX_LENGTH, &maxLength);
     std::string name(static_cast<std::size_t>(std::max(maxLength, 1)), '\0');
     for (GLint i = 0; i < count; ++i) {
         GLsizei length = 0;
         GLint size = 0;
         GLenum type = 0;
-        glGetActiveUniform(program_, static_cast<GLuint>(i), maxLength, &length, &size, &type, name.data());
+        glGetActiveUniform(program_.id(), static_cast<GLuint>(i), maxLength, &length, &size, &type, name.data());
         const std::string uniformName = name.substr(0, static_cast<std::size_t>(length));
-        if (glGetUniformLocation(program_, uniformName.c_str()) < 0) continue;  // uniform-block member
+        if (glGetUniformLocation(program_.id(), uniformName.c_str()) < 0) continue;  // uniform-block member
         addUniform(uniformName, type, size);
     }
 }
@@ -222,7 +222,7 @@ const Program::UniformSlot* Program::slotFor(std::string_view name) {
     if (auto it = uniforms_.find(name); it != uniforms_.end()) return &it->second;
     // Not in the table (e.g. a struct member path): ask the driver once and cache a hit.
     const std::string key(name);
-    const GLint location = glGetUniformLocation(program_, key.c_str());
+    const GLint location = glGetUniformLocation(program_.id(), key.c_str());
     if (location < 0) return nullptr;
     return &(uniforms_[key] = UniformSlot{location, 0, 1});
 }
@@ -322,12 +322,12 @@ void Program::set(std::string_view name, std::span<const glm::mat4> v) {
 
 bool Program::hasUniform(std::string_view name) const {
     if (uniforms_.find(name) != uniforms_.end()) return true;
-    return glGetUniformLocation(program_, std::string(name).c_str()) >= 0;
+    return glGetUniformLocation(program_.id(), std::string(name).c_str()) >= 0;
 }
 
 int Program::uniformLocation(std::string_view name) const {
     if (auto it = uniforms_.find(name); it != uniforms_.end()) return it->second.location;
-    return glGetUniformLocation(program_, std::string(name).c_str());
+    return glGetUniformLocation(program_.id(), std::string(name).c_str());
 }
 
 }  // namespace prism::gl

@@ -41,14 +41,12 @@ void detail::countDispatch() {
     ++counters().computeDispatches;
 }
 
-GlBuffer::GlBuffer(std::size_t bytes, const void* data, unsigned usage) : bytes_(bytes) {
-    GLuint id = 0;
-    glGenBuffers(1, &id);
-    id_ = id;
+GlBuffer::GlBuffer(std::size_t bytes, const void* data, unsigned usage)
+    : buffer_(gl::Buffer::create()), bytes_(bytes) {
     ++counters().buffersCreated;
     ++counters().buffersLive;
     counters().bufferBytesLive += bytes;
-    glBindBuffer(GL_COPY_WRITE_BUFFER, id_);
+    glBindBuffer(GL_COPY_WRITE_BUFFER, buffer_.id());
     glBufferData(GL_COPY_WRITE_BUFFER, static_cast<GLsizeiptr>(bytes), data, usage);
     glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
     if (glGetError() == GL_OUT_OF_MEMORY) {
@@ -60,28 +58,21 @@ GlBuffer::GlBuffer(std::size_t bytes, const void* data, unsigned usage) : bytes_
 GlBuffer& GlBuffer::operator=(GlBuffer&& o) noexcept {
     if (this != &o) {
         release();
-        id_ = o.id_;
-        bytes_ = o.bytes_;
-        o.id_ = 0;
-        o.bytes_ = 0;
+        buffer_ = std::move(o.buffer_);
+        bytes_ = std::exchange(o.bytes_, 0);
     }
     return *this;
 }
 
 void GlBuffer::release() noexcept {
-    if (id_ == 0) return;
-    GLuint id = id_;
-    glDeleteBuffers(1, &id);
+    if (!buffer_) return;
+    buffer_.reset();
     --counters().buffersLive;
     counters().bufferBytesLive -= bytes_;
-    id_ = 0;
     bytes_ = 0;
 }
 
-GlTexture::GlTexture() {
-    GLuint id = 0;
-    glGenTextures(1, &id);
-    id_ = id;
+GlTexture::GlTexture() : texture_(gl::Texture::create()) {
     ++counters().texturesCreated;
     ++counters().texturesLive;
 }
@@ -89,24 +80,18 @@ GlTexture::GlTexture() {
 GlTexture& GlTexture::operator=(GlTexture&& o) noexcept {
     if (this != &o) {
         release();
-        id_ = o.id_;
-        o.id_ = 0;
+        texture_ = std::move(o.texture_);
     }
     return *this;
 }
 
 void GlTexture::release() noexcept {
-    if (id_ == 0) return;
-    GLuint id = id_;
-    glDeleteTextures(1, &id);
+    if (!texture_) return;
+    texture_.reset();
     --counters().texturesLive;
-    id_ = 0;
 }
 
-GlVertexArray::GlVertexArray() {
-    GLuint id = 0;
-    glGenVertexArrays(1, &id);
-    id_ = id;
+GlVertexArray::GlVertexArray() : vertexArray_(gl::VertexArray::create()) {
     ++counters().vertexArraysCreated;
     ++counters().vertexArraysLive;
 }
@@ -114,18 +99,15 @@ GlVertexArray::GlVertexArray() {
 GlVertexArray& GlVertexArray::operator=(GlVertexArray&& o) noexcept {
     if (this != &o) {
         release();
-        id_ = o.id_;
-        o.id_ = 0;
+        vertexArray_ = std::move(o.vertexArray_);
     }
     return *this;
 }
 
 void GlVertexArray::release() noexcept {
-    if (id_ == 0) return;
-    GLuint id = id_;
-    glDeleteVertexArrays(1, &id);
+    if (!vertexArray_) return;
+    vertexArray_.reset();
     --counters().vertexArraysLive;
-    id_ = 0;
 }
 
 GlTexture uploadR8TextureArray(int width, int height, int layers, const std::uint8_t* texels, bool repeat) {

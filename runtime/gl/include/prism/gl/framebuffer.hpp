@@ -19,6 +19,7 @@
 
 #include <array>
 
+#include "prism/gl/handles.hpp"
 #include "prism/image/image.hpp"
 
 namespace prism::gl {
@@ -28,17 +29,16 @@ enum class ColorFormat { Rgba8, Rgba32F };
 class Framebuffer {
   public:
     Framebuffer(int width, int height, ColorFormat format = ColorFormat::Rgba8);
-    ~Framebuffer();
-    Framebuffer(Framebuffer&& other) noexcept;
-    Framebuffer& operator=(Framebuffer&& other) noexcept;
+    Framebuffer(Framebuffer&& other) noexcept = default;
+    Framebuffer& operator=(Framebuffer&& other) noexcept = default;
     Framebuffer(const Framebuffer&) = delete;
     Framebuffer& operator=(const Framebuffer&) = delete;
 
     int width() const { return width_; }
     int height() const { return height_; }
     ColorFormat format() const { return format_; }
-    unsigned id() const { return framebuffer_; }
-    unsigned colorTexture() const { return color_; }  // sample it in a later pass
+    unsigned id() const { return framebuffer_.id(); }
+    unsigned colorTexture() const { return color_.id(); }  // sample it in a later pass
 
     // Binds for drawing and reading and sets the viewport to the whole target.
     void bind() const;
@@ -54,11 +54,11 @@ class Framebuffer {
     image::ImageF readImageF() const;
 
   private:
-    void release() noexcept;
-
     int width_ = 0, height_ = 0;
     ColorFormat format_ = ColorFormat::Rgba8;
-    unsigned framebuffer_ = 0, color_ = 0, depth_ = 0;
+    FramebufferObject framebuffer_;
+    Texture color_;
+    Renderbuffer depth_;
 };
 
 }  // namespace prism::gl

@@ -46,6 +46,7 @@
 #include <glm/fwd.hpp>
 
 #include "prism/gl/driver_log.hpp"
+#include "prism/gl/handles.hpp"
 #include "prism/catalog/shader_catalog.hpp"
 
 namespace prism::gl {
@@ -106,14 +107,13 @@ class Program {
     Program(const catalog::Variant& variant, std::span<const catalog::Attribute> contractAttributes,
             std::string label = {});
     explicit Program(ProgramSources sources);
-    ~Program();
-    Program(Program&& other) noexcept;
-    Program& operator=(Program&& other) noexcept;
+    Program(Program&& other) noexcept = default;
+    Program& operator=(Program&& other) noexcept = default;
     Program(const Program&) = delete;
     Program& operator=(const Program&) = delete;
 
     void use() const;
-    unsigned id() const { return program_; }
+    unsigned id() const { return program_.id(); }
     const std::string& label() const { return label_; }
 
     bool hasUniform(std::string_view name) const;
@@ -161,9 +161,8 @@ class Program {
     const UniformSlot* slotFor(std::string_view name);
     const UniformSlot* prepare(std::string_view name, SetterKind kind, std::size_t count);
     void warn(const std::string& message) const;
-    void release() noexcept;
 
-    unsigned program_ = 0;
+    ProgramObject program_;
     std::string label_;
     std::map<std::string, UniformSlot, std::less<>> uniforms_;
     std::set<std::string, std::less<>> reported_;

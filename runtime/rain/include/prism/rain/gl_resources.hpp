@@ -13,6 +13,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
+
+#include "prism/gl/handles.hpp"
 
 namespace prism::rain {
 
@@ -29,25 +32,22 @@ namespace detail {
 void countDispatch();
 }
 
+// Rain's buffers, textures and vertex arrays: prism::gl handles (prism/gl/handles.hpp)
+// that also count themselves in glObjectCounts(). Move-only.
 class GlBuffer {
   public:
-    GlBuffer() = default;
+    GlBuffer() = default;  // owns nothing
     explicit GlBuffer(std::size_t bytes, const void* data = nullptr, unsigned usage = 0x88E8 /* GL_DYNAMIC_DRAW */);
     ~GlBuffer() { release(); }
-    GlBuffer(GlBuffer&& o) noexcept : id_(o.id_), bytes_(o.bytes_) {
-        o.id_ = 0;
-        o.bytes_ = 0;
-    }
+    GlBuffer(GlBuffer&& o) noexcept : buffer_(std::move(o.buffer_)), bytes_(std::exchange(o.bytes_, 0)) {}
     GlBuffer& operator=(GlBuffer&& o) noexcept;
-    GlBuffer(const GlBuffer&) = delete;
-    GlBuffer& operator=(const GlBuffer&) = delete;
-    unsigned id() const { return id_; }
+    unsigned id() const { return buffer_.id(); }
     std::size_t bytes() const { return bytes_; }
-    explicit operator bool() const { return id_ != 0; }
+    explicit operator bool() const { return static_cast<bool>(buffer_); }
 
   private:
     void release() noexcept;
-    unsigned id_ = 0;
+    gl::Buffer buffer_;
     std::size_t bytes_ = 0;
 };
 
@@ -55,30 +55,26 @@ class GlTexture {
   public:
     GlTexture();  // creates the name
     ~GlTexture() { release(); }
-    GlTexture(GlTexture&& o) noexcept : id_(o.id_) { o.id_ = 0; }
+    GlTexture(GlTexture&& o) noexcept = default;
     GlTexture& operator=(GlTexture&& o) noexcept;
-    GlTexture(const GlTexture&) = delete;
-    GlTexture& operator=(const GlTexture&) = delete;
-    unsigned id() const { return id_; }
+    unsigned id() const { return texture_.id(); }
 
   private:
     void release() noexcept;
-    unsigned id_ = 0;
+    gl::Texture texture_;
 };
 
 class GlVertexArray {
   public:
-    GlVertexArray();
+    GlVertexArray();  // creates the name
     ~GlVertexArray() { release(); }
-    GlVertexArray(GlVertexArray&& o) noexcept : id_(o.id_) { o.id_ = 0; }
+    GlVertexArray(GlVertexArray&& o) noexcept = default;
     GlVertexArray& operator=(GlVertexArray&& o) noexcept;
-    GlVertexArray(const GlVertexArray&) = delete;
-    GlVertexArray& operator=(const GlVertexArray&) = delete;
-    unsigned id() const { return id_; }
+    unsigned id() const { return vertexArray_.id(); }
 
   private:
     void release() noexcept;
-    unsigned id_ = 0;
+    gl::VertexArray vertexArray_;
 };
 
 // Uploads an R8 2D texture array (linear filtering, clamped or repeated).

@@ -11,6 +11,7 @@
 #include <span>
 
 #include "prism/geometry/mesh.hpp"
+#include "prism/gl/handles.hpp"
 #include "prism/catalog/shader_catalog.hpp"
 
 namespace prism::render {
@@ -18,18 +19,14 @@ namespace prism::render {
 class GpuMesh {
   public:
     GpuMesh(const geometry::Mesh& mesh, std::span<const catalog::Attribute> contract);
-    ~GpuMesh();
-    GpuMesh(GpuMesh&& other) noexcept;
-    GpuMesh& operator=(GpuMesh&& other) noexcept;
-    GpuMesh(const GpuMesh&) = delete;
-    GpuMesh& operator=(const GpuMesh&) = delete;
 
     void draw() const;
     std::size_t triangleCount() const { return indexCount_ / 3; }
 
   private:
-    void release();
-    unsigned vao_ = 0, positions_ = 0, normals_ = 0, indices_ = 0;
+    // Declared so that the vertex array is deleted first (members go in reverse order).
+    gl::Buffer positions_, normals_, indices_;
+    gl::VertexArray vao_;
     std::size_t indexCount_ = 0;
 };
 

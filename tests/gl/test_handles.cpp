@@ -1,0 +1,75 @@
+// GL object ownership (prism/gl/handles.hpp): every object a Framebuffer or Program makes
+// is counted while alive and deleted with its owner, including after moves and failures.
+#include "gl_test_support.hpp"
+#include "prism/gl/framebuffer.hpp"
+#include "prism/gl/handles.hpp"
+
+namespace {
+
+using prism::gl::ObjectKind;
+
+std::uint64_t live(ObjectKind kind) {
+    return prism::gl::objectCounts().live(kind);
+}
+
+class Handles : public ::testing::Test {
+  protected:
+    void SetUp() override { ctx_ = prism::gl::createContext(prism::gl::Backend::Egl); }
+    std::unique_ptr<prism::gl::Context> ctx_;
+};
+
+// The solid shader of the test catalogue, as raw stage sources.
+prism::gl::ProgramSources solidSources() {
+    const auto& variant = prism::test::kShaders[0].variants[0];
+    prism::gl::ProgramSources sources;
+    sources.label = "solid";
+    for (const auto& stage : variant.stages)
+        sources.stages.push_back({stage.stage, prism::catalog::joinChunks(stage.chunks), {}});
+    return sources;
+}
+
+TEST_F(Handles, CreateCountsAndScopeEndDeletes) {
+    const auto buffersBefore = live(ObjectKind::Buffer);
+    {
+        prism::gl::Buffer a = prism::gl::Buffer::create();
+        EXPECT_NE(a.id(), 0u);
+        EXPECT_EQ(live(ObjectKind::Buffer), buffersBefore + 1);
+        prism::gl::Buffer b = std::move(a);  // the moved-from handle owns nothing
+        EXPECT_EQ(a.id(), 0u);
+        EXPECT_EQ(live(ObjectKind::Buffer), buffersBefore + 1);
+        b.reset();
+        EXPECT_EQ(live(ObjectKind::Buffer), buffersBefore);
+        b = prism::gl::Buffer::create();
+    }
+    EXPECT_EQ(live(ObjectKind::Buffer), buffersBefore);
+}
+
+TEST_F(Handles, FramebufferAndProgramOwnTheirObjects) {
+    const auto before = prism::gl::objectCounts();
+    {
+        prism::gl::Framebuffer fb(16, 16);
+        prism::gl::Framebuffer moved = std::move(fb);
+        EXPECT_EQ(live(ObjectKind::Framebuffer), before.live(ObjectKind::Framebuffer) + 1);
+        EXPECT_EQ(live(ObjectKind::Texture), before.live(ObjectKind::Texture) + 1);
+        EXPECT_EQ(live(ObjectKind::Renderbuffer), before.live(ObjectKind::Renderbuffer) + 1);
+        prism::gl::Program program(solidSources());
+        EXPECT_EQ(live(ObjectKind::Program), before.live(ObjectKind::Program) + 1);
+        EXPECT_EQ(live(ObjectKind::Shader), before.live(ObjectKind::Shader)) << "shaders are deleted after linking";
+    }
+    const auto after = prism::gl::objectCounts();
+    for (int k = 0; k < static_cast<int>(ObjectKind::Count); ++k)
+        EXPECT_EQ(after.liveByKind[k], before.liveByKind[k]) << "kind " << k << " leaked";
+}
+
+TEST_F(Handles, AFailedCompileLeaksNothing) {
+    const auto before = prism::gl::objectCounts();
+    auto sources = solidSources();
+    sources.stages.back().source += "this is not GLSL\n";
+    EXPECT_THROW(prism::gl::Program program(sources), prism::gl::ShaderBuildError);
+    const auto after = prism::gl::objectCounts();
+    EXPECT_EQ(after.live(ObjectKind::Shader), before.live(ObjectKind::Shader));
+    EXPECT_EQ(after.live(ObjectKind::Program), before.live(ObjectKind::Program));
+    EXPECT_GT(after.created(ObjectKind::Shader), before.created(ObjectKind::Shader));
+}
+
+}  // namespace
