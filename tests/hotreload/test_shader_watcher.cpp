@@ -28,6 +28,8 @@ namespace fs = std::filesystem;
 const std::string kSwapRedAndBlue = "#define u_color u_color.bgra\n";  // unicolor then draws (b, g, r)
 const std::string kSyntaxError = "vec3 broken = ;\n";
 const std::string kMissingInclude = "#include <no_such_module.glsl>\n";
+// A misspelled uniform: the driver links it (and draws black), the contract check rejects it.
+const std::string kUniformOutsideContract = "uniform vec4 u_colour;\n#define u_color u_colour\n";
 
 std::string readFile(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
@@ -152,6 +154,7 @@ TEST_F(HotReload, SyntaxErrorKeepsTheOldProgramAndNamesModuleLine) {
     const std::string expected = material_.lexically_normal().string() + ":6:";
     EXPECT_EQ(result.diagnostics[0].rfind(expected, 0), 0u) << result.diagnostics[0];
     EXPECT_NE(result.diagnostics[0].find(": error: "), std::string::npos) << result.diagnostics[0];
+    std::cout << "diagnostic: " << result.diagnostics[0];
     EXPECT_EQ(w.errors(), result.diagnostics);
     EXPECT_EQ(cache_->reloadCount(), 0u);
     EXPECT_EQ(centre(), kRed) << "the last good program keeps drawing";
@@ -167,6 +170,21 @@ TEST_F(HotReload, MissingIncludeKeepsTheOldProgramAndNamesModuleLine) {
     const std::string expected = material_.lexically_normal().string() + ":6:";
     EXPECT_EQ(result.diagnostics[0].rfind(expected, 0), 0u) << result.diagnostics[0];
     EXPECT_NE(result.diagnostics[0].find("no_such_module.glsl"), std::string::npos) << result.diagnostics[0];
+    EXPECT_EQ(centre(), kRed);
+}
+
+// An edit only the build step's checks catch (the driver would link it): rejected the same way.
+TEST_F(HotReload, ContractViolationKeepsTheOldProgram) {
+    auto& w = watcher();
+    ASSERT_EQ(centre(), kRed);
+    editMaterial(kUniformOutsideContract);
+    const auto result = w.pollNow();
+    EXPECT_TRUE(result.reloaded.empty());
+    ASSERT_FALSE(result.diagnostics.empty());
+    const std::string expected = material_.lexically_normal().string() + ":6:";
+    EXPECT_EQ(result.diagnostics[0].rfind(expected, 0), 0u) << result.diagnostics[0];
+    EXPECT_NE(result.diagnostics[0].find("u_colour"), std::string::npos) << result.diagnostics[0];
+    std::cout << "diagnostic: " << result.diagnostics[0];
     EXPECT_EQ(centre(), kRed);
 }
 

@@ -36,6 +36,18 @@ const catalog::Variant* findVariantByName(const catalog::Shader& shader, const s
     return nullptr;
 }
 
+// gl::ShaderBuildError says "prism: cannot compile ... of 'x':" and then the driver's log
+// translated to `path:line:col: error: ...` lines: those lines first, the summary as a note.
+std::string driverDiagnostic(const std::string& what) {
+    const auto newline = what.find('\n');
+    if (newline == std::string::npos) return what + "\n";
+    std::string log = what.substr(newline + 1);
+    if (!log.empty() && log.back() != '\n') log += '\n';
+    std::string summary = what.substr(0, newline);
+    if (summary.rfind("prism: ", 0) == 0) summary.erase(0, 7);
+    return log + "prism: note: the GL driver rejected what glslang accepted: " + summary + "\n";
+}
+
 }  // namespace
 
 ShaderWatcher::ShaderWatcher(ProgramCache& cache, ShaderWatchOptions options)
@@ -159,7 +171,7 @@ void ShaderWatcher::rebuild(const std::string& shader, const std::string& varian
             cache_.reload(shader, variantName, gl::Program(std::move(*outcome.sources)));
             result.reloaded.push_back(request.label);
         } catch (const gl::ShaderBuildError& e) {  // the driver disagreed with glslang
-            errors.push_back(std::string(e.what()) + "\n");
+            errors.push_back(driverDiagnostic(e.what()));
         }
     }
     if (errors.empty()) {
