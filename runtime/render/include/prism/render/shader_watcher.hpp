@@ -75,6 +75,8 @@ class ShaderWatcher {
     std::vector<std::string> errors() const;
     // Every file watched (absolute, normalised), sorted.
     std::vector<std::string> watchedFiles() const;
+    // options.sourceRoot, absolute and normalised (diagnostics name files under it).
+    const std::string& sourceRoot() const { return options_.sourceRoot; }
 
   private:
     struct FileState {
