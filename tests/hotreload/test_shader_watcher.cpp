@@ -129,6 +129,23 @@ TEST_F(HotReload, ModuleEditIsRebuiltAndDrawn) {
     EXPECT_EQ(cache_->reloadCount(), 1u);
 }
 
+// File times tick coarsely (a jiffy or more): a second edit of the same size may keep the
+// first one's mtime. Simulated exactly by setting it back; the content must still count.
+TEST_F(HotReload, SameSizeEditWithTheSameMtimeIsSeen) {
+    auto& w = watcher();
+    ASSERT_EQ(centre(), kRed);
+    editMaterial(kSwapRedAndBlue);
+    const auto firstMtime = fs::last_write_time(material_);
+    ASSERT_EQ(w.pollNow().reloaded.size(), 1u);
+    ASSERT_EQ(centre(), kBlue);
+    const std::string swapRedAndGreen = "#define u_color u_color.grba\n";  // (g, r, b): green
+    ASSERT_EQ(swapRedAndGreen.size(), kSwapRedAndBlue.size());
+    editMaterial(swapRedAndGreen);
+    fs::last_write_time(material_, firstMtime);
+    EXPECT_EQ(w.pollNow().reloaded.size(), 1u);
+    EXPECT_EQ(centre(), (image::Rgba8{0, 255, 0, 255}));
+}
+
 // A variant first built after the edit (from the stale catalogue) is rebuilt on the next poll.
 TEST_F(HotReload, VariantBuiltAfterTheEditIsRebuiltToo) {
     auto& w = watcher();

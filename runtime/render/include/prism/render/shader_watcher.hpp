@@ -17,7 +17,8 @@
 //   directories (default: sourceRoot/modules) and `contractFiles` the --contract files
 //   (default: contract.json in the first module dir).
 // - Files are polled: size and modification time first, then a content hash, so saving
-//   a file unchanged reloads nothing. A shader depends on every file its variants
+//   a file unchanged reloads nothing. A file modified in the last 2 s is hashed at every
+//   check (file times tick coarsely, so a second same-size edit may keep the mtime). A shader depends on every file its variants
 //   include; a contract change affects every shader.
 // - Only variants that have a program in the cache are rebuilt (a variant built later
 //   from the stale catalogue is rebuilt on the next poll).
@@ -84,6 +85,7 @@ class ShaderWatcher {
         std::int64_t mtime = 0;
         std::uintmax_t size = 0;
         std::uint64_t hash = 0;
+        bool racy = false;  // modified so recently that a same-size edit may keep its mtime
     };
     using VariantKey = std::pair<std::string, std::string>;  // shader, variant name
 
