@@ -92,13 +92,16 @@ bool ShaderWatcher::refresh(const std::string& path, FileState& state) {
     }
     const auto size = fs::file_size(path, ec);
     const auto mtime = fs::last_write_time(path, ec).time_since_epoch().count();
-    if (state.exists && size == state.size && mtime == state.mtime) return false;
+    if (state.exists && !state.racy && size == state.size && mtime == state.mtime) return false;
+    const auto readAt = fs::file_time_type::clock::now();
     std::ifstream in(path, std::ios::binary);
     std::ostringstream text;
     text << in.rdbuf();
     const auto hash = fnv1a(text.str());
     const bool changed = !state.exists || hash != state.hash;
-    state = {true, static_cast<std::int64_t>(mtime), size, hash};
+    const auto racyWindow = std::chrono::duration_cast<fs::file_time_type::duration>(std::chrono::seconds(2));
+    const bool racy = mtime >= (readAt - racyWindow).time_since_epoch().count();
+    state = {true, static_cast<std::int64_t>(mtime), size, hash, racy};
     return changed;
 }
 
