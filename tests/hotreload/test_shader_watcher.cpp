@@ -95,6 +95,28 @@ class HotReload : public ::testing::Test {
 
 const image::Rgba8 kRed{255, 0, 0, 255}, kBlue{0, 0, 255, 255};
 
+// The usage example of shader_watcher.hpp and docs/hot-reload.md, verbatim between the
+// markers (CTest hotreload.snippet_matches_docs compares the three).
+TEST_F(HotReload, DocsSnippetRuns) {
+    const std::string sourceTree = root_.string();
+    cache_.reset();
+    // [snippet: hot reload]
+    prism::render::ProgramCache cache(prism::shaders::kCatalog);
+    prism::render::ShaderWatchOptions options;
+    options.sourceRoot = sourceTree;  // the tree the catalogue was built from
+    prism::render::ShaderWatcher watcher(cache, options);
+    prism::render::RenderJob job;
+    job.shader = "phong";
+    job.mesh = prism::render::meshForShader("phong", prism::render::namedMesh("torus"));
+    for (int frame = 0; frame < 3; ++frame) {           // the render loop, on the GL thread
+        for (const auto& d : watcher.poll().diagnostics) std::cerr << d;  // path:line:col: error: ...
+        prism::image::Image8 image = prism::render::renderImage8(cache, job);  // newest good program
+    }
+    // [end snippet]
+    EXPECT_EQ(cache.size(), 1u);
+    EXPECT_TRUE(watcher.errors().empty());
+}
+
 TEST_F(HotReload, WatchesTheModulesAndStagesTheCatalogueWasBuiltFrom) {
     auto& w = watcher();
     const auto files = w.watchedFiles();

@@ -5,11 +5,15 @@
 // then swaps the new programs into the ProgramCache.
 //
 //     prism::render::ProgramCache cache(prism::shaders::kCatalog);
-//     prism::render::ShaderWatcher watcher(cache, {.sourceRoot = "/path/to/prism"});
-//     for (;;) {                                         // the render loop, GL thread
-//         auto result = watcher.poll();                  // checks files every pollInterval
-//         for (const auto& d : result.diagnostics) std::cerr << d;
-//         prism::render::drawJob(cache, job, mesh);      // draws the newest good program
+//     prism::render::ShaderWatchOptions options;
+//     options.sourceRoot = sourceTree;  // the tree the catalogue was built from
+//     prism::render::ShaderWatcher watcher(cache, options);
+//     prism::render::RenderJob job;
+//     job.shader = "phong";
+//     job.mesh = prism::render::meshForShader("phong", prism::render::namedMesh("torus"));
+//     for (int frame = 0; frame < 3; ++frame) {           // the render loop, on the GL thread
+//         for (const auto& d : watcher.poll().diagnostics) std::cerr << d;  // path:line:col: error: ...
+//         prism::image::Image8 image = prism::render::renderImage8(cache, job);  // newest good program
 //     }
 //
 // - The catalogue stores paths relative to prism-shaderc's --base-dir (the source tree
