@@ -95,6 +95,29 @@ class HotReload : public ::testing::Test {
 
 const image::Rgba8 kRed{255, 0, 0, 255}, kBlue{0, 0, 255, 255};
 
+// ProgramCache::reload swaps the program behind references taken from get() earlier.
+TEST_F(HotReload, ReloadSwapsTheProgramBehindEarlierReferences) {
+    gl::Program& program = cache_->get("unicolor");
+    const unsigned before = program.id();
+    const auto& variant = cache_->variantOf("unicolor", {});
+    cache_->reload("unicolor", variant.name, gl::Program(variant, shaders::kCatalog.contractAttributes, "rebuilt"));
+    EXPECT_EQ(&cache_->get("unicolor"), &program);
+    EXPECT_NE(program.id(), before);
+    EXPECT_EQ(program.label(), "rebuilt");
+    EXPECT_EQ(cache_->size(), 1u);
+    EXPECT_EQ(cache_->reloadCount(), 1u);
+    EXPECT_EQ(cache_->builtVariants("unicolor"), std::vector<std::string>{std::string(variant.name)});
+}
+
+TEST_F(HotReload, ReloadRejectsUnknownShaderAndVariantNames) {
+    const auto& variant = cache_->variantOf("unicolor", {});
+    auto program = [&] { return gl::Program(variant, shaders::kCatalog.contractAttributes); };
+    EXPECT_THROW(cache_->reload("unicolour", variant.name, program()), render::UnknownShaderError);
+    EXPECT_THROW(cache_->reload("unicolor", "FOG=2", program()), render::UnknownShaderError);
+    EXPECT_EQ(cache_->size(), 0u);
+    EXPECT_EQ(cache_->reloadCount(), 0u);
+}
+
 // The usage example of shader_watcher.hpp and docs/hot-reload.md, verbatim between the
 // markers (CTest hotreload.snippet_matches_docs compares the three).
 TEST_F(HotReload, DocsSnippetRuns) {
@@ -225,6 +248,30 @@ TEST_F(HotReload, ContractViolationKeepsTheOldProgram) {
     EXPECT_NE(result.diagnostics[0].find("u_colour"), std::string::npos) << result.diagnostics[0];
     std::cout << "diagnostic: " << result.diagnostics[0];
     EXPECT_EQ(centre(), kRed);
+}
+
+// A broken contract stops every rebuild (nothing can be checked against it) and names
+// the contract file's line; fixing it rebuilds what was edited meanwhile.
+TEST_F(HotReload, BrokenContractKeepsProgramsAndNamesTheFile) {
+    auto& w = watcher();
+    ASSERT_EQ(centre(), kRed);
+    const auto contract = root_ / "modules" / "contract.json";
+    const std::string good = readFile(contract);
+    writeFile(contract, "{\n  \"attributes\": [\n    {\"name\": \"a_position\",\n");  // cut off at line 4
+    editMaterial(kSwapRedAndBlue);
+    auto result = w.pollNow();
+    EXPECT_TRUE(result.reloaded.empty());
+    ASSERT_FALSE(result.diagnostics.empty());
+    EXPECT_EQ(result.diagnostics[0].rfind(contract.lexically_normal().string() + ":", 0), 0u) << result.diagnostics[0];
+    EXPECT_NE(result.diagnostics[0].find(": error: "), std::string::npos) << result.diagnostics[0];
+    EXPECT_EQ(centre(), kRed);
+
+    writeFile(contract, good);
+    result = w.pollNow();
+    EXPECT_TRUE(result.diagnostics.empty()) << result.diagnostics.front();
+    EXPECT_EQ(result.reloaded.size(), 1u);
+    EXPECT_TRUE(w.errors().empty());
+    EXPECT_EQ(centre(), kBlue);
 }
 
 // (3) Fixing the error recovers: the fixed program is swapped in and the errors clear.
