@@ -37,4 +37,34 @@ gl::Program& ProgramCache::get(std::string_view shader, const VariantValues& val
     return *it->second;
 }
 
+void ProgramCache::reload(std::string_view shader, std::string_view variantName, gl::Program program) {
+    const auto* s = catalog::findShader(catalog_, shader);
+    if (!s) {
+        (void)variantOf(shader, {});  // throws, listing the known shaders
+        return;
+    }
+    bool known = false;
+    for (const auto& v : s->variants) known = known || v.name == variantName;
+    if (!known) {
+        std::string names;
+        for (const auto& v : s->variants) names += (names.empty() ? "" : "; ") + std::string(v.name);
+        throw UnknownShaderError("shader '" + std::string(shader) + "' has no variant '" + std::string(variantName) +
+                                 "'; generated variants: " + names);
+    }
+    auto key = std::make_pair(std::string(shader), std::string(variantName));
+    auto it = programs_.find(key);
+    if (it == programs_.end())
+        programs_.emplace(std::move(key), std::make_unique<gl::Program>(std::move(program)));
+    else
+        *it->second = std::move(program);  // same object: references from get() follow the swap
+    ++reloads_;
+}
+
+std::vector<std::string> ProgramCache::builtVariants(std::string_view shader) const {
+    std::vector<std::string> names;
+    for (const auto& [key, program] : programs_)
+        if (key.first == shader) names.push_back(key.second);
+    return names;
+}
+
 }  // namespace prism::render

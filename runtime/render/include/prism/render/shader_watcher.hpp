@@ -1,0 +1,113 @@
+// Hot reload of catalogue shaders: watches the stage files and module files a catalogue
+// was built from, and when one changes, re-resolves and re-validates the affected
+// variants in process through the shader tool's library (include resolver, glslang
+// validation, cross-stage interface and contract checks; no prism-shaderc process),
+// then swaps the new programs into the ProgramCache.
+//
+//     prism::render::ProgramCache cache(prism::shaders::kCatalog);
+//     prism::render::ShaderWatchOptions options;
+//     options.sourceRoot = sourceTree;  // the tree the catalogue was built from
+//     prism::render::ShaderWatcher watcher(cache, options);
+//     prism::render::RenderJob job;
+//     job.shader = "phong";
+//     job.mesh = prism::render::meshForShader("phong", prism::render::namedMesh("torus"));
+//     for (int frame = 0; frame < 3; ++frame) {           // the render loop, on the GL thread
+//         for (const auto& d : watcher.poll().diagnostics) std::cerr << d;  // path:line:col: error: ...
+//         prism::image::Image8 image = prism::render::renderImage8(cache, job);  // newest good program
+//     }
+//
+// - The catalogue stores paths relative to prism-shaderc's --base-dir (the source tree
+//   for Prism's own catalogue): `sourceRoot` is that directory. `moduleDirs` are the -I
+//   directories (default: sourceRoot/modules) and `contractFiles` the --contract files
+//   (default: contract.json in the first module dir).
+// - Files are polled: size and modification time first, then a content hash, so saving
+//   a file unchanged reloads nothing. A file modified in the last 2 s is hashed at every
+//   check (file times tick coarsely, so a second same-size edit may keep the mtime). A shader depends on every file its variants
+//   include; a contract change affects every shader.
+// - Only variants that have a program in the cache are rebuilt (a variant built later
+//   from the stale catalogue is rebuilt on the next poll).
+// - On any error (missing include, glslang, interface or contract check, driver link)
+//   the cache keeps the last good program and poll() returns the diagnostics, GCC
+//   style `path:line:col: error: message`; errors() keeps them until a rebuild works.
+// Needs the cache's context current during poll(). Not thread-safe.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "prism/render/program_cache.hpp"
+
+namespace prism::render {
+
+namespace detail {
+class ShaderRebuilder;
+}
+
+struct ShaderWatchOptions {
+    std::string sourceRoot;                  // the catalogue's base dir
+    std::vector<std::string> moduleDirs;     // default {sourceRoot/modules}
+    std::vector<std::string> contractFiles;  // default {moduleDirs[0]/contract.json}
+    std::chrono::milliseconds pollInterval{100};
+    std::vector<std::pair<std::string, std::string>> defines;  // prism-shaderc -D, if it had any
+};
+
+struct WatchPollResult {
+    bool checked = false;                  // false: called again within pollInterval
+    std::vector<std::string> changedFiles;  // whose content changed since the last check
+    std::vector<std::string> reloaded;      // "shader (variant)" now running rebuilt programs
+    std::vector<std::string> diagnostics;   // errors of this poll's rebuilds, one text each
+};
+
+class ShaderWatcher {
+  public:
+    ShaderWatcher(ProgramCache& cache, ShaderWatchOptions options);
+    ~ShaderWatcher();
+    ShaderWatcher(const ShaderWatcher&) = delete;
+    ShaderWatcher& operator=(const ShaderWatcher&) = delete;
+
+    // Checks the files when pollInterval has passed since the last check.
+    WatchPollResult poll();
+    // Checks the files now.
+    WatchPollResult pollNow();
+
+    // Outstanding errors: those of the latest failed rebuilds not yet fixed, in order.
+    std::vector<std::string> errors() const;
+    // Every file watched (absolute, normalised), sorted.
+    std::vector<std::string> watchedFiles() const;
+    // options.sourceRoot, absolute and normalised (diagnostics name files under it).
+    const std::string& sourceRoot() const { return options_.sourceRoot; }
+
+  private:
+    struct FileState {
+        bool exists = false;
+        std::int64_t mtime = 0;
+        std::uintmax_t size = 0;
+        std::uint64_t hash = 0;
+        bool racy = false;  // modified so recently that a same-size edit may keep its mtime
+    };
+    using VariantKey = std::pair<std::string, std::string>;  // shader, variant name
+
+    void watch(const std::string& path);
+    bool refresh(const std::string& path, FileState& state);  // true when the content changed
+    void rebuild(const std::string& shader, const std::string& variant, WatchPollResult& result,
+                 std::set<std::string>& seenDiagnostics);
+
+    ProgramCache& cache_;
+    ShaderWatchOptions options_;
+    std::unique_ptr<detail::ShaderRebuilder> rebuilder_;
+    std::map<std::string, FileState> files_;                    // watched path -> last state
+    std::map<std::string, std::set<std::string>> dependencies_;  // shader -> files
+    std::set<std::string> editedShaders_;                        // catalogue text is stale
+    std::set<VariantKey> current_;                               // rebuilt since the last edit
+    std::map<VariantKey, std::vector<std::string>> errors_;     // failing variants
+    std::vector<std::string> contractErrors_;
+    std::chrono::steady_clock::time_point lastCheck_{};
+};
+
+}  // namespace prism::render
