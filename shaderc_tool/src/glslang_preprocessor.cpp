@@ -174,7 +174,8 @@ class RecordingIncluder final : public glslang::TShader::Includer {
         file.canonical = canonical;
         file.chain = std::move(chain);
         file.lines = splitLogicalLines(text);
-        auto limitErrors = checkPreprocessorLimits(display, file.lines, macroSizes_);
+        auto limitErrors = checkConditionalStructure(display, file.lines);
+        for (auto& e : checkPreprocessorLimits(display, file.lines, macroSizes_)) limitErrors.push_back(std::move(e));
         for (auto& e : limitErrors) {
             e.includedFrom = file.chain;
             hasLimitErrors_ = true;
@@ -329,6 +330,9 @@ void addGlslangErrors(const std::string& log, const RecordingIncluder& includer,
         if (!std::regex_match(text, m, located)) continue;
         std::string message = m[3];
         while (!message.empty() && message.back() == ' ') message.pop_back();
+        // Every file's conditionals balance (checked before), so this only follows
+        // another error.
+        if (message.ends_with("missing #endif")) continue;
         std::smatch t;
         if (std::regex_match(message, t, token))
             message = t[1].length() ? "'" + t[1].str() + "': " + t[2].str() : t[2].str();

@@ -176,34 +176,29 @@ std::string writeShaders(std::ostringstream& out, ArrayEmitter& arrays, const Ca
     return arrays.array("prism::catalog::Shader", "shaders", entries, false);
 }
 
+// The text is generated code, laid out as the header shows it: not for clang-format.
+// clang-format off
 void writeLookups(std::ostringstream& out) {
     out << R"cpp(
-        constexpr const prism::catalog::Shader& shaderInfo(ShaderId id) {
-            return kCatalog.shaders[static_cast<std::size_t>(id)];
-        }
-        constexpr const prism::catalog::Module& moduleInfo(ModuleId id) {
-            return kCatalog.modules[static_cast<std::size_t>(id)];
-        }
-        constexpr std::string_view name(ShaderId id) {
-            return shaderInfo(id).name;
-        }
-        constexpr std::string_view name(ModuleId id) {
-            return moduleInfo(id).name;
-        }
+constexpr const prism::catalog::Shader& shaderInfo(ShaderId id) { return kCatalog.shaders[static_cast<std::size_t>(id)]; }
+constexpr const prism::catalog::Module& moduleInfo(ModuleId id) { return kCatalog.modules[static_cast<std::size_t>(id)]; }
+constexpr std::string_view name(ShaderId id) { return shaderInfo(id).name; }
+constexpr std::string_view name(ModuleId id) { return moduleInfo(id).name; }
 
-        constexpr std::optional<ShaderId> shaderIdFromName(std::string_view n) {
-            for (std::size_t i = 0; i < kShaderCount; ++i)
-                if (kCatalog.shaders[i].name == n) return static_cast<ShaderId>(i);
-            return std::nullopt;
-        }
-
-        constexpr std::optional<ModuleId> moduleIdFromName(std::string_view n) {
-            for (std::size_t i = 0; i < kModuleCount; ++i)
-                if (kCatalog.modules[i].name == n) return static_cast<ModuleId>(i);
-            return std::nullopt;
-        }
-    )cpp";
+constexpr std::optional<ShaderId> shaderIdFromName(std::string_view n) {
+    for (std::size_t i = 0; i < kShaderCount; ++i)
+        if (kCatalog.shaders[i].name == n) return static_cast<ShaderId>(i);
+    return std::nullopt;
 }
+
+constexpr std::optional<ModuleId> moduleIdFromName(std::string_view n) {
+    for (std::size_t i = 0; i < kModuleCount; ++i)
+        if (kCatalog.modules[i].name == n) return static_cast<ModuleId>(i);
+    return std::nullopt;
+}
+)cpp";
+}
+// clang-format on
 
 }  // namespace
 

@@ -197,6 +197,43 @@ const std::vector<MacroSizeTable::Definition>* MacroSizeTable::find(const std::s
     return found == definitions_.end() ? nullptr : &found->second;
 }
 
+std::vector<Diagnostic> checkConditionalStructure(const std::string& file, const std::vector<LogicalLine>& lines) {
+    struct Group {
+        std::string directive;
+        int line = 0;
+        int elseLine = 0;
+    };
+    std::vector<Group> open;
+    std::vector<Diagnostic> problems;
+    for (const LogicalLine& line : lines) {
+        const auto directive = parseDirective(line);
+        if (!directive) continue;
+        const std::string& name = directive->name;
+        const std::size_t at = line.code.find('#');
+        const int column = at == std::string::npos ? 1 : static_cast<int>(at) + 1;
+        if (name == "if" || name == "ifdef" || name == "ifndef") {
+            open.push_back({name, line.firstLine, 0});
+        } else if (name == "else" || name == "elif" || name == "endif") {
+            if (open.empty()) {
+                problems.push_back(makeError(file, line.firstLine, column, "#" + name + " without #if"));
+            } else if (name == "endif") {
+                open.pop_back();
+            } else if (open.back().elseLine) {
+                problems.push_back(makeError(file, line.firstLine, column,
+                                             "#" + name + " after #else (the #else is at line " +
+                                                 std::to_string(open.back().elseLine) + ")"));
+            } else if (name == "else") {
+                open.back().elseLine = line.firstLine;
+            }
+        }
+    }
+    if (!open.empty())
+        problems.push_back(makeError(file, open.back().line, 1,
+                                     "unterminated #" + open.back().directive +
+                                         ": no matching #endif before the end of the file"));
+    return problems;
+}
+
 std::vector<Diagnostic> checkPreprocessorLimits(const std::string& file, const std::vector<LogicalLine>& lines,
                                                 MacroSizeTable& macros, const PreprocessorLimits& limits) {
     std::vector<Diagnostic> problems;

@@ -50,6 +50,11 @@ class MacroSizeTable {
     mutable std::map<std::string, std::uint64_t> objectSizes_;  // cleared by every define
 };
 
+// Each file's #if/#ifdef/#ifndef ... #endif must balance on its own (as in C): an
+// unterminated group is reported at its opening line, a stray #else/#elif/#endif at
+// its own. This is lexical: no condition is evaluated.
+std::vector<Diagnostic> checkConditionalStructure(const std::string& file, const std::vector<LogicalLine>& lines);
+
 // Checks `lines` of `file` in order, adding its #defines to `macros` as it goes.
 // Returns one error per line over a limit.
 std::vector<Diagnostic> checkPreprocessorLimits(const std::string& file, const std::vector<LogicalLine>& lines,

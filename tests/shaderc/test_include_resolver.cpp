@@ -107,7 +107,7 @@ TEST(IncludeResolver, CycleIsAnErrorWithTheChain) {
     const auto result = resolve(reader, "main.frag");
     EXPECT_LT(std::chrono::steady_clock::now() - started, std::chrono::seconds(2));
     const Diagnostic& error = onlyError(result);
-    EXPECT_EQ(error.message, "include cycle: a.glsl -> b.glsl -> a.glsl");
+    EXPECT_TRUE(contains(error.message, "include cycle: a.glsl -> b.glsl -> a.glsl;"));
     EXPECT_EQ(error.file, "b.glsl");
     EXPECT_EQ(error.line, 3);
     EXPECT_EQ(error.column, 10);
@@ -116,10 +116,11 @@ TEST(IncludeResolver, CycleIsAnErrorWithTheChain) {
 
 TEST(IncludeResolver, SelfIncludeIsACycle) {
     MemoryReader reader{{"main.frag", "#include \"self.glsl\"\n"}, {"self.glsl", "#include \"self.glsl\"\n"}};
-    EXPECT_EQ(onlyError(resolve(reader, "main.frag")).message, "include cycle: self.glsl -> self.glsl");
+    EXPECT_TRUE(contains(onlyError(resolve(reader, "main.frag")).message, "include cycle: self.glsl -> self.glsl;"));
 
     MemoryReader stageOnly{{"main.frag", "#include \"main.frag\"\n"}};
-    EXPECT_EQ(onlyError(resolve(stageOnly, "main.frag")).message, "include cycle: main.frag -> main.frag");
+    EXPECT_TRUE(
+        contains(onlyError(resolve(stageOnly, "main.frag")).message, "include cycle: main.frag -> main.frag;"));
 }
 
 TEST(IncludeResolver, CycleCheckedBeforeIncludeOnce) {
@@ -134,13 +135,24 @@ std::string chainFileName(int index) {
     return std::string("f").append(std::to_string(index)).append(".glsl");
 }
 
-TEST(IncludeResolver, DepthIsLimited) {
-    MemoryReader reader{{"main.frag", "#include \"f0.glsl\"\n"}};
-    for (int i = 0; i < 100; ++i)
+// main.frag -> f1 -> ... -> f<depth>: `depth` files nested below the stage.
+MemoryReader chainOfDepth(int depth) {
+    MemoryReader reader{{"main.frag", "#include \"f1.glsl\"\nvoid main() {}\n"}};
+    for (int i = 1; i < depth; ++i)
         reader.add(chainFileName(i), std::string("#include \"").append(chainFileName(i + 1)).append("\"\n"));
-    reader.add(chainFileName(100), "float deepest;\n");
-    const Diagnostic& error = onlyError(resolve(reader, "main.frag"));
-    EXPECT_TRUE(contains(error.message, "nested more than 64 deep"));
+    reader.add(chainFileName(depth), "float deepest;\n");
+    return reader;
+}
+
+TEST(IncludeResolver, DepthLimitIs256Files) {
+    const auto deepest = resolve(chainOfDepth(256), "main.frag");  // glslang takes 256 too
+    ASSERT_TRUE(deepest.ok) << allMessages(deepest.diagnostics);
+    EXPECT_TRUE(contains(deepest.stage.text, "float deepest;"));
+
+    const Diagnostic& error = onlyError(resolve(chainOfDepth(257), "main.frag"));
+    EXPECT_TRUE(contains(error.message, "nested more than 256 files deep (limit): main.frag -> f1.glsl"));
+    EXPECT_TRUE(contains(error.message, "... (248 more) -> f253.glsl -> f254.glsl -> f255.glsl -> f256.glsl -> f257.glsl"));
+    EXPECT_EQ(error.file, "f256.glsl");
 }
 
 // ---- missing and malformed includes ----------------------------------------------------
@@ -154,7 +166,7 @@ TEST(IncludeResolver, MissingIncludeNamesFileLineAndSearchedDirs) {
     EXPECT_EQ(error.line, 3);
     EXPECT_EQ(error.column, 12);
     EXPECT_TRUE(contains(error.message, "\"lighting.glsl\""));
-    const auto own = error.message.find("shaders (the including file's directory)");
+    const auto own = error.message.find("shaders (the including file's folder)");
     const auto first = error.message.find("modules");
     const auto second = error.message.find("third_party/glsl");
     EXPECT_NE(own, std::string::npos);
@@ -169,8 +181,8 @@ TEST(IncludeResolver, MissingAngleIncludeDoesNotSearchIncluderDir) {
     ResolveOptions options;
     options.includeDirs = {"inc"};
     const Diagnostic& error = onlyError(resolve(reader, "shaders/main.frag", options));
-    EXPECT_TRUE(contains(error.message, "searched: inc;"));
-    EXPECT_TRUE(lacks(error.message, "including file's directory"));
+    EXPECT_TRUE(contains(error.message, "searched: inc (-I);"));
+    EXPECT_TRUE(lacks(error.message, "including file's folder"));
 }
 
 TEST(IncludeResolver, MalformedIncludeIsAnErrorAtItsLine) {
@@ -289,7 +301,7 @@ TEST(IncludeResolver, UnbalancedEndifAndElseAreErrors) {
 TEST(IncludeResolver, DivisionByZeroInConditionIsAnError) {
     MemoryReader reader{{"main.frag", "#if 4 / (2 - 2)\n#endif\n"}};
     const Diagnostic& error = onlyError(resolve(reader, "main.frag"));
-    EXPECT_EQ(error.message, "#if: division by zero");
+    EXPECT_TRUE(contains(error.message, "division by 0"));  // glslang's own words
     EXPECT_EQ(error.line, 1);
 }
 
