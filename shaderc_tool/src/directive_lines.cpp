@@ -129,6 +129,16 @@ std::vector<std::string> splitWhitespace(std::string_view text) {
     return words;
 }
 
+std::vector<std::string> blankedDirective(const LogicalLine& line) {
+    std::vector<std::string> lines(line.physical.size());
+    if (line.startsInComment) {
+        const std::size_t hash = line.code.find('#');
+        lines.front() = line.physical.front().substr(0, std::min(hash, line.physical.front().size()));
+    }
+    if (line.endsInComment) lines.back() += " /*";
+    return lines;
+}
+
 bool isIdentifier(std::string_view text) {
     return !text.empty() && isIdentifierStart(text.front()) && std::all_of(text.begin(), text.end(), isIdentifierChar);
 }

@@ -32,6 +32,12 @@ struct Directive {
 // The directive on `line`, or nullopt when the line is not a preprocessor directive.
 std::optional<Directive> parseDirective(const LogicalLine& line);
 
+// The physical lines that replace a directive line dropped from the output: empty,
+// except that the end of a comment begun on an earlier line ("... */" before the '#')
+// is kept and a comment that goes on below is reopened (" /*"), so the lines around
+// stay what they were.
+std::vector<std::string> blankedDirective(const LogicalLine& line);
+
 bool isIdentifier(std::string_view text);
 std::string_view trim(std::string_view text);
 std::vector<std::string> splitWhitespace(std::string_view text);

@@ -4,6 +4,8 @@
 #include "include_resolver.hpp"
 
 #include <algorithm>
+#include <array>
+#include <regex>
 #include <memory>
 #include <optional>
 #include <set>
@@ -91,6 +93,39 @@ std::optional<GlslVersion> leadingVersion(const std::string& path, const SourceR
     return std::nullopt;
 }
 
+// The macros of the include extensions: glslang defines them while it preprocesses
+// (include support is always on), but the driver-safe output cannot define a GL_ name.
+constexpr std::array<std::string_view, 2> kIncludeExtensionMacros = {"GL_GOOGLE_include_directive",
+                                                                     "GL_GOOGLE_cpp_style_line_directive"};
+
+// A conditional line testing an include-extension macro, rewritten so the driver takes
+// the branch glslang took: `#ifdef M` -> `#if 1`, `#ifndef M` -> `#if 0`, and in
+// #if/#elif `defined(M)`, `defined M` and `M` -> 1. nullopt when nothing to rewrite.
+std::optional<std::vector<std::string>> withIncludeMacrosDefined(const LogicalLine& line, const Directive& directive) {
+    const bool condition = directive.name == "if" || directive.name == "elif" || directive.name == "ifdef" ||
+                           directive.name == "ifndef";
+    if (!condition || line.physical.size() != 1) return std::nullopt;
+    std::string text = line.physical.front();
+    bool changed = false;
+    for (const auto macro : kIncludeExtensionMacros) {
+        if (text.find(macro) == std::string::npos) continue;
+        changed = true;
+        const std::string name(macro);
+        if (directive.name == "ifdef" || directive.name == "ifndef") {
+            if (trim(directive.argument) != macro) return std::nullopt;
+            const std::size_t hash = line.code.find('#');
+            text = text.substr(0, hash) + (directive.name == "ifdef" ? "#if 1" : "#if 0") +
+                   (line.endsInComment ? " /*" : "");
+            break;
+        }
+        text = std::regex_replace(text, std::regex(R"(defined\s*\(\s*)" + name + R"(\s*\))"), "1");
+        text = std::regex_replace(text, std::regex(R"(defined\s+)" + name + R"(\b)"), "1");
+        text = std::regex_replace(text, std::regex(R"(\b)" + name + R"(\b)"), "1");
+    }
+    if (!changed) return std::nullopt;
+    return std::vector<std::string>{text};
+}
+
 // Walks the files of one preprocessing run in include order and writes the output.
 class Flattener {
   public:
@@ -124,9 +159,13 @@ class Flattener {
             const bool reached = file.reached.contains(line.firstLine);
             if (directive->name == "include") {
                 if (auto child = file.includes.find(line.firstLine); child != file.includes.end()) {
-                    body_.emplace_back(LineMarker{1, child->second});  // in place of the #include line
+                    // In place of the #include line, unless a comment ends or begins on it.
+                    if (line.startsInComment) body_.push_back(blankedDirective(line).front());
+                    body_.emplace_back(LineMarker{1, child->second});
                     walk(run_.files[child->second]);
-                    body_.emplace_back(LineMarker{line.firstLine + static_cast<int>(line.physical.size()), file.number});
+                    const int next = line.firstLine + static_cast<int>(line.physical.size());
+                    body_.emplace_back(LineMarker{line.endsInComment ? next - 1 : next, file.number});
+                    if (line.endsInComment) body_.emplace_back(std::string("/*"));
                 } else {
                     emitBlank(line);
                 }
@@ -138,6 +177,8 @@ class Flattener {
                 if (reached) handlePragma(file, line, *directive);
             } else if (isPragmaOnce(*directive) || isIncludeExtension(*directive)) {
                 emitBlank(line);
+            } else if (auto rewritten = withIncludeMacrosDefined(line, *directive)) {
+                body_.insert(body_.end(), rewritten->begin(), rewritten->end());
             } else {
                 emitCopy(line);
             }
@@ -198,7 +239,10 @@ class Flattener {
     }
 
     void emitCopy(const LogicalLine& line) { body_.insert(body_.end(), line.physical.begin(), line.physical.end()); }
-    void emitBlank(const LogicalLine& line) { body_.insert(body_.end(), line.physical.size(), std::string()); }
+    void emitBlank(const LogicalLine& line) {
+        const auto lines = blankedDirective(line);
+        body_.insert(body_.end(), lines.begin(), lines.end());
+    }
 
     // Line 1 the version, then the -D defines, then the body. Since GLSL 3.30 (and in
     // GLSL ES) the line after `#line N` is line N; before 3.30 it is line N + 1.
@@ -306,7 +350,7 @@ class ModuleScanner {
             const auto directive = parseDirective(line);
             const bool blank = directive && (directive->name == "include" || directive->name == "version" ||
                                              isPragmaOnce(*directive) || isIncludeExtension(*directive));
-            for (const auto& physical : line.physical) module.text += (blank ? std::string() : physical) + "\n";
+            for (const auto& physical : blank ? blankedDirective(line) : line.physical) module.text += physical + "\n";
         }
         for (const auto& found : file.found) module.includes.push_back(found.display);
         module.description = leadingComment(file.lines);
