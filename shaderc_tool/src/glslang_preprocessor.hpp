@@ -15,7 +15,7 @@
 //     the file has an active `#pragma once` or an include guard (#ifndef G / #define G
 //     ... #endif around the whole file) whose macro glslang has defined by then.
 // Before glslang reads a file, preprocessor_limits.hpp bounds its #if expressions and
-// macro expansions. glslang's preprocessor errors (#error, malformed #if, 64 nested
+// macro expansions. glslang's preprocessor errors (#error, malformed #if, more than 65 nested
 // #if groups ...) come back at the file's own line.
 //
 // How the lines are followed: each file is handed to glslang with its line count

@@ -7,7 +7,7 @@
 //   - macro expansions (calls and macros inside macros) nest at most 256 deep.
 // The expansion sizes are upper bounds: every #define of every file read so far
 // counts, in any branch and even after an #undef, so an error never depends on
-// which branch a file takes. (glslang's own limits, such as 64 nested #if groups,
+// which branch a file takes. (glslang's own limits, such as 65 nested #if groups,
 // are reported by glslang.)
 //
 //   MacroSizeTable macros;

@@ -722,3 +722,107 @@ INSTANTIATE_TEST_SUITE_P(Versions, IncludeResolverLineNumbers, ::testing::Values
 
 }  // namespace
 }  // namespace prism::shaderc
+
+namespace prism::shaderc {
+namespace {
+
+// ---- issue 17: guards, #pragma once, reinclude, glslang-style search ------------------
+
+TEST(IncludeRules, PragmaOnceReentryIsNoCycle) {
+    MemoryReader reader{{"main.frag", "#include \"a.glsl\"\nvoid main() {}\n"},
+                        {"a.glsl", "#pragma once\n#include \"b.glsl\"\nfloat fa() { return fb(); }\n"},
+                        {"b.glsl", "#include \"a.glsl\"\nfloat fb() { return 1.0; }\n"}};
+    const auto result = resolve(reader, "main.frag");
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    EXPECT_LT(result.stage.text.find("float fb()"), result.stage.text.find("float fa()"));
+}
+
+TEST(IncludeRules, GuardedReentryIsNoCycleButAnUndefinedGuardIs) {
+    MemoryReader guarded{{"main.frag", "#include \"self.glsl\"\nvoid main() {}\n"},
+                         {"self.glsl", "#ifndef SELF\n#define SELF\n#include \"self.glsl\"\nint s;\n#endif\n"}};
+    const auto ok = resolve(guarded, "main.frag");
+    ASSERT_TRUE(ok.ok) << allMessages(ok.diagnostics);
+    EXPECT_EQ(countOf(ok.stage.text, "int s;"), 1u);
+
+    // Guard-shaped, but the macro is gone again when the file re-enters: glslang would
+    // recurse for ever, so it stays a cycle.
+    MemoryReader undefined{{"main.frag", "#include \"self.glsl\"\n"},
+                           {"self.glsl", "#ifndef SELF\n#define SELF\n#undef SELF\n#include \"self.glsl\"\n#endif\n"}};
+    const Diagnostic& error = onlyError(resolve(undefined, "main.frag"));
+    EXPECT_TRUE(contains(error.message, "include cycle: self.glsl -> self.glsl;"));
+    EXPECT_EQ(error.line, 4);
+}
+
+TEST(IncludeRules, ReincludeOptsOutOfIncludeOnce) {
+    MemoryReader reader{
+        {"main.frag", "#define F red\n#include \"t.glsl\"\n#define F green\n#include \"t.glsl\"\n#include \"t.glsl\"\n"},
+        {"t.glsl", "#pragma prism reinclude\nfloat F;\n#undef F\n"}};
+    const auto result = resolve(reader, "main.frag");
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    EXPECT_EQ(countOf(result.stage.text, "float F;"), 3u);
+    EXPECT_EQ(result.stage.files.size(), 4u);
+    EXPECT_TRUE(lacks(result.stage.text, "#pragma prism"));
+
+    MemoryReader withoutPragma{{"main.frag", "#include \"t.glsl\"\n#include \"t.glsl\"\n"}, {"t.glsl", "float F;\n"}};
+    EXPECT_EQ(countOf(resolve(withoutPragma, "main.frag").stage.text, "float F;"), 1u);
+}
+
+TEST(IncludeRules, SelfIncludingReincludeStopsAtTheDepthLimit) {
+    MemoryReader reader{{"main.frag", "#include \"t.glsl\"\n"}, {"t.glsl", "#pragma prism reinclude\n#include \"t.glsl\"\n"}};
+    EXPECT_TRUE(contains(onlyError(resolve(reader, "main.frag")).message, "nested more than 256 files deep"));
+}
+
+TEST(IncludeRules, QuotedSearchWalksUpTheIncludeChainBeforeIncludeDirs) {
+    MemoryReader reader{{"s/main.frag", "#include \"sub/mid.glsl\"\n"},
+                        {"s/sub/mid.glsl", "#include \"deeper/leaf.glsl\"\n"},
+                        {"s/sub/deeper/leaf.glsl", "#include \"common.glsl\"\n"},
+                        {"s/sub/common.glsl", "int from_mid_folder;\n"},
+                        {"s/common.glsl", "int from_stage_folder;\n"},
+                        {"inc/common.glsl", "int from_include_dir;\n"}};
+    ResolveOptions options;
+    options.includeDirs = {"inc"};
+    auto result = resolve(reader, "s/main.frag", options);
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    EXPECT_TRUE(contains(result.stage.text, "from_mid_folder"));  // the nearest folder up the chain
+
+    MemoryReader noMid{{"s/main.frag", "#include \"sub/mid.glsl\"\n"},
+                         {"s/sub/mid.glsl", "#include \"deeper/leaf.glsl\"\n"},
+                         {"s/sub/deeper/leaf.glsl", "#include \"common.glsl\"\n"},
+                         {"s/common.glsl", "int from_stage_folder;\n"},
+                       {"inc/common.glsl", "int from_include_dir;\n"}};
+    result = resolve(noMid, "s/main.frag", options);
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    EXPECT_TRUE(contains(result.stage.text, "from_stage_folder"));
+}
+
+TEST(IncludeRules, LeadingSlashIsRelativeToIncludeDirsThenBaseDirNeverTheRoot) {
+    MemoryReader reader{{"s/main.frag", "#include \"/lib/a.glsl\"\n"},
+                        {"/lib/a.glsl", "int filesystem_root;\n"},
+                        {"root/lib/a.glsl", "int under_include_dir;\n"},
+                        {"base/lib/a.glsl", "int under_base_dir;\n"}};
+    ResolveOptions options;
+    options.includeDirs = {"root"};
+    options.baseDir = "base";
+    auto result = resolve(reader, "s/main.frag", options);
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    EXPECT_TRUE(contains(result.stage.text, "under_include_dir"));
+
+    options.includeDirs.clear();
+    result = resolve(reader, "s/main.frag", options);
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    EXPECT_TRUE(contains(result.stage.text, "under_base_dir"));
+
+    options.baseDir.clear();
+    const Diagnostic& error = onlyError(resolve(reader, "s/main.frag", options));
+    EXPECT_TRUE(contains(error.message, "cannot find include \"/lib/a.glsl\""));
+}
+
+TEST(IncludeRules, DirectiveAfterMultiLineCommentIsFollowedAndTheCommentStaysClosed) {
+    MemoryReader reader{{"main.frag", "/* a\n b */ #include \"x.glsl\"\nint after;\n"}, {"x.glsl", "int x;\n"}};
+    const auto result = resolve(reader, "main.frag");
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    EXPECT_TRUE(contains(result.stage.text, " b */ \n#line 1 1\nint x;\n#line 3 0\nint after;"));
+}
+
+}  // namespace
+}  // namespace prism::shaderc
