@@ -102,12 +102,26 @@ ModuleIndex indexModules(const Options& o, const std::vector<ShaderInput>& shade
     }
     std::sort(named.begin(), named.end());
 
-    ModuleIndex index;
+    // Scans are independent: spread them over -j threads, then report in name order.
     ResolveOptions ro{o.includeDirs, o.defines, {}, o.baseDir};
+    std::vector<ModuleScanResult> scans(named.size());
+    std::atomic<std::size_t> next{0};
+    auto worker = [&] {
+        for (std::size_t i; (i = next.fetch_add(1)) < named.size();)
+            scans[i] = scanModule(files[named[i].second].path, ro, reader);
+    };
+    const std::size_t threads = std::clamp<std::size_t>(static_cast<std::size_t>(o.jobs), 1, std::max<std::size_t>(1, named.size() / 64));
+    std::vector<std::thread> pool;
+    for (std::size_t i = 1; i < threads; ++i) pool.emplace_back(worker);
+    worker();
+    for (auto& thread : pool) thread.join();
+
+    ModuleIndex index;
     std::vector<std::vector<std::string>> includes;
-    for (const auto& [identifier, fileIndex] : named) {
-        const ModuleFile& file = files[fileIndex];
-        auto scan = scanModule(file.path, ro, reader);
+    for (std::size_t n = 0; n < named.size(); ++n) {
+        const std::string& identifier = named[n].first;
+        const ModuleFile& file = files[named[n].second];
+        auto& scan = scans[n];
         const bool isUsed = used.contains(file.canonical);
         for (auto& d : scan.diagnostics) {
             if (d.severity != Severity::Error) {

@@ -40,42 +40,6 @@ bool isProbed(const Directive& d) {
     return d.name == "version" || isPragmaOnce(d) || isPrismPragma(d);
 }
 
-// The guard macro G of a file shaped `#ifndef G` / `#define G` ... `#endif` (or
-// `#if !defined(G)`), with only blank lines and comments outside; "" when none.
-std::string includeGuard(const std::vector<LogicalLine>& lines) {
-    std::vector<std::pair<const LogicalLine*, Directive>> directives;
-    for (const auto& line : lines) {
-        if (auto d = parseDirective(line)) {
-            directives.emplace_back(&line, std::move(*d));
-        } else if (!trim(line.code).empty()) {
-            if (directives.empty()) return {};  // code before the guard
-            directives.emplace_back(&line, Directive{"<code>", ""});
-        }
-    }
-    if (directives.size() < 3) return {};
-    std::string guard;
-    const Directive& first = directives[0].second;
-    if (first.name == "ifndef") {
-        guard = std::string(trim(first.argument));
-    } else if (first.name == "if") {
-        static const std::regex notDefined(R"(^!\s*defined\s*(?:\(\s*(\w+)\s*\)|(\w+))$)");
-        std::smatch m;
-        const std::string argument(trim(first.argument));
-        if (std::regex_match(argument, m, notDefined)) guard = m[1].matched ? m[1].str() : m[2].str();
-    }
-    if (!isIdentifier(guard)) return {};
-    const auto defineWords = splitWhitespace(directives[1].second.argument);
-    if (directives[1].second.name != "define" || defineWords.empty() || defineWords[0] != guard) return {};
-    int depth = 0;
-    for (std::size_t i = 0; i < directives.size(); ++i) {
-        const std::string& name = directives[i].second.name;
-        if (name == "if" || name == "ifdef" || name == "ifndef") ++depth;
-        if (name == "endif" && --depth == 0) return i + 1 == directives.size() ? guard : std::string();
-        if (depth == 0) return {};  // something outside the guarded group
-    }
-    return {};
-}
-
 // The text glslang reads for `lines`: the same lines, with #include targets prefixed
 // by their line ("L:") and the probed directives turned into `#include "L?"`.
 std::string textForGlslang(const std::vector<LogicalLine>& lines) {
@@ -182,7 +146,7 @@ class RecordingIncluder final : public glslang::TShader::Includer {
             run_.diagnostics.push_back(std::move(e));
         }
         FileFlags& flags = flags_[canonical];
-        if (!flags.entered) flags.guard = includeGuard(file.lines);
+        if (!flags.entered) flags.guard = includeGuardOf(file.lines);
         flags.entered = true;
         texts_.push_back(limitErrors.empty() ? textForGlslang(file.lines) : std::string());
         stack_.push_back(file.number);
@@ -346,6 +310,42 @@ void addGlslangErrors(const std::string& log, const RecordingIncluder& includer,
 }
 
 }  // namespace
+
+// The guard macro G of a file shaped `#ifndef G` / `#define G` ... `#endif` (or
+// `#if !defined(G)`), with only blank lines and comments outside; "" when none.
+std::string includeGuardOf(const std::vector<LogicalLine>& lines) {
+    std::vector<std::pair<const LogicalLine*, Directive>> directives;
+    for (const auto& line : lines) {
+        if (auto d = parseDirective(line)) {
+            directives.emplace_back(&line, std::move(*d));
+        } else if (!trim(line.code).empty()) {
+            if (directives.empty()) return {};  // code before the guard
+            directives.emplace_back(&line, Directive{"<code>", ""});
+        }
+    }
+    if (directives.size() < 3) return {};
+    std::string guard;
+    const Directive& first = directives[0].second;
+    if (first.name == "ifndef") {
+        guard = std::string(trim(first.argument));
+    } else if (first.name == "if") {
+        static const std::regex notDefined(R"(^!\s*defined\s*(?:\(\s*(\w+)\s*\)|(\w+))$)");
+        std::smatch m;
+        const std::string argument(trim(first.argument));
+        if (std::regex_match(argument, m, notDefined)) guard = m[1].matched ? m[1].str() : m[2].str();
+    }
+    if (!isIdentifier(guard)) return {};
+    const auto defineWords = splitWhitespace(directives[1].second.argument);
+    if (directives[1].second.name != "define" || defineWords.empty() || defineWords[0] != guard) return {};
+    int depth = 0;
+    for (std::size_t i = 0; i < directives.size(); ++i) {
+        const std::string& name = directives[i].second.name;
+        if (name == "if" || name == "ifdef" || name == "ifndef") ++depth;
+        if (name == "endif" && --depth == 0) return i + 1 == directives.size() ? guard : std::string();
+        if (depth == 0) return {};  // something outside the guarded group
+    }
+    return {};
+}
 
 PreprocessRun preprocessWithGlslang(const std::string& path, const ResolveOptions& options,
                                     const GlslVersion& version, const SourceReader& reader) {

@@ -68,6 +68,10 @@ struct PreprocessRun {
     bool ok = false;
 };
 
+// The macro G of an include guard around the whole file (`#ifndef G` or
+// `#if !defined(G)`, then `#define G`, ... `#endif` last); "" when there is none.
+std::string includeGuardOf(const std::vector<LogicalLine>& lines);
+
 // `version` is the one glslang is told to use (the stage's #version lines are probes).
 PreprocessRun preprocessWithGlslang(const std::string& path, const ResolveOptions& options,
                                     const GlslVersion& version, const SourceReader& reader);

@@ -13,6 +13,7 @@
 #include <variant>
 
 #include "include_search.hpp"
+#include "preprocessor_limits.hpp"
 
 namespace prism::shaderc {
 namespace {
@@ -340,20 +341,45 @@ class ModuleScanner {
     ModuleScanResult scan(const std::string& modulePath) {
         ModuleSource& module = result_.module;
         module.path = joinPath("", modulePath);
-        const GlslVersion version = parseVersionDirective(options_.defaultVersion).value_or(GlslVersion{330, "core"});
-        PreprocessRun run = preprocessWithGlslang(module.path, options_, version, reader_);
-        result_.diagnostics = std::move(run.diagnostics);
-        if (run.files.empty()) return std::move(result_);
-        const EnteredFile& file = run.files.front();
-        module.canonical = file.canonical;
-        for (const auto& line : file.lines) {
+        const auto canonical = reader_.canonical(module.path);
+        const auto text = canonical ? reader_.read(module.path) : std::nullopt;
+        if (!text) {
+            result_.diagnostics.push_back(
+                makeError(module.path, 0, 0, canonical ? "cannot read the module" : "module not found"));
+            return std::move(result_);
+        }
+        module.canonical = *canonical;
+        const auto lines = splitLogicalLines(*text);
+        const auto unconditional = unconditionalIncludes(lines);
+        if (unconditional) {  // every #include is active: no condition to decide
+            result_.diagnostics = checkConditionalStructure(module.path, lines);
+            std::set<std::string> seen;
+            for (const auto& target : *unconditional) {
+                const auto dirs = includeSearchDirs(target.second, {module.path}, options_.includeDirs, options_.baseDir);
+                const auto found = findInclude(target.second, dirs, reader_);
+                if (!found) {
+                    result_.diagnostics.push_back(makeError(module.path, target.first.firstLine,
+                                                            includeTargetColumn(target.first),
+                                                            missingIncludeMessage(target.second, dirs)));
+                } else if (seen.insert(found->canonical).second) {
+                    module.includes.push_back(found->display);
+                }
+            }
+        } else {  // which of them are active is glslang's to say
+            const GlslVersion version =
+                parseVersionDirective(options_.defaultVersion).value_or(GlslVersion{330, "core"});
+            PreprocessRun run = preprocessWithGlslang(module.path, options_, version, reader_);
+            result_.diagnostics = std::move(run.diagnostics);
+            if (!run.files.empty())
+                for (const auto& found : run.files.front().found) module.includes.push_back(found.display);
+        }
+        for (const auto& line : lines) {
             const auto directive = parseDirective(line);
             const bool blank = directive && (directive->name == "include" || directive->name == "version" ||
                                              isPragmaOnce(*directive) || isIncludeExtension(*directive));
             for (const auto& physical : blank ? blankedDirective(line) : line.physical) module.text += physical + "\n";
         }
-        for (const auto& found : file.found) module.includes.push_back(found.display);
-        module.description = leadingComment(file.lines);
+        module.description = leadingComment(lines);
         if (module.description.empty())
             result_.diagnostics.push_back(makeDiagnostic(Severity::Warning, module.path, 1, 0,
                                                          "module has no leading comment saying what it provides"));
@@ -362,6 +388,35 @@ class ModuleScanner {
     }
 
   private:
+    // The #include lines (with their targets) when none sits inside a conditional group
+    // other than the file's own include guard, so all are active whatever the macros;
+    // nullopt when some condition decides (or a line is malformed): then glslang runs.
+    std::optional<std::vector<std::pair<LogicalLine, IncludeTarget>>> unconditionalIncludes(
+        const std::vector<LogicalLine>& lines) const {
+        const std::string guard = includeGuardOf(lines);
+        for (const auto& define : options_.defines)
+            if (define.first == guard) return std::nullopt;
+        std::vector<std::pair<LogicalLine, IncludeTarget>> includes;
+        int depth = 0;
+        for (const auto& line : lines) {
+            const auto directive = parseDirective(line);
+            if (!directive) continue;
+            const std::string& name = directive->name;
+            if (name == "if" || name == "ifdef" || name == "ifndef") {
+                ++depth;
+            } else if (name == "endif") {
+                --depth;
+            } else if (name == "include") {
+                const auto target = parseIncludeTarget(directive->argument);
+                if (!target || depth > (guard.empty() ? 0 : 1)) return std::nullopt;
+                includes.emplace_back(line, *target);
+            } else if (name == "else" || name == "elif") {
+                if (depth <= 1) return std::nullopt;  // a branch of the guard itself
+            }
+        }
+        return includes;
+    }
+
     const ResolveOptions& options_;
     const SourceReader& reader_;
     ModuleScanResult result_;
