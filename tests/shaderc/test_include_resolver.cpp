@@ -824,5 +824,19 @@ TEST(IncludeRules, DirectiveAfterMultiLineCommentIsFollowedAndTheCommentStaysClo
     EXPECT_TRUE(contains(result.stage.text, " b */ \n#line 1 1\nint x;\n#line 3 0\nint after;"));
 }
 
+// glslang defines GL_GOOGLE_include_directive while it preprocesses; a GL driver never
+// does, and driver GLSL may not define a GL_ name, so the emitted conditionals say the
+// branch glslang took.
+TEST(IncludeRules, IncludeExtensionMacrosAreResolvedForTheDriver) {
+    MemoryReader reader{{"main.frag",
+                         "#ifdef GL_GOOGLE_include_directive\nint a;\n#endif\n"
+                         "#ifndef GL_GOOGLE_include_directive\nint b;\n#endif\n"
+                         "#if defined(GL_GOOGLE_include_directive) && GL_GOOGLE_cpp_style_line_directive\nint c;\n#endif\n"}};
+    const auto result = resolve(reader, "main.frag");
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    EXPECT_TRUE(lacks(result.stage.text, "GL_GOOGLE"));
+    EXPECT_TRUE(contains(result.stage.text, "#line 1 0\n#if 1\nint a;\n#endif\n#if 0\nint b;\n#endif\n#if 1 && 1\n"));
+}
+
 }  // namespace
 }  // namespace prism::shaderc
