@@ -308,6 +308,7 @@ std::string fingerprint(const ResolvedCatalog& rc) {
     mix(d.nameSpace);
     mix(d.commandLine);
     mix(d.versionDirective);  // the banner shows the command
+    mix(d.sourcesBlock);      // so a header with a stale record is rewritten
     for (const auto& s : d.shaders) {
         mix(s.name);
         for (const auto& a : s.axes) {

@@ -265,6 +265,7 @@ std::string writeHeader(const CatalogData& c) {
         << ref(contractAttributes) << ", " << ref(contractUniforms) << ", " << quoted(c.versionDirective) << "};\n";
     writeLookups(out);
     out << "\n}  // namespace " << c.nameSpace << "\n";
+    if (!c.sourcesBlock.empty()) out << "\n" << c.sourcesBlock;
     return out.str();
 }
 
