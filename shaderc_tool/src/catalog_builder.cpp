@@ -87,9 +87,9 @@ ModuleIndex indexModules(const Options& o, const std::vector<ShaderInput>& shade
     for (std::size_t i = 0; i < files.size(); ++i) {
         std::string id = mangleModulePath(namingPath(files[i].canonical, roots));
         if (identifiers.contains(id)) {
-            // Only possible for equal paths under two roots: name it by its full path.
+            // Only possible for equal paths under two roots: name it by its path from --base-dir.
             const std::string first = id;
-            id = mangleModulePath(files[i].canonical.substr(1));
+            id = mangleModulePath(embeddedPath(files[i].canonical, o.baseDir));
             for (int n = 2; identifiers.contains(id); ++n) id = first + "__" + std::to_string(n);
             Diagnostic note = makeError(files[i].path, 0, 0,
                                         "module name '" + first + "' is taken by a module under an earlier root; this one is '" +

@@ -176,10 +176,19 @@ class RecordingIncluder final : public glslang::TShader::Includer {
         if (!fileKey(includerKey, number)) return nothing();
         // glslang's include stack: the top file, then `depth - 1` open includes.
         if (stack_.size() > depth) stack_.resize(depth);
-        const std::size_t separator = request.find_first_of(":?");
-        if (separator == std::string::npos) return nothing();
-        const int line = std::stoi(request.substr(0, separator));
         EnteredFile& includer = run_.files[static_cast<std::size_t>(number)];
+        // Our own rewriting: "<line>:<target>" or "<line>?"; anything else is a directive
+        // glslang saw where prism-shaderc saw none.
+        std::size_t separator = 0;
+        while (separator < request.size() && separator < 9 && request[separator] >= '0' && request[separator] <= '9')
+            ++separator;
+        if (separator == 0 || separator >= request.size() || (request[separator] != ':' && request[separator] != '?')) {
+            report(includer, 0, 0,
+                   "glslang found an #include of \"" + request +
+                       "\" that prism-shaderc did not recognise as a directive; write it on its own line");
+            return nothing();
+        }
+        const int line = std::stoi(request.substr(0, separator));
         includer.reached.insert(line);
         const LogicalLine* logical = lineAt(includer, line);
         if (!logical) return nothing();

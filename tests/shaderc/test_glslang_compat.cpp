@@ -239,6 +239,21 @@ TEST(GlslangCompat, SameBaseNameModulesGetPathNames) {
     EXPECT_NE(header.find("    b__util = 1,  // duplicate_names/shaders/b/util.glsl"), std::string::npos);
 }
 
+TEST(GlslangCompat, SameRelativePathUnderTwoIncludeDirsIsAWarningNotAnError) {
+    prism::test::ScratchDir dir("compat-two-roots");
+    dir.write("a/util.glsl", "// util of a.\nfloat util_a() { return 1.0; }\n");
+    dir.write("b/util.glsl", "// util of b.\nfloat util_b() { return 2.0; }\n");
+    dir.write("s/main.vert", "#version 330 core\nin vec3 a_position;\nvoid main() { gl_Position = vec4(a_position, 1.0); }\n");
+    dir.write("s/main.frag", "#version 330 core\n#include \"../b/util.glsl\"\nout vec4 o;\nvoid main() { o = vec4(util_b()); }\n");
+    const auto run = prism::test::runShaderc("-o h.hpp --base-dir . -I a -I b s", dir.str());
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("b/util.glsl: warning: module name 'util' is taken by a module under an earlier root; this one is 'b__util'"),
+              std::string::npos) << run.output;
+    const std::string header = prism::test::readFile(dir.path() / "h.hpp");
+    EXPECT_NE(header.find("    b__util = 0,  // b/util.glsl"), std::string::npos) << header;
+    EXPECT_NE(header.find("    util = 1,  // a/util.glsl"), std::string::npos);
+}
+
 TEST(GlslangCompat, ProblemsInUnusedModulesAreWarnings) {
     const auto run = prism::test::runShaderc("--check -I " + (kCompat / "unused_broken/modules").string() + " " +
                                              (kCompat / "unused_broken/shaders").string());
