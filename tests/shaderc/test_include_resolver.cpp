@@ -12,6 +12,7 @@
 #include <string>
 
 #include "include_resolver.hpp"
+#include "include_search.hpp"
 #include "source_reader.hpp"
 
 namespace prism::shaderc {
@@ -836,6 +837,16 @@ TEST(IncludeRules, IncludeExtensionMacrosAreResolvedForTheDriver) {
     ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
     EXPECT_TRUE(lacks(result.stage.text, "GL_GOOGLE"));
     EXPECT_TRUE(contains(result.stage.text, "#line 1 0\n#if 1\nint a;\n#endif\n#if 0\nint b;\n#endif\n#if 1 && 1\n"));
+}
+
+// The usage example of include_search.hpp.
+TEST(IncludeRules, SearchDirsHeaderExample) {
+    auto dirs = includeSearchDirs(*parseIncludeTarget("\"a.glsl\""), {"s/x.frag"}, {"modules"}, "");
+    ASSERT_EQ(dirs.size(), 2u);
+    EXPECT_EQ(dirs[0].path, "s");
+    EXPECT_EQ(dirs[0].role, "the including file's folder");
+    EXPECT_EQ(dirs[1].path, "modules");
+    EXPECT_TRUE(includeSearchDirs(*parseIncludeTarget("<a.glsl>"), {"s/x.frag"}, {}, "").empty());
 }
 
 }  // namespace
