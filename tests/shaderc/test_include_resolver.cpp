@@ -849,5 +849,18 @@ TEST(IncludeRules, SearchDirsHeaderExample) {
     EXPECT_TRUE(includeSearchDirs(*parseIncludeTarget("<a.glsl>"), {"s/x.frag"}, {}, "").empty());
 }
 
+// glslang must know the version before it starts; a #version met first in a module
+// makes the stage run again with it, so __VERSION__ and the profile macros agree.
+TEST(IncludeRules, VersionFromAModuleDrivesPredefinedMacros) {
+    MemoryReader reader{{"main.frag", "#include \"v.glsl\"\n#if __VERSION__ == 450 && GL_ARB_gpu_shader5\n"
+                                      "#include \"yes.glsl\"\n#endif\nvoid main() {}\n"},
+                        {"v.glsl", "#version 450 core\n"},
+                        {"yes.glsl", "int modern;\n"}};
+    const auto result = resolve(reader, "main.frag");
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    EXPECT_EQ(result.stage.versionDirective, "#version 450 core");
+    EXPECT_TRUE(contains(result.stage.text, "int modern;"));
+}
+
 }  // namespace
 }  // namespace prism::shaderc
