@@ -162,9 +162,9 @@ class RecordingIncluder final : public glslang::TShader::Includer {
     }
 
     const LogicalLine* lineAt(const EnteredFile& file, int firstLine) const {
-        for (const auto& line : file.lines)
-            if (line.firstLine == firstLine) return &line;
-        return nullptr;
+        const auto at = std::lower_bound(file.lines.begin(), file.lines.end(), firstLine,
+                                         [](const LogicalLine& line, int n) { return line.firstLine < n; });
+        return at != file.lines.end() && at->firstLine == firstLine ? &*at : nullptr;
     }
 
     IncludeResult* handle(const std::string& request, const std::string& includerKey, std::size_t depth) {
