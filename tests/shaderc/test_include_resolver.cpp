@@ -11,6 +11,7 @@
 #include <fstream>
 #include <string>
 
+#include "glslang_preprocessor.hpp"
 #include "include_resolver.hpp"
 #include "include_search.hpp"
 #include "source_reader.hpp"
@@ -860,6 +861,25 @@ TEST(IncludeRules, VersionFromAModuleDrivesPredefinedMacros) {
     ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
     EXPECT_EQ(result.stage.versionDirective, "#version 450 core");
     EXPECT_TRUE(contains(result.stage.text, "int modern;"));
+}
+
+// glslang_preprocessor.hpp's entry point on its own (the one a fuzzer drives): which
+// files glslang entered, from which line, and which probed directives it reached.
+TEST(GlslangPreprocessor, RecordsWhatGlslangIncludes) {
+    MemoryReader reader{{"s/a.frag", "#version 330 core\n#define TWICE(x) ((x) * 2)\n#if TWICE(2) == 4\n"
+                                     "#include \"b.glsl\"\n#else\n#include \"c.glsl\"\n#endif\n#pragma prism variant X\n"},
+                        {"s/b.glsl", "#include \"c.glsl\"\n"},
+                        {"s/c.glsl", "int c;\n"}};
+    const auto run = preprocessWithGlslang("s/a.frag", {}, GlslVersion{330, "core"}, reader);
+    ASSERT_TRUE(run.ok) << allMessages(run.diagnostics);
+    ASSERT_EQ(run.files.size(), 3u);
+    EXPECT_EQ(run.files[0].includes, (std::map<int, std::uint32_t>{{4, 1}}));  // line 6 is inactive
+    EXPECT_EQ(run.files[1].display, "s/b.glsl");
+    EXPECT_EQ(run.files[1].includes, (std::map<int, std::uint32_t>{{1, 2}}));
+    EXPECT_EQ(run.files[2].chain, (std::vector<IncludeSite>{{"s/b.glsl", 1}, {"s/a.frag", 4}}));
+    EXPECT_EQ(run.files[0].reached, (std::set<int>{1, 4, 8}));  // #version, #include, #pragma prism
+    ASSERT_EQ(run.files[0].found.size(), 1u);
+    EXPECT_EQ(run.files[0].found[0].display, "s/b.glsl");
 }
 
 }  // namespace
