@@ -124,7 +124,8 @@ std::set<int> generate(const fs::path& root, int modules, int stages) {
         if (!used.insert(m).second) continue;
         for (int d : deps[static_cast<std::size_t>(m)]) todo.push_back(d);
     }
-    for (int m : used) fs::copy_file(root / "lib" / (moduleName(m) + ".glsl"), root / "used" / (moduleName(m) + ".glsl"));
+    for (int m : used)
+        fs::copy_file(root / "lib" / (moduleName(m) + ".glsl"), root / "used" / (moduleName(m) + ".glsl"));
     return used;
 }
 
@@ -135,9 +136,12 @@ int main(int argc, char** argv) {
     std::string shaderc = PRISM_BENCH_SHADERC;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
-        if (a == "--modules" && i + 1 < argc) modules = std::atoi(argv[++i]);
-        else if (a == "--runs" && i + 1 < argc) runs = std::atoi(argv[++i]);
-        else if (a == "--shaderc" && i + 1 < argc) shaderc = argv[++i];
+        if (a == "--modules" && i + 1 < argc)
+            modules = std::atoi(argv[++i]);
+        else if (a == "--runs" && i + 1 < argc)
+            runs = std::atoi(argv[++i]);
+        else if (a == "--shaderc" && i + 1 < argc)
+            shaderc = argv[++i];
         else {
             std::cout << "usage: prism_bench_module_tree [--modules N] [--runs N] [--shaderc PATH]\n";
             return a == "--help" ? 0 : 2;
@@ -152,7 +156,8 @@ int main(int argc, char** argv) {
     fs::create_directories(root / "used");
     const auto used = generate(root, modules, stages);
     const fs::path log = root / "log.txt", header = root / "h.hpp";
-    const std::string lib = (root / "lib").string(), usedDir = (root / "used").string(), sh = (root / "shaders").string();
+    const std::string lib = (root / "lib").string(), usedDir = (root / "used").string(),
+                      sh = (root / "shaders").string();
 
     struct Case {
         std::string label;
@@ -162,9 +167,18 @@ int main(int argc, char** argv) {
     };
     std::vector<Case> cases = {
         {"(b) --check -j 1, the whole library as -I", {shaderc, "--check", "-j", "1", "-I", lib, sh}, false, {}},
-        {"(b0) --check -j 1, only the used modules as -I", {shaderc, "--check", "-j", "1", "-I", usedDir, sh}, false, {}},
-        {"(c) -o header -j 1, header absent (full generate)", {shaderc, "-o", header.string(), "-j", "1", "-I", lib, sh}, true, {}},
-        {"(d) -o header -j 1, header up to date (no-op)", {shaderc, "-o", header.string(), "-j", "1", "-I", lib, sh}, false, {}},
+        {"(b0) --check -j 1, only the used modules as -I",
+         {shaderc, "--check", "-j", "1", "-I", usedDir, sh},
+         false,
+         {}},
+        {"(c) -o header -j 1, header absent (full generate)",
+         {shaderc, "-o", header.string(), "-j", "1", "-I", lib, sh},
+         true,
+         {}},
+        {"(d) -o header -j 1, header up to date (no-op)",
+         {shaderc, "-o", header.string(), "-j", "1", "-I", lib, sh},
+         false,
+         {}},
     };
     for (int r = 0; r <= runs; ++r) {  // round 0 warms up
         for (auto& c : cases) {
@@ -173,9 +187,8 @@ int main(int argc, char** argv) {
             if (r > 0) c.samples.push_back(s);
         }
     }
-    std::cout << "Library: " << modules << " modules in one -I folder (" << used.size()
-              << " of them reached from " << stages << " shaders); " << runs
-              << " interleaved runs per case after a warm-up.\n\n"
+    std::cout << "Library: " << modules << " modules in one -I folder (" << used.size() << " of them reached from "
+              << stages << " shaders); " << runs << " interleaved runs per case after a warm-up.\n\n"
               << "| case | median ms | min ms | CPU ms (median) |\n|---|---:|---:|---:|\n";
     std::vector<double> medianCpu;
     for (const auto& c : cases) {
@@ -188,10 +201,11 @@ int main(int argc, char** argv) {
         std::printf("| %s | %.1f | %.1f | %.1f |\n", c.label.c_str(), median(wall),
                     *std::min_element(wall.begin(), wall.end()), median(cpu));
     }
-    std::printf("\nScanning the %d-module library, CPU: (b) - (b0) = %.1f ms, %.3f ms per module. "
-                "No-op (d): %.1f ms CPU (the 50 ms no-op target of docs/shaderc-bench.md is for the project "
-                "catalogue).\n",
-                modules, medianCpu[0] - medianCpu[1], (medianCpu[0] - medianCpu[1]) / modules, medianCpu[3]);
+    std::printf(
+        "\nScanning the %d-module library, CPU: (b) - (b0) = %.1f ms, %.3f ms per module. "
+        "No-op (d): %.1f ms CPU (the 50 ms no-op target of docs/shaderc-bench.md is for the project "
+        "catalogue).\n",
+        modules, medianCpu[0] - medianCpu[1], (medianCpu[0] - medianCpu[1]) / modules, medianCpu[3]);
     fs::remove_all(root);
     return 0;
 }

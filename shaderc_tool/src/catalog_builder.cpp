@@ -91,9 +91,9 @@ ModuleIndex indexModules(const Options& o, const std::vector<ShaderInput>& shade
             const std::string first = id;
             id = mangleModulePath(embeddedPath(files[i].canonical, o.baseDir));
             for (int n = 2; identifiers.contains(id); ++n) id = first + "__" + std::to_string(n);
-            Diagnostic note = makeError(files[i].path, 0, 0,
-                                        "module name '" + first + "' is taken by a module under an earlier root; this one is '" +
-                                            id + "'");
+            Diagnostic note = makeError(
+                files[i].path, 0, 0,
+                "module name '" + first + "' is taken by a module under an earlier root; this one is '" + id + "'");
             note.severity = Severity::Warning;
             sink.report(std::move(note));
         }
@@ -110,7 +110,8 @@ ModuleIndex indexModules(const Options& o, const std::vector<ShaderInput>& shade
         for (std::size_t i; (i = next.fetch_add(1)) < named.size();)
             scans[i] = scanModule(files[named[i].second].path, ro, reader);
     };
-    const std::size_t threads = std::clamp<std::size_t>(static_cast<std::size_t>(o.jobs), 1, std::max<std::size_t>(1, named.size() / 64));
+    const std::size_t threads =
+        std::clamp<std::size_t>(static_cast<std::size_t>(o.jobs), 1, std::max<std::size_t>(1, named.size() / 64));
     std::vector<std::thread> pool;
     for (std::size_t i = 1; i < threads; ++i) pool.emplace_back(worker);
     worker();
@@ -132,8 +133,8 @@ ModuleIndex indexModules(const Options& o, const std::vector<ShaderInput>& shade
                 sink.report(std::move(d));
             }
         }
-        CatalogModule m{identifier, embeddedPath(file.path, o.baseDir), scan.module.description, scan.module.text,
-                        {}, file.path};
+        CatalogModule m{identifier, embeddedPath(file.path, o.baseDir), scan.module.description, scan.module.text, {},
+                        file.path};
         index.byCanonical[file.canonical] = static_cast<std::uint32_t>(index.modules.size());
         index.modules.push_back(std::move(m));
         includes.push_back(scan.module.includes);

@@ -50,7 +50,7 @@ std::string textForGlslang(const std::vector<LogicalLine>& lines) {
         if (directive && directive->name == "include") {
             const auto target = parseIncludeTarget(directive->argument);
             const std::string tag = std::to_string(line.firstLine);
-            replacement = !target ? "#include \"" + tag + "?\""
+            replacement = !target          ? "#include \"" + tag + "?\""
                           : target->angled ? "#include <" + tag + ":" + target->name + ">"
                                            : "#include \"" + tag + ":" + target->name + "\"";
         } else if (directive && isProbed(*directive)) {
@@ -251,8 +251,8 @@ class RecordingIncluder final : public glslang::TShader::Includer {
             }
             // Whether the guard is defined is glslang's to say: ask it.
             pendingCycles_.push_back(std::move(cycle));
-            probes_.push_back("#ifndef " + flags.guard + "\n#include \"!cycle:" +
-                              std::to_string(pendingCycles_.size() - 1) + "\"\n#endif\n");
+            probes_.push_back("#ifndef " + flags.guard +
+                              "\n#include \"!cycle:" + std::to_string(pendingCycles_.size() - 1) + "\"\n#endif\n");
             return new IncludeResult("guard", probes_.back().data(), probes_.back().size(), nullptr);
         }
         if (flags.entered && !flags.reinclude) return nothing();  // include-once
@@ -356,8 +356,8 @@ std::string includeGuardOf(const std::vector<LogicalLine>& lines) {
     return {};
 }
 
-PreprocessRun preprocessWithGlslang(const std::string& path, const ResolveOptions& options,
-                                    const GlslVersion& version, const SourceReader& reader) {
+PreprocessRun preprocessWithGlslang(const std::string& path, const ResolveOptions& options, const GlslVersion& version,
+                                    const SourceReader& reader) {
     initializeGlslangOnce();
     PreprocessRun run;
     RecordingIncluder includer(options, reader, run);

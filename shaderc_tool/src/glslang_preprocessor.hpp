@@ -73,7 +73,7 @@ struct PreprocessRun {
 std::string includeGuardOf(const std::vector<LogicalLine>& lines);
 
 // `version` is the one glslang is told to use (the stage's #version lines are probes).
-PreprocessRun preprocessWithGlslang(const std::string& path, const ResolveOptions& options,
-                                    const GlslVersion& version, const SourceReader& reader);
+PreprocessRun preprocessWithGlslang(const std::string& path, const ResolveOptions& options, const GlslVersion& version,
+                                    const SourceReader& reader);
 
 }  // namespace prism::shaderc

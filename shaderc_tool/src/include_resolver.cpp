@@ -103,8 +103,8 @@ constexpr std::array<std::string_view, 2> kIncludeExtensionMacros = {"GL_GOOGLE_
 // the branch glslang took: `#ifdef M` -> `#if 1`, `#ifndef M` -> `#if 0`, and in
 // #if/#elif `defined(M)`, `defined M` and `M` -> 1. nullopt when nothing to rewrite.
 std::optional<std::vector<std::string>> withIncludeMacrosDefined(const LogicalLine& line, const Directive& directive) {
-    const bool condition = directive.name == "if" || directive.name == "elif" || directive.name == "ifdef" ||
-                           directive.name == "ifndef";
+    const bool condition =
+        directive.name == "if" || directive.name == "elif" || directive.name == "ifdef" || directive.name == "ifndef";
     if (!condition || line.physical.size() != 1) return std::nullopt;
     std::string text = line.physical.front();
     bool changed = false;
@@ -355,7 +355,8 @@ class ModuleScanner {
             result_.diagnostics = checkConditionalStructure(module.path, lines);
             std::set<std::string> seen;
             for (const auto& target : *unconditional) {
-                const auto dirs = includeSearchDirs(target.second, {module.path}, options_.includeDirs, options_.baseDir);
+                const auto dirs =
+                    includeSearchDirs(target.second, {module.path}, options_.includeDirs, options_.baseDir);
                 const auto found = findInclude(target.second, dirs, reader_);
                 if (!found) {
                     result_.diagnostics.push_back(makeError(module.path, target.first.firstLine,

@@ -50,7 +50,8 @@ std::string missingIncludeMessage(const IncludeTarget& target, const std::vector
     std::string message = "cannot find include " + written + "; searched: ";
     if (dirs.empty()) message += "no directories (<...> and \"/...\" search only -I directories and --base-dir)";
     for (std::size_t i = 0; i < dirs.size(); ++i)
-        message += (i ? ", " : "") + (dirs[i].path.empty() ? std::string(".") : dirs[i].path) + " (" + dirs[i].role + ")";
+        message +=
+            (i ? ", " : "") + (dirs[i].path.empty() ? std::string(".") : dirs[i].path) + " (" + dirs[i].role + ")";
     return message + "; add a -I directory or fix the path";
 }
 

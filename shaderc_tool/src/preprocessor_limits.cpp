@@ -45,9 +45,7 @@ class ExpansionSize {
     ExpansionSize(const MacroSizeTable& macros, std::uint64_t cap, int maxNesting)
         : macros_(macros), cap_(cap), maxNesting_(maxNesting) {}
 
-    std::uint64_t of(const std::vector<std::string>& tokens) {
-        return sequence(tokens, 0, tokens.size(), nullptr, 0);
-    }
+    std::uint64_t of(const std::vector<std::string>& tokens) { return sequence(tokens, 0, tokens.size(), nullptr, 0); }
     bool tooDeep() const { return tooDeep_; }
 
   private:
@@ -143,7 +141,8 @@ class ExpansionSize {
         spans.emplace_back(start, j);
         ArgumentSizes sizes;
         for (std::size_t k = 0; k < d.parameters.size(); ++k)
-            sizes[d.parameters[k]] = k < spans.size() ? sequence(tokens, spans[k].first, spans[k].second, outer, depth + 1) : 0;
+            sizes[d.parameters[k]] =
+                k < spans.size() ? sequence(tokens, spans[k].first, spans[k].second, outer, depth + 1) : 0;
         expanding_.insert(name);
         const std::uint64_t size = sequence(d.body, 0, d.body.size(), &sizes, depth + 1);
         expanding_.erase(name);
@@ -219,18 +218,18 @@ std::vector<Diagnostic> checkConditionalStructure(const std::string& file, const
             } else if (name == "endif") {
                 open.pop_back();
             } else if (open.back().elseLine) {
-                problems.push_back(makeError(file, line.firstLine, column,
-                                             "#" + name + " after #else (the #else is at line " +
-                                                 std::to_string(open.back().elseLine) + ")"));
+                problems.push_back(makeError(
+                    file, line.firstLine, column,
+                    "#" + name + " after #else (the #else is at line " + std::to_string(open.back().elseLine) + ")"));
             } else if (name == "else") {
                 open.back().elseLine = line.firstLine;
             }
         }
     }
     if (!open.empty())
-        problems.push_back(makeError(file, open.back().line, 1,
-                                     "unterminated #" + open.back().directive +
-                                         ": no matching #endif before the end of the file"));
+        problems.push_back(
+            makeError(file, open.back().line, 1,
+                      "unterminated #" + open.back().directive + ": no matching #endif before the end of the file"));
     return problems;
 }
 
@@ -260,8 +259,8 @@ std::vector<Diagnostic> checkPreprocessorLimits(const std::string& file, const s
                       " tokens (limit); a macro that repeats another one at each level grows exponentially";
         if (message.empty()) continue;
         const std::size_t column = line.code.find_first_not_of(" \t");
-        problems.push_back(makeError(file, line.firstLine, column == std::string::npos ? 1 : static_cast<int>(column) + 1,
-                                     std::move(message)));
+        problems.push_back(makeError(
+            file, line.firstLine, column == std::string::npos ? 1 : static_cast<int>(column) + 1, std::move(message)));
     }
     return problems;
 }

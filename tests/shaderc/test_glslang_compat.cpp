@@ -164,7 +164,8 @@ TEST(GlslangCompat, FunctionLikeMacros32BitArithmeticPredefinedMacrosAndComments
 TEST(GlslangCompat, UnusedBrokenModuleDoesNotMatter) {
     expectSameAsGlslang(fixture("unused", "unused_broken/shaders/main.frag", {"unused_broken/modules"}));
     // The module really is broken, as glslang sees it.
-    const auto broken = runProcess("glslangValidator -E " + quoted((kCompat / "unused_broken/modules/broken.glsl").string()));
+    const auto broken =
+        runProcess("glslangValidator -E " + quoted((kCompat / "unused_broken/modules/broken.glsl").string()));
     EXPECT_NE(broken.exitCode, 0) << broken.output;
 }
 
@@ -211,8 +212,9 @@ TEST(GlslangCompat, GeneratedConditionalIncludes) {
     const std::vector<std::vector<std::pair<std::string, std::string>>> settings = {
         {}, {{"A", "1"}}, {{"A", "1"}, {"B", "3"}}, {{"A", "3"}, {"B", "2"}}};
     prism::test::ScratchDir dir("compat-generated");
-    std::string stage = "#version 450 core\n#extension GL_GOOGLE_include_directive : require\n"
-                        "#define ADD(x, y) ((x) + (y))\n#define PAIR A + B\n";
+    std::string stage =
+        "#version 450 core\n#extension GL_GOOGLE_include_directive : require\n"
+        "#define ADD(x, y) ((x) + (y))\n#define PAIR A + B\n";
     for (std::size_t i = 0; i < conditions.size(); ++i) {
         const std::string file = "c" + std::to_string(i) + ".glsl";
         stage += "#if " + conditions[i] + "\n#include \"" + file + "\"\n#else\nint not_taken_" + std::to_string(i) +
@@ -223,7 +225,8 @@ TEST(GlslangCompat, GeneratedConditionalIncludes) {
     dir.write("main.frag", stage);
     std::set<std::string> distinct;
     for (std::size_t s = 0; s < settings.size(); ++s)
-        distinct.insert(expectSameAsGlslang({"generated" + std::to_string(s), dir.path() / "main.frag", {}, settings[s]}));
+        distinct.insert(
+            expectSameAsGlslang({"generated" + std::to_string(s), dir.path() / "main.frag", {}, settings[s]}));
     EXPECT_EQ(distinct.size(), settings.size());  // every setting takes other branches
 }
 
@@ -243,12 +246,16 @@ TEST(GlslangCompat, SameRelativePathUnderTwoIncludeDirsIsAWarningNotAnError) {
     prism::test::ScratchDir dir("compat-two-roots");
     dir.write("a/util.glsl", "// util of a.\nfloat util_a() { return 1.0; }\n");
     dir.write("b/util.glsl", "// util of b.\nfloat util_b() { return 2.0; }\n");
-    dir.write("s/main.vert", "#version 330 core\nin vec3 a_position;\nvoid main() { gl_Position = vec4(a_position, 1.0); }\n");
-    dir.write("s/main.frag", "#version 330 core\n#include \"../b/util.glsl\"\nout vec4 o;\nvoid main() { o = vec4(util_b()); }\n");
+    dir.write("s/main.vert",
+              "#version 330 core\nin vec3 a_position;\nvoid main() { gl_Position = vec4(a_position, 1.0); }\n");
+    dir.write("s/main.frag",
+              "#version 330 core\n#include \"../b/util.glsl\"\nout vec4 o;\nvoid main() { o = vec4(util_b()); }\n");
     const auto run = prism::test::runShaderc("-o h.hpp --base-dir . -I a -I b s", dir.str());
     ASSERT_EQ(run.exitCode, 0) << run.output;
-    EXPECT_NE(run.output.find("b/util.glsl: warning: module name 'util' is taken by a module under an earlier root; this one is 'b__util'"),
-              std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("b/util.glsl: warning: module name 'util' is taken by a module under an earlier root; "
+                              "this one is 'b__util'"),
+              std::string::npos)
+        << run.output;
     const std::string header = prism::test::readFile(dir.path() / "h.hpp");
     EXPECT_NE(header.find("    b__util = 0,  // b/util.glsl"), std::string::npos) << header;
     EXPECT_NE(header.find("    util = 1,  // a/util.glsl"), std::string::npos);
@@ -265,7 +272,8 @@ TEST(GlslangCompat, ProblemsInUnusedModulesAreWarnings) {
     // Once a stage includes it, the same problem is an error.
     prism::test::ScratchDir dir("compat-used-broken");
     dir.write("s/main.vert", prism::test::readFile(kCompat / "unused_broken/shaders/main.vert"));
-    dir.write("s/main.frag", "#version 330 core\n#include \"broken.glsl\"\nout vec4 o;\nvoid main() { o = vec4(1.0); }\n");
+    dir.write("s/main.frag",
+              "#version 330 core\n#include \"broken.glsl\"\nout vec4 o;\nvoid main() { o = vec4(1.0); }\n");
     const auto used = prism::test::runShaderc("--check -I " + (kCompat / "unused_broken/modules").string() + " " +
                                               (dir.path() / "s").string());
     EXPECT_EQ(used.exitCode, 1) << used.output;

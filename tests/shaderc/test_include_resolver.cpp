@@ -121,8 +121,7 @@ TEST(IncludeResolver, SelfIncludeIsACycle) {
     EXPECT_TRUE(contains(onlyError(resolve(reader, "main.frag")).message, "include cycle: self.glsl -> self.glsl;"));
 
     MemoryReader stageOnly{{"main.frag", "#include \"main.frag\"\n"}};
-    EXPECT_TRUE(
-        contains(onlyError(resolve(stageOnly, "main.frag")).message, "include cycle: main.frag -> main.frag;"));
+    EXPECT_TRUE(contains(onlyError(resolve(stageOnly, "main.frag")).message, "include cycle: main.frag -> main.frag;"));
 }
 
 TEST(IncludeResolver, CycleCheckedBeforeIncludeOnce) {
@@ -153,7 +152,8 @@ TEST(IncludeResolver, DepthLimitIs256Files) {
 
     const Diagnostic& error = onlyError(resolve(chainOfDepth(257), "main.frag"));
     EXPECT_TRUE(contains(error.message, "nested more than 256 files deep (limit): main.frag -> f1.glsl"));
-    EXPECT_TRUE(contains(error.message, "... (248 more) -> f253.glsl -> f254.glsl -> f255.glsl -> f256.glsl -> f257.glsl"));
+    EXPECT_TRUE(
+        contains(error.message, "... (248 more) -> f253.glsl -> f254.glsl -> f255.glsl -> f256.glsl -> f257.glsl"));
     EXPECT_EQ(error.file, "f256.glsl");
 }
 
@@ -757,7 +757,8 @@ TEST(IncludeRules, GuardedReentryIsNoCycleButAnUndefinedGuardIs) {
 
 TEST(IncludeRules, ReincludeOptsOutOfIncludeOnce) {
     MemoryReader reader{
-        {"main.frag", "#define F red\n#include \"t.glsl\"\n#define F green\n#include \"t.glsl\"\n#include \"t.glsl\"\n"},
+        {"main.frag",
+         "#define F red\n#include \"t.glsl\"\n#define F green\n#include \"t.glsl\"\n#include \"t.glsl\"\n"},
         {"t.glsl", "#pragma prism reinclude\nfloat F;\n#undef F\n"}};
     const auto result = resolve(reader, "main.frag");
     ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
@@ -770,7 +771,8 @@ TEST(IncludeRules, ReincludeOptsOutOfIncludeOnce) {
 }
 
 TEST(IncludeRules, SelfIncludingReincludeStopsAtTheDepthLimit) {
-    MemoryReader reader{{"main.frag", "#include \"t.glsl\"\n"}, {"t.glsl", "#pragma prism reinclude\n#include \"t.glsl\"\n"}};
+    MemoryReader reader{{"main.frag", "#include \"t.glsl\"\n"},
+                        {"t.glsl", "#pragma prism reinclude\n#include \"t.glsl\"\n"}};
     EXPECT_TRUE(contains(onlyError(resolve(reader, "main.frag")).message, "nested more than 256 files deep"));
 }
 
@@ -788,9 +790,9 @@ TEST(IncludeRules, QuotedSearchWalksUpTheIncludeChainBeforeIncludeDirs) {
     EXPECT_TRUE(contains(result.stage.text, "from_mid_folder"));  // the nearest folder up the chain
 
     MemoryReader noMid{{"s/main.frag", "#include \"sub/mid.glsl\"\n"},
-                         {"s/sub/mid.glsl", "#include \"deeper/leaf.glsl\"\n"},
-                         {"s/sub/deeper/leaf.glsl", "#include \"common.glsl\"\n"},
-                         {"s/common.glsl", "int from_stage_folder;\n"},
+                       {"s/sub/mid.glsl", "#include \"deeper/leaf.glsl\"\n"},
+                       {"s/sub/deeper/leaf.glsl", "#include \"common.glsl\"\n"},
+                       {"s/common.glsl", "int from_stage_folder;\n"},
                        {"inc/common.glsl", "int from_include_dir;\n"}};
     result = resolve(noMid, "s/main.frag", options);
     ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
@@ -830,10 +832,11 @@ TEST(IncludeRules, DirectiveAfterMultiLineCommentIsFollowedAndTheCommentStaysClo
 // does, and driver GLSL may not define a GL_ name, so the emitted conditionals say the
 // branch glslang took.
 TEST(IncludeRules, IncludeExtensionMacrosAreResolvedForTheDriver) {
-    MemoryReader reader{{"main.frag",
-                         "#ifdef GL_GOOGLE_include_directive\nint a;\n#endif\n"
-                         "#ifndef GL_GOOGLE_include_directive\nint b;\n#endif\n"
-                         "#if defined(GL_GOOGLE_include_directive) && GL_GOOGLE_cpp_style_line_directive\nint c;\n#endif\n"}};
+    MemoryReader reader{
+        {"main.frag",
+         "#ifdef GL_GOOGLE_include_directive\nint a;\n#endif\n"
+         "#ifndef GL_GOOGLE_include_directive\nint b;\n#endif\n"
+         "#if defined(GL_GOOGLE_include_directive) && GL_GOOGLE_cpp_style_line_directive\nint c;\n#endif\n"}};
     const auto result = resolve(reader, "main.frag");
     ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
     EXPECT_TRUE(lacks(result.stage.text, "GL_GOOGLE"));
@@ -853,8 +856,9 @@ TEST(IncludeRules, SearchDirsHeaderExample) {
 // glslang must know the version before it starts; a #version met first in a module
 // makes the stage run again with it, so __VERSION__ and the profile macros agree.
 TEST(IncludeRules, VersionFromAModuleDrivesPredefinedMacros) {
-    MemoryReader reader{{"main.frag", "#include \"v.glsl\"\n#if __VERSION__ == 450 && GL_ARB_gpu_shader5\n"
-                                      "#include \"yes.glsl\"\n#endif\nvoid main() {}\n"},
+    MemoryReader reader{{"main.frag",
+                         "#include \"v.glsl\"\n#if __VERSION__ == 450 && GL_ARB_gpu_shader5\n"
+                         "#include \"yes.glsl\"\n#endif\nvoid main() {}\n"},
                         {"v.glsl", "#version 450 core\n"},
                         {"yes.glsl", "int modern;\n"}};
     const auto result = resolve(reader, "main.frag");
@@ -866,8 +870,9 @@ TEST(IncludeRules, VersionFromAModuleDrivesPredefinedMacros) {
 // glslang_preprocessor.hpp's entry point on its own (the one a fuzzer drives): which
 // files glslang entered, from which line, and which probed directives it reached.
 TEST(GlslangPreprocessor, RecordsWhatGlslangIncludes) {
-    MemoryReader reader{{"s/a.frag", "#version 330 core\n#define TWICE(x) ((x) * 2)\n#if TWICE(2) == 4\n"
-                                     "#include \"b.glsl\"\n#else\n#include \"c.glsl\"\n#endif\n#pragma prism variant X\n"},
+    MemoryReader reader{{"s/a.frag",
+                         "#version 330 core\n#define TWICE(x) ((x) * 2)\n#if TWICE(2) == 4\n"
+                         "#include \"b.glsl\"\n#else\n#include \"c.glsl\"\n#endif\n#pragma prism variant X\n"},
                         {"s/b.glsl", "#include \"c.glsl\"\n"},
                         {"s/c.glsl", "int c;\n"}};
     const auto run = preprocessWithGlslang("s/a.frag", {}, GlslVersion{330, "core"}, reader);

@@ -54,7 +54,7 @@ TEST(ModuleNaming, RandomPathsRoundTripAndNeverCollide) {
             for (int i = 0; i < length; ++i) path += alphabet[random() % alphabet.size()];
         }
         if (random() % 2) path += ".glsl";
-        if (path.find("/./") != std::string::npos || path == "." ) continue;
+        if (path.find("/./") != std::string::npos || path == ".") continue;
         const std::string id = mangleModulePath(path);
         EXPECT_EQ(demangleModuleIdentifier(id), path) << id;
         const auto [it, fresh] = pathOf.emplace(id, path);
@@ -63,10 +63,10 @@ TEST(ModuleNaming, RandomPathsRoundTripAndNeverCollide) {
 }
 
 TEST(ModuleNaming, OnlyWhatManglingWritesDecodes) {
-    EXPECT_FALSE(demangleModuleIdentifier("a___b"));  // '_' + "b" is not hex
+    EXPECT_FALSE(demangleModuleIdentifier("a___b"));          // '_' + "b" is not hex
     EXPECT_FALSE(demangleModuleIdentifier("_612e676c736c"));  // "a.glsl" is written "a"
-    EXPECT_EQ(demangleModuleIdentifier("_61"), "a");            // a file "a" without .glsl
-    EXPECT_FALSE(demangleModuleIdentifier("x_"));     // not a keyword
+    EXPECT_EQ(demangleModuleIdentifier("_61"), "a");          // a file "a" without .glsl
+    EXPECT_FALSE(demangleModuleIdentifier("x_"));             // not a keyword
     EXPECT_EQ(demangleModuleIdentifier("color__space__rgb2hsv"), "color/space/rgb2hsv.glsl");
 }
 

@@ -112,8 +112,8 @@ TEST(PreprocessorLimits, SizeBoundCountsExpandedTokensExactlyAtTheEdge) {
 }
 
 TEST(PreprocessorLimits, ConditionalsMustBalanceInEachFile) {
-    const auto problems = checkConditionalStructure(
-        "f.glsl", splitLogicalLines("#if A\n#else\n#elif B\n#endif\n#endif\n#ifdef C\n"));
+    const auto problems =
+        checkConditionalStructure("f.glsl", splitLogicalLines("#if A\n#else\n#elif B\n#endif\n#endif\n#ifdef C\n"));
     ASSERT_EQ(problems.size(), 3u);
     EXPECT_EQ(problems[0].message, "#elif after #else (the #else is at line 2)");
     EXPECT_EQ(problems[1].message, "#endif without #if");

@@ -125,7 +125,8 @@ TEST(ToolOutputs, NoOpChecksTheRecordedSources) {
     fs::remove(dir.path() / "out.d");
     ASSERT_EQ(runShaderc(args, dir.str()).exitCode, 0);
     EXPECT_EQ(readFile(header), first);
-    EXPECT_NE(readFile(dir.path() / "out.d").find("fx/modules/fog.glsl"), std::string::npos) << "the no-op writes the depfile";
+    EXPECT_NE(readFile(dir.path() / "out.d").find("fx/modules/fog.glsl"), std::string::npos)
+        << "the no-op writes the depfile";
 
     dir.write("fx/modules/fog.glsl", readFile(dir.path() / "fx/modules/fog.glsl") + "// one more comment line\n");
     ASSERT_EQ(runShaderc(args, dir.str()).exitCode, 0);
