@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "include_resolver.hpp"
+#include "module_naming.hpp"
 #include "validator.hpp"
 #include "variants.hpp"
 
@@ -22,50 +23,119 @@ struct ModuleIndex {
     std::map<std::string, std::uint32_t> byCanonical;
 };
 
-std::string moduleIdentifier(const fs::path& relative) {
-    auto p = relative;
-    p.replace_extension();
-    std::string id;
-    for (char c : p.generic_string()) id += (c == '/' || c == '.' || c == '-') ? '_' : c;
-    return id;
+struct ModuleFile {
+    std::string path;       // as read
+    std::string canonical;  // identity
+};
+
+// The folders module names are relative to, in order: the -I directories, the stage
+// folders, then --base-dir.
+std::vector<std::string> namingRoots(const Options& o, const std::vector<ShaderInput>& shaders,
+                                     const SourceReader& reader) {
+    std::vector<std::string> roots;
+    auto add = [&](const std::string& dir) {
+        std::error_code ec;
+        const auto canonical = fs::weakly_canonical(dir.empty() ? "." : dir, ec);
+        if (ec) return;
+        std::string text = canonical.generic_string();
+        while (text.size() > 1 && text.back() == '/') text.pop_back();
+        if (std::find(roots.begin(), roots.end(), text) == roots.end()) roots.push_back(text);
+    };
+    for (const auto& dir : o.includeDirs) add(dir);
+    for (const auto& shader : shaders)
+        for (const auto& stage : shader.stages)
+            if (auto c = reader.canonical(stage.path)) add(parentDir(*c));
+    add(o.baseDir);
+    return roots;
 }
 
-// Every .glsl directly in the include dirs (not in subdirectories; the first directory
-// wins for a shadowed name), plus any included file outside them.
-ModuleIndex indexModules(const Options& o, const std::set<std::string>& extraFiles, const SourceReader& reader,
-                         DiagnosticSink& sink) {
-    ModuleIndex index;
-    std::vector<std::pair<std::string, std::string>> found;  // identifier, path
-    std::set<std::string> identifiers, canonicals;
-    auto add = [&](const std::string& identifier, const std::string& path) {
+// The module's path relative to the first root holding it (else its full path).
+std::string namingPath(const std::string& canonical, const std::vector<std::string>& roots) {
+    for (const auto& root : roots) {
+        const std::string prefix = root == "/" ? root : root + "/";
+        if (canonical.starts_with(prefix)) return canonical.substr(prefix.size());
+    }
+    return canonical;
+}
+
+// Every .glsl directly in the include dirs (the first directory wins for a shadowed
+// name), plus every included file elsewhere (in their subfolders too). Problems found
+// scanning a module no stage includes are warnings: only what is used fails a build.
+ModuleIndex indexModules(const Options& o, const std::vector<ShaderInput>& shaders,
+                         const std::vector<std::string>& includedFiles, const std::set<std::string>& used,
+                         const SourceReader& reader, DiagnosticSink& sink) {
+    std::vector<ModuleFile> files;
+    std::set<std::string> canonicals, shadowed;
+    auto add = [&](const std::string& path) {
         auto canonical = reader.canonical(path);
-        if (!canonical || !canonicals.insert(*canonical).second) return;
-        if (!identifiers.insert(identifier).second) {
-            sink.report(makeError(
-                path, 0, 0,
-                "module identifier '" + identifier + "' is already taken by another module; rename one of them"));
-            return;
-        }
-        found.emplace_back(identifier, path);
+        if (canonical && canonicals.insert(*canonical).second) files.push_back({path, *canonical});
     };
     for (const auto& dir : o.includeDirs) {
         std::error_code ec;
-        std::vector<fs::path> files;
-        for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator(); ++it)
-            if (it->is_regular_file() && it->path().extension() == ".glsl") files.push_back(it->path());
-        std::sort(files.begin(), files.end());
-        for (const auto& f : files) add(moduleIdentifier(f.lexically_relative(dir)), f.string());
+        std::vector<fs::path> found;
+        for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator(); it.increment(ec))
+            if (it->is_regular_file(ec) && it->path().extension() == ".glsl") found.push_back(it->path());
+        std::sort(found.begin(), found.end());
+        for (const auto& f : found)
+            if (shadowed.insert(f.filename().string()).second) add(f.string());
     }
-    for (const auto& f : extraFiles) add(moduleIdentifier(fs::path(f).filename()), f);
-    std::sort(found.begin(), found.end());
+    for (const auto& f : includedFiles) add(f);
 
-    ResolveOptions ro{o.includeDirs, o.defines, {}};
+    const auto roots = namingRoots(o, shaders, reader);
+    std::vector<std::pair<std::string, std::size_t>> named;  // identifier, index into files
+    std::set<std::string> identifiers;
+    for (std::size_t i = 0; i < files.size(); ++i) {
+        std::string id = mangleModulePath(namingPath(files[i].canonical, roots));
+        if (identifiers.contains(id)) {
+            // Only possible for equal paths under two roots: name it by its path from --base-dir.
+            const std::string first = id;
+            id = mangleModulePath(embeddedPath(files[i].canonical, o.baseDir));
+            for (int n = 2; identifiers.contains(id); ++n) id = first + "__" + std::to_string(n);
+            Diagnostic note = makeError(
+                files[i].path, 0, 0,
+                "module name '" + first + "' is taken by a module under an earlier root; this one is '" + id + "'");
+            note.severity = Severity::Warning;
+            sink.report(std::move(note));
+        }
+        identifiers.insert(id);
+        named.emplace_back(id, i);
+    }
+    std::sort(named.begin(), named.end());
+
+    // Scans are independent: spread them over -j threads, then report in name order.
+    ResolveOptions ro{o.includeDirs, o.defines, {}, o.baseDir};
+    std::vector<ModuleScanResult> scans(named.size());
+    std::atomic<std::size_t> next{0};
+    auto worker = [&] {
+        for (std::size_t i; (i = next.fetch_add(1)) < named.size();)
+            scans[i] = scanModule(files[named[i].second].path, ro, reader);
+    };
+    const std::size_t threads =
+        std::clamp<std::size_t>(static_cast<std::size_t>(o.jobs), 1, std::max<std::size_t>(1, named.size() / 64));
+    std::vector<std::thread> pool;
+    for (std::size_t i = 1; i < threads; ++i) pool.emplace_back(worker);
+    worker();
+    for (auto& thread : pool) thread.join();
+
+    ModuleIndex index;
     std::vector<std::vector<std::string>> includes;
-    for (const auto& [identifier, path] : found) {
-        auto scan = scanModule(path, ro, reader);
-        sink.reportAll(scan.diagnostics);
-        CatalogModule m{identifier, embeddedPath(path, o.baseDir), scan.module.description, scan.module.text, {}, path};
-        index.byCanonical[*reader.canonical(path)] = static_cast<std::uint32_t>(index.modules.size());
+    for (std::size_t n = 0; n < named.size(); ++n) {
+        const std::string& identifier = named[n].first;
+        const ModuleFile& file = files[named[n].second];
+        auto& scan = scans[n];
+        const bool isUsed = used.contains(file.canonical);
+        for (auto& d : scan.diagnostics) {
+            if (d.severity != Severity::Error) {
+                sink.report(std::move(d));
+            } else if (!isUsed) {  // used modules show their errors in the stages, under the stages' macros
+                d.severity = Severity::Warning;
+                d.message += " (in module " + identifier + ", which no stage includes, so a warning)";
+                sink.report(std::move(d));
+            }
+        }
+        CatalogModule m{identifier, embeddedPath(file.path, o.baseDir), scan.module.description, scan.module.text, {},
+                        file.path};
+        index.byCanonical[file.canonical] = static_cast<std::uint32_t>(index.modules.size());
         index.modules.push_back(std::move(m));
         includes.push_back(scan.module.includes);
     }
@@ -96,7 +166,7 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
     std::map<std::string, std::string> includedPath;  // canonical -> display
 
     for (const auto& shader : shaders) {
-        ResolveOptions base{o.includeDirs, o.defines, rc.data.versionDirective};
+        ResolveOptions base{o.includeDirs, o.defines, rc.data.versionDirective, o.baseDir};
         std::vector<VariantPragma> pragmas;
         bool ok = true;
         std::vector<std::string> stagePaths;
@@ -157,15 +227,12 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
         }
     }
 
-    // Modules: the include dirs' .glsl files plus anything included from elsewhere.
-    std::set<std::string> extra;
-    for (const auto& [canonical, path] : includedPath) {
-        bool inDirs = false;
-        for (const auto& dir : o.includeDirs)
-            if (auto c = reader.canonical(dir); c && canonical.rfind(*c + "/", 0) == 0) inDirs = true;
-        if (!inDirs) extra.insert(path);
-    }
-    auto modules = indexModules(o, extra, reader, sink);
+    // Modules: the include dirs' .glsl files plus every other file a stage included.
+    std::vector<std::string> extra;  // those in an -I dir are known already and skipped
+    for (const auto& [canonical, path] : includedPath) extra.push_back(path);
+    std::set<std::string> used;
+    for (const auto& [canonical, path] : includedPath) used.insert(canonical);
+    auto modules = indexModules(o, shaders, extra, used, reader, sink);
     for (const auto& m : modules.modules) rc.filesRead.push_back(m.sourcePath);
     for (std::size_t s = 0; s < rc.data.shaders.size(); ++s) {
         std::set<std::uint32_t> used;
@@ -242,6 +309,7 @@ std::string fingerprint(const ResolvedCatalog& rc) {
     mix(d.nameSpace);
     mix(d.commandLine);
     mix(d.versionDirective);  // the banner shows the command
+    mix(d.sourcesBlock);      // so a header with a stale record is rewritten
     for (const auto& s : d.shaders) {
         mix(s.name);
         for (const auto& a : s.axes) {

@@ -47,7 +47,8 @@ struct CatalogModule {
 struct CatalogData {
     std::string nameSpace;
     std::string commandLine;
-    std::string fingerprint;  // of every input; lets an unchanged run skip validation
+    std::string fingerprint;   // of every input; lets an unchanged run skip validation
+    std::string sourcesBlock;  // closing comment: the files read and their fingerprint (source_fingerprint.hpp)
     std::string versionDirective;
     std::vector<CatalogShader> shaders;  // sorted by name
     std::vector<CatalogModule> modules;  // sorted by identifier

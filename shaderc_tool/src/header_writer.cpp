@@ -176,9 +176,9 @@ std::string writeShaders(std::ostringstream& out, ArrayEmitter& arrays, const Ca
     return arrays.array("prism::catalog::Shader", "shaders", entries, false);
 }
 
+// The text is generated code, laid out as the header shows it: not for clang-format.
+// clang-format off
 void writeLookups(std::ostringstream& out) {
-    // The raw string is emitted text: kept exactly as the generated header shows it.
-    // clang-format off
     out << R"cpp(
 constexpr const prism::catalog::Shader& shaderInfo(ShaderId id) { return kCatalog.shaders[static_cast<std::size_t>(id)]; }
 constexpr const prism::catalog::Module& moduleInfo(ModuleId id) { return kCatalog.modules[static_cast<std::size_t>(id)]; }
@@ -197,8 +197,8 @@ constexpr std::optional<ModuleId> moduleIdFromName(std::string_view n) {
     return std::nullopt;
 }
 )cpp";
-    // clang-format on
 }
+// clang-format on
 
 }  // namespace
 
@@ -265,6 +265,7 @@ std::string writeHeader(const CatalogData& c) {
         << ref(contractAttributes) << ", " << ref(contractUniforms) << ", " << quoted(c.versionDirective) << "};\n";
     writeLookups(out);
     out << "\n}  // namespace " << c.nameSpace << "\n";
+    if (!c.sourcesBlock.empty()) out << "\n" << c.sourcesBlock;
     return out.str();
 }
 

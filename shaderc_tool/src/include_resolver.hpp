@@ -1,18 +1,13 @@
 // Stage 2 of prism-shaderc: turns one stage file into a single driver-safe GLSL text.
 //
-// - `#include "x"` searches the including file's directory, then each include dir in
-//   order; `#include <x>` searches only the include dirs.
-// - Every file enters a stage at most once (identity = canonical path), so diamonds
-//   work without guards; `#pragma once` is accepted and dropped.
-// - An include cycle is an error printing the chain `a.glsl -> b.glsl -> a.glsl`.
-// - A missing include is an error at the including file:line listing the dirs searched.
-// - #if/#ifdef/#ifndef/#elif/#else/#endif are evaluated with the given defines plus
-//   the #define/#undef seen so far, and an #include in an inactive branch is not
-//   followed (the conditional lines themselves are kept for the compiler).
-// - Output: `#version` on line 1 (the first #version found, else the default), then
-//   `#define NAME VALUE` for every define, then the text with integer-only
-//   `#line <line> <source-number>` directives; source 0 is the stage file, and
-//   `files` maps numbers to paths. No GL_GOOGLE_* / ARB include extension lines.
+// - Which #include, #version and #pragma lines are active is decided by glslang's own
+//   preprocessor (glslang_preprocessor.hpp), with the -D and variant macros; that is
+//   also where the include search, include-once, cycle and depth rules live.
+// - Output: `#version` on line 1 (the first active #version, else the default), then
+//   `#define NAME VALUE` for every define, then the text with each active #include
+//   replaced by its file and integer-only `#line <line> <source-number>` directives;
+//   source 0 is the stage file, and `files` maps numbers to paths. Conditionals stay
+//   in the text for the compiler. No GL_GOOGLE_* / ARB include extension lines.
 // - `#pragma prism variant NAME [v1 v2 ...]` lines are collected and blanked.
 #pragma once
 
@@ -22,6 +17,7 @@
 #include <vector>
 
 #include "diagnostics.hpp"
+#include "glslang_preprocessor.hpp"
 #include "source_reader.hpp"
 
 namespace prism::shaderc {
@@ -50,23 +46,19 @@ struct ResolvedStage {
     std::vector<std::string> filesRead;  // display paths of every file read, in order
 };
 
-struct ResolveOptions {
-    std::vector<std::string> includeDirs;
-    std::vector<std::pair<std::string, std::string>> defines;  // NAME, VALUE ("" -> defined empty)
-    std::string defaultVersion = "#version 330 core";
-};
-
 struct ResolveResult {
     bool ok = false;
     ResolvedStage stage;
     std::vector<Diagnostic> diagnostics;  // errors make ok false; warnings may appear either way
 };
 
+// `reader` is injectable (MemoryReader) so tests and fuzzers run on in-memory files.
 ResolveResult resolveStage(const std::string& stagePath, const ResolveOptions& options, const SourceReader& reader);
 
 // A module as the catalogue stores it: its own text with #include, #version and
 // #pragma once lines blanked (so line numbers stay true), its leading comment as the
-// description, and its direct includes (display paths) in order.
+// description, and the files its active includes name (display paths) in order, as
+// glslang's preprocessor sees the module on its own with the -D macros.
 struct ModuleSource {
     std::string path;
     std::string canonical;

@@ -1,5 +1,6 @@
 // prism-shaderc: the build-time GLSL toolchain. main() only sequences the stages:
-//   args -> shader inputs -> contract -> include resolution + variants -> validation
+//   args -> no-op check on the recorded sources -> shader inputs -> contract
+//   -> include resolution + variants -> validation
 //   (glslang, interface and contract checks, reflection) -> header, GLSL, depfile.
 // Exit status: 0 success, 1 shader errors, 2 usage or I/O errors.
 #include <fstream>
@@ -15,6 +16,7 @@
 #include "header_writer.hpp"
 #include "output_file.hpp"
 #include "shader_inputs.hpp"
+#include "source_fingerprint.hpp"
 #include "source_reader.hpp"
 #include "validator.hpp"
 
@@ -49,11 +51,11 @@ int writeOutputs(const Options& o, const ResolvedCatalog& rc) {
     return kExitOk;
 }
 
-int writeBuildSystemFiles(const Options& o, const ResolvedCatalog& rc) {
+int writeBuildSystemFiles(const Options& o, const std::vector<std::string>& filesRead) {
     std::string error;
     const std::string target = !o.stamp.empty() ? o.stamp : o.output;
     if (!o.depfile.empty() && !target.empty() &&
-        writeIfChanged(o.depfile, makeDepfile(target, rc.filesRead), error) == WriteOutcome::Failed) {
+        writeIfChanged(o.depfile, makeDepfile(target, filesRead), error) == WriteOutcome::Failed) {
         std::cerr << "prism-shaderc: error: " << error << "\n";
         return kExitUsageOrIo;
     }
@@ -73,6 +75,10 @@ int main(int argc, char** argv) {
     DiagnosticSink sink;
     DiskReader disk;
 
+    const bool writesHeaderOnly = !o.checkOnly && !o.output.empty() && o.emitGlslDir.empty();
+    if (writesHeaderOnly)
+        if (auto files = unchangedSources(o, readWholeFile(o.output), disk)) return writeBuildSystemFiles(o, *files);
+
     auto inputs = collectShaderInputs(o.inputs);
     sink.reportAll(inputs.diagnostics);
     auto contract = loadContracts(o.contracts, disk);
@@ -85,10 +91,11 @@ int main(int argc, char** argv) {
 
     auto catalog = resolveCatalog(o, inputs.shaders, contract.contract, disk, sink);
     catalog.data.commandLine = o.commandLine;
+    catalog.data.sourcesBlock = sourcesBlock(recordSources(o, catalog.filesRead, disk));
     catalog.data.fingerprint = fingerprint(catalog);
     if (sink.errorCount() == 0 && headerIsCurrent(o, catalog.data.fingerprint)) {
         sink.print(std::cerr, o.errorFormat);
-        return writeBuildSystemFiles(o, catalog);
+        return writeBuildSystemFiles(o, catalog.filesRead);
     }
     if (sink.errorCount() == 0) {
         initializeValidator();
@@ -103,5 +110,5 @@ int main(int argc, char** argv) {
     }
     if (o.checkOnly) return kExitOk;
     if (int rc = writeOutputs(o, catalog); rc != kExitOk) return rc;
-    return writeBuildSystemFiles(o, catalog);
+    return writeBuildSystemFiles(o, catalog.filesRead);
 }

@@ -72,9 +72,9 @@ FilterParseResult parseVariantFilters(const std::vector<std::string>& specs) {
 namespace {
 
 bool matches(const VariantFilter& f, const std::vector<std::pair<std::string, std::string>>& defines) {
-    for (const auto& [name, value] : f.fixed) {
-        auto it = std::find_if(defines.begin(), defines.end(), [&](const auto& d) { return d.first == name; });
-        if (it == defines.end() || it->second != value) return false;
+    for (const auto& fixed : f.fixed) {  // no structured bindings: Clang 14 cannot capture them
+        auto it = std::find_if(defines.begin(), defines.end(), [&](const auto& d) { return d.first == fixed.first; });
+        if (it == defines.end() || it->second != fixed.second) return false;
     }
     return true;
 }
@@ -95,7 +95,9 @@ ChoicesResult variantChoices(const std::string& shader, const std::vector<Axis>&
             continue;
         }
         if (f.shader != shader) continue;
-        for (const auto& [name, value] : f.fixed) {
+        for (const auto& fixed : f.fixed) {  // no structured bindings: Clang 14 cannot capture them
+            const std::string& name = fixed.first;
+            const std::string& value = fixed.second;
             auto ax = std::find_if(axes.begin(), axes.end(), [&](const Axis& a) { return a.name == name; });
             if (ax == axes.end())
                 r.diagnostics.push_back(makeError(

@@ -132,6 +132,34 @@ TEST(ToolOutputs, UnchangedHeaderKeepsItsTimestampAndErrorsWriteNothing) {
         EXPECT_EQ(e.path().string().find(".tmp."), std::string::npos) << "left a temporary file " << e.path();
 }
 
+// The no-op is decided on the sources the header records (source_fingerprint.hpp):
+// any change to a file read, or a new module in an -I folder, rebuilds.
+TEST(ToolOutputs, NoOpChecksTheRecordedSources) {
+    ScratchDir dir("noop");
+    fs::copy(kFixture, dir.path() / "fx", fs::copy_options::recursive);
+    const std::string args =
+        "-o out.hpp --depfile out.d --base-dir . -I fx/modules --contract fx/contract.json fx/shaders";
+    ASSERT_EQ(runShaderc(args, dir.str()).exitCode, 0);
+    const auto header = dir.path() / "out.hpp";
+    const std::string first = readFile(header);
+    EXPECT_NE(first.find("// ---- sources read (prism-shaderc's no-op check): "), std::string::npos);
+    EXPECT_NE(first.find("\n//   fx/modules/fog.glsl\n"), std::string::npos);
+    fs::remove(dir.path() / "out.d");
+    ASSERT_EQ(runShaderc(args, dir.str()).exitCode, 0);
+    EXPECT_EQ(readFile(header), first);
+    EXPECT_NE(readFile(dir.path() / "out.d").find("fx/modules/fog.glsl"), std::string::npos)
+        << "the no-op writes the depfile";
+
+    dir.write("fx/modules/fog.glsl", readFile(dir.path() / "fx/modules/fog.glsl") + "// one more comment line\n");
+    ASSERT_EQ(runShaderc(args, dir.str()).exitCode, 0);
+    const std::string edited = readFile(header);
+    EXPECT_NE(edited.find("// one more comment line"), std::string::npos);
+
+    dir.write("fx/modules/extra.glsl", "// Provides: a module nobody includes yet.\nfloat extra() { return 1.0; }\n");
+    ASSERT_EQ(runShaderc(args, dir.str()).exitCode, 0);
+    EXPECT_NE(readFile(header).find("    extra = "), std::string::npos);
+}
+
 TEST(ToolOutputs, EmittedGlslIsDriverSafe) {
     ScratchDir dir("emit");
     auto run = runShaderc("--emit-glsl glsl " + fixtureArgs(), dir.str());

@@ -1,0 +1,89 @@
+// Include search and the directive helpers (see include_search.hpp).
+#include "include_search.hpp"
+
+#include <algorithm>
+#include <array>
+
+namespace prism::shaderc {
+
+std::optional<IncludeTarget> parseIncludeTarget(std::string_view argument) {
+    if (argument.size() < 2) return std::nullopt;
+    const char open = argument.front();
+    if (open != '"' && open != '<') return std::nullopt;
+    const char close = open == '"' ? '"' : '>';
+    const std::size_t end = argument.find(close, 1);
+    if (end == std::string_view::npos || end == 1) return std::nullopt;
+    if (!trim(argument.substr(end + 1)).empty()) return std::nullopt;
+    return IncludeTarget{std::string(argument.substr(1, end - 1)), open == '<'};
+}
+
+std::vector<SearchDir> includeSearchDirs(const IncludeTarget& target, const std::vector<std::string>& chain,
+                                         const std::vector<std::string>& includeDirs, const std::string& baseDir) {
+    std::vector<SearchDir> dirs;
+    auto add = [&](std::string path, std::string role) {
+        if (std::none_of(dirs.begin(), dirs.end(), [&](const SearchDir& d) { return d.path == path; }))
+            dirs.push_back({std::move(path), std::move(role)});
+    };
+    const bool rootRelative = target.name.starts_with('/');
+    if (!target.angled && !rootRelative)
+        for (std::size_t i = 0; i < chain.size(); ++i)
+            add(parentDir(chain[i]), i == 0 ? "the including file's folder" : "folder of " + chain[i]);
+    for (const auto& dir : includeDirs) add(joinPath("", dir), "-I");
+    if (rootRelative && !baseDir.empty()) add(joinPath("", baseDir), "--base-dir");
+    return dirs;
+}
+
+std::optional<FoundFile> findInclude(const IncludeTarget& target, const std::vector<SearchDir>& dirs,
+                                     const SourceReader& reader) {
+    std::string_view name = target.name;
+    while (name.starts_with('/')) name.remove_prefix(1);
+    if (name.empty()) return std::nullopt;
+    for (const auto& dir : dirs) {
+        std::string display = joinPath(dir.path, std::string(name));
+        if (auto canonical = reader.canonical(display)) return FoundFile{std::move(display), *canonical};
+    }
+    return std::nullopt;
+}
+
+std::string missingIncludeMessage(const IncludeTarget& target, const std::vector<SearchDir>& dirs) {
+    const std::string written = target.angled ? "<" + target.name + ">" : "\"" + target.name + "\"";
+    std::string message = "cannot find include " + written + "; searched: ";
+    if (dirs.empty()) message += "no directories (<...> and \"/...\" search only -I directories and --base-dir)";
+    for (std::size_t i = 0; i < dirs.size(); ++i)
+        message +=
+            (i ? ", " : "") + (dirs[i].path.empty() ? std::string(".") : dirs[i].path) + " (" + dirs[i].role + ")";
+    return message + "; add a -I directory or fix the path";
+}
+
+int directiveColumn(const LogicalLine& line) {
+    const std::size_t at = line.code.find_first_not_of(" \t");
+    return at == std::string::npos ? 1 : static_cast<int>(at) + 1;
+}
+
+int includeTargetColumn(const LogicalLine& line) {
+    const std::string& code = line.code;
+    const std::size_t keyword = code.find("include");
+    const std::size_t quote = keyword == std::string::npos ? std::string::npos : code.find_first_of("\"<", keyword);
+    if (quote == std::string::npos || quote >= line.physical.front().size()) return directiveColumn(line);
+    return static_cast<int>(quote) + 1;
+}
+
+bool isPragmaOnce(const Directive& directive) {
+    return directive.name == "pragma" && splitWhitespace(directive.argument) == std::vector<std::string>{"once"};
+}
+
+bool isPrismPragma(const Directive& directive) {
+    const auto words = splitWhitespace(directive.argument);
+    return directive.name == "pragma" && !words.empty() && words.front() == "prism";
+}
+
+bool isIncludeExtension(const Directive& directive) {
+    static constexpr std::array<std::string_view, 3> kIncludeExtensions = {
+        "GL_GOOGLE_include_directive", "GL_ARB_shading_language_include", "GL_GOOGLE_cpp_style_line_directive"};
+    if (directive.name != "extension") return false;
+    std::string_view argument = directive.argument;
+    const std::string_view name = trim(argument.substr(0, argument.find(':')));
+    return std::find(kIncludeExtensions.begin(), kIncludeExtensions.end(), name) != kIncludeExtensions.end();
+}
+
+}  // namespace prism::shaderc

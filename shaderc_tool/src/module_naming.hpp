@@ -1,0 +1,28 @@
+// Module identifiers: a module's path relative to the root that found it (an -I
+// directory, a stage folder, or --base-dir), mangled into a C++ identifier that no
+// other path can produce:
+//   - a trailing ".glsl" is dropped; the path's folders are joined with "__":
+//     color/space/rgb2hsv.glsl -> color__space__rgb2hsv, fragment_output.glsl -> fragment_output;
+//   - a path component that is not letters and digits with single inner underscores
+//     (or, first, starts with a digit) is written as "_" + the hex of its bytes:
+//     my-lib/x.glsl -> _6d792d6c6962__x;
+//   - a C++ keyword gets a trailing "_" (new.glsl -> new_).
+// So a_b/c -> a_b__c and a/b_c -> a__b_c differ, and demangleModuleIdentifier() gives
+// the path back (without ".glsl"), which is what makes the mapping collision-free.
+//
+//   assert(mangleModulePath("color/space/rgb2hsv.glsl") == "color__space__rgb2hsv");
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace prism::shaderc {
+
+std::string mangleModulePath(std::string_view relativePath);
+
+// The relative path (without a dropped ".glsl") a mangled identifier came from, or
+// nullopt when no path mangles to it.
+std::optional<std::string> demangleModuleIdentifier(std::string_view identifier);
+
+}  // namespace prism::shaderc

@@ -1,0 +1,106 @@
+// The no-op check on recorded sources (see source_fingerprint.hpp).
+#include "source_fingerprint.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <set>
+#include <sstream>
+
+namespace prism::shaderc {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::string_view kBlockStart = "// ---- sources read (prism-shaderc's no-op check): ";
+constexpr std::string_view kFilePrefix = "//   ";
+
+class Fnv1a {
+  public:
+    void mix(std::string_view s) {
+        for (unsigned char c : s) {
+            h_ ^= c;
+            h_ *= 1099511628211ull;
+        }
+        h_ ^= 0xff;
+        h_ *= 1099511628211ull;
+    }
+    std::string hex() const {
+        char buf[17];
+        std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h_));
+        return buf;
+    }
+
+  private:
+    std::uint64_t h_ = 1469598103934665603ull;
+};
+
+// The sorted names of `dir`'s regular files whose extension passes `keep`.
+std::vector<std::string> listing(const std::string& dir, bool (*keep)(const fs::path&)) {
+    std::vector<std::string> names;
+    std::error_code ec;
+    for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator(); it.increment(ec))
+        if (it->is_regular_file(ec) && keep(it->path())) names.push_back(it->path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+bool isModule(const fs::path& p) {
+    return p.extension() == ".glsl";
+}
+bool isStage(const fs::path& p) {
+    const auto e = p.extension();
+    return e == ".vert" || e == ".geom" || e == ".frag" || e == ".comp";
+}
+
+std::string fingerprintOf(const Options& o, const std::vector<std::string>& embedded, const SourceReader& reader) {
+    Fnv1a h;
+    h.mix(PRISM_VERSION);
+    h.mix(o.commandLine);
+    for (const auto& file : embedded) {
+        h.mix(file);
+        const auto text = reader.read(joinPath(o.baseDir, file));
+        h.mix(text ? *text : std::string("\0missing", 8));
+    }
+    for (const auto& dir : o.includeDirs)
+        for (const auto& name : listing(dir, isModule)) h.mix("-I " + dir + "/" + name);
+    for (const auto& input : o.inputs)
+        for (const auto& name : listing(input, isStage)) h.mix("in " + input + "/" + name);
+    return h.hex();
+}
+
+}  // namespace
+
+SourcesRecord recordSources(const Options& o, const std::vector<std::string>& filesRead, const SourceReader& reader) {
+    std::set<std::string> unique;
+    for (const auto& f : filesRead) unique.insert(embeddedPath(fs::absolute(f).lexically_normal().string(), o.baseDir));
+    SourcesRecord record;
+    record.files.assign(unique.begin(), unique.end());
+    record.fingerprint = fingerprintOf(o, record.files, reader);
+    return record;
+}
+
+std::string sourcesBlock(const SourcesRecord& record) {
+    std::string block = std::string(kBlockStart) + record.fingerprint + "\n";
+    for (const auto& f : record.files) block += std::string(kFilePrefix) + f + "\n";
+    return block;
+}
+
+std::optional<std::vector<std::string>> unchangedSources(const Options& o, const std::string& header,
+                                                         const SourceReader& reader) {
+    const auto start = header.rfind(kBlockStart);
+    if (start == std::string::npos) return std::nullopt;
+    std::istringstream in(header.substr(start + kBlockStart.size()));
+    SourcesRecord recorded;
+    std::getline(in, recorded.fingerprint);
+    for (std::string line; std::getline(in, line);) {
+        if (!line.starts_with(kFilePrefix)) return std::nullopt;
+        recorded.files.push_back(line.substr(kFilePrefix.size()));
+    }
+    if (recorded.files.empty() || fingerprintOf(o, recorded.files, reader) != recorded.fingerprint) return std::nullopt;
+    std::vector<std::string> paths;
+    for (const auto& f : recorded.files) paths.push_back(joinPath(o.baseDir, f));
+    return paths;
+}
+
+}  // namespace prism::shaderc

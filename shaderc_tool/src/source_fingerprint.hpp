@@ -1,0 +1,36 @@
+// Stage 0 of prism-shaderc: the cheap no-op check. A header records, at its end, every
+// file the run that wrote it read (relative to --base-dir) and a fingerprint of the
+// tool version, the command line, those files' contents and the listings of the -I
+// directories and input folders. When all of that is unchanged, nothing the header
+// depends on changed, and the run ends before any resolution or glslang call.
+//
+//   if (auto files = unchangedSources(options, headerText, reader)) ... // no-op; *files for the depfile
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "args.hpp"
+#include "source_reader.hpp"
+
+namespace prism::shaderc {
+
+struct SourcesRecord {
+    std::string fingerprint;
+    std::vector<std::string> files;  // as embedded: relative to --base-dir where possible
+};
+
+// The record of a run that read `filesRead` (paths as read).
+SourcesRecord recordSources(const Options& options, const std::vector<std::string>& filesRead,
+                            const SourceReader& reader);
+
+// The header's closing comment block holding `record`.
+std::string sourcesBlock(const SourcesRecord& record);
+
+// The files (paths to read them by) when `headerText` records sources whose fingerprint
+// is still the same; nullopt when anything differs or there is no record.
+std::optional<std::vector<std::string>> unchangedSources(const Options& options, const std::string& headerText,
+                                                         const SourceReader& reader);
+
+}  // namespace prism::shaderc
