@@ -44,7 +44,7 @@ RebuildOutcome ShaderRebuilder::rebuild(const RebuildRequest& request) const {
     RebuildOutcome out;
     sc::DiskReader disk;  // per rebuild: sees every edit, reads each file once
     sc::DiagnosticSink sink;
-    sc::ResolveOptions options{request.includeDirs, request.defines, request.versionDirective};
+    sc::ResolveOptions options{request.includeDirs, request.defines, request.versionDirective, {}};
 
     std::vector<sc::StageToValidate> stages;
     bool resolved = true;
