@@ -16,6 +16,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace prism {
@@ -41,6 +42,24 @@ rain::RainParams rainParamsFor(const RainSettings& settings) {
     return p;
 }
 
+water::HeightField sceneTerrain(const WaterSettings& w) {
+    water::ProceduralTerrainOptions terrain;
+    terrain.width = terrain.height = static_cast<int>(w.gridSize);
+    terrain.cellSize = w.cellSize;
+    terrain.seed = w.seed;
+    return water::proceduralTerrain(terrain);
+}
+
+rain::RainParams rainParamsFor(const Scene& scene) {
+    rain::RainParams p = rainParamsFor(*scene.rain);
+    if (scene.water) {
+        const water::HeightField t = sceneTerrain(*scene.water);
+        p.groundHeight = *std::min_element(t.heights.begin(), t.heights.end());
+        rain::validate(p);
+    }
+    return p;
+}
+
 SceneRenderer::SceneRenderer(const catalog::Catalog& catalog) : programs_(catalog) {}
 SceneRenderer::~SceneRenderer() = default;
 
@@ -49,7 +68,7 @@ std::size_t SceneRenderer::rainProgramsBuilt() const {
 }
 
 void SceneRenderer::drawRain(const Scene& scene) {
-    const rain::RainParams params = rainParamsFor(*scene.rain);
+    const rain::RainParams params = rainParamsFor(scene);
     if (!rainPrograms_) rainPrograms_ = std::make_unique<rain::RainPrograms>();
     rain::RainSystem system(*rainPrograms_, params, scene.camera.eye);
     ++rainSystemsCreated_;
@@ -77,11 +96,7 @@ void SceneRenderer::drawRain(const Scene& scene) {
 void SceneRenderer::drawWater(const Scene& scene) {
     const WaterSettings& w = *scene.water;
     water::WaterSceneDescription d;
-    water::ProceduralTerrainOptions terrain;
-    terrain.width = terrain.height = static_cast<int>(w.gridSize);
-    terrain.cellSize = w.cellSize;
-    terrain.seed = w.seed;
-    d.terrain = water::proceduralTerrain(terrain);
+    d.terrain = sceneTerrain(w);
     water::PermeabilityOptions soil;
     soil.soilMmPerHour = w.soilMillimetresPerHour;
     soil.clayMmPerHour = std::min(soil.clayMmPerHour, w.soilMillimetresPerHour);

@@ -29,10 +29,19 @@ namespace rain {
 class RainPrograms;
 struct RainParams;
 }  // namespace rain
+namespace water {
+struct HeightField;
+}  // namespace water
 
 // The rain system's parameters for a scene's rain settings (intensity class or rate,
 // wind as a world vector, seed, cylinder, budget). Throws rain::RainParameterError.
 rain::RainParams rainParamsFor(const RainSettings& settings);
+// The same for a whole scene: with water, the rain cylinder's bottom reaches down to the
+// lowest point of the scene's terrain (RainParams::groundHeight), so the drops reach the
+// puddles they feed. Needs scene.rain.
+rain::RainParams rainParamsFor(const Scene& scene);
+// The procedural terrain a scene's water settings describe (grid, cell size, seed).
+water::HeightField sceneTerrain(const WaterSettings& settings);
 
 struct SceneFrameInfo {
     std::size_t draws = 0;
