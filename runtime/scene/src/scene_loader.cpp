@@ -11,6 +11,9 @@
 #include <set>
 #include <sstream>
 
+#include "prism/water/rain_rates.hpp"
+#include "prism/water/water_simulation.hpp"
+
 namespace prism {
 namespace {
 
@@ -180,7 +183,8 @@ RainSettings readRain(const Reader& r, const json& j) {
             r.fail("/rain/intensity", "one of drizzle, light, moderate, heavy, excessive, cloudburst");
     }
     if (j.contains("rateMmPerHour"))
-        s.rateMillimetresPerHour = r.number(j["rateMmPerHour"], "/rain/rateMmPerHour", 0.0);
+        s.rateMillimetresPerHour =
+            r.number(j["rateMmPerHour"], "/rain/rateMmPerHour", 0.0, water::kMaxRainMmPerHour);
     if (j.contains("wind")) s.wind = r.vec3(j["wind"], "/rain/wind");
     if (j.contains("seed")) s.seed = r.whole(j["seed"], "/rain/seed", 0, 0xffffffffu);
     if (j.contains("radius")) s.cylinderRadius = static_cast<float>(r.number(j["radius"], "/rain/radius", 0.1, 1e4));
@@ -195,11 +199,16 @@ WaterSettings readWater(const Reader& r, const json& j) {
     if (j.contains("grid")) s.gridSize = r.whole(j["grid"], "/water/grid", 1, 2048);
     if (j.contains("cellSize")) s.cellSize = static_cast<float>(r.number(j["cellSize"], "/water/cellSize", 1e-3, 1e3));
     if (j.contains("rainMmPerHour"))
-        s.rainRateMillimetresPerHour = r.number(j["rainMmPerHour"], "/water/rainMmPerHour", 0.0, 1e4);
+        s.rainRateMillimetresPerHour = r.number(j["rainMmPerHour"], "/water/rainMmPerHour", 0.0, water::kMaxRainMmPerHour);
     if (j.contains("seconds")) s.seconds = r.number(j["seconds"], "/water/seconds", 0.0, 86400.0);
     if (j.contains("soilMmPerHour"))
         s.soilMillimetresPerHour = r.number(j["soilMmPerHour"], "/water/soilMmPerHour", 0.0, 1e6);
     if (j.contains("seed")) s.seed = r.whole(j["seed"], "/water/seed", 0, 0xffffffffu);
+    try {  // the simulated time must fit the substep cap at this cell size
+        water::planSubsteps(s.seconds, water::WaterParams{}, s.cellSize);
+    } catch (const std::invalid_argument& e) {
+        r.fail("/water/seconds", std::string("a time the water step can take in one call: ") + e.what());
+    }
     return s;
 }
 
