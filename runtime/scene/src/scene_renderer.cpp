@@ -111,6 +111,7 @@ void SceneRenderer::drawWater(const Scene& scene) {
     }
     d.lights = scene.lights;
     d.fog = scene.fog;
+    d.backend = water::SimulationBackend::Fastest;  // both steps give the same water
     water::WaterScene waterScene(std::move(d));
     ++waterSystemsCreated_;
     waterScene.advance(w.seconds);

@@ -29,6 +29,7 @@ Lights WaterSceneDescription::defaultSun() {
 
 WaterSystem::WaterSystem(const HeightField& terrain, std::vector<float> permeability, const WaterParams& params,
                          SimulationBackend backend, double rainMmPerHour) {
+    if (backend == SimulationBackend::Fastest) backend = chooseFastestBackend(terrain, permeability, params).backend;
     if (backend == SimulationBackend::Gpu)
         simulation_ = std::make_unique<GpuWaterSimulation>(terrain, std::move(permeability), params);
     else

@@ -27,13 +27,12 @@
 #include "prism/image.hpp"
 #include "prism/program_cache.hpp"
 #include "prism/scene_lighting.hpp"
+#include "prism/water/backend_choice.hpp"
 #include "prism/water/height_field.hpp"
 #include "prism/water/procedural_textures.hpp"
 #include "prism/water/water_simulation.hpp"
 
 namespace prism::water {
-
-enum class SimulationBackend { Cpu, Gpu };
 
 // How the water surface looks (seed 4.3).
 struct WaterLook {
@@ -51,7 +50,7 @@ struct WaterSceneDescription {
     std::vector<float> permeability;  // m/s per cell; empty: proceduralPermeability(terrain)
     bool water = true;                // false: terrain and sky only
     double rainMmPerHour = 0.0;       // constant rain rate (see rain_rates.hpp for classes)
-    SimulationBackend backend = SimulationBackend::Cpu;
+    SimulationBackend backend = SimulationBackend::Cpu;  // Fastest: measured once (backend_choice.hpp)
     WaterParams params;
     Lights lights = defaultSun();
     std::optional<Fog> fog;
