@@ -183,6 +183,19 @@ void CpuWaterSimulation::swapWater() {
     avail_.swap(availOut_);
 }
 
+int CpuWaterSimulation::bytesPerCellPerSubstep(bool smoothing) {
+    // 4-byte arrays. A pass that writes water reads hi, lo and the terrain and writes hi,
+    // lo, surface and available water: 28 bytes, besides the arrays of its own.
+    constexpr int kWater = 12 + 16;
+    constexpr int kRain = 4 + kWater;        // + permeability
+    constexpr int kFlowOut = 8 + 8;          // surface, available -> amount, code
+    constexpr int kGather = 8 + kWater;      // + amount, code
+    constexpr int kVelocity = 8 + 8 + 8;     // surface, available; q east and south read and written
+    constexpr int kApply = 8 + kWater;       // + q east and south
+    constexpr int kSmoothing = 8 + kWater;   // + surface, available
+    return kRain + kFlowOut + kGather + kVelocity + kApply + (smoothing ? kSmoothing : 0);
+}
+
 void CpuWaterSimulation::runSubsteps(const StepConstants& k, long count) {
     FlushDenormals ftz;
     for (long s = 0; s < count; ++s) substep(k);
@@ -225,8 +238,11 @@ void CpuWaterSimulation::rainAndInfiltration(const StepConstants& k, int z0, int
     const float* __restrict hiIn = hi_.data();
     const float* __restrict loIn = lo_.data();
     const int W = width();
-    thread_local std::vector<double> taken;  // per cell of the row, summed in order below
-    taken.resize(static_cast<std::size_t>(W));
+    // What each cell of the row gave up, as (hi, lo) floats: the cell's whole water when
+    // emptied, else (capacity, +0); summed below in double in cell order, as h + l.
+    thread_local std::vector<float> takenHi, takenLo;
+    takenHi.resize(static_cast<std::size_t>(W));
+    takenLo.resize(static_cast<std::size_t>(W));
     for (int z = z0; z < z1; ++z) {
         const std::size_t row = cellIndex(0, z, W);
         for (int x = 0; x < W; ++x) {
@@ -237,12 +253,13 @@ void CpuWaterSimulation::rainAndInfiltration(const StepConstants& k, int z0, int
             float hLeft = h, lLeft = l;
             dfAdd(hLeft, lLeft, -capacity);
             const bool emptied = capacity >= availableWater(h, l);
-            taken[static_cast<std::size_t>(x)] =
-                emptied ? static_cast<double>(h) + static_cast<double>(l) : static_cast<double>(capacity);
+            takenHi[static_cast<std::size_t>(x)] = emptied ? h : capacity;
+            takenLo[static_cast<std::size_t>(x)] = emptied ? l : 0.0f;
             write(i, emptied ? 0.0f : hLeft, emptied ? 0.0f : lLeft);
         }
         double infiltrated = 0.0;
-        for (int x = 0; x < W; ++x) infiltrated += taken[static_cast<std::size_t>(x)];
+        for (std::size_t x = 0; x < static_cast<std::size_t>(W); ++x)
+            infiltrated += static_cast<double>(takenHi[x]) + static_cast<double>(takenLo[x]);
         infiltratedRow_[static_cast<std::size_t>(z)] = infiltrated;
     }
 }

@@ -208,6 +208,10 @@ class CpuWaterSimulation final : public WaterSimulation {
     ~CpuWaterSimulation() override;
     // The threads the step runs on (threadsFor(params.threads, cells)).
     int threads() const { return threads_; }
+    // Bytes each substep reads and writes per cell, counting every array a pass streams
+    // once (neighbour reads come from cache): 180 with smoothing, 144 without. The
+    // memory-bound floor of a substep is cells x this / copy bandwidth (bench/water).
+    static int bytesPerCellPerSubstep(bool smoothing);
 
     std::vector<glm::vec2> depthPairs() const override;
     std::vector<glm::vec2> edgeVelocities() const override;
