@@ -21,7 +21,7 @@ std::string errorOf(const std::string& text) {
 }  // namespace
 
 TEST(SceneLoader, ReadsTheExampleScenes) {
-    for (const char* name : {"one_light", "four_lights", "fog", "rain", "water"}) {
+    for (const char* name : {"one_light", "four_lights", "fog", "rain", "water", "puddles_closeup"}) {
         auto scene = prism::loadScene(std::string(PRISM_SCENES_DIR) + "/" + name + ".json");
         EXPECT_FALSE(scene.objects.empty()) << name;
         EXPECT_FALSE(scene.lights.directional.empty()) << name;

@@ -221,4 +221,4 @@ TEST_P(SceneGolden, MatchesTheGoldenImage) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ExampleScenes, SceneGolden,
-                         ::testing::Values("one_light", "four_lights", "fog", "rain", "water"));
+                         ::testing::Values("one_light", "four_lights", "fog", "rain", "water", "puddles_closeup"));

@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 
+#include "prism/water/procedural_textures.hpp"
 #include "prism/water/rain_rates.hpp"
 
 namespace prism::water {
@@ -42,6 +43,21 @@ TEST(RainRates, RejectsNonFiniteAndOverflowingRates) {
     for (const char* bad : {"1e46", "inf", "nan", "1e309", "10000.5"})
         EXPECT_THROW(parseRainRateMmPerHour(bad), std::invalid_argument) << bad;
     EXPECT_DOUBLE_EQ(parseRainRateMmPerHour("10000"), kMaxRainMmPerHour);
+}
+
+// The ripple layers grow with the rain class: more drops per m^2 and s, more rings.
+TEST(RainRates, RippleDensityFollowsTheRainIntensity) {
+    EXPECT_EQ(rippleDensity(0.0), 0.0f);
+    float previous = 0.0f;
+    for (const auto& row : rainClassTable()) {
+        const float density = rippleDensity(rainRateMmPerHour(row.id));
+        EXPECT_GE(density, previous) << row.name;
+        EXPECT_GE(density, 0.5f);
+        EXPECT_LE(density, 4.0f);
+        previous = density;
+    }
+    EXPECT_GT(rippleDensity(rainRateMmPerHour(RainClass::Cloudburst)),
+              2.0f * rippleDensity(rainRateMmPerHour(RainClass::Light)));
 }
 
 TEST(RainRates, UnitConversions) {

@@ -194,7 +194,8 @@ RainSettings readRain(const Reader& r, const json& j) {
 }
 
 WaterSettings readWater(const Reader& r, const json& j) {
-    r.object(j, "/water", {"grid", "cellSize", "rainMmPerHour", "seconds", "soilMmPerHour", "seed"});
+    r.object(j, "/water",
+             {"grid", "cellSize", "rainMmPerHour", "seconds", "soilMmPerHour", "seed", "relief", "cloudCover"});
     WaterSettings s;
     if (j.contains("grid")) s.gridSize = r.whole(j["grid"], "/water/grid", 1, 2048);
     if (j.contains("cellSize")) s.cellSize = static_cast<float>(r.number(j["cellSize"], "/water/cellSize", 1e-3, 1e3));
@@ -204,6 +205,9 @@ WaterSettings readWater(const Reader& r, const json& j) {
     if (j.contains("soilMmPerHour"))
         s.soilMillimetresPerHour = r.number(j["soilMmPerHour"], "/water/soilMmPerHour", 0.0, 1e6);
     if (j.contains("seed")) s.seed = r.whole(j["seed"], "/water/seed", 0, 0xffffffffu);
+    if (j.contains("relief")) s.relief = static_cast<float>(r.number(j["relief"], "/water/relief", 0.0, 1e4));
+    if (j.contains("cloudCover"))
+        s.cloudCover = static_cast<float>(r.number(j["cloudCover"], "/water/cloudCover", 0.0, 1.0));
     try {  // the simulated time must fit the substep cap at this cell size
         water::planSubsteps(s.seconds, water::WaterParams{}, s.cellSize);
     } catch (const std::invalid_argument& e) {

@@ -47,6 +47,7 @@ water::HeightField sceneTerrain(const WaterSettings& w) {
     terrain.width = terrain.height = static_cast<int>(w.gridSize);
     terrain.cellSize = w.cellSize;
     terrain.seed = w.seed;
+    terrain.relief = w.relief;
     return water::proceduralTerrain(terrain);
 }
 
@@ -112,6 +113,7 @@ void SceneRenderer::drawWater(const Scene& scene) {
     d.lights = scene.lights;
     d.fog = scene.fog;
     d.backend = water::SimulationBackend::Fastest;  // both steps give the same water
+    d.sky.cloudCover = w.cloudCover;
     water::WaterScene waterScene(std::move(d));
     ++waterSystemsCreated_;
     waterScene.advance(w.seconds);

@@ -48,6 +48,8 @@ struct WaterSettings {
     double seconds = 60.0;                     // simulated rain before the frame
     double soilMillimetresPerHour = 12.0;      // infiltration of loose soil (clay: 0.5)
     unsigned seed = 1;                         // of the procedural terrain
+    float relief = 3.0f;                       // m between the lowest and highest hills
+    float cloudCover = 0.6f;                   // of the procedural sky: 0 clear (bright) .. 1 overcast
 };
 
 struct Scene {
