@@ -61,6 +61,8 @@ void FogSystem::draw(const Camera& camera, float aspect, const Fog* distanceFog,
     p.set("u_fogBillboardSize", params_.size);
     p.set("u_fogStrength", params_.strength);
     p.set("u_fogBillboardColor", params_.color);
+    p.set("u_fogGroundHeight", params_.groundHeight);
+    p.set("u_fogSoftDistance", params_.softDistance);
     p.set("u_time", timeSeconds);
     p.set("u_fogNoise", kNoiseTextureUnit);
     if (distanceFog) {

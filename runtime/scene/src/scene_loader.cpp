@@ -256,7 +256,11 @@ Scene parseScene(const std::string& text, const std::string& fileName) {
     }
     if (j.contains("lights")) readLights(r, j["lights"], s.lights);
     if (j.contains("fog")) {
-        r.object(j["fog"], "/fog", {"color", "density"});
+        r.object(j["fog"], "/fog", {"color", "density", "billboards", "ground"});
+        if (j["fog"].contains("billboards"))
+            s.fogBillboards = static_cast<float>(r.number(j["fog"]["billboards"], "/fog/billboards", 0.0, 1.0));
+        if (j["fog"].contains("ground"))
+            s.fogGroundHeight = static_cast<float>(r.number(j["fog"]["ground"], "/fog/ground", -1e4, 1e4));
         Fog f;
         if (j["fog"].contains("color")) f.color = r.color(j["fog"]["color"], "/fog/color");
         if (j["fog"].contains("density"))

@@ -6,6 +6,7 @@
 #include "prism/framebuffer.hpp"
 #include "prism/gl.hpp"
 #include "prism/gpu_mesh.hpp"
+#include "prism/rain/fog_system.hpp"
 #include "prism/rain/rain_params.hpp"
 #include "prism/rain/rain_programs.hpp"
 #include "prism/rain/rain_system.hpp"
@@ -94,6 +95,27 @@ void SceneRenderer::drawRain(const Scene& scene) {
                                   std::to_string(system.particleCount()) + " particles)");
 }
 
+void SceneRenderer::drawFogBillboards(const Scene& scene) {
+    rain::SceneFog fog;
+    fog.distance = *scene.fog;
+    fog.billboards.strength = *scene.fogBillboards;
+    fog.billboards.color = scene.fog->color;
+    // With water, the billboards fade into the terrain's lowest ground.
+    fog.billboards.groundHeight = scene.fogGroundHeight;
+    if (scene.water) {
+        const water::HeightField t = sceneTerrain(*scene.water);
+        fog.billboards.groundHeight = *std::min_element(t.heights.begin(), t.heights.end());
+    }
+    fog.billboards.minHeight = fog.billboards.groundHeight + 0.5f;
+    fog.billboards.maxHeight = fog.billboards.groundHeight + 4.0f;
+    if (!rainPrograms_) rainPrograms_ = std::make_unique<rain::RainPrograms>();
+    rain::FogSystem system(*rainPrograms_, fog, scene.camera.eye);
+    system.update(kRainStep, scene.camera.eye, glm::vec3(0.0f));
+    const float aspect = static_cast<float>(scene.width) / static_cast<float>(scene.height);
+    system.draw(scene.camera, aspect, &*scene.fog, 0.0f);
+    lastFrame_.variants.push_back("fog billboards (" + std::to_string(fog.billboards.count) + ")");
+}
+
 void SceneRenderer::drawWater(const Scene& scene) {
     const WaterSettings& w = *scene.water;
     water::WaterSceneDescription d;
@@ -156,6 +178,7 @@ Image8 SceneRenderer::render(const Scene& scene) {
                                       std::string(programs_.variantOf(object.shader, variant).name));
     }
     if (scene.rain) drawRain(scene);
+    if (scene.fog && scene.fogBillboards && *scene.fogBillboards > 0.0f) drawFogBillboards(scene);
     glFinish();
     gl::throwIfGlError("rendering " + scene.file);
     return fb.readImage8();

@@ -60,6 +60,10 @@ struct Scene {
     glm::vec4 background{0.05f, 0.06f, 0.08f, 1.0f};
     Lights lights;
     std::optional<Fog> fog;
+    // Volumetric fog billboards (rain system, soft against the ground): their peak opacity
+    // in (0, 1] and the ground height they fade into; nullopt: distance fog only.
+    std::optional<float> fogBillboards;
+    float fogGroundHeight = 0.0f;
     std::vector<SceneObject> objects;
     std::optional<RainSettings> rain;
     std::optional<WaterSettings> water;

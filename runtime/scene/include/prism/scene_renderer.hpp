@@ -72,6 +72,7 @@ class SceneRenderer {
   private:
     void drawRain(const Scene& scene);
     void drawWater(const Scene& scene);
+    void drawFogBillboards(const Scene& scene);
 
     ProgramCache programs_;
     SceneFrameInfo lastFrame_;
