@@ -314,7 +314,10 @@ void CpuWaterSimulation::tangentialFlowOut(const StepConstants& k, int z0, int z
         const float* __restrict avail = avail_.data() + row;
         float* __restrict amountOut = flowAmount_.data() + row;
         std::int32_t* __restrict codeOut = flowDirection_.data() + row;
-        for (int x = 1; x < W - 1; ++x) {
+        // Locals the lambdas do not capture (by reference): the trip count and the
+        // pointers stay in registers, so the loop vectorises.
+        const int interiorEnd = W - 1;
+        for (int x = 1; x < interiorEnd; ++x) {
             const float nw = up[x - 1], n = up[x], ne = up[x + 1], we = c[x - 1], e = c[x + 1];
             const float sw = down[x - 1], so = down[x], se = down[x + 1], si = c[x];
             const float gx = ((ne + 2.0f * e + se) - (nw + 2.0f * we + sw)) * k.invEightCell;
@@ -322,13 +325,26 @@ void CpuWaterSimulation::tangentialFlowOut(const StepConstants& k, int z0, int z
             const float slope = std::sqrt(gx * gx + gz * gz);
             const float dx = -gx, dz = -gz;
             const float adx = std::abs(dx), adz = std::abs(dz);
-            const int sx = (dx > 0.0f) - (dx < 0.0f), sz = (dz > 0.0f) - (dz < 0.0f);
-            const int ox = adx > kTan22_5 * adz ? sx : 0;
-            const int oz = adz > kTan22_5 * adx ? sz : 0;
-            const float northRow = ox < 0 ? nw : (ox > 0 ? ne : n);
-            const float centreRow = ox < 0 ? we : (ox > 0 ? e : si);
-            const float southRow = ox < 0 ? sw : (ox > 0 ? se : so);
-            const float st = oz < 0 ? northRow : (oz > 0 ? southRow : centreRow);
+            // ox, oz as decide(): the sign of the component that is not too small; the
+            // target's surface picked by masks (written as chained selects so the loop
+            // vectorises).
+            const bool useX = adx > kTan22_5 * adz, useZ = adz > kTan22_5 * adx;
+            const bool xPos = useX & (dx > 0.0f), xNeg = useX & (dx < 0.0f);
+            const bool zPos = useZ & (dz > 0.0f), zNeg = useZ & (dz < 0.0f);
+            const int ox = static_cast<int>(xPos) - static_cast<int>(xNeg);
+            const int oz = static_cast<int>(zPos) - static_cast<int>(zNeg);
+            float northRow = n;
+            northRow = xNeg ? nw : northRow;
+            northRow = xPos ? ne : northRow;
+            float centreRow = si;
+            centreRow = xNeg ? we : centreRow;
+            centreRow = xPos ? e : centreRow;
+            float southRow = so;
+            southRow = xNeg ? sw : southRow;
+            southRow = xPos ? se : southRow;
+            float st = centreRow;
+            st = zNeg ? northRow : st;
+            st = zPos ? southRow : st;
             const float flow = k.flowRateDt * slope;
             const float fraction = flow < k.maxFlowFraction ? flow : k.maxFlowFraction;
             const float a = fraction * avail[x];
@@ -399,7 +415,13 @@ void CpuWaterSimulation::tangentialFlowGather(int z0, int z1) {
         const std::int32_t* __restrict cd = codeOf + row;
         const std::int32_t* __restrict cdN = cd - w;
         const std::int32_t* __restrict cdS = cd + w;
-        for (int x = 1; x < W - 1; ++x) {
+        // Locals the lambdas do not capture (by reference): the trip count and the
+        // pointers stay in registers, so the loop vectorises.
+        const int interiorEnd = W - 1;
+        const WaterOut put = write;
+        const float* __restrict hiRow = hiIn;
+        const float* __restrict loRow = loIn;
+        for (int x = 1; x < interiorEnd; ++x) {
             // Every amount is loaded first, so the selects need no conditional loads.
             const float out = am[x], fromNw = amN[x - 1], fromN = amN[x], fromNe = amN[x + 1];
             const float fromW = am[x - 1], fromE = am[x + 1], fromSw = amS[x - 1], fromS = amS[x],
@@ -414,9 +436,9 @@ void CpuWaterSimulation::tangentialFlowGather(int z0, int z1) {
             net = net + (cdS[x] == 1 ? fromS : 0.0f);
             net = net + (cdS[x + 1] == 0 ? fromSe : 0.0f);
             const std::size_t i = row + static_cast<std::size_t>(x);
-            float h = hiIn[i], l = loIn[i];
+            float h = hiRow[i], l = loRow[i];
             dfAdd(h, l, net);
-            write(i, h, l);
+            put(i, h, l);
         }
         lostRow += borderCell(W - 1, z);
         lostRow_[static_cast<std::size_t>(z)] = lostRow;
@@ -474,12 +496,18 @@ void CpuWaterSimulation::distributionApply(const StepConstants& k, int z0, int z
         const float* __restrict east = qEast_.data() + row;
         const float* __restrict south = qSouth_.data() + row;
         const float* __restrict north = qSouth_.data() + row - w;
-        for (int x = 1; x < W - 1; ++x) {
+        // Locals the lambdas do not capture (by reference): the trip count and the
+        // pointers stay in registers, so the loop vectorises.
+        const int interiorEnd = W - 1;
+        const WaterOut put = write;
+        const float* __restrict hiRow = hiIn;
+        const float* __restrict loRow = loIn;
+        for (int x = 1; x < interiorEnd; ++x) {
             const std::size_t i = row + static_cast<std::size_t>(x);
             const float net = (east[x - 1] * k.dt + north[x] * k.dt) - (east[x] * k.dt + south[x] * k.dt);
-            float h = hiIn[i], l = loIn[i];
+            float h = hiRow[i], l = loRow[i];
             dfAdd(h, l, net);
-            write(i, h, l);
+            put(i, h, l);
         }
         cell(W - 1, z);
     }
