@@ -113,7 +113,7 @@ void SceneRenderer::drawFogBillboards(const Scene& scene) {
     system.update(kRainStep, scene.camera.eye, glm::vec3(0.0f));
     const float aspect = static_cast<float>(scene.width) / static_cast<float>(scene.height);
     system.draw(scene.camera, aspect, &*scene.fog, 0.0f);
-    lastFrame_.variants.push_back("fog billboards (" + std::to_string(fog.billboards.count) + ")");
+    lastFrame_.variants.push_back("fog_billboards FOG=1 (" + std::to_string(fog.billboards.count) + " billboards)");
 }
 
 void SceneRenderer::drawWater(const Scene& scene) {
