@@ -499,15 +499,22 @@ void CpuWaterSimulation::distributionApply(const StepConstants& k, int z0, int z
         // Locals the lambdas do not capture (by reference): the trip count and the
         // pointers stay in registers, so the loop vectorises.
         const int interiorEnd = W - 1;
-        const WaterOut put = write;
-        const float* __restrict hiRow = hiIn;
-        const float* __restrict loRow = loIn;
+        const float dt = k.dt;
+        const float* __restrict hiRow = hiIn + row;
+        const float* __restrict loRow = loIn + row;
+        const float* __restrict ground = terrain_.heights.data() + row;
+        float* __restrict hiDst = hiOut_.data() + row;
+        float* __restrict loDst = loOut_.data() + row;
+        float* __restrict surfDst = surfOut_.data() + row;
+        float* __restrict availDst = availOut_.data() + row;
         for (int x = 1; x < interiorEnd; ++x) {
-            const std::size_t i = row + static_cast<std::size_t>(x);
-            const float net = (east[x - 1] * k.dt + north[x] * k.dt) - (east[x] * k.dt + south[x] * k.dt);
-            float h = hiRow[i], l = loRow[i];
+            const float net = (east[x - 1] * dt + north[x] * dt) - (east[x] * dt + south[x] * dt);
+            float h = hiRow[x], l = loRow[x];
             dfAdd(h, l, net);
-            put(i, h, l);
+            hiDst[x] = h;
+            loDst[x] = l;
+            surfDst[x] = ground[x] + h;
+            availDst[x] = availableWater(h, l);
         }
         cell(W - 1, z);
     }
