@@ -1,16 +1,25 @@
-// prism_bench_water: how long one water step takes on the CPU reference and as compute
-// shaders, for grids of 128^2 to 1024^2 cells, and how long the water scene takes to
-// draw. Median of repeated runs; GPU times end with glFinish.
+// prism_bench_water: how long one water substep takes on the CPU (one thread and all
+// cores) and as compute shaders, for grids of 128^2 to 1024^2 cells, and how long the
+// water scene takes to draw. Median of repeated runs; GPU times end with glFinish.
+// Beside the 512^2 CPU figure it prints the target (6 ms) and the memory floor: the
+// bytes a substep reads and writes (CpuWaterSimulation::bytesPerCellPerSubstep) divided
+// by this machine's copy bandwidth, measured in the same run (a STREAM-like copy of two
+// 64 MiB arrays, best of 7). The CPU-time column is the process CPU time per substep,
+// which a machine busy with other work inflates less than the wall time.
 //
-//   prism_bench_water [--grids 128,256,512,1024] [--width 800 --height 600]
+//   prism_bench_water [--grids 128,256,512,1024] [--width 800 --height 600] [--no-gpu]
 //                     [--csv docs/water-bench.csv] [--svg docs/water-bench.svg]
 //
 // Each case: a procedural terrain with procedural permeability, wet from 30 s of
 // cloudburst rain, then timed steps of the largest stable dt (one substep each).
 #include <CLI/CLI.hpp>
 
+#include <time.h>
+
 #include <algorithm>
 #include <chrono>
+#include <cstring>
+#include <thread>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -41,6 +50,8 @@ double median(std::vector<double> v) {
 struct Row {
     int grid = 0;
     double cpuStepMs = 0.0, gpuStepMs = 0.0, renderMs = 0.0;
+    double cpuOneThreadMs = 0.0, cpuTimeMs = 0.0;  // one thread (wall); process CPU time per substep
+    int threads = 1;
     int cpuRuns = 0, gpuRuns = 0, renderRuns = 0;
     double cellsPerSecondCpu() const { return grid * static_cast<double>(grid) / (cpuStepMs * 1e-3); }
 };
@@ -55,18 +66,44 @@ HeightField terrainFor(int grid) {
         {.width = grid, .height = grid, .cellSize = 64.0f / static_cast<float>(grid), .relief = 3.0f, .seed = 1});
 }
 
+double processCpuMs() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
+}
+
 template <class Sim>
-double timeSteps(Sim& sim, int runs, bool gpu) {
+double timeSteps(Sim& sim, int runs, bool gpu, double* cpuMs = nullptr) {
     const double dt = maxStableDt(sim.params(), sim.terrain().cellSize);
-    std::vector<double> ms;
+    std::vector<double> ms, cpu;
     for (int r = 0; r < runs; ++r) {
+        const double cpu0 = processCpuMs();
         const auto start = Clock::now();
         sim.advance(dt);
         if (gpu) glFinish();
         ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+        cpu.push_back(processCpuMs() - cpu0);
     }
+    if (cpuMs) *cpuMs = median(cpu);
     return median(ms);
 }
+
+// STREAM-like copy bandwidth: bytes read + written per second copying 64 MiB, best of 7.
+double copyBandwidthBytesPerSecond() {
+    const std::size_t n = (64u << 20) / sizeof(float);
+    std::vector<float> a(n, 1.0f), b(n, 0.0f);
+    double best = 0.0;
+    for (int r = 0; r < 7; ++r) {
+        const auto start = Clock::now();
+        std::memcpy(b.data(), a.data(), n * sizeof(float));
+        const double s = std::chrono::duration<double>(Clock::now() - start).count();
+        best = std::max(best, 2.0 * static_cast<double>(n * sizeof(float)) / s);
+        a[r] = b[n - 1 - static_cast<std::size_t>(r)];  // keep the copies observable
+    }
+    return best;
+}
+
+constexpr double kTargetMs512 = 6.0;
 
 void wet(WaterSimulation& sim) {
     sim.setRainRate(mmPerHourToMetresPerSecond(rainRateMmPerHour(RainClass::Cloudburst)) * 20.0);
@@ -86,9 +123,11 @@ void writeCsv(const std::filesystem::path& path, const std::vector<Row>& rows, c
     if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
     std::ofstream f(path);
     f << "# prism_bench_water on " << device << "; render " << w << "x" << h << "\n";
-    f << "grid,cells,cpu_step_ms,gpu_step_ms,render_ms,cpu_runs,gpu_runs,render_runs\n";
+    f << "grid,cells,cpu_step_ms,cpu_threads,cpu_one_thread_ms,cpu_time_ms,gpu_step_ms,render_ms,cpu_runs,gpu_runs,"
+         "render_runs\n";
     for (const Row& r : rows)
-        f << r.grid << "," << r.grid * r.grid << "," << fmt(r.cpuStepMs, 3) << "," << fmt(r.gpuStepMs, 3) << ","
+        f << r.grid << "," << r.grid * r.grid << "," << fmt(r.cpuStepMs, 3) << "," << r.threads << ","
+          << fmt(r.cpuOneThreadMs, 3) << "," << fmt(r.cpuTimeMs, 3) << "," << fmt(r.gpuStepMs, 3) << ","
           << fmt(r.renderMs, 3) << "," << r.cpuRuns << "," << r.gpuRuns << "," << r.renderRuns << "\n";
 }
 
@@ -182,9 +221,13 @@ int main(int argc, char** argv) {
             const std::vector<float> k = proceduralPermeability(terrain);
             const int runs = runsFor(grid);
             {
+                CpuWaterSimulation one(terrain, k, {.threads = 1});
+                wet(one);
+                row.cpuOneThreadMs = timeSteps(one, runs, false);
                 CpuWaterSimulation cpu(terrain, k, {});
                 wet(cpu);
-                row.cpuStepMs = timeSteps(cpu, runs, false);
+                row.cpuStepMs = timeSteps(cpu, runs, false, &row.cpuTimeMs);
+                row.threads = cpu.threads();
                 row.cpuRuns = runs;
             }
             if (!noGpu) {
@@ -221,15 +264,36 @@ int main(int argc, char** argv) {
             rows.push_back(row);
             std::cout << "  " << grid << "^2 done\n" << std::flush;
         }
-        std::cout << "\n| grid | cells | CPU step (ms) | GPU step (ms) | GPU / CPU | CPU Mcells/s | render " << width
-                  << "x" << height << " (ms) |\n|---:|---:|---:|---:|---:|---:|---:|\n";
-        for (const Row& r : rows)
-            std::cout << "| " << r.grid << "^2 | " << r.grid * r.grid << " | " << fmt(r.cpuStepMs) << " | "
+        const double bandwidth = copyBandwidthBytesPerSecond();
+        const int bytesPerCell = CpuWaterSimulation::bytesPerCellPerSubstep(WaterParams{}.smoothingKernel > 1);
+        std::cout << "\n| grid | cells | CPU 1 thread (ms) | CPU " << rows.front().threads
+                  << " threads (ms) | CPU time (ms) | memory floor (ms) | GPU step (ms) | GPU / CPU | CPU Mcells/s | "
+                     "render "
+                  << width << "x" << height << " (ms) |\n|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+        for (const Row& r : rows) {
+            const double floorMs = static_cast<double>(r.grid) * r.grid * bytesPerCell / bandwidth * 1e3;
+            std::cout << "| " << r.grid << "^2 | " << r.grid * r.grid << " | " << fmt(r.cpuOneThreadMs) << " | "
+                      << fmt(r.cpuStepMs) << (r.grid == 512 ? " (target <= " + fmt(kTargetMs512, 0) + ")" : "")
+                      << " | " << fmt(r.cpuTimeMs) << " | " << fmt(floorMs) << " | "
                       << (r.gpuStepMs > 0 ? fmt(r.gpuStepMs) : "-") << " | "
                       << (r.gpuStepMs > 0 ? fmt(r.gpuStepMs / r.cpuStepMs) : "-") << " | "
                       << fmt(r.cellsPerSecondCpu() * 1e-6) << " | " << fmt(r.renderMs) << " |\n";
-        std::cout << "(median of " << rows.front().cpuRuns << " (128^2) to " << rows.back().cpuRuns
-                  << " runs; one step = one substep of the largest stable dt; GPU times end with glFinish)\n";
+        }
+        std::cout << "(median of " << rows.front().cpuRuns << " (" << rows.front().grid << "^2) to "
+                  << rows.back().cpuRuns << " (" << rows.back().grid << "^2) runs; one step = one substep of the largest stable dt; GPU times end with glFinish)\n";
+        std::cout << "memory: a substep reads and writes " << bytesPerCell << " bytes per cell; copy bandwidth "
+                  << fmt(bandwidth * 1e-9) << " GB/s (STREAM-like copy, 64 MiB, best of 7); memory floor = cells x "
+                  << bytesPerCell << " B / bandwidth\n";
+        for (const Row& r : rows)
+            if (r.grid == 512) {
+                const double floorMs = 512.0 * 512.0 * bytesPerCell / bandwidth * 1e3;
+                std::cout << "512^2: " << fmt(r.cpuStepMs) << " ms per substep on " << r.threads
+                          << " threads (target <= " << fmt(kTargetMs512, 0) << " ms: "
+                          << (r.cpuStepMs <= kTargetMs512 ? "met" : "NOT met") << "); the memory floor is "
+                          << fmt(floorMs) << " ms, so the step runs at " << fmt(floorMs / r.cpuStepMs * 100.0, 0)
+                          << "% of the copy bandwidth; " << std::thread::hardware_concurrency()
+                          << " hardware threads; load average when run: see `uptime`\n";
+            }
         if (!csv.empty()) writeCsv(csv, rows, device, width, height);
         if (!svg.empty())
             writeSvg(svg, rows, device + ", render " + std::to_string(width) + "x" + std::to_string(height));

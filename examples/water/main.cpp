@@ -5,6 +5,9 @@
 //         [--width W] [--height H] [--out DIR]          writes overview.png, ground.png, depth.png
 //   water --window [--frames N] ...                       live GLFW viewer (xvfb-run -a headless)
 //
+// Non-finite or out-of-range numbers (--rain 1e46, --dt inf, --cell 0) and a --dt that
+// needs more than WaterParams::maxSubsteps substeps are usage errors: exit 2, nothing written.
+//
 // Window keys: R next rain class (none, drizzle ... cloudburst), Left/Right orbit,
 // Up/Down tilt, +/- zoom, F fog on/off, Space pause, Esc quit; the title shows the
 // frame time, rain and stored water.
@@ -18,6 +21,7 @@
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "prism/gl/gl.hpp"  // the GL loader first: GLFW must not pull in <GL/gl.h>
@@ -102,6 +106,42 @@ WaterSceneDescription describe(const Options& o) {
     return d;
 }
 
+// A bad number on the command line: reported before anything runs or is written; exit 2.
+class UsageError : public std::invalid_argument {
+  public:
+    using std::invalid_argument::invalid_argument;
+};
+
+void requireFinite(double v, const char* flag, const char* range, bool ok) {
+    if (!std::isfinite(v) || !ok) {
+        std::ostringstream s;
+        s << flag << " must be a finite number " << range << " (got " << v << ")";
+        throw UsageError(s.str());
+    }
+}
+
+// Every number the run depends on, and whether the simulated time fits the substep cap
+// (WaterParams::maxSubsteps per step; the error names c dt / h and the largest dt).
+void checkOptions(const Options& o) {
+    requireFinite(o.cellSize, "--cell", "in (0, 10000] m", o.cellSize > 0.0f && o.cellSize <= kMaxCellSize);
+    requireFinite(o.heightScale, "--height-scale", "of metres with |scale| <= 1e6",
+                  std::abs(o.heightScale) <= kMaxHeight);
+    requireFinite(o.permeabilityMaxMmH, "--permeability-max", "of mm/h in [0, 1e6]",
+                  o.permeabilityMaxMmH >= 0.0 && o.permeabilityMaxMmH <= 1e6);
+    requireFinite(o.dt, "--dt", "of seconds >= 0", o.dt >= 0.0);
+    requireFinite(o.fog, "--fog", "per metre in [0, 100]", o.fog >= 0.0f && o.fog <= 100.0f);
+    try {
+        parseRainRateMmPerHour(o.rain);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("--rain: ") + e.what());
+    }
+    try {
+        planSubsteps(o.dt, WaterParams{}, o.cellSize);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("--dt: ") + e.what());
+    }
+}
+
 int runOffscreen(const Options& o) {
     // Drawing needs GL 3.3; the compute-shader step 4.3.
     auto context = prism::gl::createContext({.majorVersion = o.gpu ? 4 : 3, .minorVersion = 3});
@@ -117,6 +157,9 @@ int runOffscreen(const Options& o) {
     std::cout << "water: " << substeps << " substeps in " << seconds << " s (" << 1e3 * seconds / std::max(1L, substeps)
               << " ms each)\n";
     std::cout << "water: " << ledgerLine(scene.water()->simulation()) << "\n";
+    const MassLedger ledger = scene.water()->simulation().ledger();
+    if (!std::isfinite(ledger.stored) || !std::isfinite(ledger.relativeError()))
+        throw std::runtime_error("the water state is not finite; no images written");
     WaterSceneRenderer renderer(scene);
     const std::filesystem::path out = o.out;
     prism::image::writePng(out / "overview.png", renderer.renderImage(overviewCamera(scene.terrain()), o.width, o.height));
@@ -187,7 +230,7 @@ int runWindow(const Options& o) {
     auto* window = static_cast<GLFWwindow*>(context->nativeWindow());
     ViewState state;
     for (std::size_t i = 0; i < rainClassTable().size(); ++i)
-        if (auto c = parseRainClass(o.rain); c && *c == rainClassTable()[i].rainClass)
+        if (auto c = parseRainClass(o.rain); c && *c == rainClassTable()[i].id)
             state.rainIndex = static_cast<int>(i) + 1;
     if (parseRainRateMmPerHour(o.rain) == 0.0) state.rainIndex = 0;
     glfwSetWindowUserPointer(window, &state);
@@ -209,7 +252,7 @@ int runWindow(const Options& o) {
             const double mmh =
                 state.rainIndex == 0
                     ? 0.0
-                    : rainRateMmPerHour(rainClassTable()[static_cast<std::size_t>(state.rainIndex - 1)].rainClass);
+                    : rainRateMmPerHour(rainClassTable()[static_cast<std::size_t>(state.rainIndex - 1)].id);
             scene->water()->setRain(mmh);
             state.rainChanged = false;
         }
@@ -253,7 +296,7 @@ int main(int argc, char** argv) {
     CLI::App app{"Rain-fed water on a height-map terrain: simulate and write PNG views, or --window"};
     Options o;
     app.add_option("--grid", o.grid, "procedural terrain of N x N cells")->check(CLI::Range(1, 8192));
-    app.add_option("--cell", o.cellSize, "metres per cell")->check(CLI::PositiveNumber);
+    app.add_option("--cell", o.cellSize, "metres per cell, in (0, 10000]");
     app.add_option("--heightmap", o.heightmap, "8- or 16-bit PNG height map instead of the procedural terrain");
     app.add_option("--height-scale", o.heightScale, "metres for the brightest height-map value");
     app.add_option("--permeability", o.permeabilityMap, "8- or 16-bit PNG permeability (attribute) map");
@@ -270,8 +313,19 @@ int main(int argc, char** argv) {
     app.add_option("--out", o.out, "output directory");
     app.add_flag("--window", o.window, "open the live GLFW viewer");
     app.add_option("--frames", o.frames, "with --window: quit after N frames");
-    CLI11_PARSE(app, argc, argv);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int rc = app.exit(e);  // prints help or the error
+        return rc == 0 ? 0 : 2;      // usage errors exit 2
+    }
     if (o.window && app.count("--grid") == 0) o.grid = 128;
+    try {
+        checkOptions(o);
+    } catch (const UsageError& e) {
+        std::cerr << "water: error: " << e.what() << "\n";
+        return 2;
+    }
     try {
         if (o.window) {
 #ifdef PRISM_WATER_HAVE_GLFW

@@ -3,12 +3,12 @@
 //   rainSeedParticle(): a new drop in the camera's cylinder, placed in level-of-detail
 //     rings (ring k of K holds a share falloff^k * (2k+1), area-uniform inside it);
 //   rainStepParticle(): fall at the drop's terminal speed plus wind, then wrap: out of
-//     the bottom -> respawn at the top in its home column (toroidal in height, relative to the
+//     the bottom -> respawn at the top from the seed (toroidal in height, relative to the
 //     current cylinder); out of the side -> fold to the opposite side of the cylinder
 //     (antipodal, so a fast camera move neither empties nor floods a region); further
-//     than 3 radii away (a teleport) -> back to its home column (`seed.xz`).
+//     than 3 radii away (a teleport) -> back to the seed column.
 // Positions are world space; the cylinder is centred on u_cylinderCenter (the camera
-// shifted vertically, see RainParams::below).
+// shifted vertically, see RainParams::below and groundHeight).
 #include <rain/random.glsl>
 
 struct RainParticle {
@@ -31,7 +31,7 @@ const float RAIN_TWO_PI = 6.28318530717958647692;
 
 // Folds a horizontal offset back into the cylinder of radius R: unchanged inside;
 // between R and 3R mirrored through the axis to radius 2R - r on the opposite side;
-// further out (or not finite) the home column.
+// further out (or not finite) the seed column.
 vec2 rainFoldIntoCylinder(vec2 xz, vec2 seedXZ, float R) {
     float r = length(xz);
     if (r <= R) return xz;
@@ -40,15 +40,16 @@ vec2 rainFoldIntoCylinder(vec2 xz, vec2 seedXZ, float R) {
 }
 
 // Horizontal offset of a drop at height y (relative to the centre) whose column passes
-// through its home offset at mid-height: upwind above, downwind below, so that with wind the
-// level-of-detail rings stay centred on the camera on average.
-vec2 rainWindShear(vec2 seedXZ, vec3 wind, float y, float fallSpeed) {
-    return seedXZ - wind.xz * (y / fallSpeed);
+// through its seed at shearHeight (the eye's height relative to the centre): upwind
+// above, downwind below, so that with wind the level-of-detail rings are centred on the
+// camera at eye height, where the densest ring is seen.
+vec2 rainWindShear(vec2 seedXZ, vec3 wind, float y, float shearHeight, float fallSpeed) {
+    return seedXZ - wind.xz * ((y - shearHeight) / fallSpeed);
 }
 
 // cylinder = (radius, height); lod = (ring count K >= 1, density falloff per ring in (0, 1]).
 RainParticle rainSeedParticle(uint index, uint seed, vec3 center, vec2 cylinder, vec2 lod, float fallSpeed,
-                              float jitter, vec3 wind) {
+                              float jitter, vec3 wind, float shearHeight) {
     float R = cylinder.x;
     float H = cylinder.y;
     int rings = int(lod.x);
@@ -83,13 +84,14 @@ RainParticle rainSeedParticle(uint index, uint seed, vec3 center, vec2 cylinder,
     float v = fallSpeed * speedFactor;
     p.velocity = vec4(jitter * (2.0 * rainUniform(seed, index, RAIN_CH_JITTER_X) - 1.0), -v,
                       jitter * (2.0 * rainUniform(seed, index, RAIN_CH_JITTER_Z) - 1.0), speedFactor);
-    vec2 xz = rainFoldIntoCylinder(rainWindShear(p.seed.xz, wind, y, v), p.seed.xz, R);
+    vec2 xz = rainFoldIntoCylinder(rainWindShear(p.seed.xz, wind, y, shearHeight, v), p.seed.xz, R);
     p.position = vec4(center + vec3(xz.x, y, xz.y), rainUniform(seed, index, RAIN_CH_BRIGHTNESS));
     return p;
 }
 
 // One step of dt seconds (dt already clamped by the caller) around the current centre.
-RainParticle rainStepParticle(RainParticle p, vec3 center, float dt, vec3 wind, vec2 cylinder, float fallSpeed) {
+RainParticle rainStepParticle(RainParticle p, vec3 center, float dt, vec3 wind, vec2 cylinder, float fallSpeed,
+                              float shearHeight) {
     float R = cylinder.x;
     float H = cylinder.y;
     float halfH = 0.5 * H;
@@ -97,11 +99,11 @@ RainParticle rainStepParticle(RainParticle p, vec3 center, float dt, vec3 wind, 
     vec3 local = pos - center;
     if (local.y < -halfH) {
         // Out of the bottom: a new drop enters at the top (same phase, so the flux is
-        // continuous), in its home column, falling at the current intensity's speed.
+        // continuous), in its seed column, falling at the current intensity's speed.
         local.y -= H * floor((local.y + halfH) / H);
         float v = fallSpeed * p.velocity.w;
         p.velocity.y = -v;
-        local.xz = rainWindShear(p.seed.xz, wind, local.y, v);
+        local.xz = rainWindShear(p.seed.xz, wind, local.y, shearHeight, v);
     } else if (local.y >= halfH) {
         // Out of the top (the camera moved down): wrap, keep the column.
         local.y -= H * floor((local.y + halfH) / H);

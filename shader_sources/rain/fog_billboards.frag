@@ -1,6 +1,8 @@
 // fog_billboards: a soft disc of animated noise: two consecutive layers of the noise
 // texture array (a loop through time) blended by u_time, scaled by u_fogStrength;
-// premultiplied alpha. The FOG variant also applies the distance fog.
+// premultiplied alpha. Soft particles against the ground: the disc fades out within
+// u_fogSoftDistance above u_fogGroundHeight, so a billboard dipping into the ground
+// leaves no hard line. The FOG variant also applies the distance fog.
 #pragma prism variant FOG
 #include <version.glsl>
 #include <fragment_output.glsl>
@@ -12,11 +14,14 @@ uniform sampler2DArray u_fogNoise;
 uniform float u_fogStrength;
 uniform float u_time;
 uniform vec3 u_fogBillboardColor;
+uniform float u_fogGroundHeight;
+uniform float u_fogSoftDistance;
 
 in vec2 f_uv;
 flat in float f_random;
 flat in float f_fade;
 in float f_eyeDistance;
+in float f_worldHeight;
 
 void main() {
     float layers = float(textureSize(u_fogNoise, 0).z);
@@ -27,7 +32,8 @@ void main() {
     float n = mix(texture(u_fogNoise, vec3(uv, l0)).r, texture(u_fogNoise, vec3(uv, l1)).r, fract(t));
     float r = length(f_uv * 2.0 - 1.0);
     float disc = 1.0 - smoothstep(0.35, 1.0, r);
-    float alpha = clamp(u_fogStrength * n * disc * f_fade, 0.0, 1.0);
+    float soft = smoothstep(0.0, u_fogSoftDistance, f_worldHeight - u_fogGroundHeight);
+    float alpha = clamp(u_fogStrength * n * disc * f_fade * soft, 0.0, 1.0);
     if (alpha < 1.0 / 1024.0) discard;
     vec3 color = u_fogBillboardColor;
 #if FOG

@@ -14,6 +14,7 @@ out vec2 f_uv;
 flat out float f_random;
 flat out float f_fade;
 out float f_eyeDistance;
+out float f_worldHeight;  // world y of the fragment (soft fade against the ground)
 
 void main() {
     vec3 center = v_billboard[0].xyz;
@@ -32,6 +33,7 @@ void main() {
         f_random = v_billboard[0].w;
         f_fade = fade;
         f_eyeDistance = length(u_cameraPosition - p);
+        f_worldHeight = p.y;
         gl_Position = viewProjection * vec4(p, 1.0);
         EmitVertex();
     }

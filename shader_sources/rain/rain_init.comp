@@ -18,10 +18,12 @@ uniform float u_jitter;
 uniform uint u_rainSeed;
 uniform uint u_firstParticle;
 uniform uint u_particleCount;
+uniform float u_shearHeight;
 
 void main() {
     uint i = u_firstParticle + gl_GlobalInvocationID.y * (gl_NumWorkGroups.x * gl_WorkGroupSize.x) +
              gl_GlobalInvocationID.x;
     if (i >= u_particleCount) return;
-    particles[i] = rainSeedParticle(i, u_rainSeed, u_cylinderCenter, u_cylinder, u_lod, u_fallSpeed, u_jitter, u_wind);
+    particles[i] = rainSeedParticle(i, u_rainSeed, u_cylinderCenter, u_cylinder, u_lod, u_fallSpeed, u_jitter, u_wind,
+                                    u_shearHeight);
 }

@@ -14,9 +14,11 @@ uniform float u_dt;
 uniform vec3 u_wind;
 uniform float u_fallSpeed;
 uniform uint u_particleCount;
+uniform float u_shearHeight;
 
 void main() {
     uint i = gl_GlobalInvocationID.y * (gl_NumWorkGroups.x * gl_WorkGroupSize.x) + gl_GlobalInvocationID.x;
     if (i >= u_particleCount) return;
-    particles[i] = rainStepParticle(particles[i], u_cylinderCenter, u_dt, u_wind, u_cylinder, u_fallSpeed);
+    particles[i] = rainStepParticle(particles[i], u_cylinderCenter, u_dt, u_wind, u_cylinder, u_fallSpeed,
+                                    u_shearHeight);
 }

@@ -1,6 +1,8 @@
 // Terrain: Lambert lighting of the vertex albedo by the directional lights (world
 // space) plus ambient. WET (scenes with water only): ground under water or wet from it
-// is darkened. FOG: exponential distance fog (modules/fog.glsl).
+// is darkened smoothly, 1 - exp(-depth / u_wetFilmDepth) of the way to u_wetDarkening,
+// so even a film far thinner than a millimetre shows as damp ground (no threshold).
+// FOG: exponential distance fog (modules/fog.glsl).
 #pragma prism variant WET
 #pragma prism variant FOG
 #include <version.glsl>
@@ -12,6 +14,7 @@
 #if WET
 uniform sampler2D u_waterDepth;  // RG32F: compensated water depth (hi, lo) per cell
 uniform float u_wetDarkening;    // albedo factor of soaked ground
+uniform float u_wetFilmDepth;    // m: a film this deep darkens 63 % of the way
 #endif
 
 in vec3 v_worldNormal;
@@ -24,7 +27,7 @@ void main() {
     vec3 albedo = v_albedo;
 #if WET
     vec2 w = texture(u_waterDepth, v_uv).rg;
-    float wet = smoothstep(0.0005, 0.006, w.x + w.y);
+    float wet = 1.0 - exp(-max(w.x + w.y, 0.0) / u_wetFilmDepth);
     albedo *= mix(1.0, u_wetDarkening, wet);
 #endif
     vec3 color = u_ambient * albedo;

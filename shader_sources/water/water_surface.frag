@@ -1,12 +1,17 @@
-// Water surface (RainCL §4.3): the skybox reflected through reflect() on the (rippled)
-// normal, mixed by Schlick's Fresnel term (F0 = u_fresnelF0, 0.02 for water) with a
-// body colour whose opacity grows with depth, so shallow water looking down shows the
-// terrain through it and grazing views mirror the sky. The directional light adds a
-// Blinn highlight. The depth is taken per fragment (water level minus the bilinear
-// terrain height), so the shore follows the terrain's contour line; output is
-// premultiplied (blend ONE, ONE_MINUS_SRC_ALPHA) and fades out at the shore between
-// u_waterThreshold and u_shoreFadeDepth.
-// RIPPLES (scenes with rain only): capillary ripples from the animated normal maps.
+// Water surface (RainCL §4.3): Schlick's Fresnel (F0 = u_fresnelF0, 0.02 for water) mixes
+// the reflected sky with the light coming up through the water: the ground under it,
+// refracted (the view ray bent into the water meets the terrain at an offset that grows
+// with the depth; the ground's albedo comes from u_terrainAlbedo, darkened as wet and
+// lit like the terrain), dimmed by exp(-absorption x path) towards the body colour. So
+// shallow puddles are clear and show the ground, grazing views mirror the bright sky,
+// and deep water turns to the body colour. There is no draw threshold: the surface
+// fades in with depth from 0 to u_shoreFadeDepth (premultiplied output, blend ONE,
+// ONE_MINUS_SRC_ALPHA) and below that the terrain's own wet darkening shows the film.
+// The normal is turned to face the viewer (no shards at grazing angles). The depth is
+// taken per fragment (water level minus the bilinear terrain height), so the shore
+// follows the terrain's contour line.
+// RIPPLES (scenes with rain only): capillary ripples from the animated normal maps, as
+// many layers as the rain's u_rippleDensity; their bump (crest height) adds reflection.
 #pragma prism variant RIPPLES
 #pragma prism variant FOG
 #include <version.glsl>
@@ -16,12 +21,14 @@
 #include <fragment_output.glsl>
 
 uniform vec3 u_cameraPosition;
-uniform float u_waterThreshold;
 uniform float u_shoreFadeDepth;
 uniform float u_fresnelF0;
-uniform vec3 u_waterTint;        // body colour of the water
-uniform float u_waterAbsorption;  // 1/m: opacity = 1 - exp(-absorption x depth)
+uniform vec3 u_waterTint;          // body colour of the water
+uniform float u_waterAbsorption;   // 1/m: transmittance exp(-absorption x path)
+uniform float u_wetDarkening;      // albedo factor of soaked ground
+uniform float u_cellSize;
 uniform sampler2D u_terrainHeight;  // R32F, linear filtering
+uniform sampler2D u_terrainAlbedo;  // RGBA8 albedo per cell, linear filtering
 
 in vec3 v_worldPosition;
 in vec3 v_eyePosition;
@@ -31,34 +38,43 @@ in vec2 v_uv;
 
 void main() {
     float depth = v_surface - texture(u_terrainHeight, v_uv).r;
-    if (depth <= u_waterThreshold) discard;
-    float shore = smoothstep(u_waterThreshold, u_shoreFadeDepth, depth);
-    vec3 n = safeNormalize(v_worldNormal, vec3(0.0, 1.0, 0.0));
+    if (depth <= 0.0) discard;  // under the bank: the terrain is in front
+    float shore = smoothstep(0.0, u_shoreFadeDepth, depth);
+    vec3 up = vec3(0.0, 1.0, 0.0);
+    vec3 toEye = safeNormalize(u_cameraPosition - v_worldPosition, up);
+    vec3 n = safeNormalize(v_worldNormal, up);
+    float bump = 0.0;
 #if RIPPLES
-    n = rippleNormal(n, v_worldPosition.xz);
+    n = rippleNormal(n, v_worldPosition.xz, bump);
 #endif
-    vec3 toEye = safeNormalize(u_cameraPosition - v_worldPosition, n);
+    n = faceViewer(n, toEye, 0.05);
     vec3 reflected = reflect(-toEye, n);
     reflected.y = abs(reflected.y);  // a ripple never mirrors the ground below the horizon
     vec3 sky = skyColor(reflected);
-    float fresnel = schlickFresnel(u_fresnelF0, dot(n, toEye));
-    float opacity = 1.0 - exp(-u_waterAbsorption * depth);
+    float fresnel = clamp(schlickFresnel(u_fresnelF0, dot(n, toEye)) + 0.15 * bump, 0.0, 1.0);
 
     vec3 light = u_ambient;
     vec3 highlight = vec3(0.0);
 #if DIRECTIONAL_LIGHTS > 0
     for (int i = 0; i < DIRECTIONAL_LIGHTS; ++i) {
         if (i >= u_directionalLightCount) break;
-        vec3 toLight = safeNormalize(-u_lightDirection[i], vec3(0.0, 1.0, 0.0));
-        light += max(dot(n, toLight), 0.0) * u_lightColor[i];
+        vec3 toLight = safeNormalize(-u_lightDirection[i], up);
+        light += max(dot(up, toLight), 0.0) * u_lightColor[i];
         highlight += sunHighlight(n, toLight, toEye, 300.0) * u_lightColor[i];
     }
 #endif
-    vec3 color = fresnel * sky + (1.0 - fresnel) * opacity * u_waterTint * light + fresnel * 4.0 * highlight;
-    float alpha = fresnel + (1.0 - fresnel) * opacity;
+    // The refracted ground, lit like the terrain (its normal taken as up) and wet.
+    vec2 offset = refractedGroundOffset(n, toEye, depth);
+    vec2 gridSize = vec2(textureSize(u_terrainAlbedo, 0));
+    vec2 groundUv = v_uv + offset / (u_cellSize * gridSize);
+    vec3 ground = texture(u_terrainAlbedo, groundUv).rgb * u_wetDarkening * light;
+    vec3 r = refract(-toEye, n, 1.0 / 1.333);
+    float path = depth / max(-r.y, 0.25);
+    float transmittance = exp(-u_waterAbsorption * path);
+    vec3 below = mix(u_waterTint * light, ground, transmittance);
+    vec3 color = fresnel * sky + (1.0 - fresnel) * below + fresnel * 4.0 * highlight;
 #if FOG
-    // Fog the straight colour, then premultiply again.
-    color = applyFog(color / alpha, length(v_eyePosition)) * alpha;
+    color = applyFog(color, length(v_eyePosition));
 #endif
-    frag = vec4(color, alpha) * shore;
+    frag = vec4(color * shore, shore);
 }

@@ -11,7 +11,7 @@
 uniform sampler2D u_terrainHeight;  // R32F terrain height per cell
 uniform sampler2D u_waterDepth;     // RG32F compensated depth (hi, lo) per cell
 uniform float u_cellSize;
-uniform float u_waterThreshold;     // m: shallower water is not drawn
+uniform float u_waterThreshold;     // m: a vertex with less water is dry (the surface fades in from 0 m)
 
 out vec3 v_worldPosition;
 out vec3 v_eyePosition;

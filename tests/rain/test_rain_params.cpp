@@ -36,7 +36,8 @@ TEST(RainClasses, ParseByNameCaseInsensitive) {
     EXPECT_EQ(parseRainClass("Heavy"), RainClass::Heavy);
     EXPECT_EQ(parseRainClass("cloudburst"), RainClass::Cloudburst);
     EXPECT_FALSE(parseRainClass("monsoon").has_value());
-    EXPECT_EQ(nearestRainClass(1.4f), RainClass::Moderate);
+    EXPECT_EQ(nearestRainClass(0.4f), RainClass::Moderate);
+    EXPECT_EQ(nearestRainClass(1.4f), RainClass::Heavy);
     EXPECT_EQ(nearestRainClass(50.0f), RainClass::Cloudburst);
 }
 

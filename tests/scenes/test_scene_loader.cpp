@@ -21,7 +21,7 @@ std::string errorOf(const std::string& text) {
 }  // namespace
 
 TEST(SceneLoader, ReadsTheExampleScenes) {
-    for (const char* name : {"one_light", "four_lights", "fog", "rain", "water"}) {
+    for (const char* name : {"one_light", "four_lights", "fog", "rain", "water", "puddles_closeup"}) {
         auto scene = prism::scene::loadScene(std::string(PRISM_SCENES_DIR) + "/" + name + ".json");
         EXPECT_FALSE(scene.objects.empty()) << name;
         EXPECT_FALSE(scene.lights.directional.empty()) << name;
@@ -108,4 +108,17 @@ TEST(SceneLoader, MissingFile) {
     } catch (const SceneError& e) {
         EXPECT_EQ(std::string(e.what()), "/nonexistent/scene.json: cannot open the scene file; check the path");
     }
+}
+
+// Guard rails: an overflowing rain rate is an error at its JSON path, and so is a water
+// run whose simulated time needs more substeps than the cap at its cell size.
+TEST(SceneLoader, RejectsOverflowingRainAndUnstableWaterRuns) {
+    EXPECT_EQ(errorOf(R"({"rain": {"rateMmPerHour": 1e46}})"),
+              "scene.json: /rain/rateMmPerHour: expected a number in [0, 10000]");
+    EXPECT_EQ(errorOf(R"({"water": {"rainMmPerHour": 1e300}})"),
+              "scene.json: /water/rainMmPerHour: expected a number in [0, 10000]");
+    const std::string tooLong = errorOf(R"({"water": {"cellSize": 0.001, "seconds": 86400}})");
+    EXPECT_EQ(tooLong.rfind("scene.json: /water/seconds: expected a time the water step can take", 0), 0u) << tooLong;
+    EXPECT_NE(tooLong.find("c dt / h <= 1/sqrt(2)"), std::string::npos) << tooLong;
+    EXPECT_NE(tooLong.find("largest stable substep"), std::string::npos) << tooLong;
 }

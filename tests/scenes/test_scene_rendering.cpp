@@ -14,6 +14,8 @@
 #include "prism/image/image_compare.hpp"
 #include "prism/image/png_io.hpp"
 #include "prism/rain/rain_params.hpp"
+#include "prism/rain/rain_simulation.hpp"
+#include "prism/water/height_field.hpp"
 #include "prism/scene/scene_loader.hpp"
 #include "prism/scene/scene_renderer.hpp"
 #include "prism/shaders.hpp"
@@ -170,6 +172,30 @@ TEST(SceneRendering, RainSettingsMapToRainParameters) {
     EXPECT_THROW(prism::scene::rainParamsFor(s), std::invalid_argument);
 }
 
+// examples/scenes/water.json: eye at 9 m over terrain 0-3 m. The rain must fall onto the
+// terrain it feeds (it used to stop 4 m under the eye, at 5 m).
+TEST(SceneRendering, RainReachesTheTerrainInTheWaterScene) {
+    const prism::scene::Scene scene = exampleScene("water");
+    ASSERT_TRUE(scene.rain && scene.water);
+    const prism::rain::RainParams p = prism::scene::rainParamsFor(scene);
+    const prism::water::HeightField t = prism::scene::sceneTerrain(*scene.water);
+    prism::rain::CpuRainSimulation sim(p, scene.camera.eye);
+    for (int i = 0; i < 90; ++i) sim.step(1.0f / 30.0f, scene.camera.eye);
+    int onTerrain = 0, belowTerrain = 0;
+    for (const auto& q : sim.particles()) {
+        // The terrain is centred on the origin (WaterSceneRenderer's model matrix).
+        const float gx = (q.position.x + 0.5f * t.sizeX()) / t.cellSize;
+        const float gz = (q.position.z + 0.5f * t.sizeZ()) / t.cellSize;
+        if (gx < 0.0f || gz < 0.0f || gx > static_cast<float>(t.width - 1) || gz > static_cast<float>(t.height - 1))
+            continue;
+        const float ground = t.at(static_cast<int>(gx + 0.5f), static_cast<int>(gz + 0.5f));
+        if (q.position.y < ground) ++belowTerrain;
+        else if (q.position.y < ground + 0.5f) ++onTerrain;
+    }
+    EXPECT_GT(onTerrain, 100) << "drops within 0.5 m above the terrain";
+    EXPECT_GT(belowTerrain, 0) << "the cylinder reaches the lowest ground, so some drops pass under higher ground";
+}
+
 class SceneGolden : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SceneGolden, MatchesTheGoldenImage) {
@@ -195,4 +221,4 @@ TEST_P(SceneGolden, MatchesTheGoldenImage) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ExampleScenes, SceneGolden,
-                         ::testing::Values("one_light", "four_lights", "fog", "rain", "water"));
+                         ::testing::Values("one_light", "four_lights", "fog", "rain", "water", "puddles_closeup"));

@@ -63,8 +63,9 @@ TEST(HeightMaps, SixteenBitSamplesRoundTripExactly) {
     EXPECT_EQ(f.width, 5);
     EXPECT_EQ(f.height, 3);
     EXPECT_FLOAT_EQ(f.cellSize, 0.5f);
-    EXPECT_NEAR(f.at(0, 0), 1.0f + 0.001f, 1e-6f);
-    EXPECT_NEAR(f.at(4, 2), 1.0f + 61.167f, 1e-4f);
+    EXPECT_EQ(f.origin, 1.0) << "the base height is the local origin";
+    EXPECT_NEAR(f.at(0, 0), 0.001f, 1e-9f);
+    EXPECT_NEAR(f.at(4, 2), 61.167f, 1e-5f);
 }
 
 TEST(HeightMaps, EightBitAndRgbUseTheFirstChannel) {

@@ -26,7 +26,8 @@ void runLedger(BorderMode border, const char* label) {
               << " m3 = stored " << l.stored * l.cellArea << " + infiltrated " << l.infiltrated * l.cellArea
               << " + lost " << l.lostThroughBorder * l.cellArea << " m3; relative error " << l.relativeError() << "\n";
     ::testing::Test::RecordProperty(std::string("relative_error_") + label, std::to_string(l.relativeError()));
-    EXPECT_LT(l.relativeError(), 1e-5);
+    // 10x the measured error (open 3.33e-7, closed 3.09e-7: the command above prints it).
+    EXPECT_LT(l.relativeError(), border == BorderMode::Open ? 3.3e-6 : 3.1e-6);
     EXPECT_GT(l.stored, 0.0);
     EXPECT_GT(l.infiltrated, 0.0);
     if (border == BorderMode::Open) {

@@ -64,7 +64,7 @@ TEST_F(WaterGlTest, WaterWithoutRainHasNoRipples) {
     EXPECT_EQ(s.programs, 3u) << "skybox, terrain, water surface";
     EXPECT_TRUE(s.waterSurface);
     EXPECT_FALSE(s.rippleTextures) << "no ripple frames without rain";
-    EXPECT_EQ(s.textures, 3u) << "sky, terrain heights, water depths";
+    EXPECT_EQ(s.textures, 4u) << "sky, terrain heights, water depths, terrain albedo (the ground seen through water)";
     EXPECT_TRUE(hasProgram(renderer, scene, "water_surface", {{"RIPPLES", "0"}}));
     EXPECT_TRUE(hasProgram(renderer, scene, "terrain", {{"WET", "1"}}));
 }
@@ -77,7 +77,7 @@ TEST_F(WaterGlTest, RainAddsRippleFramesAnimatedByItsIntensity) {
     EXPECT_NEAR(lightFrame, 0.25 * rippleFramesPerSecond(rainRateMmPerHour(RainClass::Light)), 1e-9);
     renderer.renderImage(groundCamera(scene.terrain()), 48, 48);
     EXPECT_TRUE(renderer.stats().rippleTextures);
-    EXPECT_EQ(renderer.stats().textures, 4u);
+    EXPECT_EQ(renderer.stats().textures, 5u);
     EXPECT_TRUE(hasProgram(renderer, scene, "water_surface", {{"RIPPLES", "1"}}));
     EXPECT_GT(rippleFramesPerSecond(rainRateMmPerHour(RainClass::Cloudburst)),
               rippleFramesPerSecond(rainRateMmPerHour(RainClass::Drizzle)))

@@ -64,6 +64,9 @@ void validate(const SceneFog& fog) {
     if (!(b.drift >= 0.0f) || !std::isfinite(b.drift)) fail("billboard drift", b.drift, "a finite number >= 0 m/s");
     if (!(b.windFactor >= 0.0f) || !std::isfinite(b.windFactor))
         fail("billboard windFactor", b.windFactor, "a finite number >= 0");
+    if (!std::isfinite(b.groundHeight)) fail("billboard groundHeight", b.groundHeight, "a finite height in m");
+    if (!(b.softDistance > 0.0f) || !std::isfinite(b.softDistance))
+        fail("billboard softDistance", b.softDistance, "a finite number > 0 m");
     for (float c : {b.color.r, b.color.g, b.color.b, fog.distance.color.r, fog.distance.color.g, fog.distance.color.b})
         if (!std::isfinite(c) || c < 0.0f) fail("colour channel", c, "a finite number >= 0");
 }

@@ -55,6 +55,8 @@ void FogSystem::draw(const view::Camera& camera, float aspect, const view::Fog* 
     p.set("u_fogBillboardSize", params_.size);
     p.set("u_fogStrength", params_.strength);
     p.set("u_fogBillboardColor", params_.color);
+    p.set("u_fogGroundHeight", params_.groundHeight);
+    p.set("u_fogSoftDistance", params_.softDistance);
     p.set("u_time", timeSeconds);
     p.set("u_fogNoise", kNoiseTextureUnit);
     if (distanceFog) {

@@ -1,4 +1,4 @@
-// RainCL Table 2, the rate interpolation, validation and the particle-count formula
+// Table 2, the rate interpolation, validation and the particle-count formula
 // (see prism/rain/rain_params.hpp).
 #include "prism/rain/rain_params.hpp"
 
@@ -16,16 +16,6 @@
 namespace prism::rain {
 namespace {
 
-// RainCL Table 2 (§3.1.2; intensity cm/h, "Menge" mm, fall speed m/s, drops per m^2 per s).
-constexpr std::array<RainClassInfo, 6> kClasses = {{
-    {RainClass::Drizzle, "drizzle", 0.025f, 0.96f, 4.1f, 151.0f},
-    {RainClass::Light, "light", 0.102f, 1.24f, 4.8f, 280.0f},
-    {RainClass::Moderate, "moderate", 1.381f, 1.60f, 5.7f, 495.0f},
-    {RainClass::Heavy, "heavy", 1.520f, 2.05f, 6.7f, 495.0f},
-    {RainClass::Excessive, "excessive", 4.064f, 2.40f, 7.3f, 818.0f},
-    {RainClass::Cloudburst, "cloudburst", 10.160f, 2.85f, 7.9f, 1216.0f},
-}};
-
 std::string str(float v) {
     std::ostringstream s;
     s << v;
@@ -42,36 +32,18 @@ void requireFinite(float v, const char* name, const char* range) {
 
 }  // namespace
 
-std::span<const RainClassInfo> rainClasses() {
-    return kClasses;
-}
-
-const RainClassInfo& rainClassInfo(RainClass id) {
-    for (const auto& c : kClasses)
-        if (c.id == id) return c;
-    throw std::invalid_argument("rain: unknown RainClass");
-}
-
-std::optional<RainClass> parseRainClass(std::string_view name) {
-    std::string lower;
-    for (char c : name) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    for (const auto& c : kClasses)
-        if (c.name == lower) return c.id;
-    return std::nullopt;
-}
-
 void validateIntensity(float intensity) {
     if (!std::isfinite(intensity) || intensity < 0.0f)
-        fail("intensity must be a finite number >= 0 cm/h (RainCL Table 2: drizzle 0.025 ... cloudburst 10.16; got " +
+        fail("intensity must be a finite number >= 0 cm/h (Table 2: drizzle 0.0254 ... cloudburst 10.16; got " +
              str(intensity) + ")");
 }
 
 RainClass nearestRainClass(float intensity) {
     validateIntensity(intensity);
     const float li = std::log(std::max(intensity, 1e-6f));
-    RainClass best = kClasses.front().id;
+    RainClass best = rainClasses().front().id;
     float bestDistance = INFINITY;
-    for (const auto& c : kClasses) {
+    for (const auto& c : rainClasses()) {
         const float d = std::fabs(std::log(c.intensity) - li);
         if (d < bestDistance) {
             bestDistance = d;
@@ -83,15 +55,15 @@ RainClass nearestRainClass(float intensity) {
 
 RainRate rainRateFor(float intensity) {
     validateIntensity(intensity);
-    const auto& first = kClasses.front();
-    const auto& last = kClasses.back();
+    const auto& first = rainClasses().front();
+    const auto& last = rainClasses().back();
     if (intensity <= first.intensity)
         return {first.fallSpeed, first.dropsPerSquareMetreSecond * intensity / first.intensity};
     if (intensity >= last.intensity)
         return {last.fallSpeed, last.dropsPerSquareMetreSecond * intensity / last.intensity};
-    for (std::size_t i = 0; i + 1 < kClasses.size(); ++i) {
-        const auto& a = kClasses[i];
-        const auto& b = kClasses[i + 1];
+    for (std::size_t i = 0; i + 1 < rainClasses().size(); ++i) {
+        const auto& a = rainClasses()[i];
+        const auto& b = rainClasses()[i + 1];
         if (intensity <= b.intensity) {
             const float t =
                 (std::log(intensity) - std::log(a.intensity)) / (std::log(b.intensity) - std::log(a.intensity));
@@ -119,6 +91,8 @@ void validate(const RainParams& p) {
     requireFinite(p.below, "below", "in [0, height]");
     if (p.below < 0.0f || p.below > p.height)
         fail("below must be in [0, height = " + str(p.height) + "] m (got " + str(p.below) + ")");
+    if (p.groundHeight && !std::isfinite(*p.groundHeight))
+        fail("groundHeight must be a finite height in m (got " + str(*p.groundHeight) + ")");
     if (p.lodRings < 1 || p.lodRings > 16) fail("lodRings must be in 1..16 (got " + std::to_string(p.lodRings) + ")");
     requireFinite(p.lodFalloff, "lodFalloff", "in (0, 1]");
     if (p.lodFalloff <= 0.0f || p.lodFalloff > 1.0f)
@@ -182,7 +156,13 @@ glm::vec3 windVector(const RainParams& p) {
 }
 
 glm::vec3 cylinderCenter(const RainParams& p, const glm::vec3& eye) {
-    return {eye.x, eye.y - p.below + 0.5f * p.height, eye.z};
+    float bottom = eye.y - p.below;
+    if (p.groundHeight) bottom = std::min(bottom, *p.groundHeight);
+    return {eye.x, bottom + 0.5f * p.height, eye.z};
+}
+
+float shearHeight(const RainParams& p, const glm::vec3& eye) {
+    return eye.y - cylinderCenter(p, eye).y;
 }
 
 }  // namespace prism::rain

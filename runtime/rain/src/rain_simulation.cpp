@@ -21,8 +21,8 @@ std::string str(const glm::vec3& v) {
     return s.str();
 }
 
-glm::vec2 windShear(glm::vec2 seedXZ, const glm::vec3& wind, float y, float fallSpeed) {
-    return seedXZ - glm::vec2(wind.x, wind.z) * (y / fallSpeed);
+glm::vec2 windShear(glm::vec2 seedXZ, const glm::vec3& wind, float y, float shearHeight, float fallSpeed) {
+    return seedXZ - glm::vec2(wind.x, wind.z) * ((y - shearHeight) / fallSpeed);
 }
 
 }  // namespace
@@ -49,7 +49,8 @@ glm::vec2 foldIntoCylinder(glm::vec2 xz, glm::vec2 seedXZ, float radius) {
 }
 
 Particle seedParticle(std::uint32_t index, std::uint32_t seed, const glm::vec3& center, const glm::vec2& cylinder,
-                      const glm::vec2& lod, float fallSpeed, float jitter, const glm::vec3& wind) {
+                      const glm::vec2& lod, float fallSpeed, float jitter, const glm::vec3& wind,
+                      float shearHeight) {
     const float R = cylinder.x;
     const float H = cylinder.y;
     const int rings = static_cast<int>(lod.x);
@@ -85,7 +86,7 @@ Particle seedParticle(std::uint32_t index, std::uint32_t seed, const glm::vec3& 
     p.velocity = glm::vec4(jitter * (2.0f * rainUniform(seed, index, kChannelJitterX) - 1.0f), -v,
                            jitter * (2.0f * rainUniform(seed, index, kChannelJitterZ) - 1.0f), speedFactor);
     const glm::vec2 seedXZ(p.seed.x, p.seed.z);
-    const glm::vec2 xz = foldIntoCylinder(windShear(seedXZ, wind, y, v), seedXZ, R);
+    const glm::vec2 xz = foldIntoCylinder(windShear(seedXZ, wind, y, shearHeight, v), seedXZ, R);
     p.position = glm::vec4(center + glm::vec3(xz.x, y, xz.y), rainUniform(seed, index, kChannelBrightness));
     return p;
 }
@@ -102,7 +103,7 @@ Particle stepParticle(Particle p, const StepInputs& in) {
         local.y -= H * std::floor((local.y + halfH) / H);
         const float v = in.fallSpeed * p.velocity.w;
         p.velocity.y = -v;
-        xz = windShear(seedXZ, in.wind, local.y, v);
+        xz = windShear(seedXZ, in.wind, local.y, in.shearHeight, v);
     } else if (local.y >= halfH) {
         local.y -= H * std::floor((local.y + halfH) / H);
     }
@@ -122,6 +123,7 @@ CpuRainSimulation::CpuRainSimulation(const RainParams& params, const glm::vec3& 
     rate_ = rainRateFor(params_.intensity);
     wind_ = windVector(params_);
     center_ = cylinderCenter(params_, eye);
+    shearHeight_ = shearHeight(params_, eye);
     resize(particleCountFor(params_));
 }
 
@@ -130,7 +132,8 @@ void CpuRainSimulation::resize(std::uint32_t count) {
     const glm::vec2 cylinder(params_.radius, params_.height);
     const glm::vec2 lod(static_cast<float>(params_.lodRings), params_.lodFalloff);
     for (std::uint32_t i = count_; i < count; ++i)
-        particles_[i] = seedParticle(i, params_.seed, center_, cylinder, lod, rate_.fallSpeed, params_.jitter, wind_);
+        particles_[i] = seedParticle(i, params_.seed, center_, cylinder, lod, rate_.fallSpeed, params_.jitter, wind_,
+                                     shearHeight_);
     count_ = count;
 }
 
@@ -139,7 +142,9 @@ void CpuRainSimulation::step(float dt, const glm::vec3& eye) {
     StepInputs in;
     in.dt = clampStep(dt);
     center_ = cylinderCenter(params_, eye);
+    shearHeight_ = shearHeight(params_, eye);
     in.center = center_;
+    in.shearHeight = shearHeight_;
     in.cylinder = {params_.radius, params_.height};
     in.wind = wind_;
     in.fallSpeed = rate_.fallSpeed;

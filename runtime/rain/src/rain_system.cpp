@@ -61,6 +61,7 @@ RainSystem::RainSystem(RainPrograms& programs, const RainParams& params, const g
     rate_ = rainRateFor(params_.intensity);
     wind_ = windVector(params_);
     center_ = cylinderCenter(params_, eye);
+    shearHeight_ = shearHeight(params_, eye);
     resize(particleCountFor(params_));
 }
 
@@ -107,6 +108,7 @@ void RainSystem::seedRange(std::uint32_t first, std::uint32_t end) {
     init.set("u_rainSeed", params_.seed);
     init.set("u_firstParticle", first);
     init.set("u_particleCount", end);
+    init.set("u_shearHeight", shearHeight_);
     glBindBufferBase(kShaderStorageBuffer, 0, particles_.id());
     gl43_.dispatch(end - first);
     gl43_.barrier(kBarrierAll);
@@ -117,6 +119,7 @@ void RainSystem::update(float dt, const glm::vec3& eye) {
     validateEye(eye);
     const float step = clampStep(dt);
     center_ = cylinderCenter(params_, eye);
+    shearHeight_ = shearHeight(params_, eye);
     ++steps_;
     if (count_ == 0) return;
     gl::Program& update = programs_.get("rain_update");
@@ -127,6 +130,7 @@ void RainSystem::update(float dt, const glm::vec3& eye) {
     update.set("u_wind", wind_);
     update.set("u_fallSpeed", rate_.fallSpeed);
     update.set("u_particleCount", count_);
+    update.set("u_shearHeight", shearHeight_);
     glBindBufferBase(kShaderStorageBuffer, 0, particles_.id());
     gl43_.dispatch(count_);
     gl43_.barrier(kBarrierAll);

@@ -1,4 +1,4 @@
-// JSON scene reading with path-precise errors (see prism/scene/scene_loader.hpp).
+// JSON scene reading with path-precise errors (see prism/scene_loader.hpp).
 #include "prism/scene/scene_loader.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -10,6 +10,9 @@
 #include <limits>
 #include <set>
 #include <sstream>
+
+#include "prism/water/rain_rates.hpp"
+#include "prism/water/water_simulation.hpp"
 
 namespace prism::scene {
 namespace {
@@ -180,7 +183,8 @@ RainSettings readRain(const Reader& r, const json& j) {
             r.fail("/rain/intensity", "one of drizzle, light, moderate, heavy, excessive, cloudburst");
     }
     if (j.contains("rateMmPerHour"))
-        s.rateMillimetresPerHour = r.number(j["rateMmPerHour"], "/rain/rateMmPerHour", 0.0);
+        s.rateMillimetresPerHour =
+            r.number(j["rateMmPerHour"], "/rain/rateMmPerHour", 0.0, water::kMaxRainMmPerHour);
     if (j.contains("wind")) s.wind = r.vec3(j["wind"], "/rain/wind");
     if (j.contains("seed")) s.seed = r.whole(j["seed"], "/rain/seed", 0, 0xffffffffu);
     if (j.contains("radius")) s.cylinderRadius = static_cast<float>(r.number(j["radius"], "/rain/radius", 0.1, 1e4));
@@ -190,16 +194,25 @@ RainSettings readRain(const Reader& r, const json& j) {
 }
 
 WaterSettings readWater(const Reader& r, const json& j) {
-    r.object(j, "/water", {"grid", "cellSize", "rainMmPerHour", "seconds", "soilMmPerHour", "seed"});
+    r.object(j, "/water",
+             {"grid", "cellSize", "rainMmPerHour", "seconds", "soilMmPerHour", "seed", "relief", "cloudCover"});
     WaterSettings s;
     if (j.contains("grid")) s.gridSize = r.whole(j["grid"], "/water/grid", 1, 2048);
     if (j.contains("cellSize")) s.cellSize = static_cast<float>(r.number(j["cellSize"], "/water/cellSize", 1e-3, 1e3));
     if (j.contains("rainMmPerHour"))
-        s.rainRateMillimetresPerHour = r.number(j["rainMmPerHour"], "/water/rainMmPerHour", 0.0, 1e4);
+        s.rainRateMillimetresPerHour = r.number(j["rainMmPerHour"], "/water/rainMmPerHour", 0.0, water::kMaxRainMmPerHour);
     if (j.contains("seconds")) s.seconds = r.number(j["seconds"], "/water/seconds", 0.0, 86400.0);
     if (j.contains("soilMmPerHour"))
         s.soilMillimetresPerHour = r.number(j["soilMmPerHour"], "/water/soilMmPerHour", 0.0, 1e6);
     if (j.contains("seed")) s.seed = r.whole(j["seed"], "/water/seed", 0, 0xffffffffu);
+    if (j.contains("relief")) s.relief = static_cast<float>(r.number(j["relief"], "/water/relief", 0.0, 1e4));
+    if (j.contains("cloudCover"))
+        s.cloudCover = static_cast<float>(r.number(j["cloudCover"], "/water/cloudCover", 0.0, 1.0));
+    try {  // the simulated time must fit the substep cap at this cell size
+        water::planSubsteps(s.seconds, water::WaterParams{}, s.cellSize);
+    } catch (const std::invalid_argument& e) {
+        r.fail("/water/seconds", std::string("a time the water step can take in one call: ") + e.what());
+    }
     return s;
 }
 
@@ -243,7 +256,11 @@ Scene parseScene(const std::string& text, const std::string& fileName) {
     }
     if (j.contains("lights")) readLights(r, j["lights"], s.lights);
     if (j.contains("fog")) {
-        r.object(j["fog"], "/fog", {"color", "density"});
+        r.object(j["fog"], "/fog", {"color", "density", "billboards", "ground"});
+        if (j["fog"].contains("billboards"))
+            s.fogBillboards = static_cast<float>(r.number(j["fog"]["billboards"], "/fog/billboards", 0.0, 1.0));
+        if (j["fog"].contains("ground"))
+            s.fogGroundHeight = static_cast<float>(r.number(j["fog"]["ground"], "/fog/ground", -1e4, 1e4));
         view::Fog f;
         if (j["fog"].contains("color")) f.color = r.color(j["fog"]["color"], "/fog/color");
         if (j["fog"].contains("density"))

@@ -1,4 +1,4 @@
-// Scene drawing with minimal, shared programs (see prism/scene/scene_renderer.hpp).
+// Scene drawing with minimal, shared programs (see prism/scene_renderer.hpp).
 #include "prism/scene/scene_renderer.hpp"
 
 #include "prism/render/feature_variants.hpp"
@@ -6,6 +6,7 @@
 #include "prism/gl/framebuffer.hpp"
 #include "prism/gl/gl.hpp"
 #include "prism/render/gpu_mesh.hpp"
+#include "prism/rain/fog_system.hpp"
 #include "prism/rain/rain_params.hpp"
 #include "prism/rain/rain_programs.hpp"
 #include "prism/rain/rain_system.hpp"
@@ -16,6 +17,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace prism::scene {
@@ -41,6 +43,25 @@ rain::RainParams rainParamsFor(const RainSettings& settings) {
     return p;
 }
 
+water::HeightField sceneTerrain(const WaterSettings& w) {
+    water::ProceduralTerrainOptions terrain;
+    terrain.width = terrain.height = static_cast<int>(w.gridSize);
+    terrain.cellSize = w.cellSize;
+    terrain.seed = w.seed;
+    terrain.relief = w.relief;
+    return water::proceduralTerrain(terrain);
+}
+
+rain::RainParams rainParamsFor(const Scene& scene) {
+    rain::RainParams p = rainParamsFor(*scene.rain);
+    if (scene.water) {
+        const water::HeightField t = sceneTerrain(*scene.water);
+        p.groundHeight = *std::min_element(t.heights.begin(), t.heights.end());
+        rain::validate(p);
+    }
+    return p;
+}
+
 SceneRenderer::SceneRenderer(const catalog::Catalog& catalog) : programs_(catalog) {}
 SceneRenderer::~SceneRenderer() = default;
 
@@ -49,7 +70,7 @@ std::size_t SceneRenderer::rainProgramsBuilt() const {
 }
 
 void SceneRenderer::drawRain(const Scene& scene) {
-    const rain::RainParams params = rainParamsFor(*scene.rain);
+    const rain::RainParams params = rainParamsFor(scene);
     if (!rainPrograms_) rainPrograms_ = std::make_unique<rain::RainPrograms>();
     rain::RainSystem system(*rainPrograms_, params, scene.camera.eye);
     ++rainSystemsCreated_;
@@ -74,14 +95,31 @@ void SceneRenderer::drawRain(const Scene& scene) {
                                   std::to_string(system.particleCount()) + " particles)");
 }
 
+void SceneRenderer::drawFogBillboards(const Scene& scene) {
+    rain::SceneFog fog;
+    fog.distance = *scene.fog;
+    fog.billboards.strength = *scene.fogBillboards;
+    fog.billboards.color = scene.fog->color;
+    // With water, the billboards fade into the terrain's lowest ground.
+    fog.billboards.groundHeight = scene.fogGroundHeight;
+    if (scene.water) {
+        const water::HeightField t = sceneTerrain(*scene.water);
+        fog.billboards.groundHeight = *std::min_element(t.heights.begin(), t.heights.end());
+    }
+    fog.billboards.minHeight = fog.billboards.groundHeight + 0.5f;
+    fog.billboards.maxHeight = fog.billboards.groundHeight + 4.0f;
+    if (!rainPrograms_) rainPrograms_ = std::make_unique<rain::RainPrograms>();
+    rain::FogSystem system(*rainPrograms_, fog, scene.camera.eye);
+    system.update(kRainStep, scene.camera.eye, glm::vec3(0.0f));
+    const float aspect = static_cast<float>(scene.width) / static_cast<float>(scene.height);
+    system.draw(scene.camera, aspect, &*scene.fog, 0.0f);
+    lastFrame_.variants.push_back("fog_billboards FOG=1 (" + std::to_string(fog.billboards.count) + " billboards)");
+}
+
 void SceneRenderer::drawWater(const Scene& scene) {
     const WaterSettings& w = *scene.water;
     water::WaterSceneDescription d;
-    water::ProceduralTerrainOptions terrain;
-    terrain.width = terrain.height = static_cast<int>(w.gridSize);
-    terrain.cellSize = w.cellSize;
-    terrain.seed = w.seed;
-    d.terrain = water::proceduralTerrain(terrain);
+    d.terrain = sceneTerrain(w);
     water::PermeabilityOptions soil;
     soil.soilMmPerHour = w.soilMillimetresPerHour;
     soil.clayMmPerHour = std::min(soil.clayMmPerHour, w.soilMillimetresPerHour);
@@ -96,6 +134,8 @@ void SceneRenderer::drawWater(const Scene& scene) {
     }
     d.lights = scene.lights;
     d.fog = scene.fog;
+    d.backend = water::SimulationBackend::Fastest;  // both steps give the same water
+    d.sky.cloudCover = w.cloudCover;
     water::WaterScene waterScene(std::move(d));
     ++waterSystemsCreated_;
     waterScene.advance(w.seconds);
@@ -125,7 +165,7 @@ image::Image8 SceneRenderer::render(const Scene& scene) {
     for (const auto& object : scene.objects) {
         const auto* shader = catalog::findShader(programs_.catalog(), object.shader);
         if (!shader) programs_.variantOf(object.shader, {});  // throws render::UnknownShaderError with the list
-        const render::VariantValues variant = render::variantFor(*shader, features, object.variantOverrides);
+        const render::VariantValues variant = variantFor(*shader, features, object.variantOverrides);
         gl::Program& program = programs_.get(object.shader, variant);
         render::GpuMesh mesh(render::meshForShader(object.shader, render::namedMesh(object.mesh, object.subdivision)),
                      programs_.catalog().contractAttributes);
@@ -138,6 +178,7 @@ image::Image8 SceneRenderer::render(const Scene& scene) {
                                       std::string(programs_.variantOf(object.shader, variant).name));
     }
     if (scene.rain) drawRain(scene);
+    if (scene.fog && scene.fogBillboards && *scene.fogBillboards > 0.0f) drawFogBillboards(scene);
     glFinish();
     gl::throwIfGlError("rendering " + scene.file);
     return fb.readImage8();

@@ -63,8 +63,17 @@ void validate(const HeightField& f, const char* what) {
     if (f.heights.size() != f.cellCount())
         throw std::invalid_argument(w + ": " + std::to_string(f.heights.size()) + " heights for " +
                                     std::to_string(f.cellCount()) + " cells");
-    for (float h : f.heights)
+    if (!(f.cellSize <= kMaxCellSize))
+        throw std::invalid_argument(w + ": the cell size must be at most " + std::to_string(kMaxCellSize) + " m (got " +
+                                    std::to_string(f.cellSize) + ")");
+    for (float h : f.heights) {
         if (!std::isfinite(h)) throw std::invalid_argument(w + ": the height field holds a NaN or infinite height");
+        if (std::abs(h) > kMaxHeight)
+            throw std::invalid_argument(w + ": a height of " + std::to_string(h) +
+                                        " m relative to the origin is beyond the limit of " +
+                                        std::to_string(kMaxHeight) + " m; put the offset into HeightField::origin");
+    }
+    if (!std::isfinite(f.origin)) throw std::invalid_argument(w + ": the origin must be a finite height");
 }
 
 GreyImage readGreyPng(const std::filesystem::path& path) {
@@ -184,9 +193,14 @@ void writeGreyPng(const std::filesystem::path& path, const GreyImage& image) {
 }
 
 HeightField loadHeightMap(const std::filesystem::path& path, const HeightMapOptions& o) {
-    if (!(o.cellSize > 0.0f) || !std::isfinite(o.cellSize) || !std::isfinite(o.heightScale) ||
-        !std::isfinite(o.baseHeight))
-        fail(path, "height-map options need a finite cell size > 0 and finite heights");
+    if (!(o.cellSize > 0.0f) || !(o.cellSize <= kMaxCellSize))
+        fail(path, "the cell size must be a finite number in (0, " + std::to_string(kMaxCellSize) +
+                       "] m (got " + std::to_string(o.cellSize) + ")");
+    if (!(std::abs(o.heightScale) <= kMaxHeight))
+        fail(path, "the height scale must be a finite number of metres with |scale| <= " +
+                       std::to_string(kMaxHeight) + " (got " + std::to_string(o.heightScale) + ")");
+    if (!std::isfinite(o.baseHeight))
+        fail(path, "the base height must be a finite number of metres (got " + std::to_string(o.baseHeight) + ")");
     const GreyImage img = readGreyPng(path);
     HeightField f;
     f.width = img.width;
@@ -195,7 +209,8 @@ HeightField loadHeightMap(const std::filesystem::path& path, const HeightMapOpti
     f.heights.resize(img.values.size());
     const double scale = static_cast<double>(o.heightScale) / img.maxValue();
     for (std::size_t i = 0; i < img.values.size(); ++i)
-        f.heights[i] = static_cast<float>(o.baseHeight + img.values[i] * scale);
+        f.heights[i] = static_cast<float>(img.values[i] * scale);
+    f.origin = o.baseHeight;  // kept apart: heights stay small, where fp32 resolves them finely
     return f;
 }
 

@@ -155,6 +155,11 @@ double rippleFramesPerSecond(double rainMmPerHour) {
     return std::min(30.0, 6.0 + 2.0 * std::sqrt(rainMmPerHour));
 }
 
+float rippleDensity(double rainMmPerHour) {
+    if (!(rainMmPerHour > 0.0)) return 0.0f;
+    return static_cast<float>(std::clamp(1.0 + 0.5 * std::log2(rainMmPerHour), 0.5, 4.0));
+}
+
 float rippleStrength(double rainMmPerHour) {
     if (!(rainMmPerHour > 0.0)) return 0.0f;
     return static_cast<float>(std::min(1.0, 0.25 + 0.15 * std::log10(1.0 + rainMmPerHour) * 2.0));

@@ -29,6 +29,7 @@ view::Lights WaterSceneDescription::defaultSun() {
 
 WaterSystem::WaterSystem(const HeightField& terrain, std::vector<float> permeability, const WaterParams& params,
                          SimulationBackend backend, double rainMmPerHour) {
+    if (backend == SimulationBackend::Fastest) backend = chooseFastestBackend(terrain, permeability, params).backend;
     if (backend == SimulationBackend::Gpu)
         simulation_ = std::make_unique<GpuWaterSimulation>(terrain, std::move(permeability), params);
     else
@@ -65,7 +66,7 @@ void WaterScene::advance(double dt) {
 
 glm::mat4 WaterScene::world() const {
     const HeightField& t = description_.terrain;
-    return glm::translate(glm::mat4(1.0f), glm::vec3(-0.5f * t.sizeX(), 0.0f, -0.5f * t.sizeZ()));
+    return glm::translate(glm::mat4(1.0f), glm::vec3(-0.5f * t.sizeX(), static_cast<float>(t.origin), -0.5f * t.sizeZ()));
 }
 
 namespace {
@@ -143,11 +144,12 @@ struct WaterSceneRenderer::Impl {
     GLuint waterVao = 0, waterIndices = 0, depthTexture = 0, heightTexture = 0;
     GLsizei waterIndexCount = 0;
     GLuint rippleTexture = 0;
+    GLuint albedoTexture = 0;  // the terrain's albedo per cell, for the ground seen through water
 
     explicit Impl(const WaterScene& s) : scene(s) {}
 
     ~Impl() {
-        GLuint textures[] = {skyTexture, depthTexture, heightTexture, rippleTexture};
+        GLuint textures[] = {skyTexture, depthTexture, heightTexture, rippleTexture, albedoTexture};
         for (GLuint t : textures)
             if (t) glDeleteTextures(1, &t);
         GLuint buffers[] = {terrainBuffers[0], terrainBuffers[1], terrainBuffers[2],
@@ -201,6 +203,20 @@ struct WaterSceneRenderer::Impl {
                       t.mesh.indices.data());
         terrainIndexCount = static_cast<GLsizei>(t.mesh.indices.size());
         glBindVertexArray(0);
+        if (scene.hasWater()) {
+            std::vector<std::uint8_t> rgba(t.colors.size() * 4);
+            for (std::size_t i = 0; i < t.colors.size(); ++i)
+                for (int c = 0; c < 4; ++c)
+                    rgba[i * 4 + static_cast<std::size_t>(c)] =
+                        static_cast<std::uint8_t>(std::clamp(t.colors[i][c], 0.0f, 1.0f) * 255.0f + 0.5f);
+            albedoTexture = newTexture();
+            glBindTexture(GL_TEXTURE_2D, albedoTexture);
+            glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, scene.terrain().width, scene.terrain().height, 0, GL_RGBA,
+                         GL_UNSIGNED_BYTE, rgba.data());
+            setGridSampling(GL_LINEAR);
+            glBindTexture(GL_TEXTURE_2D, 0);
+        }
     }
 
     void createSky() {
@@ -327,6 +343,7 @@ struct WaterSceneRenderer::Impl {
         frameUniforms(terrain, camera, aspect);
         setIfPresent(terrain, "u_waterDepth", 1);
         setIfPresent(terrain, "u_wetDarkening", d.look.wetDarkening);
+        setIfPresent(terrain, "u_wetFilmDepth", d.look.wetFilmDepth);
         terrain.use();
         glBindVertexArray(terrainVao);
         glDrawElements(GL_TRIANGLES, terrainIndexCount, GL_UNSIGNED_INT, nullptr);
@@ -338,12 +355,17 @@ struct WaterSceneRenderer::Impl {
                 glActiveTexture(GL_TEXTURE3);
                 glBindTexture(GL_TEXTURE_2D_ARRAY, rippleTexture);
             }
+            glActiveTexture(GL_TEXTURE4);
+            glBindTexture(GL_TEXTURE_2D, albedoTexture);
             gl::Program& surface = program("water_surface", {{"RIPPLES", ripples ? "1" : "0"}});
             frameUniforms(surface, camera, aspect);
             setIfPresent(surface, "u_skybox", 0);
             setIfPresent(surface, "u_waterDepth", 1);
             setIfPresent(surface, "u_terrainHeight", 2);
             setIfPresent(surface, "u_ripples", 3);
+            setIfPresent(surface, "u_terrainAlbedo", 4);
+            setIfPresent(surface, "u_wetDarkening", d.look.wetDarkening);
+            setIfPresent(surface, "u_rippleDensity", rippleDensity(water->rainMmPerHour()));
             setIfPresent(surface, "u_cellSize", scene.terrain().cellSize);
             setIfPresent(surface, "u_waterThreshold", d.look.threshold);
             setIfPresent(surface, "u_shoreFadeDepth", d.look.shoreFadeDepth);
@@ -368,7 +390,7 @@ struct WaterSceneRenderer::Impl {
         glUseProgram(0);
         glActiveTexture(GL_TEXTURE3);
         glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-        for (GLenum unit : {GL_TEXTURE2, GL_TEXTURE1}) {
+        for (GLenum unit : {GL_TEXTURE4, GL_TEXTURE2, GL_TEXTURE1}) {
             glActiveTexture(unit);
             glBindTexture(GL_TEXTURE_2D, 0);
         }

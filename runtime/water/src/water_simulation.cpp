@@ -3,7 +3,9 @@
 // compute shaders.
 #include "prism/water/water_simulation.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -35,11 +37,14 @@ void validate(const WaterParams& p) {
     if (!(p.smoothingSigma > 0.0f) || !finite(p.smoothingSigma)) bad("smoothingSigma must be > 0 (cells)");
     if (!(p.smoothingRate >= 0.0f) || !finite(p.smoothingRate)) bad("smoothingRate must be >= 0 (1/s)");
     if (p.maxSubsteps < 1) bad("maxSubsteps must be >= 1");
+    if (p.threads < 0 || p.threads > 64) bad("threads must be in 0..64 (0: all cores; got " + std::to_string(p.threads) + ")");
 }
 
 double maxStableDt(const WaterParams& p, float cellSize) {
     validate(p);
-    if (!(cellSize > 0.0f)) throw std::invalid_argument("maxStableDt: the cell size must be > 0");
+    if (!(cellSize > 0.0f) || !(cellSize <= kMaxCellSize))
+        throw std::invalid_argument("maxStableDt: the cell size must be a finite number in (0, " +
+                                    std::to_string(kMaxCellSize) + "] m (got " + std::to_string(cellSize) + ")");
     return static_cast<double>(p.courantNumber) * static_cast<double>(cellSize) / static_cast<double>(p.waveSpeed);
 }
 
@@ -50,11 +55,17 @@ SubstepPlan planSubsteps(double dt, const WaterParams& p, float cellSize) {
     const double dtMax = maxStableDt(p, cellSize);
     if (dt == 0.0) return {};
     const double n = std::ceil(dt / dtMax);
-    if (n > static_cast<double>(p.maxSubsteps))
-        throw std::invalid_argument(
-            "water step: dt = " + std::to_string(dt) + " s needs " + std::to_string(n) + " substeps of at most " +
-            std::to_string(dtMax) +
-            " s (c dt / h <= courantNumber), more than maxSubsteps = " + std::to_string(p.maxSubsteps));
+    if (n > static_cast<double>(p.maxSubsteps)) {
+        std::ostringstream s;
+        s << "water step: dt = " << dt << " s needs " << n << " substeps, more than maxSubsteps = " << p.maxSubsteps
+          << ". The height-field distribution is stable only while c dt / h <= 1/sqrt(2) (here c = " << p.waveSpeed
+          << " m/s, h = " << cellSize << " m, courantNumber = " << p.courantNumber
+          << "), so the largest stable substep is courantNumber h / c = " << dtMax
+          << " s and one advance() can take at most maxSubsteps x " << dtMax << " = "
+          << dtMax * static_cast<double>(p.maxSubsteps)
+          << " s. Advance in shorter calls, use a larger cell size or a lower waveSpeed, or raise maxSubsteps.";
+        throw std::invalid_argument(s.str());
+    }
     return {static_cast<long>(n), dt / n};
 }
 
@@ -105,6 +116,14 @@ WaterSimulation::WaterSimulation(HeightField terrain, std::vector<float> permeab
     : terrain_(std::move(terrain)), permeability_(std::move(permeability)), params_(params) {
     validate(terrain_, "water simulation terrain");
     validate(params_);
+    // A whole-metre local origin at or below the lowest point: heights in [0, relief + 1).
+    // A terrain already there (lowest point in [0, 1) m) is left bit for bit as it is.
+    const double shift = std::floor(static_cast<double>(*std::min_element(terrain_.heights.begin(),
+                                                                           terrain_.heights.end())));
+    if (shift != 0.0) {
+        for (float& h : terrain_.heights) h = static_cast<float>(static_cast<double>(h) - shift);
+        terrain_.origin += shift;
+    }
     if (permeability_.empty()) permeability_.assign(terrain_.cellCount(), 0.0f);
     if (permeability_.size() != terrain_.cellCount())
         throw std::invalid_argument("water simulation: " + std::to_string(permeability_.size()) +
@@ -115,8 +134,12 @@ WaterSimulation::WaterSimulation(HeightField terrain, std::vector<float> permeab
 }
 
 void WaterSimulation::setRainRate(double metresPerSecond) {
-    if (!(metresPerSecond >= 0.0) || !finite(metresPerSecond))
-        throw std::invalid_argument("water simulation: the rain rate must be a finite number >= 0 (m/s)");
+    if (!(metresPerSecond >= 0.0) || !(metresPerSecond <= kMaxRainMetresPerSecond)) {
+        std::ostringstream s;
+        s << "water simulation: the rain rate must be a finite number of m/s in [0, " << kMaxRainMetresPerSecond
+          << "] (10000 mm/h) (got " << metresPerSecond << ")";
+        throw std::invalid_argument(s.str());
+    }
     rainRate_ = metresPerSecond;
 }
 

@@ -32,6 +32,11 @@ struct FogBillboardParams {
     float windFactor = 0.5f;  // share of the wind that carries the billboards
     glm::vec3 color{0.50f, 0.52f, 0.57f};
     std::uint32_t seed = 7;
+    // Soft particles against the ground: a billboard fades to nothing within
+    // softDistance above groundHeight (world y), so where it dips into the ground there
+    // is no hard line (the depth test alone cuts it straight). softDistance > 0.
+    float groundHeight = 0.0f;
+    float softDistance = 1.5f;
 };
 
 struct SceneFog {

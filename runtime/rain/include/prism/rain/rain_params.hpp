@@ -1,4 +1,4 @@
-// What a rain system is asked to simulate and draw: intensity (RainCL Table 2), the
+// What a rain system is asked to simulate and draw: intensity (Table 2, rain_classes.hpp), the
 // cylinder around the camera with its level-of-detail rings, wind, jitter, the
 // particle budget and the streak style; plus the particle-count formula.
 //
@@ -15,7 +15,7 @@
 // at full density, and the count is
 //     count = min(budget, round(particlesPerDrop * N(I) / v(I) * V_LOD))
 // (fixedCount replaces the formula; the hard maximum is kMaxParticles = 2^24).
-// N and v are interpolated between the RainCL Table 2 rows linearly in log(intensity); below
+// N and v are interpolated between the Table 2 rows linearly in log(intensity); below
 // drizzle N falls linearly to 0 at intensity 0, above cloudburst N grows in proportion.
 #pragma once
 
@@ -28,6 +28,8 @@
 #include <string>
 #include <string_view>
 
+#include "prism/rain/rain_classes.hpp"
+
 namespace prism::rain {
 
 // Thrown for parameters outside their documented ranges (negative intensity, NaN
@@ -37,22 +39,6 @@ class RainParameterError : public std::invalid_argument {
     using std::invalid_argument::invalid_argument;
 };
 
-enum class RainClass { Drizzle, Light, Moderate, Heavy, Excessive, Cloudburst };
-
-// One row of RainCL Table 2 (§3.1.2, "Regenformen und -daten", after its [13], Lull 1959, p. 13).
-struct RainClassInfo {
-    RainClass id;
-    std::string_view name;  // "drizzle", "light", "moderate", "heavy", "excessive", "cloudburst"
-    float intensity;        // cm/h
-    float dropDiameterMm;   // the table's "Menge [mm]" column: typical drop size
-    float fallSpeed;        // m/s, terminal velocity
-    float dropsPerSquareMetreSecond;
-};
-
-std::span<const RainClassInfo> rainClasses();  // the six rows, lightest first
-const RainClassInfo& rainClassInfo(RainClass id);
-// "drizzle" ... "cloudburst" (case-insensitive); nullopt otherwise.
-std::optional<RainClass> parseRainClass(std::string_view name);
 // The class whose intensity is nearest in log scale (for display); throws for bad intensity.
 RainClass nearestRainClass(float intensity);
 
@@ -74,7 +60,7 @@ struct WindParams {
 struct StreakStyle {
     float exposure = 1.0f / 30.0f;  // s: streak length = speed x exposure
     float width = 0.004f;           // m at distance 0
-    float widthPerMetre = 0.0015f;  // m of extra width per m of distance (RainCL §4.1.3: wider far away)
+    float widthPerMetre = 0.0015f;  // m of extra width per m of distance (seed: wider far away)
     float opacity = 0.9f;           // of a drop at distance 0
     float falloffDistance = 10.0f;  // m: opacity / (1 + (d / falloff)^2), Tariq's 1/d^2
 };
@@ -82,10 +68,12 @@ struct StreakStyle {
 inline constexpr std::uint32_t kMaxParticles = 1u << 24;
 
 struct RainParams {
-    float intensity = 1.381f;                 // cm/h (RainCL Table 2: moderate); 0 = no drops
+    float intensity = 0.381f;                 // cm/h (Table 2 corrected: moderate); 0 = no drops
     float radius = 25.0f;                     // m, cylinder around the camera
     float height = 20.0f;                     // m
     float below = 4.0f;                       // m of the cylinder below the camera, in [0, height]
+    std::optional<float> groundHeight;        // world y of the lowest ground under the cylinder: the
+                                              // bottom reaches down to it (min(eye.y - below, ground))
     int lodRings = 4;                         // level-of-detail rings K, 1..16
     float lodFalloff = 0.5f;                  // density of ring k relative to the centre: falloff^k, (0, 1]
     float particlesPerDrop = 0.05f;           // particles per physical drop, (0, 1]
@@ -110,7 +98,12 @@ double expectedParticleCount(const RainParams& params);
 std::uint32_t particleCountFor(const RainParams& params);
 // The wind velocity (m/s, y = 0); a missing direction comes from params.seed.
 glm::vec3 windVector(const RainParams& params);
-// The centre of the cylinder for a camera at `eye`: eye.y - below + height / 2.
+// The centre of the cylinder for a camera at `eye`: bottom + height / 2 with
+// bottom = eye.y - below, lowered to groundHeight when that is lower, so the rain always
+// reaches the ground (docs/rain.md, "Cylinder").
 glm::vec3 cylinderCenter(const RainParams& params, const glm::vec3& eye);
+// The height relative to the cylinder centre at which the wind shear is zero: the eye's,
+// so the drops at eye height stand in their seed columns around the camera.
+float shearHeight(const RainParams& params, const glm::vec3& eye);
 
 }  // namespace prism::rain

@@ -62,12 +62,14 @@ struct StepInputs {
     glm::vec2 cylinder{1.0f};  // radius, height
     glm::vec3 wind{0.0f};
     float fallSpeed = 0.0f;  // the intensity's fall speed (respawned drops use it)
+    float shearHeight = 0.0f;  // height above the centre where the wind shear is zero (the eye's)
     float dt = 0.0f;         // already clamped
 };
 
 glm::vec2 foldIntoCylinder(glm::vec2 xz, glm::vec2 seedXZ, float radius);
 Particle seedParticle(std::uint32_t index, std::uint32_t seed, const glm::vec3& center, const glm::vec2& cylinder,
-                      const glm::vec2& lod, float fallSpeed, float jitter, const glm::vec3& wind);
+                      const glm::vec2& lod, float fallSpeed, float jitter, const glm::vec3& wind,
+                      float shearHeight);
 Particle stepParticle(Particle p, const StepInputs& in);
 
 // Which level-of-detail ring a seed offset lies in (0 = innermost), for tests.
@@ -98,6 +100,7 @@ class CpuRainSimulation {
     RainRate rate_;
     glm::vec3 wind_{0.0f};
     glm::vec3 center_{0.0f};
+    float shearHeight_ = 0.0f;
     std::vector<Particle> particles_;
     std::uint32_t count_ = 0;
 };

@@ -99,6 +99,7 @@ class RainSystem {
     RainRate rate_;
     glm::vec3 wind_{0.0f};
     glm::vec3 center_{0.0f};
+    float shearHeight_ = 0.0f;
     std::uint32_t count_ = 0;
     std::uint32_t capacity_ = 0;
     std::uint64_t steps_ = 0;

@@ -1,6 +1,6 @@
 // A scene as a JSON file describes it (docs/scenes.md): camera, lights, fog, objects
 // (mesh, transform, material with its shader) and the optional rain and water
-// settings. Plain data; prism/scene/scene_loader.hpp reads it, prism/scene/scene_renderer.hpp
+// settings. Plain data; prism/scene_loader.hpp reads it, prism/scene_renderer.hpp
 // draws it with only the shader variants it needs.
 #pragma once
 
@@ -27,7 +27,7 @@ struct SceneObject {
     view::Material material;
 };
 
-// Rain as a scene asks for it: an intensity class (RainCL Table 2) or a rate.
+// Rain as a scene asks for it: an intensity class (the seed's Table 2) or a rate.
 struct RainSettings {
     std::string intensityClass = "moderate";       // drizzle, light, moderate, heavy, excessive, cloudburst
     std::optional<double> rateMillimetresPerHour;  // overrides the class when given
@@ -48,6 +48,8 @@ struct WaterSettings {
     double seconds = 60.0;                     // simulated rain before the frame
     double soilMillimetresPerHour = 12.0;      // infiltration of loose soil (clay: 0.5)
     unsigned seed = 1;                         // of the procedural terrain
+    float relief = 3.0f;                       // m between the lowest and highest hills
+    float cloudCover = 0.6f;                   // of the procedural sky: 0 clear (bright) .. 1 overcast
 };
 
 struct Scene {
@@ -58,6 +60,10 @@ struct Scene {
     glm::vec4 background{0.05f, 0.06f, 0.08f, 1.0f};
     view::Lights lights;
     std::optional<view::Fog> fog;
+    // Volumetric fog billboards (rain system, soft against the ground): their peak opacity
+    // in (0, 1] and the ground height they fade into; nullopt: distance fog only.
+    std::optional<float> fogBillboards;
+    float fogGroundHeight = 0.0f;
     std::vector<SceneObject> objects;
     std::optional<RainSettings> rain;
     std::optional<WaterSettings> water;

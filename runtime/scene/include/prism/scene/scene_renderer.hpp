@@ -1,6 +1,6 @@
 // Draws a Scene with only what it needs: each object's program is the variant of its
 // shader that matches the scene's feature set (light counts, fog; see
-// prism/render/feature_variants.hpp), programs are built once and shared by every draw with
+// prism/feature_variants.hpp), programs are built once and shared by every draw with
 // the same shader and feature set, and nothing else is built. A scene with `rain` gets
 // a rain system (prism/rain/rain_system.hpp) drawn over the objects; one without gets
 // none: no particle buffer, no compute update, no rain program. A scene with `water`
@@ -27,12 +27,21 @@ namespace prism::rain {
 class RainPrograms;
 struct RainParams;
 }  // namespace prism::rain
+namespace prism::water {
+struct HeightField;
+}  // namespace prism::water
 
 namespace prism::scene {
 
 // The rain system's parameters for a scene's rain settings (intensity class or rate,
 // wind as a world vector, seed, cylinder, budget). Throws rain::RainParameterError.
 rain::RainParams rainParamsFor(const RainSettings& settings);
+// The same for a whole scene: with water, the rain cylinder's bottom reaches down to the
+// lowest point of the scene's terrain (RainParams::groundHeight), so the drops reach the
+// puddles they feed. Needs scene.rain.
+rain::RainParams rainParamsFor(const Scene& scene);
+// The procedural terrain a scene's water settings describe (grid, cell size, seed).
+water::HeightField sceneTerrain(const WaterSettings& settings);
 
 struct SceneFrameInfo {
     std::size_t draws = 0;
@@ -63,6 +72,7 @@ class SceneRenderer {
   private:
     void drawRain(const Scene& scene);
     void drawWater(const Scene& scene);
+    void drawFogBillboards(const Scene& scene);
 
     render::ProgramCache programs_;
     SceneFrameInfo lastFrame_;

@@ -31,8 +31,10 @@ class HeightMapError : public std::runtime_error {
 struct HeightField {
     int width = 0;
     int height = 0;
-    float cellSize = 1.0f;       // metres between neighbouring cells (h)
-    std::vector<float> heights;  // metres, width * height, row-major
+    float cellSize = 1.0f;       // metres between neighbouring cells (h), in (0, kMaxCellSize]
+    std::vector<float> heights;  // metres above `origin`, width * height, row-major, |h| <= kMaxHeight
+    double origin = 0.0;         // metres: the world height of height 0 (a local origin, so terrain
+                                 // high above sea level keeps fp32 precision near its ground)
 
     std::size_t cellCount() const { return static_cast<std::size_t>(width) * static_cast<std::size_t>(height); }
     std::size_t index(int x, int z) const {
@@ -44,7 +46,10 @@ struct HeightField {
     float sizeZ() const { return static_cast<float>(height > 0 ? height - 1 : 0) * cellSize; }
 };
 
-// Throws std::invalid_argument when sizes, cell size or heights are not usable.
+inline constexpr float kMaxCellSize = 1.0e4f;  // m
+inline constexpr float kMaxHeight = 1.0e6f;    // m, |height| relative to the origin
+// Throws std::invalid_argument when sizes, cell size, heights or origin are not usable
+// (not finite, or beyond kMaxCellSize / kMaxHeight).
 void validate(const HeightField& field, const char* what);
 
 // A single-channel image of 8- or 16-bit samples (values 0..255 or 0..65535).
@@ -62,9 +67,9 @@ GreyImage readGreyPng(const std::filesystem::path& path);
 void writeGreyPng(const std::filesystem::path& path, const GreyImage& image);
 
 struct HeightMapOptions {
-    float cellSize = 0.25f;    // metres per pixel
-    float heightScale = 8.0f;  // metres for the largest sample value (255 or 65535)
-    float baseHeight = 0.0f;   // metres for sample value 0
+    float cellSize = 0.25f;    // metres per pixel, (0, kMaxCellSize]
+    float heightScale = 8.0f;  // metres for the largest sample value (255 or 65535), |scale| <= kMaxHeight
+    float baseHeight = 0.0f;   // metres for sample value 0: becomes the field's origin
 };
 HeightField loadHeightMap(const std::filesystem::path& path, const HeightMapOptions& options = {});
 

@@ -56,5 +56,10 @@ RippleFrames proceduralRipples(const RippleOptions& options = {});
 double rippleFramesPerSecond(double rainMmPerHour);
 // How strongly the ripples tilt the surface normal for a rain rate (0 without rain).
 float rippleStrength(double rainMmPerHour);
+// How many layers of the ripple map the surface shows, in [0, 4]: the rings per square
+// metre grow with the rain (RainCL Table 2: drops per m^2 per s rise with the intensity).
+// 0 without rain, 1 + log2(mm/h) / 2 clamped to [0.5, 4]: drizzle 0.5, light 1.0,
+// moderate 2.0, heavy 3.0, cloudburst 4.
+float rippleDensity(double rainMmPerHour);
 
 }  // namespace prism::water

@@ -27,23 +27,23 @@
 #include "prism/image/image.hpp"
 #include "prism/render/program_cache.hpp"
 #include "prism/view/lighting.hpp"
+#include "prism/water/backend_choice.hpp"
 #include "prism/water/height_field.hpp"
 #include "prism/water/procedural_textures.hpp"
 #include "prism/water/water_simulation.hpp"
 
 namespace prism::water {
 
-enum class SimulationBackend { Cpu, Gpu };
-
-// How the water surface looks (RainCL §4.3).
+// How the water surface looks (RainCL §4.3; docs/water.md "Drawing").
 struct WaterLook {
-    float threshold = 0.001f;             // m: shallower water is not drawn
-    float shoreFadeDepth = 0.006f;        // m: the surface fades in between threshold and this
+    float threshold = 1e-5f;              // m: a surface vertex with less water counts as dry
+    float shoreFadeDepth = 0.004f;        // m: the surface fades in with depth from 0 to this
     float fresnelF0 = 0.02f;              // reflectance looking straight down (water)
-    glm::vec3 tint{0.15f, 0.19f, 0.18f};  // body colour (rain water over soil)
-    float absorption = 12.0f;             // 1/m: body opacity 1 - exp(-absorption depth)
+    glm::vec3 tint{0.10f, 0.14f, 0.13f};  // body colour of deep water (rain water over soil)
+    float absorption = 3.0f;              // 1/m: the refracted ground shows by exp(-absorption path)
     float rippleScale = 1.2f;             // ripple-map repeats per metre
-    float wetDarkening = 0.7f;            // albedo factor of soaked ground
+    float wetDarkening = 0.6f;            // albedo factor of soaked ground
+    float wetFilmDepth = 0.0008f;         // m: the terrain darkens by 1 - exp(-depth / this)
 };
 
 struct WaterSceneDescription {
@@ -51,7 +51,7 @@ struct WaterSceneDescription {
     std::vector<float> permeability;  // m/s per cell; empty: proceduralPermeability(terrain)
     bool water = true;                // false: terrain and sky only
     double rainMmPerHour = 0.0;       // constant rain rate (see rain_rates.hpp for classes)
-    SimulationBackend backend = SimulationBackend::Cpu;
+    SimulationBackend backend = SimulationBackend::Cpu;  // Fastest: measured once (backend_choice.hpp)
     WaterParams params;
     view::Lights lights = defaultSun();
     std::optional<view::Fog> fog;

@@ -33,12 +33,19 @@
 //
 // Stability: the distribution is explicit (symplectic Euler) and stable only for
 // c dt / h <= 1/sqrt(2). advance(dt) splits dt into n = ceil(dt / dtMax) equal substeps
-// with dtMax = courantNumber x h / c (courantNumber <= 1/sqrt(2), default 0.7).
+// with dtMax = courantNumber x h / c (courantNumber <= 1/sqrt(2), default 0.7), at most
+// maxSubsteps (default kDefaultMaxSubsteps) per call.
+//
+// Heights: the simulation keeps the terrain relative to a whole-metre local origin at or
+// below its lowest point (terrain().origin holds the offset), so surfaces are computed in
+// fp32 near zero: the same terrain 3000 m higher gives the same depths.
 #pragma once
 
 #include <glm/vec2.hpp>
 
 #include <array>
+#include <cstdint>
+#include <memory>
 #include <cstddef>
 #include <span>
 #include <string_view>
@@ -53,6 +60,13 @@ enum class BorderMode {
     Closed,  // RainCL's rule (§4.2.4): no tangent at the border, water stays on the map
 };
 
+// The default cap on substeps per advance() call: 100,000 (about 10 minutes of the 512²
+// CPU step). A dt needing more is an error that names the stability limit c dt / h and the
+// largest dt one call can take, instead of a run that looks like a hang.
+inline constexpr long kDefaultMaxSubsteps = 100'000;
+// The largest rain rate the simulation accepts: 10,000 mm/h (rain_rates.hpp), in m/s.
+inline constexpr double kMaxRainMetresPerSecond = 10000.0 / 1000.0 / 3600.0;
+
 struct WaterParams {
     float waveSpeed = 0.5f;         // c, m/s, of the distribution's height-field waves
     float courantNumber = 0.7f;     // c dt / h of a substep; at most 1/sqrt(2) = 0.7071
@@ -64,7 +78,9 @@ struct WaterParams {
     float smoothingSigma = 1.0f;    // cells
     float smoothingRate = 1.0f;     // 1/s: strength per substep = min(1, rate dt)
     BorderMode border = BorderMode::Open;
-    long maxSubsteps = 2'000'000;  // advance() refuses a dt needing more
+    int threads = 0;  // CPU step: row bands on this many threads, 0 = all cores (1..64); the
+                      // result is the same for every count (grids under 128^2 use one)
+    long maxSubsteps = kDefaultMaxSubsteps;  // advance() refuses a dt needing more
 };
 
 // Throws std::invalid_argument naming the first unusable parameter.
@@ -125,7 +141,8 @@ class WaterSimulation {
     const std::vector<float>& permeability() const { return permeability_; }
     const WaterParams& params() const { return params_; }
 
-    // Rain rate in m/s (>= 0, finite); applies to the following advance() calls.
+    // Rain rate in m/s, finite, in [0, kMaxRainMetresPerSecond]; applies to the following
+    // advance() calls. Throws std::invalid_argument otherwise.
     void setRainRate(double metresPerSecond);
     double rainRate() const { return rainRate_; }
 
@@ -170,11 +187,27 @@ class WaterSimulation {
     long substeps_ = 0;
 };
 
-// The CPU reference. Single-threaded, fp32 in the GPU's order, denormals flushed to zero
-// during a step as Mesa's llvmpipe does.
+namespace detail {
+class RowBands;
+}
+
+// The CPU reference: fp32 in the GPU's order, denormals flushed to zero during a step as
+// Mesa's llvmpipe does. Each pass runs over row bands on WaterParams::threads threads and
+// over unit-stride rows the compiler vectorises; every cell is computed with the same
+// operations in the same order whatever the thread count, so the depths are bit-identical
+// to one thread (and to the plain per-cell loops of the first version, kept as the test
+// reference in tests/water/reference_water_step.cpp). The ledger's double sums are taken
+// per row, then over rows: within 1e-12 relative of a single running sum.
 class CpuWaterSimulation final : public WaterSimulation {
   public:
     CpuWaterSimulation(HeightField terrain, std::vector<float> permeability, WaterParams params = {});
+    ~CpuWaterSimulation() override;
+    // The threads the step runs on (threadsFor(params.threads, cells)).
+    int threads() const { return threads_; }
+    // Bytes each substep reads and writes per cell, counting every array a pass streams
+    // once (neighbour reads come from cache): 180 with smoothing, 144 without. The
+    // memory-bound floor of a substep is cells x this / copy bandwidth (bench/water).
+    static int bytesPerCellPerSubstep(bool smoothing);
 
     std::vector<glm::vec2> depthPairs() const override;
     std::vector<glm::vec2> edgeVelocities() const override;
@@ -187,21 +220,25 @@ class CpuWaterSimulation final : public WaterSimulation {
 
   private:
     void substep(const StepConstants& k);
-    void rainAndInfiltration(const StepConstants& k);
-    void tangentialFlowOut(const StepConstants& k);
-    void tangentialFlowGather();
-    void distributionVelocity(const StepConstants& k);
-    void distributionApply(const StepConstants& k);
-    void smoothing(const StepConstants& k);
+    // Each pass works on rows [z0, z1); those that change the water write the *Out arrays.
+    void rainAndInfiltration(const StepConstants& k, int z0, int z1);
+    void tangentialFlowOut(const StepConstants& k, int z0, int z1);
+    void tangentialFlowGather(int z0, int z1);
+    void distributionVelocity(const StepConstants& k, int z0, int z1);
+    void distributionApply(const StepConstants& k, int z0, int z1);
+    void smoothing(const StepConstants& k, int z0, int z1);
     void swapWater();
 
-    std::vector<float> hi_, lo_, hiOut_, loOut_;
+    // Water as compensated pairs, plus the surface (terrain + hi) and available water of
+    // each cell, computed once by the pass that writes the cell.
+    std::vector<float> hi_, lo_, surf_, avail_, hiOut_, loOut_, surfOut_, availOut_;
     std::vector<float> qEast_, qSouth_;
     std::vector<float> flowAmount_;
-    std::vector<int> flowDirection_;
-    std::vector<double> infiltratedStep_;
-    std::vector<float> lostStep_;
+    std::vector<std::int32_t> flowDirection_;
+    std::vector<double> infiltratedRow_, lostRow_;
     double infiltrated_ = 0.0, lost_ = 0.0;
+    int threads_ = 1;
+    std::unique_ptr<detail::RowBands> bands_;
 };
 
 }  // namespace prism::water
