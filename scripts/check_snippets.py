@@ -11,13 +11,15 @@ Markers:
   Header:    a `//` comment line containing `snippet: examples/snippets/NAME.cpp`, then the
              indented comment block (`//     code`, blank `//` lines allowed)
   Snippet:   the shown text is every region between `// [snippet]` and `// [/snippet]`
-             lines, each region dedented by its smallest indentation, regions joined in
-             order; the rest of the file is the harness (main, inputs, checks).
+             lines (`# [snippet]` and `# [/snippet]` in CMake files), each region dedented
+             by its smallest indentation, regions joined in order; the rest of the file is
+             the harness (main, inputs, checks).
 
 Every public header must have a snippet marker, and every snippet file must be shown
 somewhere. Errors are GCC style (`path:line: error: ...`); exit status 1 on any error.
 
   check_snippets.py [ROOT]          check the tree at ROOT (default: the repository)
+  check_snippets.py --update        rewrite every marked block from its snippet file
   check_snippets.py --self-test     copy the tree, edit one header example, and show that
                                     the check then fails naming that header
 """
@@ -31,6 +33,7 @@ import tempfile
 SNIPPET_DIR = "examples/snippets"
 HEADER_GLOBS = ["runtime/*/include/prism/**/*.hpp", "shaderc_tool/include/prism/catalog/*.hpp"]
 DOC_GLOBS = ["docs/*.md", "README.md"]
+FULLY_CHECKED_DOCS = ["docs/runtime.md"]  # here every ```cpp / ```cmake block needs a marker
 MD_MARKER = re.compile(r"^<!-- snippet: (\S+) -->\s*$")
 HEADER_MARKER = re.compile(r"^//.*\bsnippet: (examples/snippets/[\w./-]+\.cpp)")
 CODE_PREFIX = "//     "
@@ -45,13 +48,14 @@ def dedent(lines):
 def shown_text(path):
     """The text a snippet file shows: its [snippet] regions, dedented and joined."""
     shown, region, errors = [], None, []
+    comment = "#" if path.suffix == ".txt" or path.suffix == ".cmake" else "//"
     for number, line in enumerate(path.read_text().splitlines(), 1):
-        marker = line.strip()
-        if marker == "// [snippet]":
+        marker = line.strip().replace(comment + " [", "// [", 1)
+        if marker == "// [snippet]" or marker.startswith("// [snippet] "):
             if region is not None:
                 errors.append(f"{path}:{number}: error: `// [snippet]` inside an open region")
             region = []
-        elif marker == "// [/snippet]":
+        elif marker == "// [/snippet]" or marker.startswith("// [/snippet] "):
             if region is None:
                 errors.append(f"{path}:{number}: error: `// [/snippet]` without `// [snippet]`")
             else:
@@ -78,7 +82,7 @@ def markdown_blocks(path):
         while j < len(lines) and not lines[j].strip():
             j += 1
         if j >= len(lines) or not lines[j].startswith("```"):
-            found.append((i + 1, m.group(1), None))  # reported at the marker
+            found.append((i + 1, m.group(1), None, None))  # reported at the marker
             continue
         block = []
         j += 1
@@ -86,7 +90,7 @@ def markdown_blocks(path):
         while j < len(lines) and not lines[j].startswith("```"):
             block.append(lines[j].rstrip())
             j += 1
-        found.append((start, m.group(1), block))
+        found.append((start, m.group(1), block, j))
     return found
 
 
@@ -108,7 +112,7 @@ def header_blocks(path):
             j += 1
         while block and not block[-1]:
             block.pop()
-        found.append((start, m.group(1), block))
+        found.append((start, m.group(1), block, start - 1 + len(block)))
     return found
 
 
@@ -154,11 +158,18 @@ def check(root):
         if not blocks:
             errors.append(f"{rel_header}:1: error: a public header needs a usage example marked "
                           f"`// Usage (snippet: {SNIPPET_DIR}/NAME.cpp):`")
-        for line, rel, block in blocks:
+        for line, rel, block, _ in blocks:
             compare(rel_header, line, rel, block, "header")
     for doc in sorted({p for g in DOC_GLOBS for p in root.glob(g)}):
-        for line, rel, block in markdown_blocks(doc):
+        marked = set()
+        for line, rel, block, _ in markdown_blocks(doc):
             compare(doc.relative_to(root), line, rel, block, "doc")
+            marked.add(line - 1)
+        if str(doc.relative_to(root)) in FULLY_CHECKED_DOCS:
+            for number, text in enumerate(doc.read_text().splitlines(), 1):
+                if re.match(r"^```(cpp|c\+\+|cmake)\s*$", text) and number not in marked:
+                    errors.append(f"{doc.relative_to(root)}:{number}: error: a code block without a "
+                                  f"`<!-- snippet: {SNIPPET_DIR}/NAME.cpp -->` marker is not compiled by any test")
     for snippet in sorted((root / SNIPPET_DIR).glob("*.cpp")):
         rel = str(snippet.relative_to(root))
         if rel not in used:
@@ -169,6 +180,30 @@ def check(root):
     print(f"check_snippets: {len(used)} snippet files, {count} public headers: "
           f"{'OK' if not errors else str(len(errors)) + ' error(s)'}")
     return 1 if errors else 0
+
+
+def update(root):
+    """Rewrites every marked doc block and header example from its snippet file."""
+    root = pathlib.Path(root).resolve()
+    files = sorted({p for g in HEADER_GLOBS + DOC_GLOBS for p in root.glob(g)})
+    for path in files:
+        header = path.suffix == ".hpp"
+        blocks = header_blocks(path) if header else markdown_blocks(path)
+        lines = path.read_text().splitlines(keepends=True)
+        for start, rel, block, end in reversed(blocks):
+            if block is None or not (root / rel).is_file():
+                continue
+            shown, _ = shown_text(root / rel)
+            if header:
+                new = [(CODE_PREFIX + l if l else "//") + "\n" for l in shown]
+            else:
+                new = [l + "\n" for l in shown]
+            lines[start - 1:end] = new
+        text = "".join(lines)
+        if text != path.read_text():
+            path.write_text(text)
+            print(f"check_snippets: updated {path.relative_to(root)}")
+    return 0
 
 
 def self_test(root):
@@ -203,7 +238,9 @@ if __name__ == "__main__":
     repo = pathlib.Path(__file__).resolve().parent.parent
     if args == ["--self-test"]:
         sys.exit(self_test(repo))
+    if args == ["--update"]:
+        sys.exit(update(repo))
     if len(args) > 1 or (args and args[0].startswith("-")):
-        print("usage: check_snippets.py [ROOT] | --self-test", file=sys.stderr)
+        print("usage: check_snippets.py [ROOT] | --update | --self-test", file=sys.stderr)
         sys.exit(2)
     sys.exit(check(args[0] if args else repo))
