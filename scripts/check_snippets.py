@@ -211,7 +211,7 @@ def self_test(root):
     root = pathlib.Path(root).resolve()
     with tempfile.TemporaryDirectory() as tmp:
         copy = pathlib.Path(tmp)
-        for pattern in HEADER_GLOBS + DOC_GLOBS + [SNIPPET_DIR + "/*.cpp"]:
+        for pattern in HEADER_GLOBS + DOC_GLOBS + [SNIPPET_DIR + "/*.cpp", "examples/*/CMakeLists.txt"]:
             for p in root.glob(pattern):
                 target = copy / p.relative_to(root)
                 target.parent.mkdir(parents=True, exist_ok=True)

@@ -2,6 +2,10 @@
 // by shader and variant: two draws with the same shader and feature set share one
 // program.
 //
+// Usage (snippet: examples/snippets/render_program_cache.cpp):
+//
+//     #include "prism/render/program_cache.hpp"
+//     #include "prism/shaders.hpp"
 //     prism::render::ProgramCache cache(prism::shaders::kCatalog);
 //     prism::gl::Program& p = cache.get("phong", {{"BLINN", "1"}});
 //     cache.size();   // programs built so far
