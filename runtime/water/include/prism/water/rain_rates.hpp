@@ -3,6 +3,9 @@
 // unit conversions. The water simulation itself takes a plain rate (m/s), so a constant
 // rain rate works without any class.
 //
+// Usage (snippet: examples/snippets/water_rain_rates.cpp):
+//
+//     #include "prism/water/rain_rates.hpp"
 //     double mmh = prism::water::rainRateMmPerHour(prism::water::RainClass::Heavy);   // 15.2
 //     double ms = prism::water::mmPerHourToMetresPerSecond(mmh);                     // 4.22e-6
 //     double r = prism::water::parseRainRateMmPerHour("cloudburst");                 // 101.6
