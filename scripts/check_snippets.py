@@ -149,7 +149,8 @@ def check(root):
             errors.append(f"{where}:{line + k}: error: "
                           f"this {kind} example differs from {rel} at its line {k + 1}:\n"
                           f"    file:  {e}\n    shown: {a}\n"
-                          f"  edit {rel} (it is compiled and run by tests/snippets) and copy it here")
+                          f"  edit {rel} (tests/snippets compiles and runs it), then copy it here with "
+                          f"`python3 scripts/check_snippets.py --update`")
 
     headers = sorted({p for g in HEADER_GLOBS for p in root.glob(g)})
     for header in headers:
