@@ -14,8 +14,8 @@
 //     #include "prism/shaders.hpp"
 //     prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
 //     prism::image::Image8 image = renderer.render(prism::scene::loadScene("examples/scenes/one_light.json"));
-//     renderer.programs().size();          // programs built so far
-//     renderer.lastFrame().variants;       // "phong DIRECTIONAL_LIGHTS=1,..." per draw
+//     std::size_t built = renderer.programs().size();                        // programs built so far
+//     const std::vector<std::string>& drawn = renderer.lastFrame().variants;  // "phong DIRECTIONAL_LIGHTS=1,..." per draw
 //
 // Needs a current context.
 #pragma once
