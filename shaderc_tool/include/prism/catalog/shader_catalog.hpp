@@ -10,7 +10,9 @@
 //     constexpr const prism::catalog::Module& moduleInfo(ModuleId);
 //
 // Everything below is constexpr data pointing into string literals and arrays of
-// static storage, so a header costs nothing at start-up. Use:
+// static storage, so a header costs nothing at start-up.
+//
+// Usage (snippet: examples/snippets/catalog_shader_catalog.cpp):
 //
 //     #include "prism/shaders.hpp"          // generated
 //     const auto& s = prism::shaders::shaderInfo(prism::shaders::ShaderId::phong);

@@ -6,6 +6,8 @@
 // are parallel: `normals` and `uvs` are either empty or hold exactly one entry per
 // position.
 //
+// Usage (snippet: examples/snippets/geometry_mesh.cpp):
+//
 //     #include "prism/geometry/mesh.hpp"
 //     #include "prism/geometry/procedural_meshes.hpp"
 //     prism::geometry::Mesh mesh = prism::geometry::makeIcosphere(1.0f, 3);

@@ -1,6 +1,8 @@
 // The normal matrix (for u_normal): how a world matrix transforms surface normals,
 // computed so that it is never NaN or Inf, even for singular or broken matrices.
 //
+// Usage (snippet: examples/snippets/geometry_normal_matrix.cpp):
+//
 //     #include "prism/geometry/normal_matrix.hpp"
 //     glm::mat3 n = prism::geometry::normalMatrix(world);            // upload as u_normal
 //     glm::vec3 nw = prism::geometry::transformNormal(n, normal);   // unit, never NaN

@@ -1,5 +1,7 @@
 // Face normals and area-weighted vertex normals that never come out NaN.
 //
+// Usage (snippet: examples/snippets/geometry_normals.cpp):
+//
 //     #include "prism/geometry/normals.hpp"
 //     using namespace prism::geometry;
 //     NormalStats stats = computeVertexNormals(mesh);     // fills mesh.normals

@@ -1,6 +1,10 @@
 // Wavefront OBJ import (through tinyobjloader) into a prism::geometry::Mesh, with
 // errors that name the file and line.
 //
+// Usage (snippet: examples/snippets/geometry_obj_loader.cpp):
+//
+//     #include <iostream>
+//
 //     #include "prism/geometry/obj_loader.hpp"
 //     using namespace prism::geometry;
 //     Mesh split = loadObj("monkey.obj");                 // one vertex per face corner

@@ -2,6 +2,8 @@
 // origin, deterministic, have unit normals pointing outward (up for the grid) and
 // counter-clockwise front faces seen from outside.
 //
+// Usage (snippet: examples/snippets/geometry_procedural_meshes.cpp):
+//
 //     #include "prism/geometry/procedural_meshes.hpp"
 //     using namespace prism::geometry;
 //     Mesh cube   = makeCube();                      // 24 vertices, flat faces, uvs

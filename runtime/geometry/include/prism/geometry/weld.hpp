@@ -1,6 +1,8 @@
 // Welding: merging vertices that sit at the same position (as an OBJ import splits
 // them per face) so that area-weighted vertex normals shade smoothly across faces.
 //
+// Usage (snippet: examples/snippets/geometry_weld.cpp):
+//
 //     #include "prism/geometry/weld.hpp"
 //     using namespace prism::geometry;
 //     WeldResult smooth = weldVertices(split);                       // merge by position

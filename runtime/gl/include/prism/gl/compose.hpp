@@ -2,16 +2,22 @@
 // `SHADER_MODULE.LIGHTS + ...` idea of the FUDGE shader thesis (§7.1), with dependencies pulled in once, in order,
 // and driver errors mapped back to each module's file and line.
 //
-// Usage:
+// Usage (snippet: examples/snippets/gl_compose.cpp):
 //
+//     #include <cstdint>
+//     #include <vector>
+//
+//     #include "prism/gl/compose.hpp"
+//     #include "prism/shaders.hpp"   // generated catalogue: ModuleId, kCatalog
 //     using prism::shaders::ModuleId;
 //     std::vector<prism::gl::ComposeStage> stages{
 //         {.stage = prism::catalog::Stage::Vertex,
 //          .modules = {std::uint32_t(ModuleId::transforms)},
-//          .source = "void main() { gl_Position = toClip(a_position); }\n"},
+//          .source = "in vec3 a_position;\nvoid main() { gl_Position = clipPosition(eyePosition(a_position)); }\n",
+//          .sourceName = "my_tool/custom.vert"},
 //         {.stage = prism::catalog::Stage::Fragment,
-//          .modules = {std::uint32_t(ModuleId::lights)},
-//          .source = "out vec4 fragColor;\nvoid main() { fragColor = vec4(lambert(vec3(0, 0, 1)), 1.0); }\n",
+//          .modules = {std::uint32_t(ModuleId::material), std::uint32_t(ModuleId::fragment_output)},
+//          .source = "void main() { frag = u_color; }\n",
 //          .sourceName = "my_tool/custom.frag"},
 //     };
 //     prism::gl::Program p = prism::gl::composeProgram(prism::shaders::kCatalog, stages, "custom");

@@ -2,9 +2,10 @@
 // one-dimensional range of invocations. The loader (prism_glad, GL 4.5 core) loads the
 // entry points once for every context; on an older context they stay null.
 //
-// Usage:
+// Usage (snippet: examples/snippets/gl_compute.cpp):
 //
 //     #include "prism/gl/compute.hpp"
+//     #include "prism/gl/gl_context.hpp"
 //     auto context = prism::gl::createContext({.majorVersion = 4, .minorVersion = 3});
 //     prism::gl::requireCompute("my effect");            // throws ComputeUnavailableError on GL < 4.3
 //     auto groups = prism::gl::computeGroups(100000, 256);  // {391, 1}

@@ -1,8 +1,11 @@
 // Translation of GL driver compile logs into GCC-style `file:line:column:` messages
 // through a stage's source-number table (the `#line L N` numbering).
 //
-// Usage:
+// Usage (snippet: examples/snippets/gl_driver_log.cpp):
 //
+//     #include <vector>
+//
+//     #include "prism/gl/driver_log.hpp"
 //     std::vector<prism::gl::SourceName> files{{0, "shaders/phong.frag"}, {1, "modules/lights.glsl"}};
 //     std::string nice = prism::gl::translateDriverLog(log, files);
 //     // "1:12(3): error: `foo' undeclared"  ->  "modules/lights.glsl:12:3: error: `foo' undeclared"

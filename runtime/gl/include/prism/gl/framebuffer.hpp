@@ -1,12 +1,13 @@
 // Off-screen render targets: a colour texture (RGBA8 or RGBA32F) plus a 24-bit depth
 // buffer, with readback into CPU images whose row 0 is the TOP row.
 //
-// Usage:
+// Usage (snippet: examples/snippets/gl_framebuffer.cpp):
 //
+//     #include "prism/gl/framebuffer.hpp"
 //     prism::gl::Framebuffer fb(256, 256);                 // RGBA8 + depth24
 //     fb.bind();                                            // binds and sets the viewport
 //     fb.clear({0.1f, 0.2f, 0.3f, 1.0f});                   // colour and depth
-//     ... draw ...
+//     // ... draw ...
 //     prism::image::Image8 shot = fb.readImage8();                 // top row first
 //
 //     prism::gl::Framebuffer hdr(64, 64, prism::gl::ColorFormat::Rgba32F);

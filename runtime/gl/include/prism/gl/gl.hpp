@@ -1,9 +1,13 @@
 // GL function access for code that calls OpenGL directly, plus GL error checks.
 //
-// Usage:
+// Usage (snippet: examples/snippets/gl_gl.cpp):
 //
-//     #include "prism/gl/gl.hpp"          // the glad2 GL 3.3 core loader header
+//     #include "prism/gl/framebuffer.hpp"
+//     #include "prism/gl/gl.hpp"          // the glad GL 4.5 core loader header
+//     #include "prism/gl/gl_context.hpp"
 //     auto ctx = prism::gl::createContext();  // makes the context current and loads GL
+//     prism::gl::Framebuffer target(64, 64);  // EGL surfaceless has no default framebuffer
+//     target.bind();
 //     glClearColor(0.f, 0.f, 0.f, 1.f);
 //     glClear(GL_COLOR_BUFFER_BIT);
 //     prism::gl::throwIfGlError("clearing the frame");  // throws prism::gl::GlError

@@ -1,12 +1,17 @@
 // OpenGL 3.3+ core contexts: headless EGL (default), OSMesa, or a GLFW window.
 //
-// Usage:
+// Usage (snippet: examples/snippets/gl_gl_context.cpp):
+//
+//     #include <iostream>
 //
 //     #include "prism/gl/gl_context.hpp"
 //     auto ctx = prism::gl::createContext();                         // EGL, else OSMesa
-//     auto egl = prism::gl::createContext(prism::gl::Backend::Egl);  // exactly EGL
-//     auto win = prism::gl::createContext(prism::gl::Backend::Glfw, {.width = 800, .height = 600});
 //     std::cout << ctx->info().renderer << "\n";                    // "llvmpipe (LLVM 15.0.6, 256 bits)"
+//     try {
+//         auto win = prism::gl::createContext(prism::gl::Backend::Glfw, {.width = 800, .height = 600});
+//     } catch (const prism::gl::ContextError& e) {                  // no display: run under xvfb-run
+//         std::cerr << e.what() << "\n";
+//     }
 //     ctx->makeCurrent();   // before GL calls when several contexts exist; reloads GL if needed
 //
 // Backends:

@@ -2,8 +2,10 @@
 // counters of the objects created and alive (for leak checks and for tests that show a
 // feature created nothing). Every GL object in Prism is owned through these.
 //
-// Usage:
+// Usage (snippet: examples/snippets/gl_handles.cpp):
 //
+//     #include "prism/gl/gl.hpp"
+//     #include "prism/gl/gl_context.hpp"
 //     #include "prism/gl/handles.hpp"
 //     auto context = prism::gl::createContext();
 //     prism::gl::Buffer buffer = prism::gl::Buffer::create();   // glGenBuffers

@@ -5,6 +5,8 @@
 //
 // Usage:
 //
+// Usage (snippet: examples/snippets/gl_module_library.cpp):
+//
 //     #include "prism/gl/compose.hpp"
 //     #include "prism/gl/module_library.hpp"
 //     auto library = prism::gl::ModuleLibrary::fromStrings(
@@ -12,10 +14,13 @@
 //         R"({"attributes": [{"name": "a_position", "type": "vec2", "location": 0}], "uniforms": []})");
 //     std::vector<prism::gl::ComposeStage> stages{
 //         {.stage = prism::catalog::Stage::Vertex,
-//          .source = "in vec2 a_position;\nvoid main() { gl_Position = vec4(a_position, 0.0, 1.0); }\n"},
+//          .modules = {},
+//          .source = "in vec2 a_position;\nvoid main() { gl_Position = vec4(a_position, 0.0, 1.0); }\n",
+//          .sourceName = "app/tinted.vert"},
 //         {.stage = prism::catalog::Stage::Fragment,
 //          .modules = {library.id("tint")},
-//          .source = "out vec4 frag;\nvoid main() { frag = vec4(tint(vec3(1.0)), 1.0); }\n"}};
+//          .source = "out vec4 frag;\nvoid main() { frag = vec4(tint(vec3(1.0)), 1.0); }\n",
+//          .sourceName = "app/tinted.frag"}};
 //     prism::gl::Program program = prism::gl::composeProgram(library.catalog(), stages, "tinted");
 //
 // Module ids are the file names without extension ("lib/tint.glsl" is "tint"). A module

@@ -1,17 +1,21 @@
 // Linked GL programs built from the shader catalogue (or from raw stage sources),
 // with driver errors mapped back to module files and checked uniform setters.
 //
-// Usage:
+// Usage (snippet: examples/snippets/gl_program.cpp):
 //
+//     #include <vector>
+//
+//     #include "prism/gl/program.hpp"
 //     #include "prism/shaders.hpp"   // generated catalogue
-//     const auto& phong = prism::shaders::shader(prism::shaders::ShaderId::phong);
-//     const auto* variant = prism::catalog::findVariant(phong, {{"FOG", "1"}});
+//     const auto& phong = prism::shaders::shaderInfo(prism::shaders::ShaderId::phong);
+//     const auto* variant = prism::catalog::findVariant(phong, {{"FOG", "1"}, {"DIRECTIONAL_LIGHTS", "4"}});
 //     prism::gl::Program program(*variant, prism::shaders::kCatalog.contractAttributes, "phong");
 //
 //     program.use();
 //     program.set("u_color", glm::vec4(1, 0, 0, 1));
-//     program.set("u_lightDirections", std::span<const glm::vec3>(dirs));  // array from element 0
-//     program.set("u_lightDirections[2]", glm::vec3(0, 1, 0));             // one element
+//     std::vector<glm::vec3> dirs{{0, -1, 0}, {1, -1, 0}};
+//     program.set("u_lightDirection", std::span<const glm::vec3>(dirs));  // array from element 0
+//     program.set("u_lightDirection[2]", glm::vec3(0, 1, 0));             // one element
 //
 // Building: every stage is compiled, each contract attribute is bound to its
 // location with glBindAttribLocation, then the program is linked. A compile or link
@@ -43,7 +47,11 @@
 #include <string_view>
 #include <vector>
 
-#include <glm/fwd.hpp>
+#include <glm/mat3x3.hpp>  // complete types for set() and the usage example
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "prism/gl/driver_log.hpp"
 #include "prism/gl/handles.hpp"

@@ -1,12 +1,15 @@
 // Labelled contact sheets of rendered images, with a tiny built-in 5x7 bitmap font.
 //
-// Usage:
+// Usage (snippet: examples/snippets/image_contact_sheet.cpp):
 //
+//     #include "prism/image/contact_sheet.hpp"
+//     #include "prism/image/png_io.hpp"
+//     prism::image::Image8 img(140, 20, {40, 40, 40, 255});
 //     prism::image::drawText(img, 2, 2, "phong FOG=1", 2, {255, 255, 0, 255});  // scale 2, yellow
 //
-//     std::vector<prism::image::Image8> shots = ...;
-//     std::vector<std::string> names = {"unicolor", "phong", ...};
-//     prism::image::Image8 sheet = prism::image::composeContactSheet(shots, names, 4);  // 4 columns
+//     std::vector<prism::image::Image8> shots = {img, img, img};
+//     std::vector<std::string> names = {"unicolor", "phong", "gouraud"};
+//     prism::image::Image8 sheet = prism::image::composeContactSheet(shots, names, 2);  // 2 columns
 //     prism::image::writePng("out/sheet.png", sheet);
 //
 // The font covers A-Z (lower case drawn as upper case), 0-9 and  - _ . : / ( ) = , + % [ ] ?

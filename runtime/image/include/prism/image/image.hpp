@@ -1,7 +1,8 @@
 // CPU images: RGBA pixels in memory, row 0 at the TOP (as in PNG files and on screen).
 //
-// Usage:
+// Usage (snippet: examples/snippets/image_image.cpp):
 //
+//     #include "prism/image/image.hpp"
 //     prism::image::Image8 img(64, 32, {255, 0, 0, 255});   // 64x32, opaque red
 //     img.set(3, 4, {0, 0, 255, 255});               // x = 3, y = 4 (4th row from the top)
 //     prism::image::Rgba8 p = img.at(3, 4);

@@ -1,8 +1,12 @@
 // Golden-image comparison of 8-bit RGBA images: statistics, pass/fail thresholds
 // and an amplified difference image.
 //
-// Usage:
+// Usage (snippet: examples/snippets/image_image_compare.cpp):
 //
+//     #include <iostream>
+//
+//     #include "prism/image/image_compare.hpp"
+//     #include "prism/image/png_io.hpp"
 //     prism::image::ImageComparison cmp = prism::image::compareImages(actual, golden);
 //     prism::image::Thresholds t{.maxChannelDiff = 3, .maxShareOver = 0.001, .maxMean = 0.5};
 //     if (!prism::image::passes(cmp, t)) {

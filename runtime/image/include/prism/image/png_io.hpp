@@ -1,7 +1,8 @@
 // PNG files for 8-bit RGBA images (golden images, galleries, contact sheets).
 //
-// Usage:
+// Usage (snippet: examples/snippets/image_png_io.cpp):
 //
+//     #include "prism/image/png_io.hpp"
 //     prism::image::writePng("out/phong.png", image);        // atomic: temp file + rename
 //     prism::image::Image8 golden = prism::image::readPng("tests/golden/phong.png");
 //

@@ -1,7 +1,11 @@
 // The rain system's compute dispatches, counted for tests, on top of prism/gl/compute.hpp
 // (the GL 4.5 loader of prism_gl provides glDispatchCompute; nothing is looked up here).
 //
+// Usage (snippet: examples/snippets/rain_compute.cpp):
+//
+//     #include "prism/rain/compute.hpp"
 //     prism::rain::ComputeFunctions compute = prism::rain::loadComputeFunctions();  // throws if unavailable
+//     // with a compute program in use and its buffers bound:
 //     compute.dispatch(count);        // ceil(count / 256) groups of 256, split over x and y
 //     compute.barrier(prism::rain::kBarrierAll);
 //

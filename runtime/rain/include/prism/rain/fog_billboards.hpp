@@ -4,6 +4,9 @@
 // This header is the CPU part: parameters, the noise texture array and the billboard
 // motion (GL drawing: prism/rain/fog_system.hpp).
 //
+// Usage (snippet: examples/snippets/rain_fog_billboards.cpp):
+//
+//     #include "prism/rain/fog_billboards.hpp"
 //     prism::rain::SceneFog fog;                 // distance fog + billboards
 //     fog.billboards.strength = 0.5f;            // 0: distance fog only, no billboards
 //     prism::rain::FogNoiseArray noise = prism::rain::generateFogNoise(64, 16, 7);

@@ -3,6 +3,9 @@
 // fog_billboards program (geometry shader). Created by RainScene only when the scene's
 // fog has billboards (strength > 0).
 //
+// Usage (snippet: examples/snippets/rain_fog_system.cpp):
+//
+//     #include "prism/rain/fog_system.hpp"
 //     prism::rain::FogSystem fog(programs, sceneFog, camera.eye);
 //     fog.update(dt, camera.eye, wind);
 //     fog.draw(camera, aspect, &sceneFog.distance, time);

@@ -3,10 +3,13 @@
 // list). Every buffer, texture and vertex array of the rain code goes through these
 // move-only owners; the counters are process-wide.
 //
+// Usage (snippet: examples/snippets/rain_gl_resources.cpp):
+//
+//     #include "prism/rain/gl_resources.hpp"
 //     auto before = prism::rain::glObjectCounts();
-//     ... build and render a scene ...
+//     // ... build and render a scene ...
 //     auto after = prism::rain::glObjectCounts();
-//     after.buffersCreated - before.buffersCreated;   // buffers the rain code made
+//     std::uint64_t made = after.buffersCreated - before.buffersCreated;   // buffers the rain code made
 //
 // Needs a current context while objects are created or destroyed.
 #pragma once

@@ -2,6 +2,9 @@
 // cylinder around the camera with its level-of-detail rings, wind, jitter, the
 // particle budget and the streak style; plus the particle-count formula.
 //
+// Usage (snippet: examples/snippets/rain_rain_params.cpp):
+//
+//     #include "prism/rain/rain_params.hpp"
 //     prism::rain::RainParams p;                                   // moderate rain
 //     p.intensity = prism::rain::rainClassInfo(prism::rain::RainClass::Heavy).intensity;
 //     p.wind.strength = 4.0f;                                      // m/s, random direction

@@ -4,6 +4,9 @@
 // which programs a scene uses (e.g. none of the rain ones without rain, no FOG=1
 // variant without fog).
 //
+// Usage (snippet: examples/snippets/rain_rain_programs.cpp):
+//
+//     #include "prism/rain/rain_programs.hpp"
 //     prism::rain::RainPrograms programs;
 //     prism::gl::Program& p = programs.get("ground", {{"FOG", "0"}});
 //     programs.used();    // {"ground (FOG=0)"}

@@ -6,11 +6,14 @@
 //   - no `fog`: only FOG=0 variants are built and used, no fog billboards, no noise.
 // programsInUse() and prism/rain/gl_resources.hpp's counters show it (tests/rain).
 //
+// Usage (snippet: examples/snippets/rain_rain_scene.cpp):
+//
+//     #include "prism/rain/rain_scene.hpp"
 //     prism::rain::RainSceneDesc desc = prism::rain::defaultRainScene();
 //     desc.rain->wind.strength = 5.0f;
 //     prism::rain::RainScene scene(desc);     // needs a current GL context (4.3 with rain)
 //     scene.update(1.0f / 60.0f);             // rain and fog billboards
-//     prism::image::Image8 image = scene.render(800, 800);
+//     prism::image::Image8 image = scene.render(200, 200);
 #pragma once
 
 #include <glm/vec3.hpp>

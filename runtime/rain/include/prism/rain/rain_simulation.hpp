@@ -3,6 +3,9 @@
 // modules/rain/particles.glsl) are tested against. Same layout, same random numbers
 // (prism/rain/random.hpp), same arithmetic in float, in the same order.
 //
+// Usage (snippet: examples/snippets/rain_rain_simulation.cpp):
+//
+//     #include "prism/rain/rain_simulation.hpp"
 //     prism::rain::CpuRainSimulation sim(params, eye);   // seeds particleCountFor(params)
 //     sim.step(1.0f / 60.0f, eye);                        // fall, wind, wrap around the camera
 //     for (const auto& p : sim.particles()) use(p.position);

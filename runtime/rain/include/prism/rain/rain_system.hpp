@@ -3,6 +3,10 @@
 // three techniques. Create one only when a scene has rain (see prism/rain/rain_scene.hpp):
 // nothing is allocated or built before the first particle needs it.
 //
+// Usage (snippet: examples/snippets/rain_rain_system.cpp):
+//
+//     #include "prism/rain/rain_programs.hpp"
+//     #include "prism/rain/rain_system.hpp"
 //     prism::rain::RainPrograms programs;
 //     prism::rain::RainSystem rain(programs, params, camera.eye);
 //     rain.update(1.0f / 60.0f, camera.eye);              // compute dispatch

@@ -2,6 +2,9 @@
 // no state, one 32-bit value per (seed, index, channel), so the CPU reference and the
 // GPU compute shader draw exactly the same numbers for the same particle.
 //
+// Usage (snippet: examples/snippets/rain_random.cpp):
+//
+//     #include "prism/rain/random.hpp"
 //     std::uint32_t h = prism::rain::pcgHash(42u);                 // PCG output permutation
 //     float u = prism::rain::rainUniform(seed, particle, channel);  // [0, 1), 24-bit steps
 //

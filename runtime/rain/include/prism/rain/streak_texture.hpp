@@ -4,6 +4,9 @@
 // oscillation types = 450 layers of R8, each `width` x `height` texels (u across the
 // streak, v along it from the drop's head at v = 0 to its tail at v = 1).
 //
+// Usage (snippet: examples/snippets/rain_streak_texture.cpp):
+//
+//     #include "prism/rain/streak_texture.hpp"
 //     prism::rain::StreakTextureArray tex = prism::rain::generateStreakTextures();
 //     int layer = prism::rain::streakLayer(/*oscillation*/ 3, /*theta bin*/ 2, /*phi bin*/ 8);
 //     std::uint8_t t = tex.at(layer, 8, 32);

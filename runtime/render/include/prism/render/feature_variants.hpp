@@ -5,8 +5,12 @@
 // the scene's count, so the light loop is bounded by it) and FOG (0/1) are set from it.
 // Other axes keep the values asked for, else their first value.
 //
+// Usage (snippet: examples/snippets/render_feature_variants.cpp):
+//
+//     #include "prism/render/feature_variants.hpp"
 //     prism::render::FeatureSet f = prism::render::featuresOf(lights, fog.has_value());
-//     prism::render::VariantValues v = prism::render::variantFor(*catalog::findShader(cat, "phong"), f, {{"BLINN", "1"}});
+//     const prism::catalog::Shader& phong = *prism::catalog::findShader(cat, "phong");
+//     prism::render::VariantValues v = prism::render::variantFor(phong, f, {{"BLINN", "1"}});
 //     // v == {BLINN=1, FOG=0, DIRECTIONAL_LIGHTS=1, POINT_LIGHTS=0} for one light, no fog
 //
 // Throws std::invalid_argument when a scene needs more lights than any variant holds.

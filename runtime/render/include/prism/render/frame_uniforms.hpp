@@ -2,6 +2,9 @@
 // on a program: transforms from the camera and world matrix, the eye-space normal
 // matrix, lights, material and (for FOG variants) fog. Only uniforms the program actually has are set.
 //
+// Usage (snippet: examples/snippets/render_frame_uniforms.cpp):
+//
+//     #include "prism/render/frame_uniforms.hpp"
 //     prism::render::setFrameUniforms(program, camera, aspect, lights, world, material);
 //     gpuMesh.draw();
 //

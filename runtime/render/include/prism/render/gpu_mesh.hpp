@@ -1,6 +1,10 @@
 // A geometry::Mesh uploaded to GL: one vertex array with positions and normals bound
 // to the locations the binding contract gives `a_position` and `a_normal`.
 //
+// Usage (snippet: examples/snippets/render_gpu_mesh.cpp):
+//
+//     #include "prism/render/gpu_mesh.hpp"
+//     #include "prism/shaders.hpp"
 //     prism::render::GpuMesh gpu(mesh, prism::shaders::kCatalog.contractAttributes);
 //     gpu.draw();   // glDrawElements of every triangle, with the program already in use
 //

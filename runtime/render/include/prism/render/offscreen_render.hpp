@@ -1,6 +1,11 @@
 // One image of one mesh with one catalogue shader, rendered off-screen: the building
 // block of prism-render, prism-gallery, the golden-image tests and the benchmarks.
 //
+// Usage (snippet: examples/snippets/render_offscreen_render.cpp):
+//
+//     #include "prism/render/offscreen_render.hpp"
+//     #include "prism/render/shader_meshes.hpp"
+//     #include "prism/shaders.hpp"
 //     prism::render::ProgramCache cache(prism::shaders::kCatalog);
 //     prism::render::RenderJob job;
 //     job.shader = "phong";

@@ -2,6 +2,10 @@
 // by shader and variant: two draws with the same shader and feature set share one
 // program.
 //
+// Usage (snippet: examples/snippets/render_program_cache.cpp):
+//
+//     #include "prism/render/program_cache.hpp"
+//     #include "prism/shaders.hpp"
 //     prism::render::ProgramCache cache(prism::shaders::kCatalog);
 //     prism::gl::Program& p = cache.get("phong", {{"BLINN", "1"}});
 //     cache.size();   // programs built so far
@@ -10,7 +14,8 @@
 //     // program rebuilt from edited sources. References from get() stay valid and name
 //     // the new program from now on.
 //     const prism::catalog::Variant& blinn = cache.variantOf("phong", {{"BLINN", "1"}});
-//     cache.reload("phong", blinn.name, std::move(rebuiltProgram));  // name "BLINN=1,FOG=0,..."
+//     prism::gl::Program rebuilt(blinn, prism::shaders::kCatalog.contractAttributes, "phong");
+//     cache.reload("phong", blinn.name, std::move(rebuilt));
 //
 // get() throws prism::render::UnknownShaderError listing the known shaders (or the shader's
 // variants) when the name or the variant does not exist. Needs a current context.

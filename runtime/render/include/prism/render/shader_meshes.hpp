@@ -1,7 +1,10 @@
 // What mesh data each catalogue shader wants and the meshes the programs offer by name.
 //
-//     geometry::Mesh m = prism::render::namedMesh("torus", /*subdivision*/ 3);
-//     geometry::Mesh ready = prism::render::meshForShader("flat", m);   // split per face, face normals
+// Usage (snippet: examples/snippets/render_shader_meshes.cpp):
+//
+//     #include "prism/render/shader_meshes.hpp"
+//     prism::geometry::Mesh m = prism::render::namedMesh("torus", /*subdivision*/ 3);
+//     prism::geometry::Mesh ready = prism::render::meshForShader("flat", m);   // split per face, face normals
 //
 // The flat shader needs face normals on vertices split per face (the NORMAL_FACE
 // module of the FUDGE shader thesis's appendix); every other shader gets area-weighted vertex normals (computed when

@@ -4,6 +4,8 @@
 // validation, cross-stage interface and contract checks; no prism-shaderc process),
 // then swaps the new programs into the ProgramCache.
 //
+// Usage (snippet: examples/snippets/render_shader_watcher.cpp):
+//
 //     prism::render::ProgramCache cache(prism::shaders::kCatalog);
 //     prism::render::ShaderWatchOptions options;
 //     options.sourceRoot = sourceTree;  // the tree the catalogue was built from

@@ -2,6 +2,19 @@
 // (mesh, transform, material with its shader) and the optional rain and water
 // settings. Plain data; prism/scene_loader.hpp reads it, prism/scene_renderer.hpp
 // draws it with only the shader variants it needs.
+//
+// Usage (snippet: examples/snippets/scene_scene.cpp):
+//
+//     #include "prism/scene/scene.hpp"
+//     prism::scene::Scene scene;                    // built in code instead of read from JSON
+//     scene.width = scene.height = 128;
+//     scene.lights.directional.push_back({.direction = {-0.5f, -0.6f, -0.65f}, .color = {1, 1, 1}});
+//     scene.fog = prism::view::Fog{.color = {0.6f, 0.65f, 0.7f}, .density = 0.1f};
+//     prism::scene::SceneObject ball;
+//     ball.mesh = "icosphere";
+//     ball.shader = "phong";
+//     ball.variantOverrides = {{"BLINN", "1"}};
+//     scene.objects.push_back(ball);
 #pragma once
 
 #include <glm/mat4x4.hpp>

@@ -4,6 +4,9 @@
 //     scenes/bad.json:4:17: syntax error while parsing object - unexpected '}'
 // Unknown keys are errors too (a misspelled "fogg" must not be silently ignored).
 //
+// Usage (snippet: examples/snippets/scene_scene_loader.cpp):
+//
+//     #include "prism/scene/scene_loader.hpp"
 //     prism::scene::Scene scene = prism::scene::loadScene("examples/scenes/one_light.json");
 //     prism::scene::Scene same  = prism::scene::parseScene(text, "inline.json");
 #pragma once

@@ -7,10 +7,15 @@
 // is drawn on a rain-fed water scene (terrain, sky, water map; prism/water/water_scene.hpp)
 // simulated for its `seconds`; one without creates no water map.
 //
+// Usage (snippet: examples/snippets/scene_scene_renderer.cpp):
+//
+//     #include "prism/scene/scene_loader.hpp"
+//     #include "prism/scene/scene_renderer.hpp"
+//     #include "prism/shaders.hpp"
 //     prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
 //     prism::image::Image8 image = renderer.render(prism::scene::loadScene("examples/scenes/one_light.json"));
-//     renderer.programs().size();          // programs built so far
-//     renderer.lastFrame().variants;       // "phong DIRECTIONAL_LIGHTS=1,..." per draw
+//     std::size_t built = renderer.programs().size();                        // programs built so far
+//     const std::vector<std::string>& drawn = renderer.lastFrame().variants;  // "phong DIRECTIONAL_LIGHTS=1,..." per draw
 //
 // Needs a current context.
 #pragma once

@@ -1,6 +1,9 @@
 // A perspective camera with look-at, validated so extreme inputs give a clear error
 // instead of NaN matrices.
 //
+// Usage (snippet: examples/snippets/view_camera.cpp):
+//
+//     #include "prism/view/camera.hpp"
 //     prism::view::Camera cam{.eye = {0, 0, 3}, .target = {0, 0, 0}};
 //     glm::mat4 view = cam.view();                 // world -> eye
 //     glm::mat4 proj = cam.projection(16.f / 9.f); // eye -> clip

@@ -2,10 +2,14 @@
 // modules/fog.glsl, modules/material.glsl): ambient + directional lights + point lights, and a material
 // with colour, shininess (Phong exponent) and specular strength.
 //
+// Usage (snippet: examples/snippets/view_lighting.cpp):
+//
+//     #include "prism/view/lighting.hpp"
 //     prism::view::Lights lights;
 //     lights.ambient = {0.1f, 0.1f, 0.1f};
 //     lights.directional.push_back({.direction = {-1, -1, -1}, .color = {1, 1, 1}});
 //     prism::view::Material m{.color = {0.8f, 0.3f, 0.2f, 1.f}, .shininess = 32.f, .specular = 0.5f};
+//     glm::vec3 brightest = prism::view::maxRadiance(lights, m);  // no lit pixel exceeds this
 //
 // Directions point from the light into the scene, in world space. Point lights have no
 // distance falloff, so the brightest a lit pixel can be is

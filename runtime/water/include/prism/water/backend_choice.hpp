@@ -2,6 +2,9 @@
 // faster on the current renderer: measured once per process for each renderer and grid
 // size (a few substeps of each on the scene's own terrain), then reused.
 //
+// Usage (snippet: examples/snippets/water_backend_choice.cpp):
+//
+//     #include "prism/water/backend_choice.hpp"
 //     using namespace prism::water;
 //     auto ctx = prism::gl::createContext({.majorVersion = 4, .minorVersion = 3});
 //     const HeightField t = proceduralTerrain({.width = 128, .height = 128});

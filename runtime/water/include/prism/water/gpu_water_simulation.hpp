@@ -3,6 +3,9 @@
 // the compensated water depths between two buffers. Same step, same fp32 operations
 // and order as CpuWaterSimulation (see water_simulation.hpp).
 //
+// Usage (snippet: examples/snippets/water_gpu_water_simulation.cpp):
+//
+//     #include "prism/water/gpu_water_simulation.hpp"
 //     auto ctx = prism::gl::createContext({.majorVersion = 4, .minorVersion = 3});
 //     prism::water::GpuWaterSimulation sim(terrain, permeability, params);
 //     sim.setRainRate(rate);

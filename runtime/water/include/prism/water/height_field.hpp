@@ -2,6 +2,9 @@
 // loaded from 8- or 16-bit PNG files with Prism's own libpng read path (prism::image::readPng
 // would reduce 16-bit maps to 8 bits), or generated procedurally.
 //
+// Usage (snippet: examples/snippets/water_height_field.cpp):
+//
+//     #include "prism/water/height_field.hpp"
 //     using namespace prism::water;
 //     HeightField t = loadHeightMap("terrain.png", {.cellSize = 0.25f, .heightScale = 8.0f});
 //     HeightField p = proceduralTerrain({.width = 512, .height = 512, .seed = 7});

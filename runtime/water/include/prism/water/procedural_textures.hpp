@@ -2,6 +2,9 @@
 // the skybox and the 16 capillary-ripple frames of the water surface (RainCL §4.3.2
 // and §4.5). Pure CPU, deterministic for a random seed.
 //
+// Usage (snippet: examples/snippets/water_procedural_textures.cpp):
+//
+//     #include "prism/water/procedural_textures.hpp"
 //     prism::water::CubeFaces sky = prism::water::proceduralSky({.faceSize = 128});
 //     prism::water::RippleFrames ripples = prism::water::proceduralRipples({});
 #pragma once

@@ -3,8 +3,11 @@
 // forwarded here, plus the parsing of a rain argument and unit conversions. The water
 // simulation itself takes a plain rate (m/s), so a constant rain rate works without any class.
 //
-//     double mmh = prism::water::rainRateMmPerHour(prism::water::RainClass::Heavy);   // 15.24
-//     double ms = prism::water::mmPerHourToMetresPerSecond(mmh);                     // 4.23e-6
+// Usage (snippet: examples/snippets/water_rain_rates.cpp):
+//
+//     #include "prism/water/rain_rates.hpp"
+//     double mmh = prism::water::rainRateMmPerHour(prism::water::RainClass::Heavy);   // 15.2
+//     double ms = prism::water::mmPerHourToMetresPerSecond(mmh);                     // 4.22e-6
 //     double r = prism::water::parseRainRateMmPerHour("cloudburst");                 // 101.6
 //     double c = prism::water::parseRainRateMmPerHour("12.5");                       // 12.5 (mm/h)
 #pragma once

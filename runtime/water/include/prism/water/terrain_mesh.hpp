@@ -3,6 +3,9 @@
 // vertex coloured by slope (grass on the flat, earth on slopes, rock on steep ground),
 // height and permeability (compacted ground is greyer).
 //
+// Usage (snippet: examples/snippets/water_terrain_mesh.cpp):
+//
+//     #include "prism/water/terrain_mesh.hpp"
 //     prism::water::TerrainMesh t = prism::water::makeTerrainMesh(field, permeability);
 //     // t.mesh: positions, normals, uvs, indices; t.colors: one RGBA albedo per vertex
 #pragma once

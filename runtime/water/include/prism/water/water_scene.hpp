@@ -4,6 +4,9 @@
 // has no water map, no simulation and no water program; without rain there are no
 // ripple textures and the water program is the RIPPLES=0 variant.
 //
+// Usage (snippet: examples/snippets/water_water_scene.cpp):
+//
+//     #include "prism/water/water_scene.hpp"
 //     using namespace prism::water;
 //     WaterSceneDescription d;
 //     d.terrain = proceduralTerrain({.width = 256, .height = 256});   // default: 512 x 512

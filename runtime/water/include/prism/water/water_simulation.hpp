@@ -3,6 +3,9 @@
 // implementations run the same step: CpuWaterSimulation (the reference) and
 // GpuWaterSimulation (compute shaders, gpu_water_simulation.hpp).
 //
+// Usage (snippet: examples/snippets/water_water_simulation.cpp):
+//
+//     #include "prism/water/water_simulation.hpp"
 //     using namespace prism::water;
 //     HeightField terrain = proceduralTerrain({.width = 128, .height = 128});
 //     CpuWaterSimulation sim(terrain, proceduralPermeability(terrain), WaterParams{});

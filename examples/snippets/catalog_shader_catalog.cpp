@@ -1,0 +1,13 @@
+// The usage example of prism/catalog/shader_catalog.hpp, compiled and run by tests/snippets.
+// [snippet]
+#include "prism/shaders.hpp"          // generated
+// [/snippet]
+
+int main() {
+    // [snippet]
+    const auto& s = prism::shaders::shaderInfo(prism::shaders::ShaderId::phong);
+    const auto* v = prism::catalog::findVariant(s, {{"BLINN", "1"}});
+    std::string vert = prism::catalog::joinChunks(v->stages[0].chunks);
+    // [/snippet]
+    return vert.rfind("#version", 0) == 0 ? 0 : 1;
+}
