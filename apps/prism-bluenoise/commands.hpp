@@ -1,0 +1,40 @@
+// The subcommands of prism-bluenoise: their arguments, CLI11 registration and actions.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+namespace prism::bluenoise::app {
+
+// Bad arguments found after parsing (e.g. a malformed --size): exit status 2.
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+struct GenerateArgs {
+    std::string size;
+    int depth = 1;
+    double sigma = 1.5;
+    std::uint64_t seed = 0;
+    int bits = 8;
+    std::string out;
+};
+
+struct MeasureArgs {
+    std::string file;
+    bool json = false;
+    std::string spectrumSvg;
+};
+
+void addGenerate(CLI::App& app, GenerateArgs& args);
+void addMeasure(CLI::App& app, MeasureArgs& args);
+int runGenerate(const GenerateArgs& args);
+int runMeasure(const MeasureArgs& args);
+
+// "WxH" with W, H in 1..512.
+void parseSize(const std::string& text, int& width, int& height);
+
+}  // namespace prism::bluenoise::app
