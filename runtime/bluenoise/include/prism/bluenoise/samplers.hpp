@@ -1,0 +1,57 @@
+// The three per-pixel samplers, bit-identical to modules/bluenoise/sampling.glsl.
+//
+// Usage:
+//
+//     namespace bn = prism::bluenoise;
+//     bn::SamplerTables tables = bn::SamplerTables::fromMask(bn::generateVoidAndCluster({.width = 64, .height = 64}));
+//     std::uint32_t w = bn::sample(bn::SamplerKind::White, tables, 10, 20, 7, 0);      // pixel (10, 20), frame 7, dim 0
+//     std::uint32_t b = bn::sample(bn::SamplerKind::BlueNoise, tables, 10, 20, 7, 1);
+//     float u = bn::toUnitFloat(b);                                                    // [0, 1)
+//
+// - White: pcgHash(pcgHash(pcgHash(pcgHash(x) + y) + frame) + dim).
+// - BlueNoise: the mask (as a 32-bit fraction) at the pixel shifted by dimension dim's
+//   R2 offset (plastic-number sequence, temporal blue noise thesis §2.3.5, in 16-bit
+//   fixed point), plus frame * 2^32/phi mod 2^32 (golden-ratio offset, thesis §2.3.4):
+//   every frame is blue, every pixel's sequence over frames is low-discrepancy.
+// - Sorted: the pixel's seed (from the sorting and retargeting passes, sorting.hpp)
+//   hashed with the dimension, plus the same golden-ratio frame offset.
+// All arithmetic is on 32-bit unsigned integers that wrap, so frame 10^6 (or 2^32 - 1)
+// loses nothing. Pixels outside the tables wrap around (the mask tiles the screen).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "prism/bluenoise/mask.hpp"
+#include "prism/bluenoise/random.hpp"
+
+namespace prism::bluenoise {
+
+enum class SamplerKind : std::uint32_t { White = 0, BlueNoise = 1, Sorted = 2 };
+
+// R2 steps as 32-bit fractions: round(2^32 / g) and round(2^32 / g^2), g = 1.3247179572
+// (the plastic number, x^3 = x + 1).
+inline constexpr std::uint32_t kR2StepX = 0xC13FA9A9u;
+inline constexpr std::uint32_t kR2StepY = 0x91E10DA5u;
+
+struct SamplerTables {
+    int maskWidth = 1, maskHeight = 1;
+    std::vector<std::uint32_t> mask{0};   // fixedPoint32 of a mask
+    int seedWidth = 1, seedHeight = 1;
+    std::vector<std::uint32_t> seeds{0};  // per-pixel seeds of the sorted sampler
+
+    static SamplerTables fromMask(const Mask& mask);
+};
+
+std::uint32_t whiteSample(std::uint32_t x, std::uint32_t y, std::uint32_t frame, std::uint32_t dim);
+std::uint32_t blueNoiseSample(const SamplerTables& t, std::uint32_t x, std::uint32_t y, std::uint32_t frame,
+                              std::uint32_t dim);
+std::uint32_t sortedSample(const SamplerTables& t, std::uint32_t x, std::uint32_t y, std::uint32_t frame,
+                           std::uint32_t dim);
+std::uint32_t sample(SamplerKind kind, const SamplerTables& t, std::uint32_t x, std::uint32_t y, std::uint32_t frame,
+                     std::uint32_t dim);
+
+// Dimension dim's R2 offset into a width x height mask.
+void r2Offset(std::uint32_t index, int width, int height, std::uint32_t& dx, std::uint32_t& dy);
+
+}  // namespace prism::bluenoise
