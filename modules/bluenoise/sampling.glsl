@@ -4,18 +4,23 @@
 //   u_blueNoiseSampler 0 = white: PCG hash of pixel, frame and dimension;
 //                      1 = blue noise: the mask u_blueNoiseMask (R32UI, rank * 2^32 / N)
 //                          at the pixel shifted by dimension dim's R2 offset, plus
-//                          frame * 2^32/phi (golden ratio) in wrapping integer arithmetic;
+//                          frame * the step of dim's parity (2^32/phi even, 2^32 (sqrt(3)-1)
+//                          odd) in wrapping integer arithmetic: each dimension is a 1D
+//                          low-discrepancy sequence over frames, each pair spread in 2D;
 //                      2 = sorted: the per-pixel seed u_blueNoiseSeeds (R32UI, written by
 //                          the sorting/retargeting passes) hashed with dim, plus the same
-//                          golden-ratio frame offset.
+//                          frame offset.
 // Integer arithmetic only, so frame 10^6 is as precise as frame 0. docs/bluenoise.md.
 uniform usampler2D u_blueNoiseMask;
 uniform usampler2D u_blueNoiseSeeds;
 uniform int u_blueNoiseSampler;
 
-const uint PRISM_BN_GOLDEN = 0x9E3779B9u;  // 2^32 / phi
 const uint PRISM_BN_R2_X = 0xC13FA9A9u;    // 2^32 / g, g the plastic number
 const uint PRISM_BN_R2_Y = 0x91E10DA5u;    // 2^32 / g^2
+
+const uint PRISM_BN_GOLDEN = 0x9E3779B9u;  // 2^32 / phi
+const uint PRISM_BN_SQRT3 = 0xBB67AE86u;   // 2^32 (sqrt(3) - 1)
+uint prismBlueNoiseTemporalStep(uint dim) { return (dim & 1u) != 0u ? PRISM_BN_SQRT3 : PRISM_BN_GOLDEN; }
 
 // PCG hash (Jarzynski & Olano 2020).
 uint prismBlueNoisePcg(uint v) {
@@ -32,13 +37,13 @@ uint prismBlueNoiseMask(uvec2 pixel, uint frame, uint dim) {
     uvec2 size = uvec2(textureSize(u_blueNoiseMask, 0));
     uvec2 offset = (((uvec2(dim * PRISM_BN_R2_X, dim * PRISM_BN_R2_Y) >> 16u) * size) >> 16u);
     uvec2 p = (pixel % size + offset) % size;
-    return texelFetch(u_blueNoiseMask, ivec2(p), 0).r + frame * PRISM_BN_GOLDEN;
+    return texelFetch(u_blueNoiseMask, ivec2(p), 0).r + frame * prismBlueNoiseTemporalStep(dim);
 }
 
 uint prismBlueNoiseSorted(uvec2 pixel, uint frame, uint dim) {
     uvec2 size = uvec2(textureSize(u_blueNoiseSeeds, 0));
     uint seed = texelFetch(u_blueNoiseSeeds, ivec2(pixel % size), 0).r;
-    return prismBlueNoisePcg(prismBlueNoisePcg(seed) + dim) + frame * PRISM_BN_GOLDEN;
+    return prismBlueNoisePcg(prismBlueNoisePcg(seed) + dim) + frame * prismBlueNoiseTemporalStep(dim);
 }
 
 // The sample as 32 bits.

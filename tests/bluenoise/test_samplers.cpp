@@ -46,17 +46,18 @@ TEST(Samplers, BlueNoiseFramesStayBlueAtFrameMillion) {
 }
 
 TEST(Samplers, TemporalOffsetIsExactInteger) {
-    // Frame f differs from frame 0 by exactly f * 2^32/phi mod 2^32 at every pixel.
-    for (std::uint32_t frame : {1u, 1000000u, 0xFFFFFFFFu}) {
-        const std::uint32_t a = bn::sample(bn::SamplerKind::BlueNoise, tables64(), 5, 9, 0, 2);
-        const std::uint32_t b = bn::sample(bn::SamplerKind::BlueNoise, tables64(), 5, 9, frame, 2);
-        EXPECT_EQ(static_cast<std::uint32_t>(b - a), static_cast<std::uint32_t>(frame * 0x9E3779B9u));
-        const std::uint32_t c = bn::sample(bn::SamplerKind::Sorted, tables64(), 5, 9, 0, 2);
-        const std::uint32_t d = bn::sample(bn::SamplerKind::Sorted, tables64(), 5, 9, frame, 2);
-        EXPECT_EQ(static_cast<std::uint32_t>(d - c), static_cast<std::uint32_t>(frame * 0x9E3779B9u));
-    }
-    // 2^32/phi: its ratio to 2^32 is 1/phi to 9 digits.
-    EXPECT_NEAR(0x9E3779B9u / 4294967296.0, 2.0 / (1.0 + std::sqrt(5.0)), 1e-9);
+    // Frame f differs from frame 0 by exactly f * step mod 2^32 at every pixel, with the
+    // step 2^32/phi for even dimensions and 2^32 (sqrt(3) - 1) for odd ones.
+    for (std::uint32_t frame : {1u, 1000000u, 0xFFFFFFFFu})
+        for (std::uint32_t dim : {2u, 3u}) {
+            const std::uint32_t step = dim == 2 ? 0x9E3779B9u : 0xBB67AE86u;
+            const std::uint32_t a = bn::sample(bn::SamplerKind::BlueNoise, tables64(), 5, 9, 0, dim);
+            const std::uint32_t b = bn::sample(bn::SamplerKind::BlueNoise, tables64(), 5, 9, frame, dim);
+            EXPECT_EQ(static_cast<std::uint32_t>(b - a), static_cast<std::uint32_t>(frame * step));
+            const std::uint32_t c = bn::sample(bn::SamplerKind::Sorted, tables64(), 5, 9, 0, dim);
+            const std::uint32_t d = bn::sample(bn::SamplerKind::Sorted, tables64(), 5, 9, frame, dim);
+            EXPECT_EQ(static_cast<std::uint32_t>(d - c), static_cast<std::uint32_t>(frame * step));
+        }
 }
 
 TEST(Samplers, PerPixelSequenceIsWellSpread) {
@@ -72,6 +73,12 @@ TEST(Samplers, PerPixelSequenceIsWellSpread) {
     };
     EXPECT_LT(largestGap(bn::SamplerKind::BlueNoise), 2.0 / 32.0);
     EXPECT_GT(largestGap(bn::SamplerKind::White), 2.0 / 32.0);
+}
+
+TEST(Samplers, TemporalStepsAreTheirIrrationals) {
+    EXPECT_NEAR(bn::temporalStep(0) / 4294967296.0, 2.0 / (1.0 + std::sqrt(5.0)), 1e-9);
+    EXPECT_NEAR(bn::temporalStep(1) / 4294967296.0, std::sqrt(3.0) - 1.0, 1e-9);
+    EXPECT_EQ(bn::temporalStep(4), bn::temporalStep(0));
 }
 
 TEST(Samplers, DimensionsUseDifferentMaskOffsets) {

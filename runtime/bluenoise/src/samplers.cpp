@@ -31,7 +31,7 @@ std::uint32_t blueNoiseSample(const SamplerTables& t, std::uint32_t x, std::uint
     r2Offset(dim, t.maskWidth, t.maskHeight, dx, dy);
     const std::uint32_t mx = (x % static_cast<std::uint32_t>(t.maskWidth) + dx) % static_cast<std::uint32_t>(t.maskWidth);
     const std::uint32_t my = (y % static_cast<std::uint32_t>(t.maskHeight) + dy) % static_cast<std::uint32_t>(t.maskHeight);
-    return t.mask[my * static_cast<std::uint32_t>(t.maskWidth) + mx] + frame * kGoldenRatioStep;
+    return t.mask[my * static_cast<std::uint32_t>(t.maskWidth) + mx] + frame * temporalStep(dim);
 }
 
 std::uint32_t sortedSample(const SamplerTables& t, std::uint32_t x, std::uint32_t y, std::uint32_t frame,
@@ -39,7 +39,7 @@ std::uint32_t sortedSample(const SamplerTables& t, std::uint32_t x, std::uint32_
     const std::uint32_t sx = x % static_cast<std::uint32_t>(t.seedWidth);
     const std::uint32_t sy = y % static_cast<std::uint32_t>(t.seedHeight);
     const std::uint32_t seed = t.seeds[sy * static_cast<std::uint32_t>(t.seedWidth) + sx];
-    return pcgHash(pcgHash(seed) + dim) + frame * kGoldenRatioStep;
+    return pcgHash(pcgHash(seed) + dim) + frame * temporalStep(dim);
 }
 
 std::uint32_t sample(SamplerKind kind, const SamplerTables& t, std::uint32_t x, std::uint32_t y, std::uint32_t frame,

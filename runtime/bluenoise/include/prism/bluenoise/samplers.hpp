@@ -11,10 +11,15 @@
 // - White: pcgHash(pcgHash(pcgHash(pcgHash(x) + y) + frame) + dim).
 // - BlueNoise: the mask (as a 32-bit fraction) at the pixel shifted by dimension dim's
 //   R2 offset (plastic-number sequence, temporal blue noise thesis §2.3.5, in 16-bit
-//   fixed point), plus frame * 2^32/phi mod 2^32 (golden-ratio offset, thesis §2.3.4):
-//   every frame is blue, every pixel's sequence over frames is low-discrepancy.
+//   fixed point), plus frame * temporalStep(dim) mod 2^32: every frame is blue, and
+//   every pixel's sequence over frames is low-discrepancy. Even dimensions step by
+//   2^32/phi (the golden ratio, the best 1D sequence: thesis §2.3.4); odd dimensions by
+//   2^32 (sqrt(3) - 1) (continued fraction [0; 1, 2, 1, 2, ...], so also a good 1D
+//   sequence) so that a pair (2k, 2k+1) is spread in 2D instead of lying on a line, as
+//   one shared step would give. (R2's steps spread pairs a little better in 2D but are
+//   poor alone: 32 frames of the 1/g sequence leave a gap of 0.128, golden 0.056.)
 // - Sorted: the pixel's seed (from the sorting and retargeting passes, sorting.hpp)
-//   hashed with the dimension, plus the same golden-ratio frame offset.
+//   hashed with the dimension, plus the same temporal offset.
 // All arithmetic is on 32-bit unsigned integers that wrap, so frame 10^6 (or 2^32 - 1)
 // loses nothing. Pixels outside the tables wrap around (the mask tiles the screen).
 #pragma once
@@ -33,6 +38,10 @@ enum class SamplerKind : std::uint32_t { White = 0, BlueNoise = 1, Sorted = 2 };
 // (the plastic number, x^3 = x + 1).
 inline constexpr std::uint32_t kR2StepX = 0xC13FA9A9u;
 inline constexpr std::uint32_t kR2StepY = 0x91E10DA5u;
+
+// Per-frame steps: round(2^32 (sqrt(3) - 1)) for odd dimensions, 2^32/phi for even ones.
+inline constexpr std::uint32_t kSqrt3Step = 0xBB67AE86u;
+constexpr std::uint32_t temporalStep(std::uint32_t dim) { return (dim & 1u) ? kSqrt3Step : kGoldenRatioStep; }
 
 struct SamplerTables {
     int maskWidth = 1, maskHeight = 1;
