@@ -29,7 +29,27 @@ struct MeasureArgs {
     std::string spectrumSvg;
 };
 
+struct RenderArgs {
+    int spp = 1;
+    std::string sampler = "bluenoise";
+    int frame = 0;
+    int frames = 1;
+    std::string size = "128x128";
+    int maskSize = 128;
+    int block = 8;
+    bool aPosteriori = false;
+    bool noRetarget = false;
+    std::string schedule = "exponential";
+    int epochs = 32;
+    std::string retargetCache;
+    std::string scene = "classic";
+    int reference = 0;
+    std::string out;
+};
+
 void addGenerate(CLI::App& app, GenerateArgs& args);
+void addRender(CLI::App& app, RenderArgs& args);
+int runRender(const RenderArgs& args);
 void addMeasure(CLI::App& app, MeasureArgs& args);
 int runGenerate(const GenerateArgs& args);
 int runMeasure(const MeasureArgs& args);
