@@ -51,7 +51,7 @@ TEST(HeaderExamples, Metrics) {
     double fast = prism::bluenoise::filteredErrorSigma1(image);
     double aniso = prism::bluenoise::anisotropyDb(image);
     std::vector<prism::bluenoise::SpectrumRing> rings = prism::bluenoise::radialPowerSpectrum(image);
-    EXPECT_FALSE(uniform);
+    EXPECT_TRUE(uniform);  // 2 pixels: as even as 2 values over 256 levels can be
     EXPECT_TRUE(std::isfinite(lf + fast + aniso));
     EXPECT_FALSE(rings.empty());
 }
