@@ -32,8 +32,8 @@ void addMeasure(CLI::App& app, MeasureArgs& args) {
 void parseSize(const std::string& text, int& width, int& height) {
     char x = 0;
     char rest = 0;
-    if (std::sscanf(text.c_str(), "%d%c%d%c", &width, &x, &height, &rest) != 3 || x != 'x' || width < 1 ||
-        height < 1 || width > kMaxMaskSide || height > kMaxMaskSide)
+    if (std::sscanf(text.c_str(), "%d%c%d%c", &width, &x, &height, &rest) != 3 || x != 'x' || width < 1 || height < 1 ||
+        width > kMaxMaskSide || height > kMaxMaskSide)
         throw UsageError("--size '" + text + "' must be WxH with W and H in 1.." + std::to_string(kMaxMaskSide) +
                          ", e.g. --size 128x128");
 }
@@ -80,8 +80,9 @@ int runMeasure(const MeasureArgs& args) {
             << "anisotropy: " << m.anisotropyDb << " dB\n";
     }
     if (!args.spectrumSvg.empty())
-        writeFileAtomically(args.spectrumSvg,
-                            spectrumSvg({{std::filesystem::path(args.file).filename().string(), radialPowerSpectrum(image)}}));
+        writeFileAtomically(
+            args.spectrumSvg,
+            spectrumSvg({{std::filesystem::path(args.file).filename().string(), radialPowerSpectrum(image)}}));
     std::cout << out.str();
     return 0;
 }

@@ -22,13 +22,15 @@ void addRender(CLI::App& app, RenderArgs& args) {
     cmd->add_option("--size", args.size, "image WxH (each 1..512)");
     cmd->add_option("--mask-size", args.maskSize, "blue-noise mask side")->check(CLI::Range(1, 512));
     cmd->add_option("--block", args.block, "sorting block: 4, 8 or 16")->check(CLI::IsMember({4, 8, 16}));
-    cmd->add_flag("--a-posteriori", args.aPosteriori, "sorted: render, sort and render each frame again (static scene)");
+    cmd->add_flag("--a-posteriori", args.aPosteriori,
+                  "sorted: render, sort and render each frame again (static scene)");
     cmd->add_flag("--no-retarget", args.noRetarget, "sorted: skip the retargeting pass");
     cmd->add_option("--schedule", args.schedule, "annealing cooling: hajek, linear, exponential, inverse")
         ->check(CLI::IsMember({"hajek", "linear", "exponential", "inverse"}));
     cmd->add_option("--epochs", args.epochs, "annealing epochs (W*H moves each)")->check(CLI::Range(0, 100000));
     cmd->add_option("--retarget-cache", args.retargetCache, "file caching the retarget permutation");
-    cmd->add_option("--scene", args.scene, "classic, black or white")->check(CLI::IsMember({"classic", "black", "white"}));
+    cmd->add_option("--scene", args.scene, "classic, black or white")
+        ->check(CLI::IsMember({"classic", "black", "white"}));
     cmd->add_option("--reference", args.reference, "render the N-sample stratified reference instead")
         ->check(CLI::Range(1, 1 << 20));
     cmd->add_option("--out", args.out, "PNG path (8-bit grey, clamped to [0, 1])")->required();
@@ -59,7 +61,10 @@ int runRender(const RenderArgs& args) {
         VoidAndClusterOptions maskOptions;
         maskOptions.width = maskOptions.height = args.maskSize;
         StochasticSetup setup = StochasticSetup::make(generateVoidAndCluster(maskOptions));
-        if (options.sampler == SamplerKind::Sorted && !args.noRetarget && !args.aPosteriori && setup.mask.size() > 1) {
+        // Frame 0 alone never retargets; otherwise build (or read) the permutation.
+        const bool needsRetarget = args.frames > 1 || args.frame > 0;
+        if (options.sampler == SamplerKind::Sorted && needsRetarget && !args.noRetarget && !args.aPosteriori &&
+            setup.mask.size() > 1) {
             RetargetOptions r;
             r.shiftX = setup.shiftX;
             r.shiftY = setup.shiftY;
@@ -72,7 +77,8 @@ int runRender(const RenderArgs& args) {
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     GrayImage png{image.width, image.height, 8, {}};
-    for (double v : image.values) png.values.push_back(static_cast<std::uint16_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)));
+    for (double v : image.values)
+        png.values.push_back(static_cast<std::uint16_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)));
     writeGrayPng(args.out, png);
     std::cerr << "prism-bluenoise: wrote " << args.out << " in " << seconds << " s\n";
     return 0;

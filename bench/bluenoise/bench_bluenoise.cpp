@@ -23,7 +23,9 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
-double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+double secondsSince(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
 
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
@@ -85,7 +87,8 @@ int main(int argc, char** argv) {
                 }
                 const bn::ErrorStats e = bn::compareToReference(image, reference);
                 points.push_back({kind, spp, frames, median(times), e.rms, e.blurredRms});
-                std::printf("%-10s %4d %6d %12.2f %10.5f %12.5f\n", samplerName(kind), spp, frames, median(times), e.rms, e.blurredRms);
+                std::printf("%-10s %4d %6d %12.2f %10.5f %12.5f\n", samplerName(kind), spp, frames, median(times),
+                            e.rms, e.blurredRms);
                 csv << samplerName(kind) << "," << spp << "," << frames << "," << median(times) << "," << e.rms << ","
                     << e.blurredRms << "\n";
             }
@@ -101,7 +104,8 @@ int main(int argc, char** argv) {
                 if (q.frames == frames && &q != &p && q.msPerFrame <= p.msPerFrame && q.blurred <= p.blurred &&
                     (q.msPerFrame < p.msPerFrame || q.blurred < p.blurred))
                     dominated = true;
-            if (!dominated) std::printf("  %s@%dspp (%.2f ms, %.5f)", samplerName(p.sampler), p.spp, p.msPerFrame, p.blurred);
+            if (!dominated)
+                std::printf("  %s@%dspp (%.2f ms, %.5f)", samplerName(p.sampler), p.spp, p.msPerFrame, p.blurred);
         }
         std::printf("\n");
     }
@@ -113,20 +117,26 @@ int main(int argc, char** argv) {
     for (int frames : {1, 32}) {
         const Point b1 = find(bn::SamplerKind::BlueNoise, 1, frames), w2 = find(bn::SamplerKind::White, 2, frames),
                     w4 = find(bn::SamplerKind::White, 4, frames);
-        std::printf("frames %2d: 1 spp bluenoise blurred %.5f at %.2f ms vs 2 spp white %.5f at %.2f ms, 4 spp white %.5f at %.2f ms\n",
-                    frames, b1.blurred, b1.msPerFrame, w2.blurred, w2.msPerFrame, w4.blurred, w4.msPerFrame);
+        std::printf(
+            "frames %2d: 1 spp bluenoise blurred %.5f at %.2f ms vs 2 spp white %.5f at %.2f ms, 4 spp white %.5f at "
+            "%.2f ms\n",
+            frames, b1.blurred, b1.msPerFrame, w2.blurred, w2.msPerFrame, w4.blurred, w4.msPerFrame);
     }
-    std::printf("targets (issue 13): 1 frame blurred bluenoise/white <= 0.5: %.3f; 32 frames rms <= 0.35: %.3f, blurred <= 0.25: %.3f\n",
-                find(bn::SamplerKind::BlueNoise, 1, 1).blurred / find(bn::SamplerKind::White, 1, 1).blurred,
-                find(bn::SamplerKind::BlueNoise, 1, 32).rms / find(bn::SamplerKind::White, 1, 32).rms,
-                find(bn::SamplerKind::BlueNoise, 1, 32).blurred / find(bn::SamplerKind::White, 1, 32).blurred);
+    std::printf(
+        "targets (issue 13): 1 frame blurred bluenoise/white <= 0.5: %.3f; 32 frames rms <= 0.35: %.3f, blurred <= "
+        "0.25: %.3f\n",
+        find(bn::SamplerKind::BlueNoise, 1, 1).blurred / find(bn::SamplerKind::White, 1, 1).blurred,
+        find(bn::SamplerKind::BlueNoise, 1, 32).rms / find(bn::SamplerKind::White, 1, 32).rms,
+        find(bn::SamplerKind::BlueNoise, 1, 32).blurred / find(bn::SamplerKind::White, 1, 32).blurred);
 
     // The acceptance ratios of issue 13, on the classic scene and with a wider light.
-    std::printf("\n## Acceptance ratios (1 spp; blurred = Gaussian sigma 1 px; lf = low-frequency power ratio of the error)\n");
+    std::printf(
+        "\n## Acceptance ratios (1 spp; blurred = Gaussian sigma 1 px; lf = low-frequency power ratio of the error)\n");
     for (double halfWidth : {0.01, 0.05}) {
         bn::SoftShadowScene variant = scene;
         variant.lightHalfWidth = halfWidth;
-        const bn::Reference ref = halfWidth == scene.lightHalfWidth ? reference : bn::renderReference(variant, size, size, 1024);
+        const bn::Reference ref =
+            halfWidth == scene.lightHalfWidth ? reference : bn::renderReference(variant, size, size, 1024);
         auto error = [&](bn::SamplerKind kind, int frames, int frame, bool aPosteriori, int block) {
             bn::RenderOptions o;
             o.width = o.height = size;
@@ -137,18 +147,24 @@ int main(int argc, char** argv) {
             o.block = block;
             return bn::compareToReference(bn::renderSoftShadows(variant, setup, o), ref);
         };
-        const bn::ErrorStats w1 = error(bn::SamplerKind::White, 1, 0, false, 8), b1 = error(bn::SamplerKind::BlueNoise, 1, 0, false, 8);
-        const bn::ErrorStats w32 = error(bn::SamplerKind::White, 32, 0, false, 8), b32 = error(bn::SamplerKind::BlueNoise, 32, 0, false, 8);
-        const bn::ErrorStats s8 = error(bn::SamplerKind::Sorted, 1, 0, true, 8), s4 = error(bn::SamplerKind::Sorted, 1, 0, true, 4);
+        const bn::ErrorStats w1 = error(bn::SamplerKind::White, 1, 0, false, 8),
+                             b1 = error(bn::SamplerKind::BlueNoise, 1, 0, false, 8);
+        const bn::ErrorStats w32 = error(bn::SamplerKind::White, 32, 0, false, 8),
+                             b32 = error(bn::SamplerKind::BlueNoise, 32, 0, false, 8);
+        const bn::ErrorStats s8 = error(bn::SamplerKind::Sorted, 1, 0, true, 8),
+                             s4 = error(bn::SamplerKind::Sorted, 1, 0, true, 4);
         const bn::ErrorStats m = error(bn::SamplerKind::BlueNoise, 1, 1000000, false, 8);
         std::printf("light half-width %.2f (%d penumbra px):\n", halfWidth, w1.pixels);
-        std::printf("  1 frame  blurred blue/white %.5f/%.5f = %.3f (target <= 0.5); lf %.4f/%.4f = %.3f (target <= 0.3)\n",
-                    b1.blurredRms, w1.blurredRms, b1.blurredRms / w1.blurredRms, b1.lowFrequencyRatio, w1.lowFrequencyRatio,
-                    b1.lowFrequencyRatio / w1.lowFrequencyRatio);
-        std::printf("  32 frames rms blue/white %.5f/%.5f = %.3f (target <= 0.35); blurred %.5f/%.5f = %.3f (target <= 0.25)\n",
-                    b32.rms, w32.rms, b32.rms / w32.rms, b32.blurredRms, w32.blurredRms, b32.blurredRms / w32.blurredRms);
+        std::printf(
+            "  1 frame  blurred blue/white %.5f/%.5f = %.3f (target <= 0.5); lf %.4f/%.4f = %.3f (target <= 0.3)\n",
+            b1.blurredRms, w1.blurredRms, b1.blurredRms / w1.blurredRms, b1.lowFrequencyRatio, w1.lowFrequencyRatio,
+            b1.lowFrequencyRatio / w1.lowFrequencyRatio);
+        std::printf(
+            "  32 frames rms blue/white %.5f/%.5f = %.3f (target <= 0.35); blurred %.5f/%.5f = %.3f (target <= 0.25)\n",
+            b32.rms, w32.rms, b32.rms / w32.rms, b32.blurredRms, w32.blurredRms, b32.blurredRms / w32.blurredRms);
         std::printf("  sorting alone: white/sorted blurred 8x8 %.5f/%.5f = %.3fx (target >= 1.4), 4x4 %.5f = %.3fx\n",
-                    w1.blurredRms, s8.blurredRms, w1.blurredRms / s8.blurredRms, s4.blurredRms, w1.blurredRms / s4.blurredRms);
+                    w1.blurredRms, s8.blurredRms, w1.blurredRms / s8.blurredRms, s4.blurredRms,
+                    w1.blurredRms / s4.blurredRms);
         std::printf("  frame 10^6 blue blurred %.5f (frame 0: %.5f)\n", m.blurredRms, b1.blurredRms);
     }
 
@@ -157,7 +173,8 @@ int main(int argc, char** argv) {
     std::ostringstream conv;
     conv << "sampler,frames,rms,blurred_rms\n";
     for (bn::SamplerKind kind : {bn::SamplerKind::White, bn::SamplerKind::BlueNoise, bn::SamplerKind::Sorted}) {
-        bn::PlotSeries perPixel{std::string(samplerName(kind)) + " rms", {}}, blurred{std::string(samplerName(kind)) + " blurred", {}};
+        bn::PlotSeries perPixel{std::string(samplerName(kind)) + " rms", {}},
+            blurred{std::string(samplerName(kind)) + " blurred", {}};
         for (int frames : {1, 2, 3, 4, 6, 8, 12, 16, 24, 32}) {
             bn::RenderOptions o;
             o.width = o.height = size;
@@ -172,8 +189,9 @@ int main(int argc, char** argv) {
         convergence.push_back(blurred);
     }
     bn::writeFileAtomically(std::filesystem::path(out) / "bluenoise_convergence.csv", conv.str());
-    bn::writeFileAtomically(std::filesystem::path(out) / "bluenoise_convergence.svg",
-                            bn::linePlotSvg("frames accumulated (1 spp each)", "RMS error (penumbra pixels)", convergence, true));
+    bn::writeFileAtomically(
+        std::filesystem::path(out) / "bluenoise_convergence.svg",
+        bn::linePlotSvg("frames accumulated (1 spp each)", "RMS error (penumbra pixels)", convergence, true));
 
     // --- 2. mask size vs quality ---------------------------------------------------
     std::printf("\n## Mask size vs quality (sigma 1.5, seed 0; render: 1 spp bluenoise, 1 frame)\n");
@@ -196,8 +214,8 @@ int main(int argc, char** argv) {
         o.width = o.height = size;
         o.sampler = bn::SamplerKind::BlueNoise;
         const bn::ErrorStats e = bn::compareToReference(bn::renderSoftShadows(scene, s, o), reference);
-        std::printf("%4dx%-4d %10.3f %10.5f %10.5f %10.3f %12.5f\n", side, side, median(times), m.lowFrequencyPowerRatio,
-                    m.filteredErrorSigma1, m.anisotropyDb, e.blurredRms);
+        std::printf("%4dx%-4d %10.3f %10.5f %10.5f %10.3f %12.5f\n", side, side, median(times),
+                    m.lowFrequencyPowerRatio, m.filteredErrorSigma1, m.anisotropyDb, e.blurredRms);
         masks << side << "," << median(times) << "," << m.lowFrequencyPowerRatio << "," << m.filteredErrorSigma1 << ","
               << m.anisotropyDb << "," << e.blurredRms << "\n";
         if (side == 128) {
@@ -210,16 +228,20 @@ int main(int argc, char** argv) {
     bn::writeGrayPng(std::filesystem::path(out) / "white_128.png", white);
     {
         const bn::MaskMetrics w = bn::measureMask(white);
-        std::printf("white 128 %10s %10.5f %10.5f %10.3f\n", "-", w.lowFrequencyPowerRatio, w.filteredErrorSigma1, w.anisotropyDb);
-        masks << "white128,0," << w.lowFrequencyPowerRatio << "," << w.filteredErrorSigma1 << "," << w.anisotropyDb << ",\n";
+        std::printf("white 128 %10s %10.5f %10.5f %10.3f\n", "-", w.lowFrequencyPowerRatio, w.filteredErrorSigma1,
+                    w.anisotropyDb);
+        masks << "white128,0," << w.lowFrequencyPowerRatio << "," << w.filteredErrorSigma1 << "," << w.anisotropyDb
+              << ",\n";
     }
     std::printf("targets (issue 13, 128^2): lf_ratio <= 0.01, fast <= 0.046 (white ~0.114), 128^2 in <= 1 s\n");
     bn::writeFileAtomically(std::filesystem::path(out) / "bluenoise_masks.csv", masks.str());
     bn::writeFileAtomically(std::filesystem::path(out) / "bluenoise_spectra.svg", bn::spectrumSvg(spectra));
 
     // --- 3. annealing effort vs energy vs time ------------------------------------
-    std::printf("\n## Retarget annealing on a 64x64 mask (radius 6, sigma_i 2.1, sigma_s 1): epochs vs energy vs time\n");
-    std::printf("%-12s %6s %10s %12s %12s %12s %10s\n", "schedule", "epochs", "seconds", "energy0", "energy", "target0", "target");
+    std::printf(
+        "\n## Retarget annealing on a 64x64 mask (radius 6, sigma_i 2.1, sigma_s 1): epochs vs energy vs time\n");
+    std::printf("%-12s %6s %10s %12s %12s %12s %10s\n", "schedule", "epochs", "seconds", "energy0", "energy", "target0",
+                "target");
     std::ostringstream anneal;
     anneal << "schedule,epochs,seconds,initial_energy,final_energy,initial_target,final_target,accepted,moves\n";
     const bn::Mask mask64 = bn::generateVoidAndCluster({.width = 64, .height = 64});
@@ -233,14 +255,16 @@ int main(int argc, char** argv) {
             const auto start = Clock::now();
             const bn::RetargetResult res = bn::computeRetarget(mask64, r);
             const double seconds = secondsSince(start);
-            std::printf("%-12s %6d %10.3f %12.1f %12.1f %12.1f %10.1f\n", bn::coolingScheduleName(schedule), epochs, seconds,
-                        res.initialEnergy, res.finalEnergy, res.initialTarget, res.finalTarget);
-            anneal << bn::coolingScheduleName(schedule) << "," << epochs << "," << seconds << "," << res.initialEnergy << ","
-                   << res.finalEnergy << "," << res.initialTarget << "," << res.finalTarget << "," << res.accepted << ","
-                   << res.moves << "\n";
+            std::printf("%-12s %6d %10.3f %12.1f %12.1f %12.1f %10.1f\n", bn::coolingScheduleName(schedule), epochs,
+                        seconds, res.initialEnergy, res.finalEnergy, res.initialTarget, res.finalTarget);
+            anneal << bn::coolingScheduleName(schedule) << "," << epochs << "," << seconds << "," << res.initialEnergy
+                   << "," << res.finalEnergy << "," << res.initialTarget << "," << res.finalTarget << ","
+                   << res.accepted << "," << res.moves << "\n";
         }
     bn::writeFileAtomically(std::filesystem::path(out) / "bluenoise_annealing.csv", anneal.str());
-    std::printf("\nwrote %s/{bluenoise_tradeoff,bluenoise_convergence,bluenoise_masks,bluenoise_annealing}.csv, "
-                "bluenoise_convergence.svg, bluenoise_spectra.svg, mask_128.png, white_128.png\n", out.c_str());
+    std::printf(
+        "\nwrote %s/{bluenoise_tradeoff,bluenoise_convergence,bluenoise_masks,bluenoise_annealing}.csv, "
+        "bluenoise_convergence.svg, bluenoise_spectra.svg, mask_128.png, white_128.png\n",
+        out.c_str());
     return 0;
 }

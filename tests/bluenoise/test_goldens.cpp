@@ -30,11 +30,14 @@ bn::GrayImage render(bn::SamplerKind kind, int frame) {
     o.frame = frame;
     const bn::RealImage image = bn::renderSoftShadows(bn::SoftShadowScene::classic(), setup, o);
     bn::GrayImage out{64, 64, 8, {}};
-    for (double v : image.values) out.values.push_back(static_cast<std::uint16_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)));
+    for (double v : image.values)
+        out.values.push_back(static_cast<std::uint16_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)));
     return out;
 }
 
-std::string goldenPath(const char* name) { return std::string(PRISM_BLUENOISE_GOLDEN_DIR) + "/" + name + ".png"; }
+std::string goldenPath(const char* name) {
+    return std::string(PRISM_BLUENOISE_GOLDEN_DIR) + "/" + name + ".png";
+}
 
 // Empty when within the threshold, else what differs.
 std::string compare(const bn::GrayImage& image, const bn::GrayImage& golden) {
@@ -68,7 +71,7 @@ TEST(Goldens, MutationsAreCaught) {
     const bn::GrayImage blue = bn::readGrayPng(goldenPath("bluenoise"));
     EXPECT_NE(compare(render(bn::SamplerKind::BlueNoise, 2), white), "");  // another sampler
     EXPECT_NE(compare(render(bn::SamplerKind::BlueNoise, 3), blue), "");   // another frame
-    bn::GrayImage oneLevel = blue;                                          // within the threshold
+    bn::GrayImage oneLevel = blue;                                         // within the threshold
     oneLevel.values[100] = static_cast<std::uint16_t>(oneLevel.values[100] == 255 ? 254 : oneLevel.values[100] + 1);
     EXPECT_EQ(compare(oneLevel, blue), "");
     oneLevel.values[101] = static_cast<std::uint16_t>(oneLevel.values[101] > 128 ? 0 : 255);  // beyond it

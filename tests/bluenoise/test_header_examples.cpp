@@ -97,7 +97,8 @@ TEST(HeaderExamples, SortingAndRetarget) {
     options.epochs = 8;
     bn::RetargetResult r = bn::computeRetarget(mask, options);
     bool cached = false;
-    const auto path = std::filesystem::temp_directory_path() / ("prism_bn_example_retarget_" + std::to_string(::getpid()) + ".bin");
+    const auto path =
+        std::filesystem::temp_directory_path() / ("prism_bn_example_retarget_" + std::to_string(::getpid()) + ".bin");
     bn::RetargetPermutation p = bn::loadOrComputeRetarget(mask, options, path, &cached);
     EXPECT_EQ(p.source.size(), r.permutation.source.size());
     std::filesystem::remove(path);

@@ -15,12 +15,14 @@ namespace {
 bn::GrayImage pattern(int w, int h, auto f) {
     bn::GrayImage image{w, h, 8, std::vector<std::uint16_t>(static_cast<std::size_t>(w * h))};
     for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) image.values[static_cast<std::size_t>(y * w + x)] = static_cast<std::uint16_t>(f(x, y));
+        for (int x = 0; x < w; ++x)
+            image.values[static_cast<std::size_t>(y * w + x)] = static_cast<std::uint16_t>(f(x, y));
     return image;
 }
 
 bool finite(const bn::MaskMetrics& m) {
-    return std::isfinite(m.lowFrequencyPowerRatio) && std::isfinite(m.filteredErrorSigma1) && std::isfinite(m.anisotropyDb);
+    return std::isfinite(m.lowFrequencyPowerRatio) && std::isfinite(m.filteredErrorSigma1) &&
+           std::isfinite(m.anisotropyDb);
 }
 
 }  // namespace
@@ -40,9 +42,8 @@ TEST(Metrics, WhiteNoiseReferenceValues) {
 
 TEST(Metrics, RadialSpectrumPeaksAtACosinesFrequency) {
     // cos with period 8 px along x and 16 px along y: |f| = sqrt(1/64 + 1/256) = 0.1398.
-    const auto wave = pattern(64, 64, [](int x, int y) {
-        return 128 + 120 * std::cos(2 * std::numbers::pi * (x / 8.0 + y / 16.0));
-    });
+    const auto wave =
+        pattern(64, 64, [](int x, int y) { return 128 + 120 * std::cos(2 * std::numbers::pi * (x / 8.0 + y / 16.0)); });
     const auto rings = bn::radialPowerSpectrum(wave);
     std::size_t peak = 0;
     for (std::size_t i = 0; i < rings.size(); ++i)
@@ -69,7 +70,8 @@ TEST(Metrics, StripesAreAnisotropic) {
     bn::GrayImage white = bn::whiteNoiseImage(64, 64, 8, 5);
     // Each column a constant: all power on the kx axis.
     for (int y = 0; y < 64; ++y)
-        for (int x = 0; x < 64; ++x) white.values[static_cast<std::size_t>(y * 64 + x)] = white.values[static_cast<std::size_t>(x)];
+        for (int x = 0; x < 64; ++x)
+            white.values[static_cast<std::size_t>(y * 64 + x)] = white.values[static_cast<std::size_t>(x)];
     EXPECT_GT(bn::anisotropyDb(white), 5.0);
 }
 

@@ -14,7 +14,8 @@ namespace bn = prism::bluenoise;
 
 namespace {
 const bn::SamplerTables& tables64() {
-    static const bn::SamplerTables t = bn::SamplerTables::fromMask(bn::generateVoidAndCluster({.width = 64, .height = 64}));
+    static const bn::SamplerTables t =
+        bn::SamplerTables::fromMask(bn::generateVoidAndCluster({.width = 64, .height = 64}));
     return t;
 }
 
@@ -39,7 +40,8 @@ TEST(Samplers, BlueNoiseFramesStayBlueAtFrameMillion) {
             // ...while the wrap of the values at 1 puts some low-frequency power into the
             // values themselves (0.0004 unshifted, up to ~0.08 shifted; white noise 1).
             EXPECT_LT(bn::lowFrequencyPowerRatio(image), 0.15) << frame << " " << dim;
-            std::printf("frame %u dim %u: FAST %.4f LF %.4f\n", frame, dim, bn::filteredErrorSigma1(image), bn::lowFrequencyPowerRatio(image));
+            std::printf("frame %u dim %u: FAST %.4f LF %.4f\n", frame, dim, bn::filteredErrorSigma1(image),
+                        bn::lowFrequencyPowerRatio(image));
         }
     const bn::GrayImage white = frameImage(bn::SamplerKind::White, 1000000u, 0);
     EXPECT_GT(bn::lowFrequencyPowerRatio(white), 0.7);

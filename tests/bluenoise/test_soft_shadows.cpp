@@ -41,9 +41,11 @@ bn::ErrorStats errorOf(bn::SamplerKind sampler, int frames, int frame = 0, bool 
     o.frame = frame;
     o.aPosteriori = aPosteriori;
     o.block = block;
-    const bn::ErrorStats e = bn::compareToReference(bn::renderSoftShadows(bn::SoftShadowScene::classic(), setup(), o), reference());
+    const bn::ErrorStats e =
+        bn::compareToReference(bn::renderSoftShadows(bn::SoftShadowScene::classic(), setup(), o), reference());
     std::printf("sampler %d frames %d frame %d aposteriori %d block %d: rms %.5f blurred %.5f lf %.4f (%d px)\n",
-                static_cast<int>(sampler), frames, frame, aPosteriori, block, e.rms, e.blurredRms, e.lowFrequencyRatio, e.pixels);
+                static_cast<int>(sampler), frames, frame, aPosteriori, block, e.rms, e.blurredRms, e.lowFrequencyRatio,
+                e.pixels);
     return e;
 }
 

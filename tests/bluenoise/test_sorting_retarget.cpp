@@ -70,16 +70,20 @@ TEST(Sorting, KthSmallestValueGoesToKthSmallestTarget) {
     bn::sortSeedsInBlocks(values, target, w, h, 8, seeds);
     std::vector<int> byValue(64), byTarget(64);
     for (int i = 0; i < 64; ++i) byValue[static_cast<std::size_t>(i)] = byTarget[static_cast<std::size_t>(i)] = i;
-    std::sort(byValue.begin(), byValue.end(), [&](int a, int b) { return values[static_cast<std::size_t>(a)] < values[static_cast<std::size_t>(b)]; });
-    std::sort(byTarget.begin(), byTarget.end(), [&](int a, int b) { return target[static_cast<std::size_t>(a)] < target[static_cast<std::size_t>(b)]; });
+    std::sort(byValue.begin(), byValue.end(),
+              [&](int a, int b) { return values[static_cast<std::size_t>(a)] < values[static_cast<std::size_t>(b)]; });
+    std::sort(byTarget.begin(), byTarget.end(),
+              [&](int a, int b) { return target[static_cast<std::size_t>(a)] < target[static_cast<std::size_t>(b)]; });
     for (std::size_t k = 0; k < 64; ++k)
         EXPECT_EQ(seeds[static_cast<std::size_t>(byTarget[k])], 1000u + static_cast<std::uint32_t>(byValue[k]));
 }
 
 TEST(Sorting, BadArgumentsThrow) {
     std::vector<std::uint32_t> seeds(4);
-    EXPECT_THROW(bn::sortSeedsInBlocks(std::vector<float>(3), std::vector<std::uint32_t>(4), 2, 2, 4, seeds), std::invalid_argument);
-    EXPECT_THROW(bn::sortSeedsInBlocks(std::vector<float>(4), std::vector<std::uint32_t>(4), 2, 2, 0, seeds), std::invalid_argument);
+    EXPECT_THROW(bn::sortSeedsInBlocks(std::vector<float>(3), std::vector<std::uint32_t>(4), 2, 2, 4, seeds),
+                 std::invalid_argument);
+    EXPECT_THROW(bn::sortSeedsInBlocks(std::vector<float>(4), std::vector<std::uint32_t>(4), 2, 2, 0, seeds),
+                 std::invalid_argument);
 }
 
 TEST(Retarget, AnnealingLowersEnergyWithinRadiusForEverySchedule) {
@@ -90,8 +94,9 @@ TEST(Retarget, AnnealingLowersEnergyWithinRadiusForEverySchedule) {
                           bn::CoolingSchedule::Inverse}) {
         o.schedule = schedule;
         const bn::RetargetResult r = bn::computeRetarget(mask32(), o);
-        std::printf("%s: energy %.1f -> %.1f, target %.1f -> %.1f, accepted %llu of %llu\n", bn::coolingScheduleName(schedule),
-                    r.initialEnergy, r.finalEnergy, r.initialTarget, r.finalTarget, (unsigned long long)r.accepted, (unsigned long long)r.moves);
+        std::printf("%s: energy %.1f -> %.1f, target %.1f -> %.1f, accepted %llu of %llu\n",
+                    bn::coolingScheduleName(schedule), r.initialEnergy, r.finalEnergy, r.initialTarget, r.finalTarget,
+                    (unsigned long long)r.accepted, (unsigned long long)r.moves);
         EXPECT_LT(r.finalEnergy, r.initialEnergy) << bn::coolingScheduleName(schedule);
         EXPECT_LT(r.finalTarget, 0.8 * r.initialTarget) << bn::coolingScheduleName(schedule);
         EXPECT_GT(r.accepted, 0u);
@@ -138,7 +143,8 @@ TEST(Retarget, SortingThenRetargetingUsesEachSeedOncePerFrame) {
 }
 
 TEST(Retarget, PermutationIsCachedInAFile) {
-    const auto path = std::filesystem::temp_directory_path() / ("prism_bn_retarget_" + std::to_string(::getpid()) + ".bin");
+    const auto path =
+        std::filesystem::temp_directory_path() / ("prism_bn_retarget_" + std::to_string(::getpid()) + ".bin");
     std::filesystem::remove(path);
     bn::RetargetOptions o;
     o.epochs = 2;

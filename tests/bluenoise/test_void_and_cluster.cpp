@@ -32,7 +32,9 @@ bool isPermutation(const bn::Mask& m) {
     return true;
 }
 
-bn::GrayImage gray8(const bn::Mask& m) { return {m.width, m.height, 8, bn::quantize(m, 8)}; }
+bn::GrayImage gray8(const bn::Mask& m) {
+    return {m.width, m.height, 8, bn::quantize(m, 8)};
+}
 
 // The 128^2 mask is the most expensive fixture: build it once.
 const bn::Mask& mask128() {

@@ -27,7 +27,8 @@ std::vector<std::uint32_t> referenceRanks(int w, int h, double sigma, std::uint6
         for (int dy = y0; dy <= y1; ++dy)
             for (int dx = x0; dx <= x1; ++dx) {
                 const int q = ((y + dy) % h + h) % h * w + ((x + dx) % w + w) % w;
-                e[static_cast<std::size_t>(q)] += (turnOn ? 1.0 : -1.0) * std::exp(-(dx * dx + dy * dy) / (2 * sigma * sigma));
+                e[static_cast<std::size_t>(q)] +=
+                    (turnOn ? 1.0 : -1.0) * std::exp(-(dx * dx + dy * dy) / (2 * sigma * sigma));
             }
     };
     auto find = [&](const std::vector<double>& e, const std::vector<char>& o, bool cluster) {
@@ -73,12 +74,14 @@ std::vector<std::uint32_t> referenceRanks(int w, int h, double sigma, std::uint6
 }  // namespace
 
 TEST(VoidAndClusterReference, AcceleratedSearchMatchesFullScans) {
-    for (auto [w, h, sigma] : {std::tuple{48, 40, 1.5}, std::tuple{64, 64, 1.5}, std::tuple{30, 7, 0.3}, std::tuple{20, 20, 10.0}}) {
+    for (auto [w, h, sigma] :
+         {std::tuple{48, 40, 1.5}, std::tuple{64, 64, 1.5}, std::tuple{30, 7, 0.3}, std::tuple{20, 20, 10.0}}) {
         bn::VoidAndClusterOptions o;
         o.width = w;
         o.height = h;
         o.sigma = sigma;
         o.seed = 4;
-        EXPECT_EQ(bn::generateVoidAndCluster(o).rank, referenceRanks(w, h, sigma, 4)) << w << "x" << h << " sigma " << sigma;
+        EXPECT_EQ(bn::generateVoidAndCluster(o).rank, referenceRanks(w, h, sigma, 4))
+            << w << "x" << h << " sigma " << sigma;
     }
 }

@@ -42,8 +42,8 @@ std::string failure(const char* verb, const std::filesystem::path& path, const s
 }
 
 // Encodes into `out`; returns false with state.message set on a libpng error.
-bool encode(const GrayImage& image, std::vector<unsigned char>& out, PngErrorState& state,
-            std::vector<png_bytep>& rows, std::vector<unsigned char>& pixels) {
+bool encode(const GrayImage& image, std::vector<unsigned char>& out, PngErrorState& state, std::vector<png_bytep>& rows,
+            std::vector<unsigned char>& pixels) {
     const int bytesPerValue = image.bits == 16 ? 2 : 1;
     pixels.resize(image.size() * static_cast<std::size_t>(bytesPerValue));
     for (std::size_t i = 0; i < image.size(); ++i) {
@@ -159,7 +159,8 @@ GrayImage readGrayPng(const std::filesystem::path& path) {
     const std::size_t rowBytes = png_get_rowbytes(png, info);
     pixels.resize(rowBytes * static_cast<std::size_t>(height));
     rows.resize(static_cast<std::size_t>(height));
-    for (int y = 0; y < height; ++y) rows[static_cast<std::size_t>(y)] = pixels.data() + rowBytes * static_cast<std::size_t>(y);
+    for (int y = 0; y < height; ++y)
+        rows[static_cast<std::size_t>(y)] = pixels.data() + rowBytes * static_cast<std::size_t>(y);
     png_read_image(png, rows.data());
     png_read_end(png, nullptr);
     png_destroy_read_struct(&png, &info, nullptr);

@@ -24,7 +24,8 @@ void checkShape(int width, int height, std::size_t count, const char* what) {
 void checkGray(const GrayImage& image) {
     checkShape(image.width, image.height, image.values.size(), "prism::bluenoise metrics");
     if (image.bits != 8 && image.bits != 16)
-        throw std::invalid_argument("prism::bluenoise metrics: bits must be 8 or 16, got " + std::to_string(image.bits));
+        throw std::invalid_argument("prism::bluenoise metrics: bits must be 8 or 16, got " +
+                                    std::to_string(image.bits));
 }
 
 RealImage toReal(const GrayImage& image) {
@@ -76,7 +77,9 @@ std::vector<double> powerSpectrum(const RealImage& image) {
 }
 
 // Signed frequency index of DFT bin k of length n, in (-n/2, n/2].
-int signedIndex(int k, int n) { return k > n / 2 ? k - n : k; }
+int signedIndex(int k, int n) {
+    return k > n / 2 ? k - n : k;
+}
 
 double frequencyOf(int kx, int ky, int w, int h) {
     const double fx = static_cast<double>(signedIndex(kx, w)) / w;
@@ -99,13 +102,14 @@ struct RingSums {
 RingSums ringSums(const std::vector<double>& power, int w, int h) {
     const int side = std::max(w, h);
     const int rings = static_cast<int>(std::ceil(side * std::numbers::sqrt2 / 2.0)) + 2;
-    RingSums r{std::vector<double>(static_cast<std::size_t>(rings)), std::vector<double>(static_cast<std::size_t>(rings)),
-               std::vector<int>(static_cast<std::size_t>(rings))};
+    RingSums r{std::vector<double>(static_cast<std::size_t>(rings)),
+               std::vector<double>(static_cast<std::size_t>(rings)), std::vector<int>(static_cast<std::size_t>(rings))};
     for (int ky = 0; ky < h; ++ky)
         for (int kx = 0; kx < w; ++kx) {
             if (kx == 0 && ky == 0) continue;
             const int ring = static_cast<int>(std::lround(frequencyOf(kx, ky, w, h) * side));
-            const double p = power[static_cast<std::size_t>(ky) * static_cast<std::size_t>(w) + static_cast<std::size_t>(kx)];
+            const double p =
+                power[static_cast<std::size_t>(ky) * static_cast<std::size_t>(w) + static_cast<std::size_t>(kx)];
             r.sum[static_cast<std::size_t>(ring)] += p;
             r.sumSquares[static_cast<std::size_t>(ring)] += p * p;
             ++r.count[static_cast<std::size_t>(ring)];
@@ -145,12 +149,15 @@ double lowFrequencyRatio(const std::vector<double>& power, int w, int h) {
 std::vector<double> gaussianWeights(double sigma, int radius) {
     std::vector<double> w(static_cast<std::size_t>(2 * radius + 1));
     double sum = 0.0;
-    for (int d = -radius; d <= radius; ++d) sum += w[static_cast<std::size_t>(d + radius)] = std::exp(-0.5 * d * d / (sigma * sigma));
+    for (int d = -radius; d <= radius; ++d)
+        sum += w[static_cast<std::size_t>(d + radius)] = std::exp(-0.5 * d * d / (sigma * sigma));
     for (double& v : w) v /= sum;
     return w;
 }
 
-int wrap(int v, int n) { return ((v % n) + n) % n; }
+int wrap(int v, int n) {
+    return ((v % n) + n) % n;
+}
 
 }  // namespace
 
@@ -165,12 +172,16 @@ bool histogramUniform(const GrayImage& image) {
 double lowFrequencyPowerRatio(const RealImage& image) {
     return lowFrequencyRatio(powerSpectrum(image), image.width, image.height);
 }
-double lowFrequencyPowerRatio(const GrayImage& image) { return lowFrequencyPowerRatio(toReal(image)); }
+double lowFrequencyPowerRatio(const GrayImage& image) {
+    return lowFrequencyPowerRatio(toReal(image));
+}
 
 std::vector<SpectrumRing> radialPowerSpectrum(const RealImage& image) {
     return rings(powerSpectrum(image), image.width, image.height);
 }
-std::vector<SpectrumRing> radialPowerSpectrum(const GrayImage& image) { return radialPowerSpectrum(toReal(image)); }
+std::vector<SpectrumRing> radialPowerSpectrum(const GrayImage& image) {
+    return radialPowerSpectrum(toReal(image));
+}
 
 double anisotropyDb(const GrayImage& image) {
     const RealImage real = toReal(image);
@@ -208,7 +219,8 @@ double filteredErrorSigma1(const GrayImage& image) {
                     const std::size_t row = static_cast<std::size_t>(wrap(y + dy, h)) * static_cast<std::size_t>(w);
                     const double gy = g[static_cast<std::size_t>(dy + radius)];
                     for (int dx = -radius; dx <= radius; ++dx)
-                        blurred[row + static_cast<std::size_t>(wrap(x + dx, w))] += gy * g[static_cast<std::size_t>(dx + radius)];
+                        blurred[row + static_cast<std::size_t>(wrap(x + dx, w))] +=
+                            gy * g[static_cast<std::size_t>(dx + radius)];
                 }
             }
         const double target = t / 256.0;
@@ -234,21 +246,24 @@ RealImage gaussianBlur(const RealImage& image, double sigma) {
         for (int x = 0; x < w; ++x) {
             double s = 0.0;
             for (int d = -radius; d <= radius; ++d)
-                s += g[static_cast<std::size_t>(d + radius)] * image.values[static_cast<std::size_t>(y * w + wrap(x + d, w))];
+                s += g[static_cast<std::size_t>(d + radius)] *
+                     image.values[static_cast<std::size_t>(y * w + wrap(x + d, w))];
             tmp.values[static_cast<std::size_t>(y * w + x)] = s;
         }
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             double s = 0.0;
             for (int d = -radius; d <= radius; ++d)
-                s += g[static_cast<std::size_t>(d + radius)] * tmp.values[static_cast<std::size_t>(wrap(y + d, h) * w + x)];
+                s += g[static_cast<std::size_t>(d + radius)] *
+                     tmp.values[static_cast<std::size_t>(wrap(y + d, h) * w + x)];
             out.values[static_cast<std::size_t>(y * w + x)] = s;
         }
     return out;
 }
 
 GrayImage whiteNoiseImage(int width, int height, int bits, std::uint64_t seed) {
-    GrayImage image{width, height, bits, std::vector<std::uint16_t>(static_cast<std::size_t>(width) * static_cast<std::size_t>(height))};
+    GrayImage image{width, height, bits,
+                    std::vector<std::uint16_t>(static_cast<std::size_t>(width) * static_cast<std::size_t>(height))};
     checkGray(image);
     SplitMix64 rng(seed);
     for (std::uint16_t& v : image.values) v = static_cast<std::uint16_t>(rng.next() >> (64 - bits));

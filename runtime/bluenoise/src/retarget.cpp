@@ -14,7 +14,9 @@
 namespace prism::bluenoise {
 namespace {
 
-int wrap(int v, int m) { return ((v % m) + m) % m; }
+int wrap(int v, int m) {
+    return ((v % m) + m) % m;
+}
 int torusDistance2(int a, int b, int w, int h) {
     int dx = std::abs(a % w - b % w), dy = std::abs(a / w - b / w);
     dx = std::min(dx, w - dx);
@@ -99,22 +101,29 @@ class Annealer {
 
 double temperature(const RetargetOptions& o, double t0, double epoch) {
     switch (o.schedule) {
-        case CoolingSchedule::Hajek: return t0 * std::log(2.0) / std::log(2.0 + epoch);
-        case CoolingSchedule::Linear: return std::max(0.0, t0 * (1.0 - epoch / o.epochs));
-        case CoolingSchedule::Exponential: return t0 * std::pow(o.alpha, epoch);
-        case CoolingSchedule::Inverse: return t0 / (1.0 + o.alpha * epoch);
+        case CoolingSchedule::Hajek:
+            return t0 * std::log(2.0) / std::log(2.0 + epoch);
+        case CoolingSchedule::Linear:
+            return std::max(0.0, t0 * (1.0 - epoch / o.epochs));
+        case CoolingSchedule::Exponential:
+            return t0 * std::pow(o.alpha, epoch);
+        case CoolingSchedule::Inverse:
+            return t0 / (1.0 + o.alpha * epoch);
     }
     return 0.0;
 }
 
 void validate(const Mask& mask, const RetargetOptions& o) {
     if (mask.size() < 2) throw std::invalid_argument("retarget: the mask needs at least 2 pixels");
-    if (o.radius < 1 || o.radius > 64) throw std::invalid_argument("retarget: radius must be 1..64, got " + std::to_string(o.radius));
+    if (o.radius < 1 || o.radius > 64)
+        throw std::invalid_argument("retarget: radius must be 1..64, got " + std::to_string(o.radius));
     if (!(o.sigmaI > 0) || !(o.sigmaS > 0) || !std::isfinite(o.sigmaI) || !std::isfinite(o.sigmaS))
         throw std::invalid_argument("retarget: sigma_i and sigma_s must be finite and > 0");
     if (o.epochs < 0 || o.epochs > 100000) throw std::invalid_argument("retarget: epochs must be 0..100000");
-    if (!(o.alpha > 0) || !std::isfinite(o.alpha)) throw std::invalid_argument("retarget: alpha must be finite and > 0");
-    if (!(o.targetWeight >= 0) || !std::isfinite(o.targetWeight)) throw std::invalid_argument("retarget: target weight must be >= 0");
+    if (!(o.alpha > 0) || !std::isfinite(o.alpha))
+        throw std::invalid_argument("retarget: alpha must be finite and > 0");
+    if (!(o.targetWeight >= 0) || !std::isfinite(o.targetWeight))
+        throw std::invalid_argument("retarget: target weight must be >= 0");
 }
 
 std::string cacheKey(const Mask& mask, const RetargetOptions& o) {
@@ -123,9 +132,9 @@ std::string cacheKey(const Mask& mask, const RetargetOptions& o) {
     std::ostringstream key;
     key.precision(17);
     key << "prism-bluenoise-retarget 1 " << mask.width << "x" << mask.height << " mask " << hash << " radius "
-        << o.radius << " sigma_i " << o.sigmaI << " sigma_s " << o.sigmaS << " weight " << o.targetWeight << " schedule "
-        << coolingScheduleName(o.schedule) << " alpha " << o.alpha << " epochs " << o.epochs << " seed " << o.seed
-        << " shift " << o.shiftX << " " << o.shiftY << "\n";
+        << o.radius << " sigma_i " << o.sigmaI << " sigma_s " << o.sigmaS << " weight " << o.targetWeight
+        << " schedule " << coolingScheduleName(o.schedule) << " alpha " << o.alpha << " epochs " << o.epochs << " seed "
+        << o.seed << " shift " << o.shiftX << " " << o.shiftY << "\n";
     return key.str();
 }
 
@@ -141,10 +150,14 @@ CoolingSchedule parseCoolingSchedule(const std::string& name) {
 
 const char* coolingScheduleName(CoolingSchedule s) {
     switch (s) {
-        case CoolingSchedule::Hajek: return "hajek";
-        case CoolingSchedule::Linear: return "linear";
-        case CoolingSchedule::Exponential: return "exponential";
-        case CoolingSchedule::Inverse: return "inverse";
+        case CoolingSchedule::Hajek:
+            return "hajek";
+        case CoolingSchedule::Linear:
+            return "linear";
+        case CoolingSchedule::Exponential:
+            return "exponential";
+        case CoolingSchedule::Inverse:
+            return "inverse";
     }
     return "?";
 }

@@ -29,8 +29,10 @@ std::uint32_t blueNoiseSample(const SamplerTables& t, std::uint32_t x, std::uint
                               std::uint32_t dim) {
     std::uint32_t dx = 0, dy = 0;
     r2Offset(dim, t.maskWidth, t.maskHeight, dx, dy);
-    const std::uint32_t mx = (x % static_cast<std::uint32_t>(t.maskWidth) + dx) % static_cast<std::uint32_t>(t.maskWidth);
-    const std::uint32_t my = (y % static_cast<std::uint32_t>(t.maskHeight) + dy) % static_cast<std::uint32_t>(t.maskHeight);
+    const std::uint32_t mx =
+        (x % static_cast<std::uint32_t>(t.maskWidth) + dx) % static_cast<std::uint32_t>(t.maskWidth);
+    const std::uint32_t my =
+        (y % static_cast<std::uint32_t>(t.maskHeight) + dy) % static_cast<std::uint32_t>(t.maskHeight);
     return t.mask[my * static_cast<std::uint32_t>(t.maskWidth) + mx] + frame * temporalStep(dim);
 }
 
@@ -45,9 +47,12 @@ std::uint32_t sortedSample(const SamplerTables& t, std::uint32_t x, std::uint32_
 std::uint32_t sample(SamplerKind kind, const SamplerTables& t, std::uint32_t x, std::uint32_t y, std::uint32_t frame,
                      std::uint32_t dim) {
     switch (kind) {
-        case SamplerKind::White: return whiteSample(x, y, frame, dim);
-        case SamplerKind::BlueNoise: return blueNoiseSample(t, x, y, frame, dim);
-        case SamplerKind::Sorted: return sortedSample(t, x, y, frame, dim);
+        case SamplerKind::White:
+            return whiteSample(x, y, frame, dim);
+        case SamplerKind::BlueNoise:
+            return blueNoiseSample(t, x, y, frame, dim);
+        case SamplerKind::Sorted:
+            return sortedSample(t, x, y, frame, dim);
     }
     return 0;
 }

@@ -63,7 +63,8 @@ double sampleValue(const SoftShadowScene& s, double scale, Point p, double u, do
 void validate(const RenderOptions& o) {
     if (o.width < 1 || o.height < 1 || o.width > 4096 || o.height > 4096)
         throw std::invalid_argument("soft shadows: image size must be 1..4096 in each direction");
-    if (o.spp < 1 || o.spp > 65536) throw std::invalid_argument("soft shadows: spp must be 1..65536, got " + std::to_string(o.spp));
+    if (o.spp < 1 || o.spp > 65536)
+        throw std::invalid_argument("soft shadows: spp must be 1..65536, got " + std::to_string(o.spp));
     if (o.frames < 1 || o.frames > 100000) throw std::invalid_argument("soft shadows: frames must be 1..100000");
     if (o.frame < 0) throw std::invalid_argument("soft shadows: frame must be >= 0");
     if (o.block < 1) throw std::invalid_argument("soft shadows: block must be >= 1");
@@ -99,7 +100,9 @@ std::vector<std::uint32_t> sortTarget(const StochasticSetup& setup, int width, i
     return target;
 }
 
-std::vector<float> asFloats(const std::vector<double>& v) { return {v.begin(), v.end()}; }
+std::vector<float> asFloats(const std::vector<double>& v) {
+    return {v.begin(), v.end()};
+}
 
 }  // namespace
 
@@ -131,7 +134,8 @@ RealImage renderSoftShadows(const SoftShadowScene& scene, StochasticSetup& setup
     validate(o);
     const double norm = normaliser(scene);
     const double scale = norm > 0.0 ? scene.radiance / norm : 0.0;
-    RealImage image{o.width, o.height, std::vector<double>(static_cast<std::size_t>(o.width) * static_cast<std::size_t>(o.height), 0.0)};
+    RealImage image{o.width, o.height,
+                    std::vector<double>(static_cast<std::size_t>(o.width) * static_cast<std::size_t>(o.height), 0.0)};
     const int first = o.frames > 1 ? 0 : o.frame;
     const int last = o.frames > 1 ? o.frames - 1 : o.frame;
     if (o.sampler != SamplerKind::Sorted) {
@@ -156,7 +160,8 @@ RealImage renderSoftShadows(const SoftShadowScene& scene, StochasticSetup& setup
                 sortSeedsInBlocks(asFloats(f), sortTarget(setup, o.width, o.height, t), o.width, o.height, o.block,
                                   setup.tables.seeds);
                 if (!setup.retarget.source.empty())
-                    applyRetarget(setup.retarget, t * setup.shiftX, t * setup.shiftY, o.width, o.height, setup.tables.seeds);
+                    applyRetarget(setup.retarget, t * setup.shiftX, t * setup.shiftY, o.width, o.height,
+                                  setup.tables.seeds);
             }
         }
     }
@@ -165,16 +170,19 @@ RealImage renderSoftShadows(const SoftShadowScene& scene, StochasticSetup& setup
 }
 
 Reference renderReference(const SoftShadowScene& scene, int width, int height, int samples) {
-    if (width < 1 || height < 1 || samples < 1) throw std::invalid_argument("soft shadows reference: bad size or sample count");
+    if (width < 1 || height < 1 || samples < 1)
+        throw std::invalid_argument("soft shadows reference: bad size or sample count");
     // Strata shaped like the light (long side / short side), so a shadow edge crossing
     // the light cuts few of them.
-    const double aspect = scene.lightHalfWidth > 0.0 ? std::max(1.0, scene.lightHalfLength / scene.lightHalfWidth) : 1.0;
+    const double aspect =
+        scene.lightHalfWidth > 0.0 ? std::max(1.0, scene.lightHalfLength / scene.lightHalfWidth) : 1.0;
     const int columns = std::max(1, static_cast<int>(std::lround(std::sqrt(samples * aspect))));
     const int rows = std::max(1, (samples + columns - 1) / columns);
     const double norm = normaliser(scene);
     const double scale = norm > 0.0 ? scene.radiance / norm : 0.0;
-    Reference r{{width, height, std::vector<double>(static_cast<std::size_t>(width) * static_cast<std::size_t>(height))},
-                std::vector<char>(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0)};
+    Reference r{
+        {width, height, std::vector<double>(static_cast<std::size_t>(width) * static_cast<std::size_t>(height))},
+        std::vector<char>(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0)};
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             const Point p = groundPoint(scene, x, y, width, height);
@@ -183,8 +191,10 @@ Reference renderReference(const SoftShadowScene& scene, int width, int height, i
             for (int j = 0; j < rows; ++j)
                 for (int i = 0; i < columns; ++i) {
                     const std::uint32_t k = static_cast<std::uint32_t>(j * columns + i);
-                    const double ju = toUnitFloat(whiteSample(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), k, 100));
-                    const double jv = toUnitFloat(whiteSample(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), k, 101));
+                    const double ju =
+                        toUnitFloat(whiteSample(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), k, 100));
+                    const double jv =
+                        toUnitFloat(whiteSample(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), k, 101));
                     const double v = sampleValue(scene, scale, p, (i + ju) / columns, (j + jv) / rows);
                     sum += v;
                     (v > 0.0 ? lit : shadowed) = true;

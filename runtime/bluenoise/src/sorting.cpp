@@ -22,7 +22,8 @@ void sortSeedsInBlocks(const std::vector<float>& values, const std::vector<std::
     const std::size_t n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
     if (width < 1 || height < 1 || values.size() != n || target.size() != n || seeds.size() != n)
         throw std::invalid_argument("sortSeedsInBlocks: values, target and seeds must each hold width*height entries");
-    if (blockSize < 1) throw std::invalid_argument("sortSeedsInBlocks: block size must be >= 1, got " + std::to_string(blockSize));
+    if (blockSize < 1)
+        throw std::invalid_argument("sortSeedsInBlocks: block size must be >= 1, got " + std::to_string(blockSize));
     std::vector<int> pixels, byValue, byTarget;
     std::vector<std::uint32_t> old;
     for (int by = 0; by < height; by += blockSize)
@@ -78,7 +79,8 @@ void applyRetarget(const RetargetPermutation& permutation, int offsetX, int offs
         for (int x = 0; x < rw; ++x) {
             const int mx = wrap(x + offsetX, mw), my = wrap(y + offsetY, mh);
             const int src = static_cast<int>(permutation.source[static_cast<std::size_t>(my * mw + mx)]);
-            const int sx = wrap(x + signedDelta(src % mw - mx, mw), rw), sy = wrap(y + signedDelta(src / mw - my, mh), rh);
+            const int sx = wrap(x + signedDelta(src % mw - mx, mw), rw),
+                      sy = wrap(y + signedDelta(src / mw - my, mh), rh);
             seeds[static_cast<std::size_t>(y * width + x)] = old[static_cast<std::size_t>(sy * width + sx)];
         }
 }

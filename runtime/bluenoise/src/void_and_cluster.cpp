@@ -104,7 +104,8 @@ class EnergyField {
             dirtyVoid_[static_cast<std::size_t>(y)] = 0;
             int best = -1;
             for (int i = y * w_; i < (y + 1) * w_; ++i)
-                if (!isOn(i) && (best < 0 || energy_[static_cast<std::size_t>(i)] < energy_[static_cast<std::size_t>(best)]))
+                if (!isOn(i) &&
+                    (best < 0 || energy_[static_cast<std::size_t>(i)] < energy_[static_cast<std::size_t>(best)]))
                     best = i;
             rowVoid_[static_cast<std::size_t>(y)] = best;
         }
@@ -116,7 +117,8 @@ class EnergyField {
             dirtyCluster_[static_cast<std::size_t>(y)] = 0;
             int best = -1;
             for (int i = y * w_; i < (y + 1) * w_; ++i)
-                if (isOn(i) && (best < 0 || energy_[static_cast<std::size_t>(i)] > energy_[static_cast<std::size_t>(best)]))
+                if (isOn(i) &&
+                    (best < 0 || energy_[static_cast<std::size_t>(i)] > energy_[static_cast<std::size_t>(best)]))
                     best = i;
             rowCluster_[static_cast<std::size_t>(y)] = best;
         }

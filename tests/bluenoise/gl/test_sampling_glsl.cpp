@@ -46,7 +46,8 @@ GLuint uintTexture(int w, int h, const std::vector<std::uint32_t>& values) {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_R32UI, w, h, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, values.empty() ? nullptr : values.data());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R32UI, w, h, 0, GL_RED_INTEGER, GL_UNSIGNED_INT,
+                 values.empty() ? nullptr : values.data());
     return tex;
 }
 
@@ -56,10 +57,12 @@ TEST(SamplingGlsl, MatchesCppBitForBit) {
     auto context = prism::gl::createContext();
     const std::string vert =
         "#version 330 core\n"
-        "void main() { vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2); gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0); }\n";
+        "void main() { vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2); gl_Position = vec4(p * 2.0 - 1.0, 0.0, "
+        "1.0); }\n";
     const std::string frag = "#version 330 core\n" + readModule() +
                              "uniform uint u_frame;\nuniform uint u_dim;\nout uvec4 o_bits;\n"
-                             "void main() { o_bits = uvec4(prismBlueNoiseSampleBits(uvec2(gl_FragCoord.xy), u_frame, u_dim), 0u, 0u, 0u); }\n";
+                             "void main() { o_bits = uvec4(prismBlueNoiseSampleBits(uvec2(gl_FragCoord.xy), u_frame, "
+                             "u_dim), 0u, 0u, 0u); }\n";
     const GLuint program = glCreateProgram();
     glAttachShader(program, compile(GL_VERTEX_SHADER, vert));
     glAttachShader(program, compile(GL_FRAGMENT_SHADER, frag));
@@ -75,7 +78,8 @@ TEST(SamplingGlsl, MatchesCppBitForBit) {
     bn::SamplerTables tables = bn::SamplerTables::fromMask(bn::generateVoidAndCluster(options));
     tables.seedWidth = 13, tables.seedHeight = 9;  // a seed table of another size
     tables.seeds.resize(13 * 9);
-    for (std::size_t i = 0; i < tables.seeds.size(); ++i) tables.seeds[i] = bn::pcgHash(static_cast<std::uint32_t>(i) * 77u);
+    for (std::size_t i = 0; i < tables.seeds.size(); ++i)
+        tables.seeds[i] = bn::pcgHash(static_cast<std::uint32_t>(i) * 77u);
 
     glActiveTexture(GL_TEXTURE0);
     uintTexture(tables.maskWidth, tables.maskHeight, tables.mask);
@@ -113,9 +117,9 @@ TEST(SamplingGlsl, MatchesCppBitForBit) {
                         const std::uint32_t cpu = bn::sample(kind, tables, static_cast<std::uint32_t>(x),
                                                              static_cast<std::uint32_t>(y), frame, dim);
                         if (gpu[static_cast<std::size_t>(y * w + x)] != cpu && mismatches++ < 3)
-                            ADD_FAILURE() << "sampler " << static_cast<int>(kind) << " frame " << frame << " dim " << dim
-                                          << " pixel (" << x << ", " << y << "): GLSL " << gpu[static_cast<std::size_t>(y * w + x)]
-                                          << " C++ " << cpu;
+                            ADD_FAILURE() << "sampler " << static_cast<int>(kind) << " frame " << frame << " dim "
+                                          << dim << " pixel (" << x << ", " << y << "): GLSL "
+                                          << gpu[static_cast<std::size_t>(y * w + x)] << " C++ " << cpu;
                         ++checked;
                     }
             }

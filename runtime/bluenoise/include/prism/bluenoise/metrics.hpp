@@ -35,8 +35,8 @@ namespace prism::bluenoise {
 struct GrayImage {
     int width = 0;
     int height = 0;
-    int bits = 8;                        // 8 or 16
-    std::vector<std::uint16_t> values;   // row-major, row 0 at the top
+    int bits = 8;                       // 8 or 16
+    std::vector<std::uint16_t> values;  // row-major, row 0 at the top
 
     std::size_t size() const { return values.size(); }
 };

@@ -25,7 +25,9 @@ constexpr std::uint32_t pcgHash(std::uint32_t v) {
 
 // 32-bit sample -> float in [0, 1): the top 24 bits, so the result is exact in float and
 // never rounds up to 1.
-constexpr float toUnitFloat(std::uint32_t v) { return static_cast<float>(v >> 8u) * (1.0f / 16777216.0f); }
+constexpr float toUnitFloat(std::uint32_t v) {
+    return static_cast<float>(v >> 8u) * (1.0f / 16777216.0f);
+}
 
 // SplitMix64 (Steele, Lea & Flood 2014): the generator behind every --seed.
 class SplitMix64 {

@@ -41,11 +41,13 @@ inline constexpr std::uint32_t kR2StepY = 0x91E10DA5u;
 
 // Per-frame steps: round(2^32 (sqrt(3) - 1)) for odd dimensions, 2^32/phi for even ones.
 inline constexpr std::uint32_t kSqrt3Step = 0xBB67AE86u;
-constexpr std::uint32_t temporalStep(std::uint32_t dim) { return (dim & 1u) ? kSqrt3Step : kGoldenRatioStep; }
+constexpr std::uint32_t temporalStep(std::uint32_t dim) {
+    return (dim & 1u) ? kSqrt3Step : kGoldenRatioStep;
+}
 
 struct SamplerTables {
     int maskWidth = 1, maskHeight = 1;
-    std::vector<std::uint32_t> mask{0};   // fixedPoint32 of a mask
+    std::vector<std::uint32_t> mask{0};  // fixedPoint32 of a mask
     int seedWidth = 1, seedHeight = 1;
     std::vector<std::uint32_t> seeds{0};  // per-pixel seeds of the sorted sampler
 

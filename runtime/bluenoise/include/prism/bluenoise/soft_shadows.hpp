@@ -40,23 +40,23 @@ struct Sphere {
 };
 
 struct SoftShadowScene {
-    double extent = 1.5;                    // ground square half-size
-    double lightHeight = 2.0;               // light centre (0, 0, lightHeight), facing down
-    double lightHalfLength = 0.8;           // along x
-    double lightHalfWidth = 0.01;           // along y: a strip light (a fluorescent tube)
-    double radiance = 1.0;                  // relative: 1 gives 1.0 right below the light
+    double extent = 1.5;           // ground square half-size
+    double lightHeight = 2.0;      // light centre (0, 0, lightHeight), facing down
+    double lightHalfLength = 0.8;  // along x
+    double lightHalfWidth = 0.01;  // along y: a strip light (a fluorescent tube)
+    double radiance = 1.0;         // relative: 1 gives 1.0 right below the light
     std::vector<Sphere> spheres;
 
-    static SoftShadowScene classic();       // three spheres at different heights
-    static SoftShadowScene black();         // light off: every pixel 0
-    static SoftShadowScene white();         // no occluder, a light far brighter than 1: white on display
+    static SoftShadowScene classic();  // three spheres at different heights
+    static SoftShadowScene black();    // light off: every pixel 0
+    static SoftShadowScene white();    // no occluder, a light far brighter than 1: white on display
 };
 
 struct StochasticSetup {
     Mask mask;
-    SamplerTables tables;                   // mask values; seeds are filled per render
-    RetargetPermutation retarget;           // empty: no retargeting
-    int shiftX = 0, shiftY = 0;             // R2 step between frames
+    SamplerTables tables;          // mask values; seeds are filled per render
+    RetargetPermutation retarget;  // empty: no retargeting
+    int shiftX = 0, shiftY = 0;    // R2 step between frames
 
     static StochasticSetup make(const Mask& mask);
 };
@@ -65,18 +65,18 @@ struct RenderOptions {
     int width = 128, height = 128;
     int spp = 1;
     SamplerKind sampler = SamplerKind::White;
-    int frame = 0;                          // the frame rendered (frames == 1)
-    int frames = 1;                         // > 1: the mean of frames 0 .. frames-1
-    int block = 8;                          // sorting block size
-    bool aPosteriori = false;               // sorted: render, sort, render again each frame
-    std::uint64_t seed = 1;                 // the sorted sampler's first seeds
+    int frame = 0;             // the frame rendered (frames == 1)
+    int frames = 1;            // > 1: the mean of frames 0 .. frames-1
+    int block = 8;             // sorting block size
+    bool aPosteriori = false;  // sorted: render, sort, render again each frame
+    std::uint64_t seed = 1;    // the sorted sampler's first seeds
 };
 
 RealImage renderSoftShadows(const SoftShadowScene& scene, StochasticSetup& setup, const RenderOptions& options);
 
 struct Reference {
     RealImage image;
-    std::vector<char> touched;              // penumbrae: pixels that see part of the light
+    std::vector<char> touched;  // penumbrae: pixels that see part of the light
 };
 
 // About `samples` jittered-stratified samples per pixel on a grid of strata shaped like
@@ -84,10 +84,10 @@ struct Reference {
 Reference renderReference(const SoftShadowScene& scene, int width, int height, int samples);
 
 struct ErrorStats {
-    double rms = 0.0;                       // over touched pixels
-    double blurredRms = 0.0;                // of the error blurred by a Gaussian, sigma 1 px
-    double lowFrequencyRatio = 0.0;         // of the error image
-    int pixels = 0;                         // touched pixels
+    double rms = 0.0;                // over touched pixels
+    double blurredRms = 0.0;         // of the error blurred by a Gaussian, sigma 1 px
+    double lowFrequencyRatio = 0.0;  // of the error image
+    int pixels = 0;                  // touched pixels
 };
 
 ErrorStats compareToReference(const RealImage& image, const Reference& reference);
