@@ -130,17 +130,36 @@ StochasticSetup StochasticSetup::make(const Mask& mask) {
     return setup;
 }
 
+double irradianceScale(const SoftShadowScene& scene) {
+    const double norm = normaliser(scene);
+    return norm > 0.0 ? scene.radiance / norm : 0.0;
+}
+
 RealImage renderSoftShadows(const SoftShadowScene& scene, StochasticSetup& setup, const RenderOptions& o) {
     validate(o);
-    const double norm = normaliser(scene);
-    const double scale = norm > 0.0 ? scene.radiance / norm : 0.0;
+    const double scale = irradianceScale(scene);
+    return runSoftShadowPipeline(setup, o, [&](const SamplerTables&, std::uint32_t frame) {
+        return renderFrame(scene, scale, setup, o, frame);
+    });
+}
+
+RealImage runSoftShadowPipeline(StochasticSetup& setup, const RenderOptions& o, const FrameRenderer& render) {
+    validate(o);
     RealImage image{o.width, o.height,
                     std::vector<double>(static_cast<std::size_t>(o.width) * static_cast<std::size_t>(o.height), 0.0)};
     const int first = o.frames > 1 ? 0 : o.frame;
     const int last = o.frames > 1 ? o.frames - 1 : o.frame;
+    auto frameValues = [&](int t) {
+        std::vector<double> f = render(setup.tables, static_cast<std::uint32_t>(t));
+        if (f.size() != image.values.size())
+            throw std::runtime_error("soft shadows: a frame renderer returned " + std::to_string(f.size()) +
+                                     " values for a " + std::to_string(o.width) + "x" + std::to_string(o.height) +
+                                     " image");
+        return f;
+    };
     if (o.sampler != SamplerKind::Sorted) {
         for (int t = first; t <= last; ++t) {
-            const std::vector<double> f = renderFrame(scene, scale, setup, o, static_cast<std::uint32_t>(t));
+            const std::vector<double> f = frameValues(t);
             for (std::size_t i = 0; i < f.size(); ++i) image.values[i] += f[i];
         }
     } else {
@@ -148,11 +167,11 @@ RealImage renderSoftShadows(const SoftShadowScene& scene, StochasticSetup& setup
         setup.tables.seedHeight = o.height;
         setup.tables.seeds = initialSeeds(o.width, o.height, o.seed);
         for (int t = 0; t <= last; ++t) {
-            std::vector<double> f = renderFrame(scene, scale, setup, o, static_cast<std::uint32_t>(t));
+            std::vector<double> f = frameValues(t);
             if (o.aPosteriori) {
                 sortSeedsInBlocks(asFloats(f), sortTarget(setup, o.width, o.height, t), o.width, o.height, o.block,
                                   setup.tables.seeds);
-                f = renderFrame(scene, scale, setup, o, static_cast<std::uint32_t>(t));
+                f = frameValues(t);
             }
             if (t >= first)
                 for (std::size_t i = 0; i < f.size(); ++i) image.values[i] += f[i];

@@ -26,6 +26,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "prism/bluenoise/mask.hpp"
@@ -73,6 +74,15 @@ struct RenderOptions {
 };
 
 RealImage renderSoftShadows(const SoftShadowScene& scene, StochasticSetup& setup, const RenderOptions& options);
+
+// The frame loop of renderSoftShadows (accumulation, sorting, retargeting) around any
+// frame renderer: `renderFrame(tables, frame)` returns width*height values, row 0 at the
+// top (the GPU version, gl_soft_shadows.hpp, reads its framebuffer back).
+using FrameRenderer = std::function<std::vector<double>(const SamplerTables& tables, std::uint32_t frame)>;
+RealImage runSoftShadowPipeline(StochasticSetup& setup, const RenderOptions& options, const FrameRenderer& renderFrame);
+
+// Irradiance scale of the scene: radiance / the unoccluded irradiance below the light.
+double irradianceScale(const SoftShadowScene& scene);
 
 struct Reference {
     RealImage image;
