@@ -17,6 +17,10 @@
 #include "prism/bluenoise/soft_shadows.hpp"
 #include "prism/bluenoise/spectrum_svg.hpp"
 #include "prism/bluenoise/void_and_cluster.hpp"
+#ifdef PRISM_BENCH_BLUENOISE_GL
+#include "prism/bluenoise/gl_soft_shadows.hpp"
+#include "prism/gl_context.hpp"
+#endif
 
 namespace bn = prism::bluenoise;
 using Clock = std::chrono::steady_clock;
@@ -52,6 +56,8 @@ int main(int argc, char** argv) {
     app.add_option("--size", size, "image side in pixels")->check(CLI::Range(16, 512));
     app.add_option("--repeats", repeats, "timing repeats (median)")->check(CLI::Range(1, 20));
     app.add_option("--max-mask", maxMask, "largest mask side in the mask-size sweep")->check(CLI::Range(16, 512));
+    bool gpu = false;
+    app.add_flag("--gl", gpu, "also time the GPU version (llvmpipe) per sampler and spp");
     CLI11_PARSE(app, argc, argv);
     std::filesystem::create_directories(out);
 
@@ -167,6 +173,39 @@ int main(int argc, char** argv) {
                     w1.blurredRms / s4.blurredRms);
         std::printf("  frame 10^6 blue blurred %.5f (frame 0: %.5f)\n", m.blurredRms, b1.blurredRms);
     }
+
+#ifdef PRISM_BENCH_BLUENOISE_GL
+    if (gpu) {
+        auto context = prism::gl::createContext();
+        bn::GlSoftShadows renderer(size, size);
+        std::printf("\n## GPU (%s): ms per frame over 32 frames incl. readback and, for sorted, the CPU sorting and "
+                    "retargeting passes\n", context->info().renderer.c_str());
+        std::printf("%-10s %4s %12s %12s\n", "sampler", "spp", "ms/frame", "blurred_rms");
+        std::ostringstream gl;
+        gl << "sampler,spp,frames,ms_per_frame,blurred_rms\n";
+        for (bn::SamplerKind kind : {bn::SamplerKind::White, bn::SamplerKind::BlueNoise, bn::SamplerKind::Sorted})
+            for (int spp : {1, 2, 4, 8, 16}) {
+                bn::RenderOptions o;
+                o.width = o.height = size;
+                o.sampler = kind;
+                o.spp = spp;
+                o.frames = 32;
+                std::vector<double> times;
+                bn::RealImage image;
+                for (int k = 0; k < repeats; ++k) {
+                    const auto start = Clock::now();
+                    image = renderer.render(scene, setup, o);
+                    times.push_back(secondsSince(start) * 1000.0 / o.frames);
+                }
+                const bn::ErrorStats e = bn::compareToReference(image, reference);
+                std::printf("%-10s %4d %12.2f %12.5f\n", samplerName(kind), spp, median(times), e.blurredRms);
+                gl << samplerName(kind) << "," << spp << ",32," << median(times) << "," << e.blurredRms << "\n";
+            }
+        bn::writeFileAtomically(std::filesystem::path(out) / "bluenoise_gpu.csv", gl.str());
+    }
+#else
+    if (gpu) std::printf("\n(--gl: this build has no prism_bluenoise GL library)\n");
+#endif
 
     // Convergence over frames at 1 spp (every frame count 1..32).
     std::vector<bn::PlotSeries> convergence;
