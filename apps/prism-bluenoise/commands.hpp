@@ -21,6 +21,8 @@ struct GenerateArgs {
     std::uint64_t seed = 0;
     int bits = 8;
     std::string out;
+    bool spatiotemporal = false;
+    double sigmaTime = 1.9;
 };
 
 struct MeasureArgs {

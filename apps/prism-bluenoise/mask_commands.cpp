@@ -13,13 +13,17 @@
 namespace prism::bluenoise::app {
 
 void addGenerate(CLI::App& app, GenerateArgs& args) {
-    CLI::App* cmd = app.add_subcommand("generate", "write a void-and-cluster mask (or D golden-ratio slices) as PNG");
+    CLI::App* cmd = app.add_subcommand("generate", "write a void-and-cluster mask (or a stack of D slices) as PNG");
     cmd->add_option("--size", args.size, "WxH, each 1..512")->required();
     cmd->add_option("--depth", args.depth, "slices; >1 writes PATH/slice_000.png ..")->check(CLI::Range(1, 1000));
     cmd->add_option("--sigma", args.sigma, "Gaussian energy sigma in pixels")->check(CLI::Range(0.05, 64.0));
     cmd->add_option("--seed", args.seed, "RNG seed (same seed, same mask)");
     cmd->add_option("--bits", args.bits, "8 or 16 bits per pixel")->check(CLI::IsMember({8, 16}));
     cmd->add_option("--out", args.out, "PNG path (D = 1) or directory (D > 1)")->required();
+    cmd->add_flag("--spatiotemporal", args.spatiotemporal,
+                  "D > 1: a spatiotemporal void-and-cluster stack instead of golden-ratio slices of one mask");
+    cmd->add_option("--sigma-time", args.sigmaTime, "spatiotemporal: Gaussian sigma across slices")
+        ->check(CLI::Range(0.05, 64.0));
 }
 
 void addMeasure(CLI::App& app, MeasureArgs& args) {
@@ -43,10 +47,16 @@ int runGenerate(const GenerateArgs& args) {
     parseSize(args.size, options.width, options.height);
     options.sigma = args.sigma;
     options.seed = args.seed;
-    const Mask mask = generateVoidAndCluster(options);
+    if (args.spatiotemporal && args.depth > kMaxMaskDepth)
+        throw UsageError("--spatiotemporal supports --depth up to " + std::to_string(kMaxMaskDepth));
+    const std::vector<Mask> stack = args.spatiotemporal ? generateSpatiotemporal(options, args.depth, args.sigmaTime)
+                                                        : std::vector<Mask>{generateVoidAndCluster(options)};
+    const Mask& mask = stack.front();
     const int shift = 32 - args.bits;
     for (int slice = 0; slice < args.depth; ++slice) {
-        const std::vector<std::uint32_t> values = goldenRatioSlice(mask, static_cast<std::uint32_t>(slice));
+        const std::vector<std::uint32_t> values = args.spatiotemporal
+                                                      ? fixedPoint32(stack[static_cast<std::size_t>(slice)])
+                                                      : goldenRatioSlice(mask, static_cast<std::uint32_t>(slice));
         GrayImage image{mask.width, mask.height, args.bits, {}};
         image.values.reserve(values.size());
         for (std::uint32_t v : values) image.values.push_back(static_cast<std::uint16_t>(v >> shift));

@@ -276,6 +276,68 @@ int main(int argc, char** argv) {
     bn::writeFileAtomically(std::filesystem::path(out) / "bluenoise_masks.csv", masks.str());
     bn::writeFileAtomically(std::filesystem::path(out) / "bluenoise_spectra.svg", bn::spectrumSvg(spectra));
 
+    // --- 2b. mask stacks: golden-ratio slices vs spatiotemporal void-and-cluster ------
+    {
+        std::printf("\n## Mask stacks 64x64x16: every slice's quality, and each pixel's values over the slices\n");
+        std::printf("%-24s %8s %10s %10s %10s %8s %8s %8s\n", "stack", "gen_s", "fast_mean", "fast_worst", "lf_worst",
+                    "gap4", "gap8", "gap16");
+        std::ostringstream stacks;
+        stacks << "stack,generate_s,fast_mean,fast_worst,lf_worst,gap4,gap8,gap16\n";
+        auto report = [&](const std::string& name, double seconds, const std::vector<std::vector<std::uint32_t>>& slices) {
+            double fastMean = 0.0, fastWorst = 0.0, lfWorst = 0.0;
+            for (const auto& slice : slices) {
+                bn::GrayImage g{64, 64, 8, {}};
+                for (std::uint32_t v : slice) g.values.push_back(static_cast<std::uint16_t>(v >> 24));
+                const double f = bn::filteredErrorSigma1(g);
+                fastMean += f / static_cast<double>(slices.size());
+                fastWorst = std::max(fastWorst, f);
+                lfWorst = std::max(lfWorst, bn::lowFrequencyPowerRatio(g));
+            }
+            double gaps[3] = {0, 0, 0};
+            const std::size_t ks[3] = {4, 8, 16};
+            for (std::size_t i = 0; i < slices[0].size(); ++i)
+                for (int j = 0; j < 3; ++j) {
+                    std::vector<double> v;
+                    for (std::size_t t = 0; t < ks[j]; ++t) v.push_back(slices[t][i] / 4294967296.0);
+                    std::sort(v.begin(), v.end());
+                    double gap = 1.0 - v.back() + v.front();
+                    for (std::size_t k = 1; k < v.size(); ++k) gap = std::max(gap, v[k] - v[k - 1]);
+                    gaps[j] += gap / static_cast<double>(slices[0].size());
+                }
+            std::printf("%-24s %8.2f %10.4f %10.4f %10.5f %8.3f %8.3f %8.3f\n", name.c_str(), seconds, fastMean, fastWorst,
+                        lfWorst, gaps[0], gaps[1], gaps[2]);
+            stacks << name << "," << seconds << "," << fastMean << "," << fastWorst << "," << lfWorst << "," << gaps[0] << ","
+                   << gaps[1] << "," << gaps[2] << "\n";
+        };
+        {
+            const auto start = Clock::now();
+            const bn::Mask m = bn::generateVoidAndCluster({.width = 64, .height = 64});
+            std::vector<std::vector<std::uint32_t>> slices;
+            for (std::uint32_t t = 0; t < 16; ++t) slices.push_back(bn::goldenRatioSlice(m, t));
+            report("golden-ratio slices", secondsSince(start), slices);
+        }
+        for (double sigmaTime : {1.0, 1.9, 3.0}) {
+            const auto start = Clock::now();
+            const std::vector<bn::Mask> stack = bn::generateSpatiotemporal({.width = 64, .height = 64}, 16, sigmaTime);
+            const double seconds = secondsSince(start);
+            std::vector<std::vector<std::uint32_t>> slices;
+            for (const bn::Mask& m : stack) slices.push_back(bn::fixedPoint32(m));
+            char name[48];
+            std::snprintf(name, sizeof name, "spatiotemporal st=%.1f", sigmaTime);
+            report(name, seconds, slices);
+        }
+        {
+            std::vector<std::vector<std::uint32_t>> slices;
+            for (std::uint64_t seed = 100; seed < 116; ++seed) {
+                bn::VoidAndClusterOptions o{.width = 64, .height = 64};
+                o.seed = seed;
+                slices.push_back(bn::fixedPoint32(bn::generateVoidAndCluster(o)));
+            }
+            report("16 independent masks", 0.0, slices);
+        }
+        bn::writeFileAtomically(std::filesystem::path(out) / "bluenoise_stacks.csv", stacks.str());
+    }
+
     // --- 3. annealing effort vs energy vs time ------------------------------------
     std::printf(
         "\n## Retarget annealing on a 64x64 mask (radius 6, sigma_i 2.1, sigma_s 1): epochs vs energy vs time\n");

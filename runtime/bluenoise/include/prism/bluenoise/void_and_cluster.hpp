@@ -19,6 +19,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "prism/bluenoise/mask.hpp"
 
@@ -34,7 +35,16 @@ struct VoidAndClusterOptions {
 };
 
 inline constexpr int kMaxMaskSide = 512;
+inline constexpr int kMaxMaskDepth = 256;
 
 Mask generateVoidAndCluster(const VoidAndClusterOptions& options);
+
+// A spatiotemporal stack of `depth` masks (after Wolfe et al. 2022): void-and-cluster over
+// the width x height x depth volume where two voxels interact only within a slice
+// (Gaussian of options.sigma in pixels) or at the same pixel across slices (Gaussian of
+// sigmaTime in slices, toroidal), then each slice ranked by the volume's ranks: every
+// slice is a blue-noise mask and every pixel's values over the slices are spread out.
+// Takes about depth times as long as one mask, and more (the searches scan all slices).
+std::vector<Mask> generateSpatiotemporal(const VoidAndClusterOptions& options, int depth, double sigmaTime = 1.9);
 
 }  // namespace prism::bluenoise
