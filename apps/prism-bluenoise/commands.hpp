@@ -38,6 +38,7 @@ struct RenderArgs {
     int frames = 1;
     std::string size = "128x128";
     int maskSize = 128;
+    int stackDepth = 32;
     int block = 8;
     bool aPosteriori = false;
     bool noRetarget = false;

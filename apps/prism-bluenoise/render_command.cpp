@@ -15,8 +15,10 @@ namespace prism::bluenoise::app {
 void addRender(CLI::App& app, RenderArgs& args) {
     CLI::App* cmd = app.add_subcommand("render", "render the soft-shadow demo scene with a sampler");
     cmd->add_option("--spp", args.spp, "samples per pixel per frame")->check(CLI::Range(1, 65536));
-    cmd->add_option("--sampler", args.sampler, "white, bluenoise or sorted")
-        ->check(CLI::IsMember({"white", "bluenoise", "sorted"}));
+    cmd->add_option("--sampler", args.sampler, "white, bluenoise, sorted or stack (a spatiotemporal stack)")
+        ->check(CLI::IsMember({"white", "bluenoise", "sorted", "stack"}));
+    cmd->add_option("--stack-depth", args.stackDepth, "stack: slices of the spatiotemporal stack (mask-size square)")
+        ->check(CLI::Range(1, 256));
     cmd->add_option("--frame", args.frame, "render frame K of the sequence")->check(CLI::Range(0, 2147483647));
     cmd->add_option("--frames", args.frames, "write the mean of frames 0..K-1")->check(CLI::Range(1, 100000));
     cmd->add_option("--size", args.size, "image WxH (each 1..512)");
@@ -52,7 +54,8 @@ int runRender(const RenderArgs& args) {
         options.frames = args.frames;
         options.block = args.block;
         options.aPosteriori = args.aPosteriori;
-        options.sampler = args.sampler == "sorted"      ? SamplerKind::Sorted
+        options.sampler = args.sampler == "stack"       ? SamplerKind::Stack
+                          : args.sampler == "sorted"    ? SamplerKind::Sorted
                           : args.sampler == "bluenoise" ? SamplerKind::BlueNoise
                                                         : SamplerKind::White;
         if (options.sampler == SamplerKind::Sorted && args.frame > 100000)
@@ -61,6 +64,8 @@ int runRender(const RenderArgs& args) {
         VoidAndClusterOptions maskOptions;
         maskOptions.width = maskOptions.height = args.maskSize;
         StochasticSetup setup = StochasticSetup::make(generateVoidAndCluster(maskOptions));
+        if (options.sampler == SamplerKind::Stack)
+            setup.tables.setStack(generateSpatiotemporal(maskOptions, args.stackDepth));
         // Frame 0 alone never retargets; otherwise build (or read) the permutation.
         const bool needsRetarget = args.frames > 1 || args.frame > 0;
         if (options.sampler == SamplerKind::Sorted && needsRetarget && !args.noRetarget && !args.aPosteriori &&

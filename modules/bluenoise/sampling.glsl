@@ -9,10 +9,16 @@
 //                          low-discrepancy sequence over frames, each pair spread in 2D;
 //                      2 = sorted: the per-pixel seed u_blueNoiseSeeds (R32UI, written by
 //                          the sorting/retargeting passes) hashed with dim, plus the same
-//                          frame offset.
+//                          frame offset;
+//                      3 = stack: slice (frame mod D) of a spatiotemporal stack of D masks,
+//                          u_blueNoiseStack (R32UI, W x (H * D), slice after slice),
+//                          D = u_blueNoiseStackDepth, at the pixel shifted by dim's R2
+//                          offset, plus (frame / D) times dim's step.
 // Integer arithmetic only, so frame 10^6 is as precise as frame 0. docs/bluenoise.md.
 uniform usampler2D u_blueNoiseMask;
 uniform usampler2D u_blueNoiseSeeds;
+uniform usampler2D u_blueNoiseStack;
+uniform int u_blueNoiseStackDepth;
 uniform int u_blueNoiseSampler;
 
 const uint PRISM_BN_R2_X = 0xC13FA9A9u;    // 2^32 / g, g the plastic number
@@ -46,10 +52,21 @@ uint prismBlueNoiseSorted(uvec2 pixel, uint frame, uint dim) {
     return prismBlueNoisePcg(prismBlueNoisePcg(seed) + dim) + frame * prismBlueNoiseTemporalStep(dim);
 }
 
+uint prismBlueNoiseStack(uvec2 pixel, uint frame, uint dim) {
+    uint depth = uint(max(u_blueNoiseStackDepth, 1));
+    uvec2 size = uvec2(textureSize(u_blueNoiseStack, 0)) / uvec2(1u, depth);
+    uvec2 offset = (((uvec2(dim * PRISM_BN_R2_X, dim * PRISM_BN_R2_Y) >> 16u) * size) >> 16u);
+    uvec2 p = (pixel % size + offset) % size;
+    uint slice = frame % depth;
+    return texelFetch(u_blueNoiseStack, ivec2(p.x, slice * size.y + p.y), 0).r +
+           (frame / depth) * prismBlueNoiseTemporalStep(dim);
+}
+
 // The sample as 32 bits.
 uint prismBlueNoiseSampleBits(uvec2 pixel, uint frame, uint dim) {
     if (u_blueNoiseSampler == 1) return prismBlueNoiseMask(pixel, frame, dim);
     if (u_blueNoiseSampler == 2) return prismBlueNoiseSorted(pixel, frame, dim);
+    if (u_blueNoiseSampler == 3) return prismBlueNoiseStack(pixel, frame, dim);
     return prismBlueNoiseWhite(pixel, frame, dim);
 }
 

@@ -126,3 +126,27 @@ TEST(SoftShadows, BadOptionsThrow) {
     o.frames = 0;
     EXPECT_THROW(bn::renderSoftShadows(bn::SoftShadowScene::classic(), setup(), o), std::invalid_argument);
 }
+
+TEST(SoftShadows, SpatiotemporalStackSampler) {
+    // A 64x64x32 stack tiled over the image: every frame blue, and over 32 frames each
+    // pixel has seen 32 well-spread values.
+    bn::StochasticSetup stackSetup = bn::StochasticSetup::make(bn::generateVoidAndCluster({.width = 64, .height = 64}));
+    stackSetup.tables.setStack(bn::generateSpatiotemporal({.width = 64, .height = 64}, 32));
+    auto error = [&](bn::SamplerKind kind, int frames) {
+        bn::RenderOptions o;
+        o.width = o.height = kSize;
+        o.sampler = kind;
+        o.frames = frames;
+        const bn::ErrorStats e =
+            bn::compareToReference(bn::renderSoftShadows(bn::SoftShadowScene::classic(), stackSetup, o), reference());
+        std::printf("sampler %d frames %d: rms %.5f blurred %.5f lf %.4f\n", static_cast<int>(kind), frames, e.rms,
+                    e.blurredRms, e.lowFrequencyRatio);
+        return e;
+    };
+    const bn::ErrorStats white1 = error(bn::SamplerKind::White, 1), stack1 = error(bn::SamplerKind::Stack, 1);
+    const bn::ErrorStats white32 = error(bn::SamplerKind::White, 32), stack32 = error(bn::SamplerKind::Stack, 32);
+    EXPECT_LE(stack1.blurredRms, 0.5 * white1.blurredRms);
+    EXPECT_LE(stack32.rms, 0.6 * white32.rms);
+    EXPECT_LE(stack32.blurredRms, 0.5 * white32.blurredRms);
+    error(bn::SamplerKind::BlueNoise, 32);  // for comparison in the log
+}

@@ -48,7 +48,7 @@ struct GlSoftShadows::Resources {
     ~Resources() { glDeleteVertexArrays(1, &vao); }
     gl::Framebuffer framebuffer;
     ProgramCache programs;
-    UintTexture mask, seeds;
+    UintTexture mask, seeds, stack;
     GLuint vao = 0;
 };
 
@@ -65,6 +65,8 @@ RealImage GlSoftShadows::render(const SoftShadowScene& scene, StochasticSetup& s
     program.use();
     program.set("u_blueNoiseMask", 0);
     program.set("u_blueNoiseSeeds", 1);
+    program.set("u_blueNoiseStack", 2);
+    program.set("u_blueNoiseStackDepth", setup.tables.stackDepth);
     program.set("u_blueNoiseSampler", static_cast<int>(options.sampler));
     program.set("u_spp", options.spp);
     program.set("u_imageSize", glm::vec2(static_cast<float>(options.width), static_cast<float>(options.height)));
@@ -78,6 +80,8 @@ RealImage GlSoftShadows::render(const SoftShadowScene& scene, StochasticSetup& s
         program.set(names[i], s);
     }
     gl_->mask.upload(0, setup.tables.maskWidth, setup.tables.maskHeight, setup.tables.mask);
+    gl_->stack.upload(2, setup.tables.stackWidth, setup.tables.stackHeight * setup.tables.stackDepth,
+                      setup.tables.stack);
     return runSoftShadowPipeline(setup, options, [&](const SamplerTables& tables, std::uint32_t frame) {
         const auto start = std::chrono::steady_clock::now();
         gl_->seeds.upload(1, tables.seedWidth, tables.seedHeight, tables.seeds);

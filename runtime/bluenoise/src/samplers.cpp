@@ -1,6 +1,8 @@
 // CPU reference of the samplers in modules/bluenoise/sampling.glsl (same integer steps).
 #include "prism/bluenoise/samplers.hpp"
 
+#include <stdexcept>
+
 namespace prism::bluenoise {
 
 SamplerTables SamplerTables::fromMask(const Mask& mask) {
@@ -13,6 +15,20 @@ SamplerTables SamplerTables::fromMask(const Mask& mask) {
     t.seeds.resize(mask.size());
     for (std::size_t i = 0; i < t.seeds.size(); ++i) t.seeds[i] = pcgHash(static_cast<std::uint32_t>(i) + 0x5EEDu);
     return t;
+}
+
+void SamplerTables::setStack(const std::vector<Mask>& slices) {
+    if (slices.empty()) throw std::invalid_argument("SamplerTables::setStack: no slices");
+    stackWidth = slices[0].width;
+    stackHeight = slices[0].height;
+    stackDepth = static_cast<int>(slices.size());
+    stack.clear();
+    for (const Mask& m : slices) {
+        if (m.width != stackWidth || m.height != stackHeight)
+            throw std::invalid_argument("SamplerTables::setStack: the slices differ in size");
+        const std::vector<std::uint32_t> v = fixedPoint32(m);
+        stack.insert(stack.end(), v.begin(), v.end());
+    }
 }
 
 void r2Offset(std::uint32_t index, int width, int height, std::uint32_t& dx, std::uint32_t& dy) {
@@ -44,6 +60,17 @@ std::uint32_t sortedSample(const SamplerTables& t, std::uint32_t x, std::uint32_
     return pcgHash(pcgHash(seed) + dim) + frame * temporalStep(dim);
 }
 
+std::uint32_t stackSample(const SamplerTables& t, std::uint32_t x, std::uint32_t y, std::uint32_t frame,
+                          std::uint32_t dim) {
+    const auto w = static_cast<std::uint32_t>(t.stackWidth), h = static_cast<std::uint32_t>(t.stackHeight);
+    const auto d = static_cast<std::uint32_t>(t.stackDepth);
+    std::uint32_t dx = 0, dy = 0;
+    r2Offset(dim, t.stackWidth, t.stackHeight, dx, dy);
+    const std::uint32_t slice = frame % d, cycle = frame / d;
+    const std::uint32_t sx = (x % w + dx) % w, sy = (y % h + dy) % h;
+    return t.stack[(slice * h + sy) * w + sx] + cycle * temporalStep(dim);
+}
+
 std::uint32_t sample(SamplerKind kind, const SamplerTables& t, std::uint32_t x, std::uint32_t y, std::uint32_t frame,
                      std::uint32_t dim) {
     switch (kind) {
@@ -53,6 +80,8 @@ std::uint32_t sample(SamplerKind kind, const SamplerTables& t, std::uint32_t x, 
             return blueNoiseSample(t, x, y, frame, dim);
         case SamplerKind::Sorted:
             return sortedSample(t, x, y, frame, dim);
+        case SamplerKind::Stack:
+            return stackSample(t, x, y, frame, dim);
     }
     return 0;
 }

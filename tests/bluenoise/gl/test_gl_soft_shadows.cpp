@@ -19,8 +19,10 @@ TEST(GlSoftShadows, MatchesTheCpuRenderer) {
     r.shiftY = setup.shiftY;
     r.epochs = 4;
     setup.retarget = bn::computeRetarget(setup.mask, r).permutation;
+    setup.tables.setStack(bn::generateSpatiotemporal({.width = 16, .height = 16}, 4));
     bn::GlSoftShadows gpu(48, 40);
-    for (bn::SamplerKind kind : {bn::SamplerKind::White, bn::SamplerKind::BlueNoise, bn::SamplerKind::Sorted}) {
+    for (bn::SamplerKind kind :
+         {bn::SamplerKind::White, bn::SamplerKind::BlueNoise, bn::SamplerKind::Sorted, bn::SamplerKind::Stack}) {
         bn::RenderOptions o;
         o.width = 48;
         o.height = 40;

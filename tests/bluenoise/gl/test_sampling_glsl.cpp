@@ -1,6 +1,6 @@
 // GLSL vs C++: modules/bluenoise/sampling.glsl, run in a fragment shader on llvmpipe,
 // returns the same 32-bit samples as prism/bluenoise/samplers.hpp for every pixel of a
-// 37x23 target (larger than the 16x12 tables, so they tile), three samplers, several
+// 37x23 target (larger than the 16x12 tables, so they tile), four samplers (the stack 11x7x5), several
 // dimensions and frames 0, 1, 7, 10^6 and 2^32-1.
 #include <gtest/gtest.h>
 
@@ -80,6 +80,7 @@ TEST(SamplingGlsl, MatchesCppBitForBit) {
     tables.seeds.resize(13 * 9);
     for (std::size_t i = 0; i < tables.seeds.size(); ++i)
         tables.seeds[i] = bn::pcgHash(static_cast<std::uint32_t>(i) * 77u);
+    tables.setStack(bn::generateSpatiotemporal({.width = 11, .height = 7}, 5));  // a stack of yet another size
 
     glActiveTexture(GL_TEXTURE0);
     uintTexture(tables.maskWidth, tables.maskHeight, tables.mask);
@@ -87,6 +88,10 @@ TEST(SamplingGlsl, MatchesCppBitForBit) {
     uintTexture(tables.seedWidth, tables.seedHeight, tables.seeds);
     glUniform1i(glGetUniformLocation(program, "u_blueNoiseMask"), 0);
     glUniform1i(glGetUniformLocation(program, "u_blueNoiseSeeds"), 1);
+    glActiveTexture(GL_TEXTURE3);
+    uintTexture(tables.stackWidth, tables.stackHeight * tables.stackDepth, tables.stack);
+    glUniform1i(glGetUniformLocation(program, "u_blueNoiseStack"), 3);
+    glUniform1i(glGetUniformLocation(program, "u_blueNoiseStackDepth"), tables.stackDepth);
 
     const int w = 37, h = 23;
     glActiveTexture(GL_TEXTURE2);
@@ -101,7 +106,8 @@ TEST(SamplingGlsl, MatchesCppBitForBit) {
     glViewport(0, 0, w, h);
 
     int checked = 0;
-    for (bn::SamplerKind kind : {bn::SamplerKind::White, bn::SamplerKind::BlueNoise, bn::SamplerKind::Sorted})
+    for (bn::SamplerKind kind :
+         {bn::SamplerKind::White, bn::SamplerKind::BlueNoise, bn::SamplerKind::Sorted, bn::SamplerKind::Stack})
         for (std::uint32_t frame : {0u, 1u, 7u, 1000000u, 0xFFFFFFFFu})
             for (std::uint32_t dim : {0u, 1u, 5u}) {
                 glUniform1i(glGetUniformLocation(program, "u_blueNoiseSampler"), static_cast<GLint>(kind));
@@ -123,5 +129,5 @@ TEST(SamplingGlsl, MatchesCppBitForBit) {
                         ++checked;
                     }
             }
-    EXPECT_EQ(checked, 3 * 5 * 3 * w * h);
+    EXPECT_EQ(checked, 4 * 5 * 3 * w * h);
 }

@@ -13,7 +13,7 @@
 //     bn::RealImage image = gpu.render(bn::SoftShadowScene::classic(), setup, options);
 //     double ms = gpu.lastFrameMilliseconds();   // GPU draw + readback of the last frame
 //
-// The mask and seeds go to R32UI textures (units 0 and 1), the frame is drawn into an
+// The mask, seeds and stack go to R32UI textures (units 0, 1 and 2), the frame is drawn into an
 // RGBA32F framebuffer and read back; the sorted sampler's sorting and retargeting run on
 // the CPU between frames, as in renderSoftShadows. Up to 3 spheres (more throw).
 #pragma once

@@ -20,6 +20,9 @@
 //   poor alone: 32 frames of the 1/g sequence leave a gap of 0.128, golden 0.056.)
 // - Sorted: the pixel's seed (from the sorting and retargeting passes, sorting.hpp)
 //   hashed with the dimension, plus the same temporal offset.
+// - Stack: slice (frame mod D) of a spatiotemporal stack of D masks
+//   (generateSpatiotemporal), at the pixel shifted by dimension dim's R2 offset, plus
+//   (frame / D) * temporalStep(dim) so later passes through the stack differ.
 // All arithmetic is on 32-bit unsigned integers that wrap, so frame 10^6 (or 2^32 - 1)
 // loses nothing. Pixels outside the tables wrap around (the mask tiles the screen).
 #pragma once
@@ -32,7 +35,7 @@
 
 namespace prism::bluenoise {
 
-enum class SamplerKind : std::uint32_t { White = 0, BlueNoise = 1, Sorted = 2 };
+enum class SamplerKind : std::uint32_t { White = 0, BlueNoise = 1, Sorted = 2, Stack = 3 };
 
 // R2 steps as 32-bit fractions: round(2^32 / g) and round(2^32 / g^2), g = 1.3247179572
 // (the plastic number, x^3 = x + 1).
@@ -50,8 +53,12 @@ struct SamplerTables {
     std::vector<std::uint32_t> mask{0};  // fixedPoint32 of a mask
     int seedWidth = 1, seedHeight = 1;
     std::vector<std::uint32_t> seeds{0};  // per-pixel seeds of the sorted sampler
+    int stackWidth = 1, stackHeight = 1, stackDepth = 1;
+    std::vector<std::uint32_t> stack{0};  // fixedPoint32 of each slice, slice after slice
 
     static SamplerTables fromMask(const Mask& mask);
+    // Sets the stack from spatiotemporal slices (all of one size).
+    void setStack(const std::vector<Mask>& slices);
 };
 
 std::uint32_t whiteSample(std::uint32_t x, std::uint32_t y, std::uint32_t frame, std::uint32_t dim);
@@ -59,6 +66,8 @@ std::uint32_t blueNoiseSample(const SamplerTables& t, std::uint32_t x, std::uint
                               std::uint32_t dim);
 std::uint32_t sortedSample(const SamplerTables& t, std::uint32_t x, std::uint32_t y, std::uint32_t frame,
                            std::uint32_t dim);
+std::uint32_t stackSample(const SamplerTables& t, std::uint32_t x, std::uint32_t y, std::uint32_t frame,
+                          std::uint32_t dim);
 std::uint32_t sample(SamplerKind kind, const SamplerTables& t, std::uint32_t x, std::uint32_t y, std::uint32_t frame,
                      std::uint32_t dim);
 
