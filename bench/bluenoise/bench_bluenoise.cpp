@@ -176,7 +176,8 @@ int main(int argc, char** argv) {
     {
         // The spatiotemporal stack sampler (64x64x32 tiles) against golden-ratio offsets of a
         // 64x64 mask, on the classic scene.
-        bn::StochasticSetup stackSetup = bn::StochasticSetup::make(bn::generateVoidAndCluster({.width = 64, .height = 64}));
+        bn::StochasticSetup stackSetup =
+            bn::StochasticSetup::make(bn::generateVoidAndCluster({.width = 64, .height = 64}));
         const auto start = Clock::now();
         stackSetup.tables.setStack(bn::generateSpatiotemporal({.width = 64, .height = 64}, 32));
         const double seconds = secondsSince(start);
@@ -189,7 +190,8 @@ int main(int argc, char** argv) {
         };
         const bn::ErrorStats s1 = error(bn::SamplerKind::Stack, 1), g1 = error(bn::SamplerKind::BlueNoise, 1);
         const bn::ErrorStats s32 = error(bn::SamplerKind::Stack, 32), g32 = error(bn::SamplerKind::BlueNoise, 32);
-        std::printf("stack sampler (64x64x32, generated in %.2f s) vs golden-ratio offsets of a 64x64 mask:\n", seconds);
+        std::printf("stack sampler (64x64x32, generated in %.2f s) vs golden-ratio offsets of a 64x64 mask:\n",
+                    seconds);
         std::printf("  1 frame blurred %.5f vs %.5f; 32 frames rms %.5f vs %.5f, blurred %.5f vs %.5f\n", s1.blurredRms,
                     g1.blurredRms, s32.rms, g32.rms, s32.blurredRms, g32.blurredRms);
     }
@@ -198,8 +200,10 @@ int main(int argc, char** argv) {
     if (gpu) {
         auto context = prism::gl::createContext();
         bn::GlSoftShadows renderer(size, size);
-        std::printf("\n## GPU (%s): ms per frame over 32 frames incl. readback and, for sorted, the CPU sorting and "
-                    "retargeting passes\n", context->info().renderer.c_str());
+        std::printf(
+            "\n## GPU (%s): ms per frame over 32 frames incl. readback and, for sorted, the CPU sorting and "
+            "retargeting passes\n",
+            context->info().renderer.c_str());
         std::printf("%-10s %4s %12s %12s\n", "sampler", "spp", "ms/frame", "blurred_rms");
         std::ostringstream gl;
         gl << "sampler,spp,frames,ms_per_frame,blurred_rms\n";
@@ -303,7 +307,8 @@ int main(int argc, char** argv) {
                     "gap4", "gap8", "gap16");
         std::ostringstream stacks;
         stacks << "stack,generate_s,fast_mean,fast_worst,lf_worst,gap4,gap8,gap16\n";
-        auto report = [&](const std::string& name, double seconds, const std::vector<std::vector<std::uint32_t>>& slices) {
+        auto report = [&](const std::string& name, double seconds,
+                          const std::vector<std::vector<std::uint32_t>>& slices) {
             double fastMean = 0.0, fastWorst = 0.0, lfWorst = 0.0;
             for (const auto& slice : slices) {
                 bn::GrayImage g{64, 64, 8, {}};
@@ -324,10 +329,10 @@ int main(int argc, char** argv) {
                     for (std::size_t k = 1; k < v.size(); ++k) gap = std::max(gap, v[k] - v[k - 1]);
                     gaps[j] += gap / static_cast<double>(slices[0].size());
                 }
-            std::printf("%-24s %8.2f %10.4f %10.4f %10.5f %8.3f %8.3f %8.3f\n", name.c_str(), seconds, fastMean, fastWorst,
-                        lfWorst, gaps[0], gaps[1], gaps[2]);
-            stacks << name << "," << seconds << "," << fastMean << "," << fastWorst << "," << lfWorst << "," << gaps[0] << ","
-                   << gaps[1] << "," << gaps[2] << "\n";
+            std::printf("%-24s %8.2f %10.4f %10.4f %10.5f %8.3f %8.3f %8.3f\n", name.c_str(), seconds, fastMean,
+                        fastWorst, lfWorst, gaps[0], gaps[1], gaps[2]);
+            stacks << name << "," << seconds << "," << fastMean << "," << fastWorst << "," << lfWorst << "," << gaps[0]
+                   << "," << gaps[1] << "," << gaps[2] << "\n";
         };
         {
             const auto start = Clock::now();

@@ -19,13 +19,16 @@ const std::vector<bn::Mask>& stack() {
     static const std::vector<bn::Mask> s = [] {
         const auto start = std::chrono::steady_clock::now();
         auto made = bn::generateSpatiotemporal({.width = 64, .height = 64}, 16);
-        std::printf("64x64x16 stack: %.2f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        std::printf("64x64x16 stack: %.2f s\n",
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         return made;
     }();
     return s;
 }
 
-bn::GrayImage gray(const bn::Mask& m) { return {m.width, m.height, 8, bn::quantize(m, 8)}; }
+bn::GrayImage gray(const bn::Mask& m) {
+    return {m.width, m.height, 8, bn::quantize(m, 8)};
+}
 
 }  // namespace
 
@@ -92,7 +95,8 @@ TEST(Spatiotemporal, PixelSequencesAreSpreadOverTime) {
         independent.push_back(unit(bn::fixedPoint32(bn::generateVoidAndCluster(o))));
     }
     const double st = meanGap16(spatiotemporal), g = meanGap16(golden), w = meanGap16(independent);
-    std::printf("mean largest gap after 16 slices: spatiotemporal %.3f, golden ratio %.3f, independent %.3f\n", st, g, w);
+    std::printf("mean largest gap after 16 slices: spatiotemporal %.3f, golden ratio %.3f, independent %.3f\n", st, g,
+                w);
     EXPECT_LT(st, 0.8 * w);
     EXPECT_LT(g, st);  // the trade: golden-ratio offsets spread each pixel's values best
 }

@@ -71,7 +71,8 @@ RealImage GlSoftShadows::render(const SoftShadowScene& scene, StochasticSetup& s
     program.set("u_spp", options.spp);
     program.set("u_imageSize", glm::vec2(static_cast<float>(options.width), static_cast<float>(options.height)));
     program.set("u_extent", scene.extent);
-    program.set("u_light", glm::vec4(scene.lightHeight, scene.lightHalfLength, scene.lightHalfWidth, irradianceScale(scene)));
+    program.set("u_light",
+                glm::vec4(scene.lightHeight, scene.lightHalfLength, scene.lightHalfWidth, irradianceScale(scene)));
     const char* names[] = {"u_sphere0", "u_sphere1", "u_sphere2"};
     for (std::size_t i = 0; i < 3; ++i) {
         const glm::vec4 s = i < scene.spheres.size() ? glm::vec4(scene.spheres[i].x, scene.spheres[i].y,

@@ -236,8 +236,8 @@ Mask generateVoidAndCluster(const VoidAndClusterOptions& options) {
 std::vector<Mask> generateSpatiotemporal(const VoidAndClusterOptions& options, int depth, double sigmaTime) {
     validate(options);
     if (depth < 1 || depth > kMaxMaskDepth)
-        throw std::invalid_argument("spatiotemporal void-and-cluster: depth must be 1.." + std::to_string(kMaxMaskDepth) +
-                                    ", got " + std::to_string(depth));
+        throw std::invalid_argument("spatiotemporal void-and-cluster: depth must be 1.." +
+                                    std::to_string(kMaxMaskDepth) + ", got " + std::to_string(depth));
     if (!std::isfinite(sigmaTime) || sigmaTime <= 0.0)
         throw std::invalid_argument("spatiotemporal void-and-cluster: sigmaTime must be a finite number > 0, got " +
                                     std::to_string(sigmaTime));
@@ -249,7 +249,8 @@ std::vector<Mask> generateSpatiotemporal(const VoidAndClusterOptions& options, i
     for (int t = 0; t < depth; ++t) {
         const std::size_t base = static_cast<std::size_t>(t) * n;
         for (std::size_t i = 0; i < n; ++i) order[i] = i;
-        std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return ranks[base + a] < ranks[base + b]; });
+        std::sort(order.begin(), order.end(),
+                  [&](std::size_t a, std::size_t b) { return ranks[base + a] < ranks[base + b]; });
         Mask slice{options.width, options.height, std::vector<std::uint32_t>(n)};
         for (std::size_t k = 0; k < n; ++k) slice.rank[order[k]] = static_cast<std::uint32_t>(k);
         slices.push_back(std::move(slice));
