@@ -167,3 +167,26 @@ TEST(Retarget, PermutationIsCachedInAFile) {
     EXPECT_FALSE(cached);
     std::filesystem::remove(path);
 }
+
+TEST(Retarget, ExtremesAndBadOptions) {
+    bn::RetargetOptions o;
+    o.epochs = 3;
+    // The smallest masks: 2x1 and 3x3 (the radius window wraps onto itself).
+    for (auto [w, h] : {std::pair{2, 1}, std::pair{3, 3}}) {
+        const bn::Mask m = bn::generateVoidAndCluster({.width = w, .height = h});
+        const bn::RetargetResult r = bn::computeRetarget(m, o);
+        std::vector<std::uint32_t> sorted = r.permutation.source;
+        std::sort(sorted.begin(), sorted.end());
+        for (std::uint32_t i = 0; i < sorted.size(); ++i) EXPECT_EQ(sorted[i], i);
+        EXPECT_TRUE(std::isfinite(r.finalEnergy));
+    }
+    EXPECT_THROW(bn::computeRetarget(bn::generateVoidAndCluster({.width = 1, .height = 1}), o), std::invalid_argument);
+    o.radius = 1;  // no pixel is closer than 1: no move possible
+    EXPECT_THROW(bn::computeRetarget(mask32(), o), std::invalid_argument);
+    o.radius = 6;
+    o.sigmaI = 0.0;
+    EXPECT_THROW(bn::computeRetarget(mask32(), o), std::invalid_argument);
+    o.sigmaI = 2.1;
+    o.alpha = std::nan("");
+    EXPECT_THROW(bn::computeRetarget(mask32(), o), std::invalid_argument);
+}

@@ -115,8 +115,9 @@ double temperature(const RetargetOptions& o, double t0, double epoch) {
 
 void validate(const Mask& mask, const RetargetOptions& o) {
     if (mask.size() < 2) throw std::invalid_argument("retarget: the mask needs at least 2 pixels");
-    if (o.radius < 1 || o.radius > 64)
-        throw std::invalid_argument("retarget: radius must be 1..64, got " + std::to_string(o.radius));
+    // Moves go to pixels closer than the radius: radius 1 would allow none.
+    if (o.radius < 2 || o.radius > 64)
+        throw std::invalid_argument("retarget: radius must be 2..64, got " + std::to_string(o.radius));
     if (!(o.sigmaI > 0) || !(o.sigmaS > 0) || !std::isfinite(o.sigmaI) || !std::isfinite(o.sigmaS))
         throw std::invalid_argument("retarget: sigma_i and sigma_s must be finite and > 0");
     if (o.epochs < 0 || o.epochs > 100000) throw std::invalid_argument("retarget: epochs must be 0..100000");

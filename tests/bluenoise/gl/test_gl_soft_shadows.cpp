@@ -51,3 +51,17 @@ TEST(GlSoftShadows, MatchesTheCpuRenderer) {
     o.height = 40;
     EXPECT_THROW(gpu.render(crowded, setup, o), std::invalid_argument);
 }
+
+TEST(HeaderExamples, GlSoftShadows) {  // the usage example of prism/bluenoise/gl_soft_shadows.hpp
+    namespace bn = prism::bluenoise;
+    auto context = prism::gl::createContext();
+    bn::StochasticSetup setup = bn::StochasticSetup::make(bn::generateVoidAndCluster({.width = 64, .height = 64}));
+    bn::RenderOptions options;
+    options.width = options.height = 64;
+    options.sampler = bn::SamplerKind::BlueNoise;
+    bn::GlSoftShadows gpu(64, 64);
+    bn::RealImage image = gpu.render(bn::SoftShadowScene::classic(), setup, options);
+    double ms = gpu.lastFrameMilliseconds();
+    EXPECT_EQ(image.values.size(), 64u * 64u);
+    EXPECT_GT(ms, 0.0);
+}
