@@ -1,0 +1,103 @@
+// GPU frames of the soft-shadow demo: R32UI sampler tables, one full-screen draw per
+// frame into an RGBA32F framebuffer, read back for the CPU frame loop.
+#include "prism/bluenoise/gl_soft_shadows.hpp"
+
+#include <chrono>
+#include <stdexcept>
+
+#include <glm/glm.hpp>
+
+#include "prism/bluenoise_shaders.hpp"
+#include "prism/gl/framebuffer.hpp"
+#include "prism/gl/gl.hpp"
+#include "prism/render/program_cache.hpp"
+
+namespace prism::bluenoise {
+
+namespace {
+
+// A 2D R32UI texture (nearest filtering) that deletes itself.
+class UintTexture {
+  public:
+    UintTexture() { glGenTextures(1, &id_); }
+    ~UintTexture() { glDeleteTextures(1, &id_); }
+    UintTexture(const UintTexture&) = delete;
+    UintTexture& operator=(const UintTexture&) = delete;
+
+    void upload(int unit, int width, int height, const std::vector<std::uint32_t>& values) {
+        if (values.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height))
+            throw std::invalid_argument("prism::bluenoise: table size does not match its values");
+        glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
+        glBindTexture(GL_TEXTURE_2D, id_);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_R32UI, width, height, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, values.data());
+    }
+
+  private:
+    GLuint id_ = 0;
+};
+
+}  // namespace
+
+struct GlSoftShadows::Resources {
+    Resources(int w, int h) : framebuffer(w, h, gl::ColorFormat::Rgba32F), programs(bluenoise_shaders::kCatalog) {
+        glGenVertexArrays(1, &vao);
+    }
+    ~Resources() { glDeleteVertexArrays(1, &vao); }
+    gl::Framebuffer framebuffer;
+    render::ProgramCache programs;
+    UintTexture mask, seeds, stack;
+    GLuint vao = 0;
+};
+
+GlSoftShadows::GlSoftShadows(int width, int height) : gl_(std::make_unique<Resources>(width, height)) {}
+GlSoftShadows::~GlSoftShadows() = default;
+
+RealImage GlSoftShadows::render(const SoftShadowScene& scene, StochasticSetup& setup, const RenderOptions& options) {
+    if (scene.spheres.size() > 3)
+        throw std::invalid_argument("prism::bluenoise::GlSoftShadows: at most 3 spheres, the scene has " +
+                                    std::to_string(scene.spheres.size()));
+    if (options.width != gl_->framebuffer.width() || options.height != gl_->framebuffer.height())
+        throw std::invalid_argument("prism::bluenoise::GlSoftShadows: options size differs from the framebuffer's");
+    gl::Program& program = gl_->programs.get("soft_shadows");
+    program.use();
+    program.set("u_blueNoiseMask", 0);
+    program.set("u_blueNoiseSeeds", 1);
+    program.set("u_blueNoiseStack", 2);
+    program.set("u_blueNoiseStackDepth", setup.tables.stackDepth);
+    program.set("u_blueNoiseSampler", static_cast<int>(options.sampler));
+    program.set("u_spp", options.spp);
+    program.set("u_imageSize", glm::vec2(static_cast<float>(options.width), static_cast<float>(options.height)));
+    program.set("u_extent", scene.extent);
+    program.set("u_light",
+                glm::vec4(scene.lightHeight, scene.lightHalfLength, scene.lightHalfWidth, irradianceScale(scene)));
+    const char* names[] = {"u_sphere0", "u_sphere1", "u_sphere2"};
+    for (std::size_t i = 0; i < 3; ++i) {
+        const glm::vec4 s = i < scene.spheres.size() ? glm::vec4(scene.spheres[i].x, scene.spheres[i].y,
+                                                                 scene.spheres[i].z, scene.spheres[i].radius)
+                                                     : glm::vec4(0.0f);
+        program.set(names[i], s);
+    }
+    gl_->mask.upload(0, setup.tables.maskWidth, setup.tables.maskHeight, setup.tables.mask);
+    gl_->stack.upload(2, setup.tables.stackWidth, setup.tables.stackHeight * setup.tables.stackDepth,
+                      setup.tables.stack);
+    return runSoftShadowPipeline(setup, options, [&](const SamplerTables& tables, std::uint32_t frame) {
+        const auto start = std::chrono::steady_clock::now();
+        gl_->seeds.upload(1, tables.seedWidth, tables.seedHeight, tables.seeds);
+        program.use();
+        program.set("u_frame", static_cast<unsigned>(frame));
+        gl_->framebuffer.bind();
+        glBindVertexArray(gl_->vao);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        const image::ImageF pixels = gl_->framebuffer.readImageF();
+        gl::throwIfGlError("drawing the soft-shadow demo");
+        std::vector<double> values(static_cast<std::size_t>(options.width) * static_cast<std::size_t>(options.height));
+        for (std::size_t i = 0; i < values.size(); ++i) values[i] = pixels.data[i * 4];
+        lastMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        return values;
+    });
+}
+
+}  // namespace prism::bluenoise
