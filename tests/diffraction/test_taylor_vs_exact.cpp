@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "prism/diffraction/stam_brdf.hpp"
+#include "prism/diffraction/taylor_bound.hpp"
 
 using namespace prism::diffraction;
 
@@ -65,4 +66,19 @@ TEST(DiffractionTaylorVsExact, MeanSubtractionIsWhatMakesTheSeriesConverge) {
     const double rawError = std::abs(std::norm(taylorSpectra(raw, 20).evaluate(f, 0.0, k, w, window)) - exactPower);
     EXPECT_LT(centredError, 1e-3 * exactPower);
     EXPECT_GT(rawError, 100.0 * centredError);
+}
+
+TEST(DiffractionTaylorVsExact, ConstantOffsetChangesNothing) {
+    // StamBrdf subtracts the mean: a 5 um offset neither raises N (it would need > 200 terms)
+    // nor changes the BRDF.
+    const HeightField plain = sinusoidGrating({.periodNm = 2500.0, .amplitudeNm = 150.0, .periods = 8});
+    HeightField lifted = plain;
+    for (double& h : lifted.heightsNm) h += 5000.0;
+    const StamBrdf a(plain, StamBrdf::Options{}), b(lifted, StamBrdf::Options{});
+    EXPECT_EQ(a.terms(), b.terms());
+    EXPECT_EQ(a.terms(), termsForTolerance(150.0, kLambdaMinNm, 1e-6));
+    for (double theta : {0.0, 12.709, 20.0}) {
+        const double va = a.spectral(fromAngles(0, 0), fromAngles(theta, 0), 550.0);
+        EXPECT_NEAR(b.spectral(fromAngles(0, 0), fromAngles(theta, 0), 550.0), va, 1e-9 * (1.0 + va)) << theta;
+    }
 }
