@@ -2,6 +2,7 @@
 #include "prism/diffraction/taylor_bound.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
 
@@ -30,10 +31,12 @@ int termsForTolerance(double maxHeightNm, double minWavelengthNm, double toleran
     for (int n = 0; n <= kMaxTaylorTerms; ++n) {
         if (taylorErrorBound(x, n) <= tolerance) return n;
     }
-    throw TooManyTermsError("a height of " + std::to_string(maxHeightNm) + " nm at " + std::to_string(minWavelengthNm) +
-                            " nm needs more than " + std::to_string(kMaxTaylorTerms) +
-                            " Taylor terms for tolerance " + std::to_string(tolerance) +
-                            "; lower the height (subtract the mean) or use the exact path");
+    char message[256];
+    std::snprintf(message, sizeof message,
+                  "a height of %g nm at %g nm needs more than %d Taylor terms for tolerance %g; lower the height "
+                  "(subtract the mean) or use the exact path",
+                  maxHeightNm, minWavelengthNm, kMaxTaylorTerms, tolerance);
+    throw TooManyTermsError(message);
 }
 
 }  // namespace prism::diffraction
