@@ -100,6 +100,9 @@ IntegratedTables buildIntegratedTables(const SpectralTables& a) {
                     if (n > 0) factor *= Complex{0.0, ks / n};
                     b[n] = factor * sampleSpectral(a, n, u / wl.wavelengthNm, v / wl.wavelengthNm);
                 }
+                bool any = false;
+                for (const Complex& c : b) any = any || c != Complex{0.0, 0.0};
+                if (!any) continue;  // outside every window: nothing to add (most texels of a 1-row field)
                 for (int n = 0; n <= a.terms; ++n) {
                     for (int m = 0; m <= a.terms; ++m) {
                         const double re = (b[n] * std::conj(b[m])).real();
