@@ -46,14 +46,13 @@ class DiffractionGl : public ::testing::Test {
     template <typename Cpu>
     static double stripError(const DiffractionTextures& textures, double incidenceDeg, Cpu cpu) {
         prism::gl::Program& program = diffractionPrograms().get(
-            "brdf_strip", {{"DIFFRACTION_INTEGRATED", textures.integrated() ? "1" : "0"}});
+            "brdf_map", {{"DIFFRACTION_INTEGRATED", textures.integrated() ? "1" : "0"}});
         prism::gl::Framebuffer target(kColumns, 1, prism::gl::ColorFormat::Rgba32F);
         target.clear({0.0f, 0.0f, 0.0f, 0.0f});
         const Direction toLight = fromAngles(incidenceDeg, 180.0);
         program.use();
         textures.apply(program);
-        program.set("u_diffractionStripLight", glm::vec3(toLight.x, toLight.y, toLight.z));
-        program.set("u_diffractionStripAngles", glm::vec2(kStartDeg, kStepDeg));
+        program.set("u_diffractionMapAngles", glm::vec4(kStartDeg, kStepDeg, incidenceDeg, 0.0));
         GLuint vao = 0;
         glGenVertexArrays(1, &vao);
         glBindVertexArray(vao);

@@ -6,7 +6,7 @@
 //     using namespace prism::diffraction;
 //     StamBrdf brdf(sinusoidGrating({.amplitudeNm = 60, .periods = 16}), {.tolerance = 1e-4});
 //     DiffractionTextures textures(buildSpectralTables(brdf, {.size = 128}));  // path (a)
-//     prism::gl::Program& program = diffractionPrograms().get("brdf_strip", {{"DIFFRACTION_INTEGRATED", "0"}});
+//     prism::gl::Program& program = diffractionPrograms().get("brdf_map", {{"DIFFRACTION_INTEGRATED", "0"}});
 //     textures.apply(program);   // binds units 0 and 1, sets u_diffraction*
 //
 // Needs a current context for its whole life; move-only.

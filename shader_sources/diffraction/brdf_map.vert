@@ -1,5 +1,5 @@
-// BRDF strip: one full-screen triangle from gl_VertexID (no attributes); the fragment stage
-// turns each pixel column into an outgoing angle.
+// BRDF map: one full-screen triangle from gl_VertexID (no attributes); the fragment stage
+// turns each pixel into a pair of angles in the plane of incidence.
 #include <version.glsl>
 
 void main() {
