@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "prism/diffraction/lookup_tables.hpp"
 #include "prism/diffraction/spectrum.hpp"
 
 using namespace prism::diffraction;
@@ -129,4 +130,19 @@ TEST(DiffractionHeightFields, UnreadablePngIsAClearError) {
     std::filesystem::resize_file(truncated, 60);
     EXPECT_THROW(loadHeightFieldPng(truncated, 10.0, 100.0), std::runtime_error);
     EXPECT_THROW(loadHeightFieldPng(tmpPath("h8.png"), -1.0, 100.0), std::runtime_error);
+}
+
+TEST(DiffractionHeightFields, DocsBringYourOwnHeightField) {
+    // docs/diffraction.md, "Bring your own height field", with a 32 x 32 ridge PNG.
+    std::vector<int> ridges;
+    for (int y = 0; y < 32; ++y) {
+        for (int x = 0; x < 32; ++x) ridges.push_back((x % 8) < 3 ? 255 : 0);
+    }
+    const std::string path = tmpPath("ridges.png");
+    writeGreyPng(path, 32, 32, 8, ridges);
+    auto field = prism::diffraction::loadHeightFieldPng(path, /*nm per pixel*/ 100, /*height scale nm*/ 150);
+    prism::diffraction::StamBrdf brdf(field, {.tolerance = 1e-4});
+    auto tables = prism::diffraction::buildIntegratedTables(prism::diffraction::buildSpectralTables(brdf, {.size = 64}));
+    EXPECT_EQ(tables.terms, brdf.terms());
+    EXPECT_EQ(tables.bytes(), (2u * brdf.terms() + 1u) * 64u * 64u * 3u * sizeof(float));
 }
