@@ -79,7 +79,7 @@ RgbImage exactMap(const HeightField& field) {
 
 RgbImage gpuMap(const DiffractionTextures& textures) {
     prism::gl::Program& program =
-        diffractionPrograms().get("brdf_map", {{"DIFFRACTION_INTEGRATED", textures.integrated() ? "1" : "0"}});
+        diffractionPrograms().get("brdf_map", {{"DIFFRACTION_PATH", textures.variant()}});
     prism::gl::Framebuffer target(kMapColumns, kMapRows, prism::gl::ColorFormat::Rgba32F);
     target.clear({0, 0, 0, 0});
     program.use();
@@ -277,7 +277,7 @@ int main(int argc, char** argv) {
         p.path = path, p.terms = terms, p.stepNm = step, p.size = size;
         p.error = compare(exact, gpuMap(*textures));
         prism::gl::Program& program = diffractionPrograms().get(
-            "diffraction", {{"DIFFRACTION_INTEGRATED", path == 'b' ? "1" : "0"}, {"DIRECTIONAL_LIGHTS", "1"}, {"POINT_LIGHTS", "0"}});
+            "diffraction", {{"DIFFRACTION_PATH", textures->variant()}, {"DIRECTIONAL_LIGHTS", "1"}, {"POINT_LIGHTS", "0"}});
         target.bind();
         prism::setFrameUniforms(program, scene.camera, 1.0f, scene.lights, glm::mat4(1.0f), scene.material);
         program.set("u_diffractionTangent", glm::vec3(1.0f, 0.0f, 0.0f));

@@ -2,23 +2,30 @@
 // mirror's specular peak) as linear sRGB under D65, from the lookup tables that
 // prism_diffraction_core builds (runtime/diffraction, lookup_tables.hpp; docs/diffraction.md).
 // Both directions are unit vectors in the surface's tangent frame (z = normal, x = across the
-// grooves). DIFFRACTION_INTEGRATED picks the path:
+// grooves). DIFFRACTION_PATH picks the path:
 //   0 (a): per wavelength, P = sum_n (i k w s)^n / n! H_n(u / lambda, v / lambda) from the RG
 //          layers 0..N of u_diffractionTables, |P|^2 weighted by u_diffractionWavelengths;
-//   1 (b): sum_t w^t T_t(u, v) from the RGB layers 0..2N (pre-integrated over wavelength).
+//   1 (b): sum_t w^t T_t(u, v) from the RGB layers 0..2N (pre-integrated over wavelength);
+//   2 (c): path b's sum tabulated at u_diffractionSlices values of w: one trilinear fetch
+//          from u_diffractionVolume.
 // N (u_diffractionTerms) and the wavelengths (u_diffractionWavelengthCount) are uniforms.
-#pragma prism variant DIFFRACTION_INTEGRATED
+#pragma prism variant DIFFRACTION_PATH 0 1 2
 #include <math_utils.glsl>
 
-#ifndef DIFFRACTION_INTEGRATED
-#define DIFFRACTION_INTEGRATED 0
+#ifndef DIFFRACTION_PATH
+#define DIFFRACTION_PATH 0
 #endif
 
-uniform sampler2DArray u_diffractionTables;  // linear filtering, clamp to edge
-uniform int u_diffractionTerms;              // N
 uniform float u_diffractionTableSize;        // S texels per side
 uniform float u_diffractionExtent;           // table covers [-extent, extent]^2
-#if !DIFFRACTION_INTEGRATED
+#if DIFFRACTION_PATH == 2
+uniform sampler3D u_diffractionVolume;       // linear filtering, clamp to edge
+uniform float u_diffractionSlices;           // K slices of w in [-2, 0]
+#else
+uniform sampler2DArray u_diffractionTables;  // linear filtering, clamp to edge
+uniform int u_diffractionTerms;              // N
+#endif
+#if DIFFRACTION_PATH == 0
 uniform float u_diffractionHeightScale;      // s = max |h| in nm
 uniform sampler2D u_diffractionWavelengths;  // 1 row: rgb = weight, a = wavelength in nm
 uniform int u_diffractionWavelengthCount;
@@ -36,7 +43,10 @@ vec3 diffractionRgb(vec3 toLight, vec3 toViewer) {
     float ratio = (1.0 + dot(toLight, toViewer)) / uvw.z;
     float geometry = ratio * ratio / (toLight.z * toViewer.z);      // G / w^2
     vec3 sum = vec3(0.0);
-#if DIFFRACTION_INTEGRATED
+#if DIFFRACTION_PATH == 2
+    float slice = clamp((uvw.z + 2.0) * 0.5 * (u_diffractionSlices - 1.0), 0.0, u_diffractionSlices - 1.0);
+    sum = texture(u_diffractionVolume, vec3(diffractionTexcoord(uvw.xy), (slice + 0.5) / u_diffractionSlices)).rgb;
+#elif DIFFRACTION_PATH == 1
     vec2 tc = diffractionTexcoord(uvw.xy);
     float wPower = 1.0;
     for (int t = 0; t <= 2 * u_diffractionTerms; ++t) {

@@ -53,7 +53,7 @@ class DiffractionMaterialGl : public ::testing::Test {
         prism::gl::Framebuffer target(kSize, kSize, prism::gl::ColorFormat::Rgba32F);
         target.clear({0, 0, 0, 0});
         prism::gl::Program& program = diffractionPrograms().get(
-            "diffraction", {{"DIFFRACTION_INTEGRATED", textures.integrated() ? "1" : "0"},
+            "diffraction", {{"DIFFRACTION_PATH", textures.variant()},
                             {"DIRECTIONAL_LIGHTS", std::to_string(directionalSlots)},
                             {"POINT_LIGHTS", "0"}});
         prism::setFrameUniforms(program, camera_, 1.0f, lights, glm::mat4(1.0f), material_);

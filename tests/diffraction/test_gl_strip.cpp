@@ -46,7 +46,7 @@ class DiffractionGl : public ::testing::Test {
     template <typename Cpu>
     static double stripError(const DiffractionTextures& textures, double incidenceDeg, Cpu cpu) {
         prism::gl::Program& program = diffractionPrograms().get(
-            "brdf_map", {{"DIFFRACTION_INTEGRATED", textures.integrated() ? "1" : "0"}});
+            "brdf_map", {{"DIFFRACTION_PATH", textures.variant()}});
         prism::gl::Framebuffer target(kColumns, 1, prism::gl::ColorFormat::Rgba32F);
         target.clear({0.0f, 0.0f, 0.0f, 0.0f});
         const Direction toLight = fromAngles(incidenceDeg, 180.0);
@@ -113,4 +113,15 @@ TEST_F(DiffractionGl, OnlyTheChosenPathIsUploaded) {
     EXPECT_TRUE(b.integrated());
     EXPECT_EQ(a.bytes(), spectral.bytes() + spectral.wavelengths.size() * 4 * sizeof(float));
     EXPECT_EQ(b.bytes(), integrated.bytes());
+}
+
+TEST_F(DiffractionGl, VolumePathMatchesCpu) {
+    const SpectralTables spectral = buildSpectralTables(grating(), {.size = 128, .wavelengthStepNm = 10});
+    const VolumeTables tables = buildVolumeTables(buildIntegratedTables(spectral), 16);
+    const DiffractionTextures textures(tables);
+    for (double incidence : {0.0, 30.0, 75.0}) {
+        const double error = stripError(textures, incidence, [&](Direction l, Direction v) { return shadeVolume(tables, l, v); });
+        std::printf("path c, incidence %g: relative Linf %.3g\n", incidence, error);
+        EXPECT_LE(error, 1e-3) << incidence;
+    }
 }

@@ -92,3 +92,24 @@ TEST(DiffractionLookupTables, ExtremesStayFinite) {
     EXPECT_THROW(buildSpectralTables(StamBrdf(sinusoidGrating({}), {.path = StamBrdf::Path::Exact}), {}),
                  std::invalid_argument);
 }
+
+TEST(DiffractionLookupTables, VolumePathConvergesToIntegratedWithSlices) {
+    const SpectralTables a = buildSpectralTables(grating(), {.size = 64, .wavelengthStepNm = 20});
+    const IntegratedTables b = buildIntegratedTables(a);
+    double previous = 1e9;
+    for (int slices : {4, 16, 64}) {
+        const VolumeTables c = buildVolumeTables(b, slices);
+        double maxError = 0.0, maxValue = 0.0;
+        for (double theta = -80.0; theta <= 80.0; theta += 0.5) {
+            const Direction wi = fromAngles(30.0, 180.0), wr = fromAngles(theta, 0.0);
+            const LinearRgb want = shadeIntegrated(b, wi, wr);
+            maxError = std::max(maxError, channelMax(minus(shadeVolume(c, wi, wr), want)));
+            maxValue = std::max(maxValue, channelMax(want));
+        }
+        std::printf("path c, %d slices vs path b: relative Linf %.3g\n", slices, maxError / maxValue);
+        EXPECT_LT(maxError / maxValue, previous);
+        previous = maxError / maxValue;
+    }
+    EXPECT_LT(previous, 0.01);
+    EXPECT_THROW(buildVolumeTables(b, 1), std::invalid_argument);
+}

@@ -29,7 +29,7 @@ unsigned makeArray(int size, int layers, GLenum internalFormat, GLenum format, c
 }  // namespace
 
 DiffractionTextures::DiffractionTextures(const SpectralTables& t)
-    : integrated_(false), size_(t.size), terms_(t.terms), extent_(t.frequencyExtent), heightScale_(t.heightScaleNm) {
+    : path_(0), size_(t.size), terms_(t.terms), extent_(t.frequencyExtent), heightScale_(t.heightScaleNm) {
     tables_ = makeArray(t.size, t.terms + 1, GL_RG32F, GL_RG, t.texels);
     std::vector<float> row;
     for (const WavelengthRgb& w : t.wavelengths) {
@@ -48,8 +48,24 @@ DiffractionTextures::DiffractionTextures(const SpectralTables& t)
 }
 
 DiffractionTextures::DiffractionTextures(const IntegratedTables& t)
-    : integrated_(true), size_(t.size), terms_(t.terms), extent_(kIntegratedExtent) {
+    : path_(1), size_(t.size), terms_(t.terms), extent_(kIntegratedExtent) {
     tables_ = makeArray(t.size, 2 * t.terms + 1, GL_RGB32F, GL_RGB, t.texels);
+    bytes_ = t.bytes();
+}
+
+DiffractionTextures::DiffractionTextures(const VolumeTables& t)
+    : path_(2), size_(t.size), slices_(t.slices), extent_(kIntegratedExtent) {
+    glGenTextures(1, &tables_);
+    glBindTexture(GL_TEXTURE_3D, tables_);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexImage3D(GL_TEXTURE_3D, 0, GL_RGB32F, t.size, t.size, t.slices, 0, GL_RGB, GL_FLOAT, t.texels.data());
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+    glBindTexture(GL_TEXTURE_3D, 0);
+    gl::throwIfGlError("uploading the diffraction volume");
     bytes_ = t.bytes();
 }
 
@@ -60,10 +76,10 @@ DiffractionTextures::DiffractionTextures(DiffractionTextures&& o) noexcept { *th
 DiffractionTextures& DiffractionTextures::operator=(DiffractionTextures&& o) noexcept {
     if (this != &o) {
         release();
-        integrated_ = o.integrated_;
+        path_ = o.path_;
         tables_ = std::exchange(o.tables_, 0u);
         wavelengths_ = std::exchange(o.wavelengths_, 0u);
-        size_ = o.size_, terms_ = o.terms_, wavelengthCount_ = o.wavelengthCount_;
+        size_ = o.size_, terms_ = o.terms_, wavelengthCount_ = o.wavelengthCount_, slices_ = o.slices_;
         extent_ = o.extent_, heightScale_ = o.heightScale_, bytes_ = o.bytes_;
     }
     return *this;
@@ -77,12 +93,18 @@ void DiffractionTextures::release() noexcept {
 
 void DiffractionTextures::apply(gl::Program& program, int unit) const {
     glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
-    glBindTexture(GL_TEXTURE_2D_ARRAY, tables_);
-    program.set("u_diffractionTables", unit);
-    program.set("u_diffractionTerms", terms_);
     program.set("u_diffractionTableSize", static_cast<float>(size_));
     program.set("u_diffractionExtent", static_cast<float>(extent_));
-    if (!integrated_) {
+    if (path_ == 2) {
+        glBindTexture(GL_TEXTURE_3D, tables_);
+        program.set("u_diffractionVolume", unit);
+        program.set("u_diffractionSlices", static_cast<float>(slices_));
+    } else {
+        glBindTexture(GL_TEXTURE_2D_ARRAY, tables_);
+        program.set("u_diffractionTables", unit);
+        program.set("u_diffractionTerms", terms_);
+    }
+    if (path_ == 0) {
         glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit + 1));
         glBindTexture(GL_TEXTURE_2D, wavelengths_);
         program.set("u_diffractionWavelengths", unit + 1);

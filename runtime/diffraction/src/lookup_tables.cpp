@@ -153,6 +153,43 @@ LinearRgb shadeIntegrated(const IntegratedTables& t, Direction wi, Direction wr)
     return scale(rgb, g.factor);
 }
 
+VolumeTables buildVolumeTables(const IntegratedTables& b, int slices) {
+    if (slices < 2 || slices > 256) throw std::invalid_argument("volume slices must be in 2..256");
+    VolumeTables t;
+    t.size = b.size;
+    t.slices = slices;
+    const std::size_t texels = static_cast<std::size_t>(b.size) * b.size;
+    t.texels.assign(texels * 3 * slices, 0.0f);
+    for (int k = 0; k < slices; ++k) {
+        const double w = -2.0 + 2.0 * k / (slices - 1);
+        for (std::size_t i = 0; i < texels; ++i) {
+            double rgb[3] = {0.0, 0.0, 0.0};
+            double wPower = 1.0;
+            for (int s = 0; s <= 2 * b.terms; ++s) {
+                for (int c = 0; c < 3; ++c) rgb[c] += wPower * b.texels[(s * texels + i) * 3 + c];
+                wPower *= w;
+            }
+            for (int c = 0; c < 3; ++c) t.texels[(k * texels + i) * 3 + c] = static_cast<float>(rgb[c]);
+        }
+    }
+    return t;
+}
+
+LinearRgb shadeVolume(const VolumeTables& t, Direction wi, Direction wr) {
+    const StamGeometry g = stamGeometry(wi, wr);
+    LinearRgb rgb;
+    if (g.factor == 0.0) return rgb;
+    const Bilinear b = bilinearAt(g.u, g.v, kIntegratedExtent, t.size);
+    // Along w: slice centres at k = (w + 2) / 2 * (K - 1), clamped like GL_CLAMP_TO_EDGE.
+    const double z = std::min(std::max((g.w + 2.0) / 2.0 * (t.slices - 1), 0.0), t.slices - 1.0);
+    const int k0 = std::min(static_cast<int>(std::floor(z)), t.slices - 1), k1 = std::min(k0 + 1, t.slices - 1);
+    const double fz = z - k0;
+    const double c0[3] = {sample<3>(t.texels, t.size, k0, b, 0), sample<3>(t.texels, t.size, k0, b, 1), sample<3>(t.texels, t.size, k0, b, 2)};
+    const double c1[3] = {sample<3>(t.texels, t.size, k1, b, 0), sample<3>(t.texels, t.size, k1, b, 1), sample<3>(t.texels, t.size, k1, b, 2)};
+    rgb = {c0[0] * (1 - fz) + c1[0] * fz, c0[1] * (1 - fz) + c1[1] * fz, c0[2] * (1 - fz) + c1[2] * fz};
+    return scale(rgb, g.factor);
+}
+
 LinearRgb shadeReference(const StamBrdf& brdf, Direction wi, Direction wr, const std::vector<SpectralWeight>& weights) {
     return xyzToLinearSrgb(brdf.xyz(wi, wr, weights));
 }

@@ -6,7 +6,7 @@
 //     using namespace prism::diffraction;
 //     StamBrdf brdf(sinusoidGrating({.amplitudeNm = 60, .periods = 16}), {.tolerance = 1e-4});
 //     DiffractionTextures textures(buildSpectralTables(brdf, {.size = 128}));  // path (a)
-//     prism::gl::Program& program = diffractionPrograms().get("brdf_map", {{"DIFFRACTION_INTEGRATED", "0"}});
+//     prism::gl::Program& program = diffractionPrograms().get("brdf_map", {{"DIFFRACTION_PATH", textures.variant()}});
 //     textures.apply(program);   // binds units 0 and 1, sets u_diffraction*
 //
 // Needs a current context for its whole life; move-only.
@@ -24,13 +24,16 @@ class DiffractionTextures {
   public:
     explicit DiffractionTextures(const SpectralTables& tables);    // path (a): RG32F layers + wavelengths
     explicit DiffractionTextures(const IntegratedTables& tables);  // path (b): RGB32F layers
+    explicit DiffractionTextures(const VolumeTables& tables);      // path (c): RGB32F 3D texture
     ~DiffractionTextures();
     DiffractionTextures(DiffractionTextures&& other) noexcept;
     DiffractionTextures& operator=(DiffractionTextures&& other) noexcept;
     DiffractionTextures(const DiffractionTextures&) = delete;
     DiffractionTextures& operator=(const DiffractionTextures&) = delete;
 
-    bool integrated() const { return integrated_; }
+    bool integrated() const { return path_ != 0; }
+    // The DIFFRACTION_PATH variant value these tables need: "0" (a), "1" (b) or "2" (c).
+    const char* variant() const { return path_ == 0 ? "0" : path_ == 1 ? "1" : "2"; }
     std::size_t bytes() const { return bytes_; }  // GPU memory of the tables
     // Binds the tables to texture unit `unit` (and the wavelengths to unit + 1 on path a) and
     // sets the program's u_diffraction* uniforms.
@@ -38,9 +41,9 @@ class DiffractionTextures {
 
   private:
     void release() noexcept;
-    bool integrated_ = false;
+    int path_ = 0;
     unsigned tables_ = 0, wavelengths_ = 0;
-    int size_ = 0, terms_ = 0, wavelengthCount_ = 0;
+    int size_ = 0, terms_ = 0, wavelengthCount_ = 0, slices_ = 0;
     double extent_ = 0.0, heightScale_ = 0.0;
     std::size_t bytes_ = 0;
 };

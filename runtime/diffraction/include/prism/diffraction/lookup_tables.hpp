@@ -7,7 +7,9 @@
 //   (b) integrated tables (after Dhillon et al. 2014): layer t (0..2N) holds, on (u, v) in
 //       [-2, 2]^2, T_t = sum_lambda rgb(lambda) sum_{n+m=t} Re[b_n conj(b_m)], b_n =
 //       (i k s)^n / n! H_n(u / lambda, v / lambda); the shader needs only rgb = sum_t w^t T_t.
-// Both times G / w^2 (stam_brdf.hpp). Texel i sits at (i - S/2) * cell, so frequency 0 is a
+//   (c) volume: path b's sum_t w^t T_t tabulated at K slices of w in [-2, 0] (a 3D RGB texture):
+//       one trilinear fetch per pixel and light instead of 2N + 1.
+// All times G / w^2 (stam_brdf.hpp). Texel i sits at (i - S/2) * cell, so frequency 0 is a
 // texel centre; lookups are bilinear with GL's clamp-to-edge rules.
 //
 //     using namespace prism::diffraction;
@@ -52,14 +54,24 @@ struct IntegratedTables {
     std::size_t bytes() const { return texels.size() * sizeof(float); }
 };
 
+struct VolumeTables {
+    int size = 0;
+    int slices = 0;                // K, at w_k = -2 + 2k / (K - 1)
+    std::vector<float> texels;     // slice-major, row-major, 3 floats (linear sRGB) per texel
+    std::size_t bytes() const { return texels.size() * sizeof(float); }
+};
+
 inline constexpr double kIntegratedExtent = 2.0;  // |u|, |v| <= 2
 
 // Throws std::invalid_argument for an Exact-path brdf (no Taylor spectra) or bad options.
 SpectralTables buildSpectralTables(const StamBrdf& brdf, const TableOptions& options);
 IntegratedTables buildIntegratedTables(const SpectralTables& spectral);
+// Throws std::invalid_argument for fewer than 2 or more than 256 slices.
+VolumeTables buildVolumeTables(const IntegratedTables& integrated, int slices);
 
 LinearRgb shadeSpectral(const SpectralTables& tables, Direction toLight, Direction toViewer);
 LinearRgb shadeIntegrated(const IntegratedTables& tables, Direction toLight, Direction toViewer);
+LinearRgb shadeVolume(const VolumeTables& tables, Direction toLight, Direction toViewer);
 
 // The table-free reference: xyzToLinearSrgb(brdf.xyz(...)).
 LinearRgb shadeReference(const StamBrdf& brdf, Direction toLight, Direction toViewer,
