@@ -1,6 +1,6 @@
 // prism_bench_diffraction: the diffraction shader's accuracy/speed trade (docs/diffraction.md).
 // Surface: a CD-like track profile (1600 nm pitch, 500 nm wide, 110 nm deep grooves, 16 tracks).
-// For each point (path a or b, Taylor terms N, wavelength step, table size) it renders
+// For each point (path a, b or c, Taylor terms N, wavelength step, table size, w slices of c) it renders
 //   - the error map: view angle -80..80 deg (columns) x light incidence 0..80 deg (rows) in the
 //     plane of incidence (brdf_map.frag) into RGBA32F, compared with the exact path (FFT of
 //     exp(i k w h) per wavelength and direction, 1 nm steps) after a unit white light's exposure
@@ -178,7 +178,7 @@ double medianFrameMs(prism::gl::Program& program, const prism::GpuMesh& mesh, co
 
 struct Point {
     char path = 'a';
-    int terms = 0, stepNm = 5, size = 256;
+    int terms = 0, stepNm = 5, size = 256, slices = 0;  // slices: path c only
     Error error;
     double frameMs = 0, ratio = 0;
     std::size_t bytes = 0;
@@ -212,14 +212,15 @@ void writeSvg(const std::string& path, const std::vector<Point>& points, double 
     svg << "<line x1='" << X(4 * phongMs) << "' y1='" << top << "' x2='" << X(4 * phongMs) << "' y2='" << bottom << "' stroke='#999' stroke-dasharray='4'/>\n";
     svg << "<text x='" << X(4 * phongMs) + 3 << "' y='" << top + 10 << "'>4x Phong</text>\n";
     for (const Point& p : points) {
-        const char* colour = p.path == 'a' ? "#1f77b4" : "#d62728";
+        const char* colour = p.path == 'a' ? "#1f77b4" : p.path == 'b' ? "#d62728" : "#2ca02c";
         svg << "<circle cx='" << X(p.frameMs) << "' cy='" << Y(p.error.meanLit) << "' r='" << (p.pareto ? 5 : 3) << "' fill='"
             << (p.pareto ? colour : "none") << "' stroke='" << colour << "'><title>path " << p.path << " N=" << p.terms
             << " step=" << p.stepNm << " size=" << p.size << "</title></circle>\n";
     }
     svg << "<text x='" << right - 170 << "' y='" << top + 30 << "' fill='#1f77b4'>path a (per wavelength)</text>\n";
     svg << "<text x='" << right - 170 << "' y='" << top + 45 << "' fill='#d62728'>path b (pre-integrated)</text>\n";
-    svg << "<text x='" << right - 170 << "' y='" << top + 60 << "'>filled: Pareto front</text>\n";
+    svg << "<text x='" << right - 170 << "' y='" << top + 60 << "' fill='#2ca02c'>path c (w volume)</text>\n";
+    svg << "<text x='" << right - 170 << "' y='" << top + 75 << "'>filled: Pareto front</text>\n";
     svg << "</svg>\n";
 }
 
@@ -261,20 +262,22 @@ int main(int argc, char** argv) {
     const double phongMs = medianFrameMs(phong, plate, target, frames);
 
     std::vector<Point> points;
-    const auto addPoint = [&](char path, int terms, int step, int size) {
+    const auto addPoint = [&](char path, int terms, int step, int size, int slices = 0) {
         for (const Point& p : points) {
-            if (p.path == path && p.terms == terms && p.stepNm == step && p.size == size) return;
+            if (p.path == path && p.terms == terms && p.stepNm == step && p.size == size && p.slices == slices) return;
         }
         const StamBrdf brdf(field, {.terms = terms});
         const SpectralTables spectral = buildSpectralTables(brdf, {.size = size, .wavelengthStepNm = step});
         std::unique_ptr<DiffractionTextures> textures;
         if (path == 'a') {
             textures = std::make_unique<DiffractionTextures>(spectral);
-        } else {
+        } else if (path == 'b') {
             textures = std::make_unique<DiffractionTextures>(buildIntegratedTables(spectral));
+        } else {
+            textures = std::make_unique<DiffractionTextures>(buildVolumeTables(buildIntegratedTables(spectral), slices));
         }
         Point p;
-        p.path = path, p.terms = terms, p.stepNm = step, p.size = size;
+        p.path = path, p.terms = terms, p.stepNm = step, p.size = size, p.slices = slices;
         p.error = compare(exact, gpuMap(*textures));
         prism::gl::Program& program = diffractionPrograms().get(
             "diffraction", {{"DIFFRACTION_PATH", textures->variant()}, {"DIRECTIONAL_LIGHTS", "1"}, {"POINT_LIGHTS", "0"}});
@@ -285,8 +288,8 @@ int main(int argc, char** argv) {
         p.frameMs = medianFrameMs(program, plate, target, frames);
         p.ratio = p.frameMs / phongMs;
         p.bytes = textures->bytes();
-        std::printf("  path %c N=%2d step=%2d nm size=%4d: mean dE %.3f (p95 %.3f) | all %.3f (p95 %.3f) | max8 %3d | %8.2f ms (%5.2fx Phong) | %8.2f MiB\n",
-                    p.path, p.terms, p.stepNm, p.size, p.error.meanLit, p.error.p95Lit, p.error.meanAll, p.error.p95All,
+        std::printf("  path %c N=%2d step=%2d nm size=%4d K=%2d: mean dE %.3f (p95 %.3f) | all %.3f (p95 %.3f) | max8 %3d | %8.2f ms (%5.2fx Phong) | %8.2f MiB\n",
+                    p.path, p.terms, p.stepNm, p.size, p.slices, p.error.meanLit, p.error.p95Lit, p.error.meanAll, p.error.p95All,
                     p.error.max8bit, p.frameMs, p.ratio, p.bytes / 1048576.0);
         std::fflush(stdout);
         points.push_back(p);
@@ -295,6 +298,12 @@ int main(int argc, char** argv) {
     const std::vector<int> termsSweep = quick ? std::vector<int>{2, autoTerms} : std::vector<int>{1, 2, 4, 6, 8, 12, 16, 20, 25, 30};
     const std::vector<int> stepSweep = quick ? std::vector<int>{5, 20} : std::vector<int>{1, 2, 5, 10, 20};
     const std::vector<int> sizeSweep = quick ? std::vector<int>{64, 256} : std::vector<int>{64, 128, 256, 512, 1024};
+    for (int size : quick ? std::vector<int>{256} : std::vector<int>{256, 512, 1024}) {
+        for (int slices : {8, 16, 32}) addPoint('c', autoTerms, 5, size, slices);
+    }
+    if (!quick) {
+        for (int n : {3, 6}) addPoint('c', n, 5, 1024, 16);
+    }
     for (char path : {'b', 'a'}) {
         for (int n : termsSweep) addPoint(path, n, 5, 256);
         for (int s : stepSweep) addPoint(path, autoTerms, s, 256);
@@ -323,26 +332,27 @@ int main(int argc, char** argv) {
         if (p.pareto) front.push_back(p);
     }
     std::sort(front.begin(), front.end(), [](const Point& a, const Point& b) { return a.frameMs < b.frameMs; });
-    std::printf("\n# Pareto front (frame time vs mean lit dE2000)\n| path | N | step nm | table | mean dE | p95 dE | max 8-bit | ms | x Phong | MiB |\n|---|---|---|---|---|---|---|---|---|---|\n");
+    std::printf("\n# Pareto front (frame time vs mean lit dE2000)\n| path | N | step nm | table | K | mean dE | p95 dE | max 8-bit | ms | x Phong | MiB |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (const Point& p : front) {
-        std::printf("| %c | %d | %d | %d^2 | %.3f | %.3f | %d | %.2f | %.2f | %.2f |\n", p.path, p.terms, p.stepNm, p.size,
-                    p.error.meanLit, p.error.p95Lit, p.error.max8bit, p.frameMs, p.ratio, p.bytes / 1048576.0);
+        std::printf("| %c | %d | %d | %d^2 | %s | %.3f | %.3f | %d | %.2f | %.2f | %.2f |\n", p.path, p.terms, p.stepNm, p.size,
+                    p.slices ? std::to_string(p.slices).c_str() : "-", p.error.meanLit, p.error.p95Lit, p.error.max8bit, p.frameMs, p.ratio, p.bytes / 1048576.0);
     }
     const Point* best = nullptr;
     for (const Point& p : front) {
         if (p.error.meanLit <= 1.0 && p.error.p95Lit <= 2.0 && (!best || p.frameMs < best->frameMs)) best = &p;
     }
     if (best) {
-        std::printf("\n# recommended default: path %c, N = %d, %d nm, %d^2 tables: mean dE2000 %.3f (target <= 1), %.2f ms = %.2fx Phong (target <= 4x) %s\n",
-                    best->path, best->terms, best->stepNm, best->size, best->error.meanLit, best->frameMs, best->ratio,
+        std::printf("\n# recommended default: path %c, N = %d, %d nm, %d^2 tables%s: mean dE2000 %.3f (target <= 1), %.2f ms = %.2fx Phong (target <= 4x) %s\n",
+                    best->path, best->terms, best->stepNm, best->size,
+                    best->slices ? (", " + std::to_string(best->slices) + " w slices").c_str() : "", best->error.meanLit, best->frameMs, best->ratio,
                     best->ratio <= 4.0 ? "MET" : "NOT MET");
     } else {
         std::printf("\n# no point reaches mean dE2000 <= 1 with p95 <= 2\n");
     }
     std::ofstream csv(csvPath);
-    csv << "path,terms,step_nm,table_size,mean_de_lit,p95_de_lit,mean_de_all,p95_de_all,max_8bit,frame_ms,ratio_phong,table_bytes,pareto\n";
+    csv << "path,terms,step_nm,table_size,slices,mean_de_lit,p95_de_lit,mean_de_all,p95_de_all,max_8bit,frame_ms,ratio_phong,table_bytes,pareto\n";
     for (const Point& p : points) {
-        csv << p.path << ',' << p.terms << ',' << p.stepNm << ',' << p.size << ',' << p.error.meanLit << ',' << p.error.p95Lit << ','
+        csv << p.path << ',' << p.terms << ',' << p.stepNm << ',' << p.size << ',' << p.slices << ',' << p.error.meanLit << ',' << p.error.p95Lit << ','
             << p.error.meanAll << ',' << p.error.p95All << ',' << p.error.max8bit << ',' << p.frameMs << ',' << p.ratio << ','
             << p.bytes << ',' << (p.pareto ? 1 : 0) << '\n';
     }
