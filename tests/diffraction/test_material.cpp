@@ -39,7 +39,7 @@ TEST(DiffractionMaterial, HeaderExample) {
 TEST(DiffractionMaterial, DefaultsAndPathA) {
     const DiffractionMaterial m =
         parseDiffractionMaterial(json::parse(R"({"height_field": {"type": "cd", "size": 64}, "path": "a", "terms": 4})"), "", ".");
-    EXPECT_FALSE(m.integrated);
+    EXPECT_EQ(m.path, 'a');
     EXPECT_EQ(m.wavelengthStepNm, 5);
     EXPECT_EQ(m.tableSize, 512);
     EXPECT_EQ(m.terms, 4);
@@ -48,6 +48,19 @@ TEST(DiffractionMaterial, DefaultsAndPathA) {
         json::parse(R"({"height_field": {"type": "snake", "size": 32}, "path": "a", "terms": 2, "table_size": 16})"), "", ".");
     const MaterialTables tables = buildMaterialTables(snake, makeBrdf(snake));
     EXPECT_TRUE(tables.spectral.has_value());
+    EXPECT_FALSE(tables.integrated.has_value());
+    EXPECT_FALSE(tables.volume.has_value());
+}
+
+TEST(DiffractionMaterial, DefaultPathIsTheVolume) {
+    const DiffractionMaterial m = parseDiffractionMaterial(
+        json::parse(R"({"height_field": {"type": "sinusoid", "amplitude_nm": 60, "periods": 4}, "table_size": 16, "w_slices": 4})"), "",
+        ".");
+    EXPECT_EQ(m.path, 'c');
+    const MaterialTables tables = buildMaterialTables(m, makeBrdf(m));
+    ASSERT_TRUE(tables.volume.has_value());
+    EXPECT_EQ(tables.volume->slices, 4);
+    EXPECT_FALSE(tables.spectral.has_value());
     EXPECT_FALSE(tables.integrated.has_value());
 }
 
@@ -68,8 +81,8 @@ TEST(DiffractionMaterial, ErrorsNameTheJsonPointer) {
               p + "/height_field/period_nm: expected a number in (0, 1e+09]");
     EXPECT_EQ(errorOf(R"({"height_field": {"type": "sinusoid"}, "wavelength_step_nm": 3})"),
               p + "/wavelength_step_nm: expected 1, 2, 5, 10 or 20");
-    EXPECT_EQ(errorOf(R"({"height_field": {"type": "sinusoid"}, "path": "c"})"),
-              p + "/path: expected \"a\" (per wavelength) or \"b\" (pre-integrated tables)");
+    EXPECT_EQ(errorOf(R"({"height_field": {"type": "sinusoid"}, "path": "d"})"),
+              p + "/path: expected \"a\" (per wavelength), \"b\" (pre-integrated tables) or \"c\" (w volume)");
     EXPECT_NE(errorOf(R"({"height_field": {"type": "sinusoid"}, "colour": 1})").find(p + "/colour: unknown key"), std::string::npos);
     EXPECT_EQ(errorOf(R"({"height_field": {"type": "png", "file": "a.png", "nm_per_pixel": 10}})"),
               p + "/height_field/height_scale_nm: required for a PNG height field");

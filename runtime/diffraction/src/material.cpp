@@ -107,17 +107,19 @@ void parseHeightField(const json& hf, const std::string& p, const std::string& b
 }  // namespace
 
 DiffractionMaterial parseDiffractionMaterial(const json& j, const std::string& p, const std::string& baseDir) {
-    rejectUnknownKeys(j, p, {"height_field", "path", "wavelength_step_nm", "table_size", "tolerance", "terms", "coherence_nm", "tangent"});
+    rejectUnknownKeys(j, p, {"height_field", "path", "w_slices", "wavelength_step_nm", "table_size", "tolerance", "terms",
+                             "coherence_nm", "tangent"});
     DiffractionMaterial m;
     if (!j.contains("height_field")) fail(p + "/height_field", "required");
     parseHeightField(j.at("height_field"), p + "/height_field", baseDir, m);
     if (j.contains("path")) {
         const json& path = j.at("path");
-        if (!path.is_string() || (path != "a" && path != "b")) {
-            fail(p + "/path", "expected \"a\" (per wavelength) or \"b\" (pre-integrated tables)");
+        if (!path.is_string() || (path != "a" && path != "b" && path != "c")) {
+            fail(p + "/path", "expected \"a\" (per wavelength), \"b\" (pre-integrated tables) or \"c\" (w volume)");
         }
-        m.integrated = path == "b";
+        m.path = path.get<std::string>()[0];
     }
+    m.wSlices = integer(j, p, "w_slices", m.wSlices, 2, 256);
     m.wavelengthStepNm = integer(j, p, "wavelength_step_nm", m.wavelengthStepNm, 1, 20);
     if (!isSupportedWavelengthStep(m.wavelengthStepNm)) fail(p + "/wavelength_step_nm", "expected 1, 2, 5, 10 or 20");
     m.tableSize = integer(j, p, "table_size", m.tableSize, 8, 2048);
@@ -163,10 +165,12 @@ StamBrdf makeBrdf(const DiffractionMaterial& m) {
 MaterialTables buildMaterialTables(const DiffractionMaterial& m, const StamBrdf& brdf) {
     MaterialTables t;
     SpectralTables spectral = buildSpectralTables(brdf, {m.tableSize, m.wavelengthStepNm});
-    if (m.integrated) {
+    if (m.path == 'a') {
+        t.spectral = std::move(spectral);
+    } else if (m.path == 'b') {
         t.integrated = buildIntegratedTables(spectral);
     } else {
-        t.spectral = std::move(spectral);
+        t.volume = buildVolumeTables(buildIntegratedTables(spectral), m.wSlices);
     }
     return t;
 }

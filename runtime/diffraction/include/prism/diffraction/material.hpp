@@ -14,7 +14,8 @@
 //               | {type: cd, pitch_nm, pit_depth_nm, pit_width_nm, size, pixel_nm, seed}
 //               | {type: snake, spacing_nm, height_nm, waviness_nm, size, pixel_nm, seed}
 //               | {type: png, file, nm_per_pixel, height_scale_nm}   (file relative to baseDir)
-//   path: "a" | "b" (b)   wavelength_step_nm: 1|2|5|10|20 (5)   table_size: 8..2048 (512)
+//   path: "a" | "b" | "c" (c)   w_slices: 2..256 (8, path c)
+//   wavelength_step_nm: 1|2|5|10|20 (5)   table_size: 8..2048 (512)
 //   tolerance: (0, 1) (1e-3) or terms: 0..200   coherence_nm: > 0 (a quarter of the patch)
 //   tangent: [x, y, z], object-space direction across the grooves ([1, 0, 0])
 #pragma once
@@ -45,7 +46,8 @@ struct PngField {
 struct DiffractionMaterial {
     std::string heightFieldType;  // sinusoid, blazed, cd, snake, png
     std::variant<GratingParams, TrackParams, RidgeParams, PngField> heightField;
-    bool integrated = true;       // path b
+    char path = 'c';              // 'a', 'b' or 'c' (lookup_tables.hpp)
+    int wSlices = 8;              // path c
     int wavelengthStepNm = 5;
     int tableSize = 512;
     double tolerance = 1e-3;
@@ -64,6 +66,7 @@ StamBrdf makeBrdf(const DiffractionMaterial& material);
 struct MaterialTables {
     std::optional<SpectralTables> spectral;      // path a only
     std::optional<IntegratedTables> integrated;  // path b only
+    std::optional<VolumeTables> volume;          // path c only
 };
 MaterialTables buildMaterialTables(const DiffractionMaterial& material, const StamBrdf& brdf);
 
