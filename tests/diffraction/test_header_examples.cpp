@@ -75,7 +75,10 @@ TEST(DiffractionHeaderExamples, LookupTables) {
     IntegratedTables b = buildIntegratedTables(a);
     LinearRgb viaA = shadeSpectral(a, fromAngles(30, 180), fromAngles(30, 0));
     LinearRgb viaB = shadeIntegrated(b, fromAngles(30, 180), fromAngles(30, 0));  // ~ viaA
+    VolumeTables c = buildVolumeTables(b, /*slices of w*/ 16);
+    LinearRgb viaC = shadeVolume(c, fromAngles(30, 180), fromAngles(30, 0));      // ~ viaB
     EXPECT_NEAR(viaA.g, viaB.g, 0.05 * viaA.g);
+    EXPECT_NEAR(viaB.g, viaC.g, 0.01 * viaB.g);
 }
 
 TEST(DiffractionHeaderExamples, ColourDifference) {

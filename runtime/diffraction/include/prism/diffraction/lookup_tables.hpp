@@ -18,6 +18,8 @@
 //     IntegratedTables b = buildIntegratedTables(a);
 //     LinearRgb viaA = shadeSpectral(a, fromAngles(30, 180), fromAngles(30, 0));
 //     LinearRgb viaB = shadeIntegrated(b, fromAngles(30, 180), fromAngles(30, 0));  // ~ viaA
+//     VolumeTables c = buildVolumeTables(b, /*slices of w*/ 16);
+//     LinearRgb viaC = shadeVolume(c, fromAngles(30, 180), fromAngles(30, 0));      // ~ viaB
 #pragma once
 
 #include <cstddef>
