@@ -154,15 +154,19 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     PeaksArgs peaks;
     CLI::App* peaksCmd = app.add_subcommand("peaks", "diffraction peaks in the plane of incidence");
-    peaksCmd->add_option("--height-field", peaks.heightField, "sinusoid, blazed, cd, snake or png")->capture_default_str();
-    peaksCmd->add_option("--period-nm", peaks.periodNm, "grating period d (also names the orders)")->capture_default_str();
+    peaksCmd->add_option("--height-field", peaks.heightField, "sinusoid, blazed, cd, snake or png")
+        ->capture_default_str();
+    peaksCmd->add_option("--period-nm", peaks.periodNm, "grating period d (also names the orders)")
+        ->capture_default_str();
     peaksCmd->add_option("--amplitude-nm", peaks.amplitudeNm, "grating amplitude A")->capture_default_str();
-    peaksCmd->add_option("--incidence-deg", peaks.incidenceDeg, "light angle T from the normal, 0..89.9")->capture_default_str();
+    peaksCmd->add_option("--incidence-deg", peaks.incidenceDeg, "light angle T from the normal, 0..89.9")
+        ->capture_default_str();
     peaksCmd->add_option("--wavelengths-nm", peaks.wavelengthsNm, "comma-separated wavelengths, 300..900 nm")
         ->delimiter(',')
         ->required();
     peaksCmd->add_option("--terms", peaks.terms, "Taylor terms N (default: from --tolerance)");
-    peaksCmd->add_option("--tolerance", peaks.tolerance, "Taylor error bound when --terms is not given")->capture_default_str();
+    peaksCmd->add_option("--tolerance", peaks.tolerance, "Taylor error bound when --terms is not given")
+        ->capture_default_str();
     peaksCmd->add_flag("--exact", peaks.exact, "FFT of exp(i k w h) per sample, no Taylor series");
     peaksCmd->add_flag("--json", peaks.json, "print {\"peaks\":[...]}");
     peaksCmd->add_option("--periods", peaks.periods, "grating periods in the patch")->capture_default_str();

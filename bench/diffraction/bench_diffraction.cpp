@@ -64,8 +64,12 @@ HeightField cdProfile() {
 
 using RgbImage = std::vector<LinearRgb>;  // kMapColumns x kMapRows, row = incidence
 
-Direction lightAt(int row) { return fromAngles(kLightStart + row * kLightStep, 180.0); }
-Direction viewAt(int column) { return fromAngles(kViewStart + column * kViewStep, 0.0); }
+Direction lightAt(int row) {
+    return fromAngles(kLightStart + row * kLightStep, 180.0);
+}
+Direction viewAt(int column) {
+    return fromAngles(kViewStart + column * kViewStep, 0.0);
+}
 
 RgbImage exactMap(const HeightField& field) {
     const StamBrdf exact(field, {.path = StamBrdf::Path::Exact});
@@ -78,8 +82,7 @@ RgbImage exactMap(const HeightField& field) {
 }
 
 RgbImage gpuMap(const DiffractionTextures& textures) {
-    prism::gl::Program& program =
-        diffractionPrograms().get("brdf_map", {{"DIFFRACTION_PATH", textures.variant()}});
+    prism::gl::Program& program = diffractionPrograms().get("brdf_map", {{"DIFFRACTION_PATH", textures.variant()}});
     prism::gl::Framebuffer target(kMapColumns, kMapRows, prism::gl::ColorFormat::Rgba32F);
     target.clear({0, 0, 0, 0});
     program.use();
@@ -118,13 +121,16 @@ Error compare(const RgbImage& exact, const RgbImage& approx) {
     for (std::size_t i = 0; i < exact.size(); ++i) {
         const double cosI = lightAt(static_cast<int>(i) / kMapColumns).z;
         const auto expose = [cosI](LinearRgb c) {
-            return LinearRgb{std::clamp(c.r * cosI, 0.0, 1.0), std::clamp(c.g * cosI, 0.0, 1.0), std::clamp(c.b * cosI, 0.0, 1.0)};
+            return LinearRgb{std::clamp(c.r * cosI, 0.0, 1.0), std::clamp(c.g * cosI, 0.0, 1.0),
+                             std::clamp(c.b * cosI, 0.0, 1.0)};
         };
         const LinearRgb a = expose(exact[i]), b = expose(approx[i]);
         const double de = ciede2000(linearSrgbToLab(a), linearSrgbToLab(b));
         all.push_back(de);
-        const int a8[3] = {int(std::lround(255 * srgbEncode(a.r))), int(std::lround(255 * srgbEncode(a.g))), int(std::lround(255 * srgbEncode(a.b)))};
-        const int b8[3] = {int(std::lround(255 * srgbEncode(b.r))), int(std::lround(255 * srgbEncode(b.g))), int(std::lround(255 * srgbEncode(b.b)))};
+        const int a8[3] = {int(std::lround(255 * srgbEncode(a.r))), int(std::lround(255 * srgbEncode(a.g))),
+                           int(std::lround(255 * srgbEncode(a.b)))};
+        const int b8[3] = {int(std::lround(255 * srgbEncode(b.r))), int(std::lround(255 * srgbEncode(b.g))),
+                           int(std::lround(255 * srgbEncode(b.b)))};
         bool isLit = false;
         for (int k = 0; k < 3; ++k) {
             e.max8bit = std::max(e.max8bit, std::abs(a8[k] - b8[k]));
@@ -189,33 +195,42 @@ void writeSvg(const std::string& path, const std::vector<Point>& points) {
     std::ofstream svg(path);
     const double w = 640, h = 400, left = 60, bottom = 350, top = 20, right = 620;
     double tMin = 1e9, tMax = 0, eMax = 0;
-    for (const Point& p : points) tMin = std::min(tMin, p.ratio), tMax = std::max(tMax, p.ratio), eMax = std::max(eMax, p.error.meanLit);
+    for (const Point& p : points)
+        tMin = std::min(tMin, p.ratio), tMax = std::max(tMax, p.ratio), eMax = std::max(eMax, p.error.meanLit);
     tMin = std::min(tMin, 1.0);
     const double lx0 = std::log10(tMin) - 0.1, lx1 = std::log10(tMax) + 0.1;
     const double ly0 = -2.0, ly1 = std::log10(std::max(eMax, 1.0)) + 0.2;  // dE on a log axis from 0.01
     const auto X = [&](double ms) { return left + (std::log10(ms) - lx0) / (lx1 - lx0) * (right - left); };
-    const auto Y = [&](double de) { return bottom - (std::log10(std::max(de, 0.01)) - ly0) / (ly1 - ly0) * (bottom - top); };
-    svg << "<svg xmlns='http://www.w3.org/2000/svg' width='" << w << "' height='" << h << "' font-family='sans-serif' font-size='11'>\n";
+    const auto Y = [&](double de) {
+        return bottom - (std::log10(std::max(de, 0.01)) - ly0) / (ly1 - ly0) * (bottom - top);
+    };
+    svg << "<svg xmlns='http://www.w3.org/2000/svg' width='" << w << "' height='" << h
+        << "' font-family='sans-serif' font-size='11'>\n";
     svg << "<rect width='100%' height='100%' fill='white'/>\n";
-    svg << "<line x1='" << left << "' y1='" << bottom << "' x2='" << right << "' y2='" << bottom << "' stroke='black'/>\n";
+    svg << "<line x1='" << left << "' y1='" << bottom << "' x2='" << right << "' y2='" << bottom
+        << "' stroke='black'/>\n";
     svg << "<line x1='" << left << "' y1='" << top << "' x2='" << left << "' y2='" << bottom << "' stroke='black'/>\n";
-    svg << "<text x='" << (left + right) / 2 - 120 << "' y='" << h - 12 << "'>cost: frame time / Phong frame time (512x512, llvmpipe, log)</text>\n";
+    svg << "<text x='" << (left + right) / 2 - 120 << "' y='" << h - 12
+        << "'>cost: frame time / Phong frame time (512x512, llvmpipe, log)</text>\n";
     svg << "<text x='12' y='" << top + 10 << "'>mean dE2000 (lit, log)</text>\n";
     for (int d = static_cast<int>(std::ceil(lx0)); d <= lx1; ++d) {
-        svg << "<text x='" << X(std::pow(10, d)) - 8 << "' y='" << bottom + 14 << "'>" << std::pow(10, d) << "</text>\n";
+        svg << "<text x='" << X(std::pow(10, d)) - 8 << "' y='" << bottom + 14 << "'>" << std::pow(10, d)
+            << "</text>\n";
     }
     for (double de : {0.01, 0.1, 1.0, 10.0}) {
         if (std::log10(de) > ly1) break;
         svg << "<text x='" << left - 40 << "' y='" << Y(de) + 4 << "'>" << de << "</text>\n";
     }
-    svg << "<line x1='" << left << "' y1='" << Y(1.0) << "' x2='" << right << "' y2='" << Y(1.0) << "' stroke='#999' stroke-dasharray='4'/>\n";
-    svg << "<line x1='" << X(4.0) << "' y1='" << top << "' x2='" << X(4.0) << "' y2='" << bottom << "' stroke='#999' stroke-dasharray='4'/>\n";
+    svg << "<line x1='" << left << "' y1='" << Y(1.0) << "' x2='" << right << "' y2='" << Y(1.0)
+        << "' stroke='#999' stroke-dasharray='4'/>\n";
+    svg << "<line x1='" << X(4.0) << "' y1='" << top << "' x2='" << X(4.0) << "' y2='" << bottom
+        << "' stroke='#999' stroke-dasharray='4'/>\n";
     svg << "<text x='" << X(4.0) + 3 << "' y='" << top + 10 << "'>4x Phong</text>\n";
     for (const Point& p : points) {
         const char* colour = p.path == 'a' ? "#1f77b4" : p.path == 'b' ? "#d62728" : "#2ca02c";
-        svg << "<circle cx='" << X(p.ratio) << "' cy='" << Y(p.error.meanLit) << "' r='" << (p.pareto ? 5 : 3) << "' fill='"
-            << (p.pareto ? colour : "none") << "' stroke='" << colour << "'><title>path " << p.path << " N=" << p.terms
-            << " step=" << p.stepNm << " size=" << p.size << "</title></circle>\n";
+        svg << "<circle cx='" << X(p.ratio) << "' cy='" << Y(p.error.meanLit) << "' r='" << (p.pareto ? 5 : 3)
+            << "' fill='" << (p.pareto ? colour : "none") << "' stroke='" << colour << "'><title>path " << p.path
+            << " N=" << p.terms << " step=" << p.stepNm << " size=" << p.size << "</title></circle>\n";
     }
     svg << "<text x='" << right - 170 << "' y='" << top + 30 << "' fill='#1f77b4'>path a (per wavelength)</text>\n";
     svg << "<text x='" << right - 170 << "' y='" << top + 45 << "' fill='#d62728'>path b (pre-integrated)</text>\n";
@@ -245,9 +260,11 @@ int main(int argc, char** argv) {
     HeightField centred = field;
     subtractMean(centred);
     const int autoTerms = termsForTolerance(maxAbsHeight(centred), kLambdaMinNm, 1e-6);
-    std::printf("# surface: CD track profile, 1600 nm pitch, 110 nm deep; max |h - mean| = %.1f nm; bound -> N = %d (1e-6)\n",
-                maxAbsHeight(centred), autoTerms);
-    std::printf("# exact reference map (%d x %d, 1 nm, FFT of exp(ikwh) per pixel and wavelength)...\n", kMapColumns, kMapRows);
+    std::printf(
+        "# surface: CD track profile, 1600 nm pitch, 110 nm deep; max |h - mean| = %.1f nm; bound -> N = %d (1e-6)\n",
+        maxAbsHeight(centred), autoTerms);
+    std::printf("# exact reference map (%d x %d, 1 nm, FFT of exp(ikwh) per pixel and wavelength)...\n", kMapColumns,
+                kMapRows);
     const RgbImage exact = exactMap(field);
 
     Scene scene;
@@ -274,13 +291,15 @@ int main(int argc, char** argv) {
         } else if (path == 'b') {
             textures = std::make_unique<DiffractionTextures>(buildIntegratedTables(spectral));
         } else {
-            textures = std::make_unique<DiffractionTextures>(buildVolumeTables(buildIntegratedTables(spectral), slices));
+            textures =
+                std::make_unique<DiffractionTextures>(buildVolumeTables(buildIntegratedTables(spectral), slices));
         }
         Point p;
         p.path = path, p.terms = terms, p.stepNm = step, p.size = size, p.slices = slices;
         p.error = compare(exact, gpuMap(*textures));
         prism::gl::Program& program = diffractionPrograms().get(
-            "diffraction", {{"DIFFRACTION_PATH", textures->variant()}, {"DIRECTIONAL_LIGHTS", "1"}, {"POINT_LIGHTS", "0"}});
+            "diffraction",
+            {{"DIFFRACTION_PATH", textures->variant()}, {"DIRECTIONAL_LIGHTS", "1"}, {"POINT_LIGHTS", "0"}});
         target.bind();
         prism::setFrameUniforms(program, scene.camera, 1.0f, scene.lights, glm::mat4(1.0f), scene.material);
         program.set("u_diffractionTangent", glm::vec3(1.0f, 0.0f, 0.0f));
@@ -293,14 +312,20 @@ int main(int argc, char** argv) {
         p.phongMs = medianFrameMs(phong, plate, target, frames);
         p.ratio = p.frameMs / p.phongMs;
         p.bytes = textures->bytes();
-        std::printf("  path %c N=%2d step=%2d nm size=%4d K=%2d: mean dE %.3f (p95 %.3f) | all %.3f (p95 %.3f) | max8 %3d | %8.2f ms (%7.2fx Phong at %5.2f ms) | %8.2f MiB\n",
-                    p.path, p.terms, p.stepNm, p.size, p.slices, p.error.meanLit, p.error.p95Lit, p.error.meanAll, p.error.p95All,
-                    p.error.max8bit, p.frameMs, p.ratio, p.phongMs, p.bytes / 1048576.0);
+        std::printf(
+            "  path %c N=%2d step=%2d nm size=%4d K=%2d: mean dE %.3f (p95 %.3f) | all %.3f (p95 %.3f) | max8 %3d | "
+            "%8.2f ms (%7.2fx Phong at %5.2f ms) | %8.2f MiB\n",
+            p.path, p.terms, p.stepNm, p.size, p.slices, p.error.meanLit, p.error.p95Lit, p.error.meanAll,
+            p.error.p95All, p.error.max8bit, p.frameMs, p.ratio, p.phongMs, p.bytes / 1048576.0);
         std::fflush(stdout);
         points.push_back(p);
     };
-    std::printf("# Phong, same frame, at the start: %.2f ms (median of %d; each point is timed against Phong right after it)\n# sweeps around N = %d, 5 nm, 256^2:\n", phongMs, frames, autoTerms);
-    const std::vector<int> termsSweep = quick ? std::vector<int>{2, autoTerms} : std::vector<int>{1, 2, 4, 6, 8, 12, 16, 20, 25, 30};
+    std::printf(
+        "# Phong, same frame, at the start: %.2f ms (median of %d; each point is timed against Phong right after "
+        "it)\n# sweeps around N = %d, 5 nm, 256^2:\n",
+        phongMs, frames, autoTerms);
+    const std::vector<int> termsSweep =
+        quick ? std::vector<int>{2, autoTerms} : std::vector<int>{1, 2, 4, 6, 8, 12, 16, 20, 25, 30};
     const std::vector<int> stepSweep = quick ? std::vector<int>{5, 20} : std::vector<int>{1, 2, 5, 10, 20};
     const std::vector<int> sizeSweep = quick ? std::vector<int>{64, 256} : std::vector<int>{64, 128, 256, 512, 1024};
     for (int size : quick ? std::vector<int>{256} : std::vector<int>{256, 512, 1024}) {
@@ -337,29 +362,35 @@ int main(int argc, char** argv) {
         if (p.pareto) front.push_back(p);
     }
     std::sort(front.begin(), front.end(), [](const Point& a, const Point& b) { return a.ratio < b.ratio; });
-    std::printf("\n# Pareto front (cost as a ratio to Phong vs mean lit dE2000)\n| path | N | step nm | table | K | mean dE | p95 dE | max 8-bit | ms | x Phong | MiB |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+    std::printf(
+        "\n# Pareto front (cost as a ratio to Phong vs mean lit dE2000)\n| path | N | step nm | table | K | mean dE | "
+        "p95 dE | max 8-bit | ms | x Phong | MiB |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (const Point& p : front) {
-        std::printf("| %c | %d | %d | %d^2 | %s | %.3f | %.3f | %d | %.2f | %.2f | %.2f |\n", p.path, p.terms, p.stepNm, p.size,
-                    p.slices ? std::to_string(p.slices).c_str() : "-", p.error.meanLit, p.error.p95Lit, p.error.max8bit, p.frameMs, p.ratio, p.bytes / 1048576.0);
+        std::printf("| %c | %d | %d | %d^2 | %s | %.3f | %.3f | %d | %.2f | %.2f | %.2f |\n", p.path, p.terms, p.stepNm,
+                    p.size, p.slices ? std::to_string(p.slices).c_str() : "-", p.error.meanLit, p.error.p95Lit,
+                    p.error.max8bit, p.frameMs, p.ratio, p.bytes / 1048576.0);
     }
     const Point* best = nullptr;
     for (const Point& p : front) {
         if (p.error.meanLit <= 1.0 && p.error.p95Lit <= 2.0 && (!best || p.ratio < best->ratio)) best = &p;
     }
     if (best) {
-        std::printf("\n# recommended default: path %c, N = %d, %d nm, %d^2 tables%s: mean dE2000 %.3f (target <= 1), %.2f ms = %.2fx Phong (target <= 4x) %s\n",
-                    best->path, best->terms, best->stepNm, best->size,
-                    best->slices ? (", " + std::to_string(best->slices) + " w slices").c_str() : "", best->error.meanLit, best->frameMs, best->ratio,
-                    best->ratio <= 4.0 ? "MET" : "NOT MET");
+        std::printf(
+            "\n# recommended default: path %c, N = %d, %d nm, %d^2 tables%s: mean dE2000 %.3f (target <= 1), %.2f ms = "
+            "%.2fx Phong (target <= 4x) %s\n",
+            best->path, best->terms, best->stepNm, best->size,
+            best->slices ? (", " + std::to_string(best->slices) + " w slices").c_str() : "", best->error.meanLit,
+            best->frameMs, best->ratio, best->ratio <= 4.0 ? "MET" : "NOT MET");
     } else {
         std::printf("\n# no point reaches mean dE2000 <= 1 with p95 <= 2\n");
     }
     std::ofstream csv(csvPath);
-    csv << "path,terms,step_nm,table_size,slices,mean_de_lit,p95_de_lit,mean_de_all,p95_de_all,max_8bit,frame_ms,phong_ms,ratio_phong,table_bytes,pareto\n";
+    csv << "path,terms,step_nm,table_size,slices,mean_de_lit,p95_de_lit,mean_de_all,p95_de_all,max_8bit,frame_ms,phong_"
+           "ms,ratio_phong,table_bytes,pareto\n";
     for (const Point& p : points) {
-        csv << p.path << ',' << p.terms << ',' << p.stepNm << ',' << p.size << ',' << p.slices << ',' << p.error.meanLit << ',' << p.error.p95Lit << ','
-            << p.error.meanAll << ',' << p.error.p95All << ',' << p.error.max8bit << ',' << p.frameMs << ',' << p.phongMs << ',' << p.ratio << ','
-            << p.bytes << ',' << (p.pareto ? 1 : 0) << '\n';
+        csv << p.path << ',' << p.terms << ',' << p.stepNm << ',' << p.size << ',' << p.slices << ',' << p.error.meanLit
+            << ',' << p.error.p95Lit << ',' << p.error.meanAll << ',' << p.error.p95All << ',' << p.error.max8bit << ','
+            << p.frameMs << ',' << p.phongMs << ',' << p.ratio << ',' << p.bytes << ',' << (p.pareto ? 1 : 0) << '\n';
     }
     writeSvg(svgPath, points);
     std::printf("# wrote %s and %s\n", csvPath.c_str(), svgPath.c_str());

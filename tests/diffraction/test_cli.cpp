@@ -35,15 +35,17 @@ Result run(const std::string& args) {
 }  // namespace
 
 TEST(DiffractionCli, PeaksJsonFollowsTheGratingEquation) {
-    const Result r = run("peaks --height-field sinusoid --period-nm 2500 --amplitude-nm 150 --incidence-deg 75 "
-                         "--wavelengths-nm 400,550,700 --json");
+    const Result r =
+        run("peaks --height-field sinusoid --period-nm 2500 --amplitude-nm 150 --incidence-deg 75 "
+            "--wavelengths-nm 400,550,700 --json");
     ASSERT_EQ(r.status, 0) << r.output;
     const nlohmann::json j = nlohmann::json::parse(r.output);
     int checked = 0;
     for (const auto& p : j.at("peaks")) {
         const double lambda = p.at("wavelength_nm"), angle = p.at("angle_deg");
         const int order = p.at("order");
-        const double expected = std::asin(std::sin(75.0 * std::numbers::pi / 180.0) + order * lambda / 2500.0) * 180.0 / std::numbers::pi;
+        const double expected =
+            std::asin(std::sin(75.0 * std::numbers::pi / 180.0) + order * lambda / 2500.0) * 180.0 / std::numbers::pi;
         EXPECT_NEAR(angle, expected, 0.05) << lambda << " nm order " << order;
         if (order == 0) {
             EXPECT_DOUBLE_EQ(p.at("relative_intensity").get<double>(), 1.0);
@@ -66,7 +68,8 @@ TEST(DiffractionCli, ExactAndTaylorAgree) {
     const Result taylor = run(args + " --terms 25"), exact = run(args + " --exact");
     ASSERT_EQ(taylor.status, 0);
     ASSERT_EQ(exact.status, 0);
-    const auto a = nlohmann::json::parse(taylor.output).at("peaks"), b = nlohmann::json::parse(exact.output).at("peaks");
+    const auto a = nlohmann::json::parse(taylor.output).at("peaks"),
+               b = nlohmann::json::parse(exact.output).at("peaks");
     ASSERT_EQ(a.size(), b.size());
     for (std::size_t i = 0; i < a.size(); ++i) {
         EXPECT_EQ(a[i].at("order"), b[i].at("order"));
@@ -96,7 +99,8 @@ TEST(DiffractionCli, BadInputExitsTwoWithAMessage) {
         {"peaks --wavelengths-nm 550,950", "outside 300-900 nm"},
         {"peaks --wavelengths-nm 299", "outside 300-900 nm"},
         {"peaks --wavelengths-nm 550 --incidence-deg 95", "--incidence-deg must be in 0..89.9"},
-        {"peaks --wavelengths-nm 550 --height-field png --png /nonexistent/h.png --nm-per-pixel 10 --height-scale-nm 100",
+        {"peaks --wavelengths-nm 550 --height-field png --png /nonexistent/h.png --nm-per-pixel 10 --height-scale-nm "
+         "100",
          "/nonexistent/h.png: error: cannot open"},
         {"peaks --wavelengths-nm 550 --height-field plasma", "unknown --height-field"},
         {"peaks --wavelengths-nm 550 --no-such-flag", "--no-such-flag"},

@@ -12,11 +12,14 @@ using namespace prism::diffraction;
 namespace {
 
 const StamBrdf& grating() {
-    static const StamBrdf brdf(sinusoidGrating({.periodNm = 2500.0, .amplitudeNm = 150.0, .periods = 16}), StamBrdf::Options{});
+    static const StamBrdf brdf(sinusoidGrating({.periodNm = 2500.0, .amplitudeNm = 150.0, .periods = 16}),
+                               StamBrdf::Options{});
     return brdf;
 }
 
-bool finite(const Xyz& c) { return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z); }
+bool finite(const Xyz& c) {
+    return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z);
+}
 
 }  // namespace
 
@@ -59,7 +62,8 @@ TEST(DiffractionExtremes, OppositeDirectionsWhereWVanishes) {
 }
 
 TEST(DiffractionExtremes, ZeroAmplitudeIsAMirror) {
-    const StamBrdf mirror(sinusoidGrating({.periodNm = 2500.0, .amplitudeNm = 0.0, .periods = 16}), StamBrdf::Options{});
+    const StamBrdf mirror(sinusoidGrating({.periodNm = 2500.0, .amplitudeNm = 0.0, .periods = 16}),
+                          StamBrdf::Options{});
     EXPECT_EQ(mirror.terms(), 0);
     // Normal incidence: exactly 1 at the specular direction (the normalisation of the relative BRDF).
     EXPECT_NEAR(mirror.spectral(fromAngles(0, 0), fromAngles(0, 0), 550.0), 1.0, 1e-12);

@@ -49,13 +49,14 @@ class DiffractionMaterialGl : public ::testing::Test {
     }
 
     prism::ImageF render(const DiffractionTextures& textures, const prism::Lights& lights, int directionalSlots) {
-        const prism::GpuMesh plate(prism::geometry::makeGrid(8.0f, 8.0f, 4, 4), prism::shaders::kCatalog.contractAttributes);
+        const prism::GpuMesh plate(prism::geometry::makeGrid(8.0f, 8.0f, 4, 4),
+                                   prism::shaders::kCatalog.contractAttributes);
         prism::gl::Framebuffer target(kSize, kSize, prism::gl::ColorFormat::Rgba32F);
         target.clear({0, 0, 0, 0});
-        prism::gl::Program& program = diffractionPrograms().get(
-            "diffraction", {{"DIFFRACTION_PATH", textures.variant()},
-                            {"DIRECTIONAL_LIGHTS", std::to_string(directionalSlots)},
-                            {"POINT_LIGHTS", "0"}});
+        prism::gl::Program& program =
+            diffractionPrograms().get("diffraction", {{"DIFFRACTION_PATH", textures.variant()},
+                                                      {"DIRECTIONAL_LIGHTS", std::to_string(directionalSlots)},
+                                                      {"POINT_LIGHTS", "0"}});
         prism::setFrameUniforms(program, camera_, 1.0f, lights, glm::mat4(1.0f), material_);
         program.set("u_diffractionTangent", glm::vec3(0.0f, 0.0f, 1.0f));  // grooves along x
         textures.apply(program);
@@ -96,13 +97,15 @@ TEST_F(DiffractionMaterialGl, CentrePixelMatchesTheCpuForBothPaths) {
     const LinearRgb brdfB = shadeIntegrated(integrated, toLight, toViewer);
     ASSERT_GT(brdfA.g, 1e-3) << "the test geometry should see some diffracted light";
     for (int path = 0; path < 2; ++path) {
-        const DiffractionTextures textures = path == 0 ? DiffractionTextures(spectral) : DiffractionTextures(integrated);
+        const DiffractionTextures textures =
+            path == 0 ? DiffractionTextures(spectral) : DiffractionTextures(integrated);
         const LinearRgb brdf = path == 0 ? brdfA : brdfB;
         const prism::ImageF image = render(textures, lights, 1);
         const auto pixel = image.at(kSize / 2, kSize / 2);
         const double expected[3] = {0.05 * 0.5 + brdf.r * 0.9 * toLight.z, 0.05 * 0.6 + brdf.g * 0.8 * toLight.z,
                                     0.05 * 0.7 + brdf.b * 0.7 * toLight.z};
-        for (int c = 0; c < 3; ++c) EXPECT_NEAR(pixel[c], expected[c], 2e-3 * (1.0 + expected[c])) << "path " << path << " channel " << c;
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(pixel[c], expected[c], 2e-3 * (1.0 + expected[c])) << "path " << path << " channel " << c;
     }
 }
 

@@ -45,8 +45,7 @@ class DiffractionGl : public ::testing::Test {
     // Renders the strip for light incidence `incidenceDeg` and returns relative Linf vs `cpu`.
     template <typename Cpu>
     static double stripError(const DiffractionTextures& textures, double incidenceDeg, Cpu cpu) {
-        prism::gl::Program& program = diffractionPrograms().get(
-            "brdf_map", {{"DIFFRACTION_PATH", textures.variant()}});
+        prism::gl::Program& program = diffractionPrograms().get("brdf_map", {{"DIFFRACTION_PATH", textures.variant()}});
         prism::gl::Framebuffer target(kColumns, 1, prism::gl::ColorFormat::Rgba32F);
         target.clear({0.0f, 0.0f, 0.0f, 0.0f});
         const Direction toLight = fromAngles(incidenceDeg, 180.0);
@@ -88,7 +87,8 @@ TEST_F(DiffractionGl, PerWavelengthPathMatchesCpu) {
     const SpectralTables tables = buildSpectralTables(grating(), {.size = 128, .wavelengthStepNm = 10});
     const DiffractionTextures textures(tables);
     for (double incidence : {0.0, 30.0, 75.0}) {
-        const double error = stripError(textures, incidence, [&](Direction l, Direction v) { return shadeSpectral(tables, l, v); });
+        const double error =
+            stripError(textures, incidence, [&](Direction l, Direction v) { return shadeSpectral(tables, l, v); });
         std::printf("path a, incidence %g: relative Linf %.3g\n", incidence, error);
         EXPECT_LE(error, 1e-3) << incidence;
     }
@@ -99,7 +99,8 @@ TEST_F(DiffractionGl, IntegratedPathMatchesCpu) {
     const IntegratedTables tables = buildIntegratedTables(spectral);
     const DiffractionTextures textures(tables);
     for (double incidence : {0.0, 30.0, 75.0}) {
-        const double error = stripError(textures, incidence, [&](Direction l, Direction v) { return shadeIntegrated(tables, l, v); });
+        const double error =
+            stripError(textures, incidence, [&](Direction l, Direction v) { return shadeIntegrated(tables, l, v); });
         std::printf("path b, incidence %g: relative Linf %.3g\n", incidence, error);
         EXPECT_LE(error, 1e-3) << incidence;
     }
@@ -120,7 +121,8 @@ TEST_F(DiffractionGl, VolumePathMatchesCpu) {
     const VolumeTables tables = buildVolumeTables(buildIntegratedTables(spectral), 16);
     const DiffractionTextures textures(tables);
     for (double incidence : {0.0, 30.0, 75.0}) {
-        const double error = stripError(textures, incidence, [&](Direction l, Direction v) { return shadeVolume(tables, l, v); });
+        const double error =
+            stripError(textures, incidence, [&](Direction l, Direction v) { return shadeVolume(tables, l, v); });
         std::printf("path c, incidence %g: relative Linf %.3g\n", incidence, error);
         EXPECT_LE(error, 1e-3) << incidence;
     }

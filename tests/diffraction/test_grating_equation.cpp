@@ -22,7 +22,8 @@ const StamBrdf& grating() {
 
 std::map<int, Peak> peaksByOrder(double incidenceDeg, double lambda) {
     std::map<int, Peak> byOrder;
-    for (const Peak& p : findPeaks(grating(), {.incidenceDeg = incidenceDeg, .wavelengthsNm = {lambda}, .periodNm = kPeriodNm})) {
+    for (const Peak& p :
+         findPeaks(grating(), {.incidenceDeg = incidenceDeg, .wavelengthsNm = {lambda}, .periodNm = kPeriodNm})) {
         EXPECT_EQ(byOrder.count(p.order), 0u) << "two peaks of order " << p.order << " at " << lambda << " nm";
         byOrder[p.order] = p;
     }
@@ -47,9 +48,7 @@ TEST(DiffractionGratingEquation, NormalIncidenceFirstAndSecondOrders) {
 }
 
 TEST(DiffractionGratingEquation, SeventyFiveDegreesOrderMinusOne) {
-    const struct {
-        double lambda, angle;
-    } expected[] = {{400, 53.700}, {550, 48.239}, {700, 43.308}};
+    const struct { double lambda, angle; } expected[] = {{400, 53.700}, {550, 48.239}, {700, 43.308}};
     for (const auto& e : expected) {
         std::map<int, Peak> peaks = peaksByOrder(75.0, e.lambda);
         ASSERT_TRUE(peaks.count(-1) && peaks.count(0)) << e.lambda;
@@ -64,7 +63,8 @@ TEST(DiffractionGratingEquation, NormalIncidencePlusAndMinusOrdersAgree) {
         for (int m : {1, 2, 3}) {
             ASSERT_TRUE(peaks.count(m) && peaks.count(-m)) << lambda << " nm order " << m;
             EXPECT_GT(peaks[m].relativeIntensity, 1e-4);
-            EXPECT_NEAR(peaks[m].relativeIntensity / peaks[-m].relativeIntensity, 1.0, 0.01) << lambda << " nm order " << m;
+            EXPECT_NEAR(peaks[m].relativeIntensity / peaks[-m].relativeIntensity, 1.0, 0.01)
+                << lambda << " nm order " << m;
         }
     }
 }
@@ -74,7 +74,8 @@ TEST(DiffractionGratingEquation, BlazedGratingFavoursOneSide) {
     // not notice an evaluation that symmetrises the spectrum, this one would.
     StamBrdf blazed(blazedGrating({.periodNm = kPeriodNm, .amplitudeNm = 100.0}), StamBrdf::Options{});
     std::map<int, Peak> byOrder;
-    for (const Peak& p : findPeaks(blazed, {.incidenceDeg = 0.0, .wavelengthsNm = {550}, .periodNm = kPeriodNm})) byOrder[p.order] = p;
+    for (const Peak& p : findPeaks(blazed, {.incidenceDeg = 0.0, .wavelengthsNm = {550}, .periodNm = kPeriodNm}))
+        byOrder[p.order] = p;
     ASSERT_TRUE(byOrder.count(1) && byOrder.count(-1));
     EXPECT_NEAR(byOrder[1].angleDeg, 12.709, kToleranceDeg);
     const double ratio = byOrder[1].relativeIntensity / byOrder[-1].relativeIntensity;

@@ -15,10 +15,10 @@
 
 TEST(DiffractionHeaderExamples, Colour) {
     using namespace prism::diffraction;
-    std::vector<SpectralWeight> grid = spectralWeights(5);        // 81 wavelengths
-    Xyz white{};                                                  // a flat reflectance of 1
-    for (const SpectralWeight& s : grid) white = white + s.xyz;   // = D65 white, Y = 1
-    LinearRgb rgb = xyzToLinearSrgb(white);                       // ~ (1, 1, 1)
+    std::vector<SpectralWeight> grid = spectralWeights(5);       // 81 wavelengths
+    Xyz white{};                                                 // a flat reflectance of 1
+    for (const SpectralWeight& s : grid) white = white + s.xyz;  // = D65 white, Y = 1
+    LinearRgb rgb = xyzToLinearSrgb(white);                      // ~ (1, 1, 1)
     EXPECT_EQ(grid.size(), 81u);
     EXPECT_NEAR(rgb.g, 1.0, 1e-3);
 }
@@ -26,8 +26,8 @@ TEST(DiffractionHeaderExamples, Colour) {
 TEST(DiffractionHeaderExamples, HeightField) {
     using namespace prism::diffraction;
     HeightField grating = sinusoidGrating({.periodNm = 2500, .amplitudeNm = 150});
-    subtractMean(grating);                  // lowers k w h_max; |P|^2 is unchanged
-    double hMax = maxAbsHeight(grating);    // 150 nm, feeds termsForTolerance()
+    subtractMean(grating);                // lowers k w h_max; |P|^2 is unchanged
+    double hMax = maxAbsHeight(grating);  // 150 nm, feeds termsForTolerance()
     EXPECT_NEAR(hMax, 150.0, 1e-9);
 }
 
@@ -35,19 +35,19 @@ TEST(DiffractionHeaderExamples, Spectrum) {
     using namespace prism::diffraction;
     HeightField g = sinusoidGrating({.periodNm = 2500, .amplitudeNm = 150});
     subtractMean(g);
-    TaylorSpectra taylor = taylorSpectra(g, /*terms N*/ 25);          // FFTs of h^0..h^N
+    TaylorSpectra taylor = taylorSpectra(g, /*terms N*/ 25);  // FFTs of h^0..h^N
     GaussianWindow window = defaultWindow(g);
     std::complex<double> p = taylor.evaluate(1.0 / 2500, 0.0, /*k*/ 2 * 3.14159265 / 550, /*w*/ 2.0, window);
-    Spectrum exact = exactSpectrum(g, 2 * 3.14159265 / 550 * 2.0);   // no Taylor series
-    std::complex<double> q = exact.evaluate(1.0 / 2500, 0.0, window); // ~ p
+    Spectrum exact = exactSpectrum(g, 2 * 3.14159265 / 550 * 2.0);     // no Taylor series
+    std::complex<double> q = exact.evaluate(1.0 / 2500, 0.0, window);  // ~ p
     EXPECT_NEAR(std::abs(p - q), 0.0, 1e-6);
 }
 
 TEST(DiffractionHeaderExamples, TaylorBound) {
     using namespace prism::diffraction;
     double x = taylorArgument(/*h_max nm*/ 150, /*lambda_min nm*/ 380);  // 4.96
-    int n = termsForTolerance(150, 380, 1e-6);                          // smallest N with bound <= 1e-6
-    double e = taylorErrorBound(x, n);                                  // <= 1e-6
+    int n = termsForTolerance(150, 380, 1e-6);                           // smallest N with bound <= 1e-6
+    double e = taylorErrorBound(x, n);                                   // <= 1e-6
     EXPECT_NEAR(x, 4.96, 0.005);
     EXPECT_LE(e, 1e-6);
 }
@@ -76,7 +76,7 @@ TEST(DiffractionHeaderExamples, LookupTables) {
     LinearRgb viaA = shadeSpectral(a, fromAngles(30, 180), fromAngles(30, 0));
     LinearRgb viaB = shadeIntegrated(b, fromAngles(30, 180), fromAngles(30, 0));  // ~ viaA
     VolumeTables c = buildVolumeTables(b, /*slices of w*/ 16);
-    LinearRgb viaC = shadeVolume(c, fromAngles(30, 180), fromAngles(30, 0));      // ~ viaB
+    LinearRgb viaC = shadeVolume(c, fromAngles(30, 180), fromAngles(30, 0));  // ~ viaB
     EXPECT_NEAR(viaA.g, viaB.g, 0.05 * viaA.g);
     EXPECT_NEAR(viaB.g, viaC.g, 0.01 * viaB.g);
 }
@@ -84,7 +84,7 @@ TEST(DiffractionHeaderExamples, LookupTables) {
 TEST(DiffractionHeaderExamples, ColourDifference) {
     using namespace prism::diffraction;
     Lab a = linearSrgbToLab({0.5, 0.2, 0.1}), b = linearSrgbToLab({0.5, 0.21, 0.1});
-    double dE = ciede2000(a, b);   // ~1 is a just-noticeable difference
+    double dE = ciede2000(a, b);  // ~1 is a just-noticeable difference
     EXPECT_GT(dE, 0.3);
     EXPECT_LT(dE, 3.0);
 }

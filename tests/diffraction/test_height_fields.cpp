@@ -142,7 +142,8 @@ TEST(DiffractionHeightFields, DocsBringYourOwnHeightField) {
     writeGreyPng(path, 32, 32, 8, ridges);
     auto field = prism::diffraction::loadHeightFieldPng(path, /*nm per pixel*/ 100, /*height scale nm*/ 150);
     prism::diffraction::StamBrdf brdf(field, {.tolerance = 1e-4});
-    auto tables = prism::diffraction::buildIntegratedTables(prism::diffraction::buildSpectralTables(brdf, {.size = 64}));
+    auto tables =
+        prism::diffraction::buildIntegratedTables(prism::diffraction::buildSpectralTables(brdf, {.size = 64}));
     EXPECT_EQ(tables.terms, brdf.terms());
     EXPECT_EQ(tables.bytes(), (2u * brdf.terms() + 1u) * 64u * 64u * 3u * sizeof(float));
 }

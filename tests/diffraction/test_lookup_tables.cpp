@@ -19,8 +19,12 @@ const StamBrdf& grating() {
     return brdf;
 }
 
-double channelMax(LinearRgb c) { return std::max({std::abs(c.r), std::abs(c.g), std::abs(c.b)}); }
-LinearRgb minus(LinearRgb a, LinearRgb b) { return {a.r - b.r, a.g - b.g, a.b - b.b}; }
+double channelMax(LinearRgb c) {
+    return std::max({std::abs(c.r), std::abs(c.g), std::abs(c.b)});
+}
+LinearRgb minus(LinearRgb a, LinearRgb b) {
+    return {a.r - b.r, a.g - b.g, a.b - b.b};
+}
 
 template <typename Shade>
 double stripError(Shade shade, int stepNm) {

@@ -28,8 +28,8 @@ TEST(DiffractionMaterial, HeaderExample) {
     nlohmann::json j = nlohmann::json::parse(R"({"height_field": {"type": "sinusoid", "period_nm": 2500,
         "amplitude_nm": 60, "periods": 8}, "path": "b", "table_size": 64, "wavelength_step_nm": 20})");
     DiffractionMaterial m = parseDiffractionMaterial(j, "/objects/0/material/diffraction", ".");
-    StamBrdf brdf = makeBrdf(m);               // N from the height range and m.tolerance
-    MaterialTables tables = buildMaterialTables(m, brdf);   // only path b's 2N + 1 layers
+    StamBrdf brdf = makeBrdf(m);                           // N from the height range and m.tolerance
+    MaterialTables tables = buildMaterialTables(m, brdf);  // only path b's 2N + 1 layers
     ASSERT_TRUE(tables.integrated.has_value());
     EXPECT_FALSE(tables.spectral.has_value());
     EXPECT_EQ(tables.integrated->size, 64);
@@ -37,15 +37,16 @@ TEST(DiffractionMaterial, HeaderExample) {
 }
 
 TEST(DiffractionMaterial, DefaultsAndPathA) {
-    const DiffractionMaterial m =
-        parseDiffractionMaterial(json::parse(R"({"height_field": {"type": "cd", "size": 64}, "path": "a", "terms": 4})"), "", ".");
+    const DiffractionMaterial m = parseDiffractionMaterial(
+        json::parse(R"({"height_field": {"type": "cd", "size": 64}, "path": "a", "terms": 4})"), "", ".");
     EXPECT_EQ(m.path, 'a');
     EXPECT_EQ(m.wavelengthStepNm, 5);
     EXPECT_EQ(m.tableSize, 512);
     EXPECT_EQ(m.terms, 4);
     EXPECT_EQ(makeHeightField(m).width, 64);
     const DiffractionMaterial snake = parseDiffractionMaterial(
-        json::parse(R"({"height_field": {"type": "snake", "size": 32}, "path": "a", "terms": 2, "table_size": 16})"), "", ".");
+        json::parse(R"({"height_field": {"type": "snake", "size": 32}, "path": "a", "terms": 2, "table_size": 16})"),
+        "", ".");
     const MaterialTables tables = buildMaterialTables(snake, makeBrdf(snake));
     EXPECT_TRUE(tables.spectral.has_value());
     EXPECT_FALSE(tables.integrated.has_value());
@@ -54,8 +55,9 @@ TEST(DiffractionMaterial, DefaultsAndPathA) {
 
 TEST(DiffractionMaterial, DefaultPathIsTheVolume) {
     const DiffractionMaterial m = parseDiffractionMaterial(
-        json::parse(R"({"height_field": {"type": "sinusoid", "amplitude_nm": 60, "periods": 4}, "table_size": 16, "w_slices": 4})"), "",
-        ".");
+        json::parse(
+            R"({"height_field": {"type": "sinusoid", "amplitude_nm": 60, "periods": 4}, "table_size": 16, "w_slices": 4})"),
+        "", ".");
     EXPECT_EQ(m.path, 'c');
     const MaterialTables tables = buildMaterialTables(m, makeBrdf(m));
     ASSERT_TRUE(tables.volume.has_value());
@@ -66,8 +68,9 @@ TEST(DiffractionMaterial, DefaultPathIsTheVolume) {
 
 TEST(DiffractionMaterial, PngPathIsRelativeToTheScene) {
     const DiffractionMaterial m = parseDiffractionMaterial(
-        json::parse(R"({"height_field": {"type": "png", "file": "scan.png", "nm_per_pixel": 100, "height_scale_nm": 150}})"), "",
-        "/scenes");
+        json::parse(
+            R"({"height_field": {"type": "png", "file": "scan.png", "nm_per_pixel": 100, "height_scale_nm": 150}})"),
+        "", "/scenes");
     EXPECT_EQ(std::get<PngField>(m.heightField).file, "/scenes/scan.png");
     EXPECT_THROW(makeHeightField(m), std::runtime_error);  // no such file: "…/scan.png: error: cannot open"
 }
@@ -83,7 +86,8 @@ TEST(DiffractionMaterial, ErrorsNameTheJsonPointer) {
               p + "/wavelength_step_nm: expected 1, 2, 5, 10 or 20");
     EXPECT_EQ(errorOf(R"({"height_field": {"type": "sinusoid"}, "path": "d"})"),
               p + "/path: expected \"a\" (per wavelength), \"b\" (pre-integrated tables) or \"c\" (w volume)");
-    EXPECT_NE(errorOf(R"({"height_field": {"type": "sinusoid"}, "colour": 1})").find(p + "/colour: unknown key"), std::string::npos);
+    EXPECT_NE(errorOf(R"({"height_field": {"type": "sinusoid"}, "colour": 1})").find(p + "/colour: unknown key"),
+              std::string::npos);
     EXPECT_EQ(errorOf(R"({"height_field": {"type": "png", "file": "a.png", "nm_per_pixel": 10}})"),
               p + "/height_field/height_scale_nm: required for a PNG height field");
     EXPECT_EQ(errorOf(R"({"height_field": {"type": "sinusoid"}, "terms": 3, "tolerance": 0.1})"),

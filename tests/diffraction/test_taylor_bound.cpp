@@ -29,7 +29,9 @@ TEST(DiffractionTaylorBound, MoreHeightOrTighterToleranceNeedsMoreTerms) {
     EXPECT_LT(termsForTolerance(150.0, 700.0, 1e-6), termsForTolerance(150.0, 380.0, 1e-6));
 }
 
-TEST(DiffractionTaylorBound, ZeroHeightNeedsNoTerms) { EXPECT_EQ(termsForTolerance(0.0, 380.0, 1e-9), 0); }
+TEST(DiffractionTaylorBound, ZeroHeightNeedsNoTerms) {
+    EXPECT_EQ(termsForTolerance(0.0, 380.0, 1e-9), 0);
+}
 
 TEST(DiffractionTaylorBound, HugeHeightIsAClearError) {
     EXPECT_THROW(termsForTolerance(5000.0, 380.0, 1e-6), TooManyTermsError);

@@ -69,7 +69,8 @@ TEST(DiffractionTaylorVsExact, MeanSubtractionIsWhatMakesTheSeriesConverge) {
     const GaussianWindow window = defaultWindow(raw);
     const double f = 1.0 / 2500.0;
     const double exactPower = std::norm(exactSpectrum(raw, k * w).evaluate(f, 0.0, window));
-    const double centredError = std::abs(std::norm(taylorSpectra(centred, 20).evaluate(f, 0.0, k, w, window)) - exactPower);
+    const double centredError =
+        std::abs(std::norm(taylorSpectra(centred, 20).evaluate(f, 0.0, k, w, window)) - exactPower);
     const double rawError = std::abs(std::norm(taylorSpectra(raw, 20).evaluate(f, 0.0, k, w, window)) - exactPower);
     EXPECT_LT(centredError, 1e-3 * exactPower);
     EXPECT_GT(rawError, 100.0 * centredError);

@@ -32,8 +32,12 @@ double d65(double wavelengthNm) {
     return sampleLinear(t.d65, t.d65Count, t.d65StartNm, t.d65StepNm, wavelengthNm);
 }
 
-std::string cmfSource() { return detail::cieSourceTables().cmfSource; }
-std::string d65Source() { return detail::cieSourceTables().d65Source; }
+std::string cmfSource() {
+    return detail::cieSourceTables().cmfSource;
+}
+std::string d65Source() {
+    return detail::cieSourceTables().d65Source;
+}
 
 bool isSupportedWavelengthStep(int stepNm) {
     return stepNm == 1 || stepNm == 2 || stepNm == 5 || stepNm == 10 || stepNm == 20;

@@ -12,8 +12,12 @@ double labF(double t) {
     return t > d * d * d ? std::cbrt(t) : t / (3.0 * d * d) + 4.0 / 29.0;
 }
 
-double degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
-double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
+double degrees(double radians) {
+    return radians * 180.0 / std::numbers::pi;
+}
+double radians(double degrees) {
+    return degrees * std::numbers::pi / 180.0;
+}
 
 }  // namespace
 

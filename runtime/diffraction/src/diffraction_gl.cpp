@@ -69,9 +69,13 @@ DiffractionTextures::DiffractionTextures(const VolumeTables& t)
     bytes_ = t.bytes();
 }
 
-DiffractionTextures::~DiffractionTextures() { release(); }
+DiffractionTextures::~DiffractionTextures() {
+    release();
+}
 
-DiffractionTextures::DiffractionTextures(DiffractionTextures&& o) noexcept { *this = std::move(o); }
+DiffractionTextures::DiffractionTextures(DiffractionTextures&& o) noexcept {
+    *this = std::move(o);
+}
 
 DiffractionTextures& DiffractionTextures::operator=(DiffractionTextures&& o) noexcept {
     if (this != &o) {

@@ -15,7 +15,8 @@ void require(bool ok, const std::string& message) {
 }
 
 void checkGrating(const GratingParams& p) {
-    require(std::isfinite(p.periodNm) && p.periodNm > 0.0, "period must be > 0 nm (got " + std::to_string(p.periodNm) + ")");
+    require(std::isfinite(p.periodNm) && p.periodNm > 0.0,
+            "period must be > 0 nm (got " + std::to_string(p.periodNm) + ")");
     require(std::isfinite(p.amplitudeNm) && p.amplitudeNm >= 0.0,
             "amplitude must be >= 0 nm (got " + std::to_string(p.amplitudeNm) + ")");
     require(p.periods >= 1 && p.periods <= 4096, "periods must be in 1..4096");

@@ -54,8 +54,10 @@ HeightField loadHeightFieldPng(const std::string& path, double nmPerPixel, doubl
     const int channels = png_get_channels(png, info);
     png_bytepp rows = png_get_rows(png, info);
     std::string problem;
-    if (depth != 8 && depth != 16) problem = "bit depth " + std::to_string(depth) + " is not supported (use 8 or 16 bits)";
-    if (width < 1 || height < 1 || width > 8192 || height > 8192) problem = "image size must be 1..8192 pixels per side";
+    if (depth != 8 && depth != 16)
+        problem = "bit depth " + std::to_string(depth) + " is not supported (use 8 or 16 bits)";
+    if (width < 1 || height < 1 || width > 8192 || height > 8192)
+        problem = "image size must be 1..8192 pixels per side";
     HeightField field;
     if (problem.empty()) {
         field.width = width;

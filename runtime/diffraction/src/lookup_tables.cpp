@@ -45,7 +45,9 @@ Complex sampleSpectral(const SpectralTables& t, int n, double fx, double fy) {
     return {sample<2>(t.texels, t.size, n, b, 0), sample<2>(t.texels, t.size, n, b, 1)};
 }
 
-LinearRgb scale(LinearRgb c, double s) { return {c.r * s, c.g * s, c.b * s}; }
+LinearRgb scale(LinearRgb c, double s) {
+    return {c.r * s, c.g * s, c.b * s};
+}
 
 }  // namespace
 
@@ -69,7 +71,8 @@ SpectralTables buildSpectralTables(const StamBrdf& brdf, const TableOptions& opt
         const Spectrum& spectrum = brdf.taylor().terms[n];
         for (int j = 0; j < t.size; ++j) {
             for (int i = 0; i < t.size; ++i) {
-                const Complex h = norm * spectrum.evaluate((i - t.size / 2) * cell, (j - t.size / 2) * cell, brdf.window());
+                const Complex h =
+                    norm * spectrum.evaluate((i - t.size / 2) * cell, (j - t.size / 2) * cell, brdf.window());
                 float* texel = &t.texels[n * layer + (static_cast<std::size_t>(j) * t.size + i) * 2];
                 texel[0] = static_cast<float>(h.real());
                 texel[1] = static_cast<float>(h.imag());
@@ -146,7 +149,8 @@ LinearRgb shadeIntegrated(const IntegratedTables& t, Direction wi, Direction wr)
     const Bilinear b = bilinearAt(g.u, g.v, kIntegratedExtent, t.size);
     double wPower = 1.0;
     for (int s = 0; s <= 2 * t.terms; ++s) {
-        rgb = {rgb.r + wPower * sample<3>(t.texels, t.size, s, b, 0), rgb.g + wPower * sample<3>(t.texels, t.size, s, b, 1),
+        rgb = {rgb.r + wPower * sample<3>(t.texels, t.size, s, b, 0),
+               rgb.g + wPower * sample<3>(t.texels, t.size, s, b, 1),
                rgb.b + wPower * sample<3>(t.texels, t.size, s, b, 2)};
         wPower *= g.w;
     }
@@ -184,8 +188,10 @@ LinearRgb shadeVolume(const VolumeTables& t, Direction wi, Direction wr) {
     const double z = std::min(std::max((g.w + 2.0) / 2.0 * (t.slices - 1), 0.0), t.slices - 1.0);
     const int k0 = std::min(static_cast<int>(std::floor(z)), t.slices - 1), k1 = std::min(k0 + 1, t.slices - 1);
     const double fz = z - k0;
-    const double c0[3] = {sample<3>(t.texels, t.size, k0, b, 0), sample<3>(t.texels, t.size, k0, b, 1), sample<3>(t.texels, t.size, k0, b, 2)};
-    const double c1[3] = {sample<3>(t.texels, t.size, k1, b, 0), sample<3>(t.texels, t.size, k1, b, 1), sample<3>(t.texels, t.size, k1, b, 2)};
+    const double c0[3] = {sample<3>(t.texels, t.size, k0, b, 0), sample<3>(t.texels, t.size, k0, b, 1),
+                          sample<3>(t.texels, t.size, k0, b, 2)};
+    const double c1[3] = {sample<3>(t.texels, t.size, k1, b, 0), sample<3>(t.texels, t.size, k1, b, 1),
+                          sample<3>(t.texels, t.size, k1, b, 2)};
     rgb = {c0[0] * (1 - fz) + c1[0] * fz, c0[1] * (1 - fz) + c1[1] * fz, c0[2] * (1 - fz) + c1[2] * fz};
     return scale(rgb, g.factor);
 }

@@ -49,7 +49,8 @@ int integer(const json& object, const std::string& pointer, const std::string& k
     const json& v = object.at(key);
     if (!v.is_number_integer()) fail(pointer + "/" + key, "expected an integer");
     const long long x = v.get<long long>();
-    if (x < low || x > high) fail(pointer + "/" + key, "expected an integer in [" + std::to_string(low) + ", " + std::to_string(high) + "]");
+    if (x < low || x > high)
+        fail(pointer + "/" + key, "expected an integer in [" + std::to_string(low) + ", " + std::to_string(high) + "]");
     return static_cast<int>(x);
 }
 
@@ -107,8 +108,9 @@ void parseHeightField(const json& hf, const std::string& p, const std::string& b
 }  // namespace
 
 DiffractionMaterial parseDiffractionMaterial(const json& j, const std::string& p, const std::string& baseDir) {
-    rejectUnknownKeys(j, p, {"height_field", "path", "w_slices", "wavelength_step_nm", "table_size", "tolerance", "terms",
-                             "coherence_nm", "tangent"});
+    rejectUnknownKeys(j, p,
+                      {"height_field", "path", "w_slices", "wavelength_step_nm", "table_size", "tolerance", "terms",
+                       "coherence_nm", "tangent"});
     DiffractionMaterial m;
     if (!j.contains("height_field")) fail(p + "/height_field", "required");
     parseHeightField(j.at("height_field"), p + "/height_field", baseDir, m);

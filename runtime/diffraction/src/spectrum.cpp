@@ -22,7 +22,9 @@ int fftIndex(int j, int n) {
 
 }  // namespace
 
-GaussianWindow defaultWindow(const HeightField& field) { return {0.25 * field.widthNm(), 4.0}; }
+GaussianWindow defaultWindow(const HeightField& field) {
+    return {0.25 * field.widthNm(), 4.0};
+}
 
 Complex Spectrum::coefficient(int jx, int jy) const {
     const int ix = fftIndex(jx, width), iy = fftIndex(jy, height);
@@ -66,7 +68,8 @@ Spectrum fourierSeries(const std::vector<Complex>& samples, int width, int heigh
     s.coefficients.resize(samples.size());
     const kissfft<double> rowFft(static_cast<std::size_t>(width), false);
     for (int y = 0; y < height; ++y) {
-        rowFft.transform(&samples[static_cast<std::size_t>(y) * width], &s.coefficients[static_cast<std::size_t>(y) * width]);
+        rowFft.transform(&samples[static_cast<std::size_t>(y) * width],
+                         &s.coefficients[static_cast<std::size_t>(y) * width]);
     }
     if (height > 1) {
         const kissfft<double> columnFft(static_cast<std::size_t>(height), false);

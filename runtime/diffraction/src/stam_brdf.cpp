@@ -41,7 +41,8 @@ StamGeometry stamGeometry(Direction wi, Direction wr) {
 }
 
 StamBrdf::StamBrdf(HeightField field, const Options& options) : field_(std::move(field)), path_(options.path) {
-    if (field_.width < 1 || field_.height < 1 || field_.heightsNm.size() != static_cast<std::size_t>(field_.width) * field_.height) {
+    if (field_.width < 1 || field_.height < 1 ||
+        field_.heightsNm.size() != static_cast<std::size_t>(field_.width) * field_.height) {
         throw std::invalid_argument("height field is empty or its size does not match its samples");
     }
     subtractMean(field_);

@@ -21,8 +21,12 @@ namespace prism::diffraction {
 struct Xyz {
     double x = 0, y = 0, z = 0;
 };
-inline Xyz operator+(Xyz a, Xyz b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-inline Xyz operator*(double s, Xyz a) { return {s * a.x, s * a.y, s * a.z}; }
+inline Xyz operator+(Xyz a, Xyz b) {
+    return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+inline Xyz operator*(double s, Xyz a) {
+    return {s * a.x, s * a.y, s * a.z};
+}
 
 struct LinearRgb {
     double r = 0, g = 0, b = 0;

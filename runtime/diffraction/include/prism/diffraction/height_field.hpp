@@ -18,9 +18,9 @@
 namespace prism::diffraction {
 
 struct HeightField {
-    int width = 0;          // samples along x
-    int height = 0;         // samples along y (1 for a field constant along y)
-    double pixelNm = 1.0;   // sample spacing along x and y
+    int width = 0;                  // samples along x
+    int height = 0;                 // samples along y (1 for a field constant along y)
+    double pixelNm = 1.0;           // sample spacing along x and y
     std::vector<double> heightsNm;  // row-major, width * height
     double at(int x, int y) const { return heightsNm[static_cast<std::size_t>(y) * width + x]; }
     double widthNm() const { return width * pixelNm; }
@@ -38,12 +38,12 @@ HeightField sinusoidGrating(const GratingParams& params);
 HeightField blazedGrating(const GratingParams& params);
 
 struct TrackParams {
-    double pitchNm = 1600.0;   // CD track pitch
-    double pitDepthNm = 110.0; // about lambda/4 of a CD laser in polycarbonate
+    double pitchNm = 1600.0;    // CD track pitch
+    double pitDepthNm = 110.0;  // about lambda/4 of a CD laser in polycarbonate
     double pitWidthNm = 500.0;
-    int size = 256;            // samples per side
+    int size = 256;  // samples per side
     double pixelNm = 100.0;
-    std::uint32_t seed = 1;    // RNG seed of the pit lengths
+    std::uint32_t seed = 1;  // RNG seed of the pit lengths
 };
 // Tracks run along y; pits of random length (0.9-3.3 um) along each track.
 HeightField cdTracks(const TrackParams& params);
@@ -54,7 +54,7 @@ struct RidgeParams {
     double wavinessNm = 300.0;  // lateral meander of each ridge
     int size = 256;
     double pixelNm = 100.0;
-    std::uint32_t seed = 1;     // RNG seed of the meanders and spacing jitter
+    std::uint32_t seed = 1;  // RNG seed of the meanders and spacing jitter
 };
 // Quasi-periodic finger-like ridges (after the Elaphe and Xenopeltis sheds of the diffraction thesis).
 HeightField snakeRidges(const RidgeParams& params);

@@ -30,8 +30,8 @@
 namespace prism::diffraction {
 
 struct TableOptions {
-    int size = 256;             // S, 8..2048
-    int wavelengthStepNm = 5;   // 1, 2, 5, 10 or 20
+    int size = 256;            // S, 8..2048
+    int wavelengthStepNm = 5;  // 1, 2, 5, 10 or 20
 };
 
 struct WavelengthRgb {
@@ -45,21 +45,21 @@ struct SpectralTables {
     double heightScaleNm = 0.0;    // s
     double frequencyExtent = 0.0;  // F, cycles per nm
     std::vector<WavelengthRgb> wavelengths;
-    std::vector<float> texels;     // layer-major, row-major, 2 floats (re, im) per texel
+    std::vector<float> texels;  // layer-major, row-major, 2 floats (re, im) per texel
     std::size_t bytes() const { return texels.size() * sizeof(float); }
 };
 
 struct IntegratedTables {
     int size = 0;
-    int terms = 0;                 // N; layers = 2N + 1
-    std::vector<float> texels;     // layer-major, row-major, 3 floats (linear sRGB) per texel
+    int terms = 0;              // N; layers = 2N + 1
+    std::vector<float> texels;  // layer-major, row-major, 3 floats (linear sRGB) per texel
     std::size_t bytes() const { return texels.size() * sizeof(float); }
 };
 
 struct VolumeTables {
     int size = 0;
-    int slices = 0;                // K, at w_k = -2 + 2k / (K - 1)
-    std::vector<float> texels;     // slice-major, row-major, 3 floats (linear sRGB) per texel
+    int slices = 0;             // K, at w_k = -2 + 2k / (K - 1)
+    std::vector<float> texels;  // slice-major, row-major, 3 floats (linear sRGB) per texel
     std::size_t bytes() const { return texels.size() * sizeof(float); }
 };
 

@@ -46,8 +46,8 @@ struct PngField {
 struct DiffractionMaterial {
     std::string heightFieldType;  // sinusoid, blazed, cd, snake, png
     std::variant<GratingParams, TrackParams, RidgeParams, PngField> heightField;
-    char path = 'c';              // 'a', 'b' or 'c' (lookup_tables.hpp)
-    int wSlices = 8;              // path c
+    char path = 'c';  // 'a', 'b' or 'c' (lookup_tables.hpp)
+    int wSlices = 8;  // path c
     int wavelengthStepNm = 5;
     int tableSize = 512;
     double tolerance = 1e-3;

@@ -25,8 +25,8 @@ struct Peak {
 struct PeakSearch {
     double incidenceDeg = 0;
     std::vector<double> wavelengthsNm{};
-    double periodNm = 2500;         // only to name the orders
-    double stepDeg = 0.02;          // sampling step before refinement
+    double periodNm = 2500;  // only to name the orders
+    double stepDeg = 0.02;   // sampling step before refinement
     double maxAngleDeg = 89.9;
     double minRelativeIntensity = 1e-6;  // ignore maxima below this fraction of the strongest
 };

@@ -25,8 +25,8 @@
 namespace prism::diffraction {
 
 struct GaussianWindow {
-    double sigmaNm = 16000.0;    // spatial standard deviation (coherence length)
-    double radiusSigmas = 4.0;   // truncation of the frequency-domain Gaussian
+    double sigmaNm = 16000.0;   // spatial standard deviation (coherence length)
+    double radiusSigmas = 4.0;  // truncation of the frequency-domain Gaussian
 };
 // sigma = a quarter of the patch width: the patch spans 4 sigma (the thesis's choice).
 GaussianWindow defaultWindow(const HeightField& field);
@@ -34,7 +34,7 @@ GaussianWindow defaultWindow(const HeightField& field);
 // Fourier-series coefficients of one sampled periodic function on the patch grid.
 struct Spectrum {
     int width = 0, height = 0;
-    double periodXNm = 1.0, periodYNm = 1.0;  // the patch size L
+    double periodXNm = 1.0, periodYNm = 1.0;         // the patch size L
     std::vector<std::complex<double>> coefficients;  // DFT / (width * height), FFT order
 
     // c_j for integer frequency indices (jx, jy); zero outside the band the grid resolves.
@@ -48,7 +48,7 @@ Spectrum fourierSeries(const std::vector<std::complex<double>>& samples, int wid
 
 // The FFTs of h^0 .. h^N (the thesis's precomputation, Algorithm 3.1) of a height field.
 struct TaylorSpectra {
-    std::vector<Spectrum> terms;  // terms[n] = fourierSeries(h^n)
+    std::vector<Spectrum> terms;                                          // terms[n] = fourierSeries(h^n)
     int termCount() const { return static_cast<int>(terms.size()) - 1; }  // N
     // P(f) = sum_{n<=N} (i k w)^n / n! * H_n(f), windowed.
     std::complex<double> evaluate(double fx, double fy, double k, double w, const GaussianWindow& window) const;

@@ -35,13 +35,13 @@ struct StamGeometry {
 StamGeometry stamGeometry(Direction toLight, Direction toViewer);
 
 class StamBrdf {
-public:
+  public:
     enum class Path { Taylor, Exact };
     struct Options {
         Path path = Path::Taylor;
-        std::optional<int> terms{};         // N; when empty, from tolerance and the height range (Taylor path)
-        double tolerance = 1e-6;           // for the error bound (taylor_bound.hpp)
-        std::optional<GaussianWindow> window{}; // default: defaultWindow(field)
+        std::optional<int> terms{};              // N; when empty, from tolerance and the height range (Taylor path)
+        double tolerance = 1e-6;                 // for the error bound (taylor_bound.hpp)
+        std::optional<GaussianWindow> window{};  // default: defaultWindow(field)
     };
     // Subtracts the field's mean, picks N and precomputes the FFTs of h^n (Taylor path).
     // Throws TooManyTermsError when the heights need more than 200 terms (Taylor path).
@@ -56,7 +56,7 @@ public:
     const GaussianWindow& window() const { return window_; }
     const TaylorSpectra& taylor() const { return taylor_; }
 
-private:
+  private:
     std::complex<double> spectrumAt(const StamGeometry& g, double wavelengthNm) const;
     HeightField field_;
     Path path_;
