@@ -9,6 +9,7 @@ PACKAGES=(
   libglfw3-dev libglm-dev
   libosmesa6-dev libegl1-mesa-dev libgl1-mesa-dri libgles-dev
   libpng-dev python3-glad
+  libkissfft-dev colord-data
   libgtest-dev libgmock-dev libbenchmark-dev
   libcli11-dev libfmt-dev nlohmann-json3-dev
   libtinyobjloader-dev libstb-dev

@@ -1,0 +1,54 @@
+// The GL side of the diffraction shader: uploads the lookup tables of one path (and nothing
+// for the other) and sets modules/diffraction/stam.glsl's uniforms on a program from the
+// diffraction catalogue (prism/diffraction_shaders.hpp). The only file of prism_diffraction
+// that calls GL.
+//
+//     using namespace prism::diffraction;
+//     StamBrdf brdf(sinusoidGrating({.amplitudeNm = 60, .periods = 16}), {.tolerance = 1e-4});
+//     DiffractionTextures textures(buildSpectralTables(brdf, {.size = 128}));  // path (a)
+//     prism::gl::Program& program = diffractionPrograms().get("brdf_map", {{"DIFFRACTION_PATH", textures.variant()}});
+//     textures.apply(program);   // binds units 0 and 1, sets u_diffraction*
+//
+// Needs a current context for its whole life; move-only.
+#pragma once
+
+#include <cstddef>
+
+#include "prism/diffraction/lookup_tables.hpp"
+#include "prism/gl/program.hpp"
+#include "prism/render/program_cache.hpp"
+
+namespace prism::diffraction {
+
+class DiffractionTextures {
+  public:
+    explicit DiffractionTextures(const SpectralTables& tables);    // path (a): RG32F layers + wavelengths
+    explicit DiffractionTextures(const IntegratedTables& tables);  // path (b): RGB32F layers
+    explicit DiffractionTextures(const VolumeTables& tables);      // path (c): RGB32F 3D texture
+    ~DiffractionTextures();
+    DiffractionTextures(DiffractionTextures&& other) noexcept;
+    DiffractionTextures& operator=(DiffractionTextures&& other) noexcept;
+    DiffractionTextures(const DiffractionTextures&) = delete;
+    DiffractionTextures& operator=(const DiffractionTextures&) = delete;
+
+    bool integrated() const { return path_ != 0; }
+    // The DIFFRACTION_PATH variant value these tables need: "0" (a), "1" (b) or "2" (c).
+    const char* variant() const { return path_ == 0 ? "0" : path_ == 1 ? "1" : "2"; }
+    std::size_t bytes() const { return bytes_; }  // GPU memory of the tables
+    // Binds the tables to texture unit `unit` (and the wavelengths to unit + 1 on path a) and
+    // sets the program's u_diffraction* uniforms.
+    void apply(gl::Program& program, int unit = 0) const;
+
+  private:
+    void release() noexcept;
+    int path_ = 0;
+    unsigned tables_ = 0, wavelengths_ = 0;
+    int size_ = 0, terms_ = 0, wavelengthCount_ = 0, slices_ = 0;
+    double extent_ = 0.0, heightScale_ = 0.0;
+    std::size_t bytes_ = 0;
+};
+
+// The diffraction catalogue's programs (built on first use; needs a current context).
+render::ProgramCache& diffractionPrograms();
+
+}  // namespace prism::diffraction
