@@ -6,7 +6,9 @@ Reads the link graph CMake writes at configure time (<build>/prism_link_graph.tx
 points upward: a library may link only libraries of its own layer or of layers below
 (cpu < gl < render < systems < scenes < apps). CPU-layer libraries therefore link no GL.
 It also checks that no header or source of a library includes a header of a library it
-does not link (include path = library), and draws the graph as docs/architecture.svg.
+does not link (include path = library), that no code in runtime/ or apps/ creates or
+deletes a GL object except through prism/gl/handles.hpp, and draws the graph as
+docs/architecture.svg.
 
     python3 scripts/check_layers.py build                 # check; exit 1 on a violation
     python3 scripts/check_layers.py build --write-svg     # also rewrite docs/architecture.svg
@@ -96,6 +98,28 @@ def include_errors(graph):
     return errors
 
 
+def raw_gl_object_errors():
+    """Every GL object in runtime/ and apps/ is owned through prism/gl/handles.hpp: no raw
+    glGen*/glDelete*/glCreateShader/glCreateProgram outside runtime/gl/src/handles.cpp."""
+    raw = re.compile(r"\b(glGen(Buffers|Textures|VertexArrays|Framebuffers|Renderbuffers|Queries)|"
+                     r"glDelete(Buffers|Textures|VertexArrays|Framebuffers|Renderbuffers|Queries|Shader|Program)|"
+                     r"glCreate(Shader|Program))\s*\(")
+    errors = []
+    for top in ("runtime", "apps"):
+        for dirpath, _, files in os.walk(os.path.join(ROOT, top)):
+            for name in files:
+                path = os.path.join(dirpath, name)
+                rel = os.path.relpath(path, ROOT)
+                if rel == os.path.join("runtime", "gl", "src", "handles.cpp") or not name.endswith((".cpp", ".hpp")):
+                    continue
+                for number, line in enumerate(open(path, encoding="utf-8"), 1):
+                    m = raw.search(line.split("//")[0])
+                    if m:
+                        errors.append(f"{rel}:{number}: error: raw {m.group(1)}; own GL objects through "
+                                      f"prism::gl handles (prism/gl/handles.hpp)")
+    return errors
+
+
 def draw_svg(graph):
     """Layers as rows (apps on top, cpu at the bottom), one box per library, an arrow per link."""
     box_w, box_h, gap_x, row_h, margin = 150, 30, 14, 110, 20
@@ -139,7 +163,7 @@ def main(argv):
     if len(argv) < 2:
         sys.exit(__doc__)
     graph = read_graph(argv[1])
-    errors = upward_edges(graph) + include_errors(graph)
+    errors = upward_edges(graph) + include_errors(graph) + raw_gl_object_errors()
     svg = draw_svg(graph)
     if "--write-svg" in argv:
         open(SVG_PATH, "w").write(svg)

@@ -10,25 +10,23 @@
 #include "prism/bluenoise_shaders.hpp"
 #include "prism/gl/framebuffer.hpp"
 #include "prism/gl/gl.hpp"
+#include "prism/gl/handles.hpp"
 #include "prism/render/program_cache.hpp"
 
 namespace prism::bluenoise {
 
 namespace {
 
-// A 2D R32UI texture (nearest filtering) that deletes itself.
+// A 2D R32UI texture (nearest filtering), owned through a prism::gl handle.
 class UintTexture {
   public:
-    UintTexture() { glGenTextures(1, &id_); }
-    ~UintTexture() { glDeleteTextures(1, &id_); }
-    UintTexture(const UintTexture&) = delete;
-    UintTexture& operator=(const UintTexture&) = delete;
+    UintTexture() : texture_(gl::Texture::create()) {}
 
     void upload(int unit, int width, int height, const std::vector<std::uint32_t>& values) {
         if (values.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height))
             throw std::invalid_argument("prism::bluenoise: table size does not match its values");
         glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
-        glBindTexture(GL_TEXTURE_2D, id_);
+        glBindTexture(GL_TEXTURE_2D, texture_.id());
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
@@ -36,20 +34,18 @@ class UintTexture {
     }
 
   private:
-    GLuint id_ = 0;
+    gl::Texture texture_;
 };
 
 }  // namespace
 
 struct GlSoftShadows::Resources {
     Resources(int w, int h) : framebuffer(w, h, gl::ColorFormat::Rgba32F), programs(bluenoise_shaders::kCatalog) {
-        glGenVertexArrays(1, &vao);
     }
-    ~Resources() { glDeleteVertexArrays(1, &vao); }
     gl::Framebuffer framebuffer;
     render::ProgramCache programs;
     UintTexture mask, seeds, stack;
-    GLuint vao = 0;
+    gl::VertexArray vao = gl::VertexArray::create();
 };
 
 GlSoftShadows::GlSoftShadows(int width, int height) : gl_(std::make_unique<Resources>(width, height)) {}
@@ -89,7 +85,7 @@ RealImage GlSoftShadows::render(const SoftShadowScene& scene, StochasticSetup& s
         program.use();
         program.set("u_frame", static_cast<unsigned>(frame));
         gl_->framebuffer.bind();
-        glBindVertexArray(gl_->vao);
+        glBindVertexArray(gl_->vao.id());
         glDrawArrays(GL_TRIANGLES, 0, 3);
         const image::ImageF pixels = gl_->framebuffer.readImageF();
         gl::throwIfGlError("drawing the soft-shadow demo");

@@ -10,10 +10,9 @@
 namespace prism::diffraction {
 namespace {
 
-unsigned makeArray(int size, int layers, GLenum internalFormat, GLenum format, const std::vector<float>& texels) {
-    GLuint id = 0;
-    glGenTextures(1, &id);
-    glBindTexture(GL_TEXTURE_2D_ARRAY, id);
+gl::Texture makeArray(int size, int layers, GLenum internalFormat, GLenum format, const std::vector<float>& texels) {
+    gl::Texture texture = gl::Texture::create();
+    glBindTexture(GL_TEXTURE_2D_ARRAY, texture.id());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, static_cast<GLint>(internalFormat), size, size, layers, 0, format, GL_FLOAT,
                  texels.data());
@@ -23,7 +22,7 @@ unsigned makeArray(int size, int layers, GLenum internalFormat, GLenum format, c
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
     gl::throwIfGlError("uploading diffraction tables");
-    return id;
+    return texture;
 }
 
 }  // namespace
@@ -37,8 +36,8 @@ DiffractionTextures::DiffractionTextures(const SpectralTables& t)
                                static_cast<float>(w.weight.b), static_cast<float>(w.wavelengthNm)});
     }
     wavelengthCount_ = static_cast<int>(t.wavelengths.size());
-    glGenTextures(1, &wavelengths_);
-    glBindTexture(GL_TEXTURE_2D, wavelengths_);
+    wavelengths_ = gl::Texture::create();
+    glBindTexture(GL_TEXTURE_2D, wavelengths_.id());
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, wavelengthCount_, 1, 0, GL_RGBA, GL_FLOAT, row.data());
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -55,8 +54,8 @@ DiffractionTextures::DiffractionTextures(const IntegratedTables& t)
 
 DiffractionTextures::DiffractionTextures(const VolumeTables& t)
     : path_(2), size_(t.size), slices_(t.slices), extent_(kIntegratedExtent) {
-    glGenTextures(1, &tables_);
-    glBindTexture(GL_TEXTURE_3D, tables_);
+    tables_ = gl::Texture::create();
+    glBindTexture(GL_TEXTURE_3D, tables_.id());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glTexImage3D(GL_TEXTURE_3D, 0, GL_RGB32F, t.size, t.size, t.slices, 0, GL_RGB, GL_FLOAT, t.texels.data());
     glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
@@ -69,48 +68,22 @@ DiffractionTextures::DiffractionTextures(const VolumeTables& t)
     bytes_ = t.bytes();
 }
 
-DiffractionTextures::~DiffractionTextures() {
-    release();
-}
-
-DiffractionTextures::DiffractionTextures(DiffractionTextures&& o) noexcept {
-    *this = std::move(o);
-}
-
-DiffractionTextures& DiffractionTextures::operator=(DiffractionTextures&& o) noexcept {
-    if (this != &o) {
-        release();
-        path_ = o.path_;
-        tables_ = std::exchange(o.tables_, 0u);
-        wavelengths_ = std::exchange(o.wavelengths_, 0u);
-        size_ = o.size_, terms_ = o.terms_, wavelengthCount_ = o.wavelengthCount_, slices_ = o.slices_;
-        extent_ = o.extent_, heightScale_ = o.heightScale_, bytes_ = o.bytes_;
-    }
-    return *this;
-}
-
-void DiffractionTextures::release() noexcept {
-    if (tables_) glDeleteTextures(1, &tables_);
-    if (wavelengths_) glDeleteTextures(1, &wavelengths_);
-    tables_ = wavelengths_ = 0;
-}
-
 void DiffractionTextures::apply(gl::Program& program, int unit) const {
     glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
     program.set("u_diffractionTableSize", static_cast<float>(size_));
     program.set("u_diffractionExtent", static_cast<float>(extent_));
     if (path_ == 2) {
-        glBindTexture(GL_TEXTURE_3D, tables_);
+        glBindTexture(GL_TEXTURE_3D, tables_.id());
         program.set("u_diffractionVolume", unit);
         program.set("u_diffractionSlices", static_cast<float>(slices_));
     } else {
-        glBindTexture(GL_TEXTURE_2D_ARRAY, tables_);
+        glBindTexture(GL_TEXTURE_2D_ARRAY, tables_.id());
         program.set("u_diffractionTables", unit);
         program.set("u_diffractionTerms", terms_);
     }
     if (path_ == 0) {
         glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit + 1));
-        glBindTexture(GL_TEXTURE_2D, wavelengths_);
+        glBindTexture(GL_TEXTURE_2D, wavelengths_.id());
         program.set("u_diffractionWavelengths", unit + 1);
         program.set("u_diffractionHeightScale", static_cast<float>(heightScale_));
         program.set("u_diffractionWavelengthCount", wavelengthCount_);

@@ -9,6 +9,7 @@
 #include <glm/vec2.hpp>
 
 #include "gl_compute.hpp"
+#include "prism/gl/handles.hpp"
 #include "prism/gl/program.hpp"
 #include "prism/water_shaders.hpp"
 
@@ -53,9 +54,9 @@ void setIfPresent(gl::Program& p, std::string_view name, const T& value) {
     if (p.hasUniform(name)) p.set(name, value);
 }
 
-GLuint makeBuffer(GLsizeiptr bytes, const void* data) {
-    GLuint b = 0;
-    glGenBuffers(1, &b);
+// A storage buffer owned by `owner` (prism::gl handles); returns its name.
+GLuint makeBuffer(std::vector<gl::Buffer>& owner, GLsizeiptr bytes, const void* data) {
+    const GLuint b = owner.emplace_back(gl::Buffer::create()).id();
     glBindBuffer(detail::kShaderStorageBuffer, b);
     glBufferData(detail::kShaderStorageBuffer, bytes, data, GL_DYNAMIC_COPY);
     glBindBuffer(detail::kShaderStorageBuffer, 0);
@@ -73,16 +74,11 @@ void fillBuffer(GLuint buffer, GLsizeiptr bytes, const void* data) {
 struct GpuWaterSimulation::Impl {
     detail::ComputeFunctions fn;
     std::vector<gl::Program> programs;
+    std::vector<gl::Buffer> ownedBuffers;  // owns every buffer below, which are its names
     GLuint terrain = 0, permeability = 0, water[2] = {0, 0}, velocity = 0, flow = 0, ledgerCells = 0, partials = 0,
            totals = 0;
     int current = 0;
     GLuint groupsX = 1, groupsY = 1, partialCount = 1;
-
-    ~Impl() {
-        GLuint buffers[] = {terrain, permeability, water[0], water[1], velocity, flow, ledgerCells, partials, totals};
-        for (GLuint b : buffers)
-            if (b) glDeleteBuffers(1, &b);
-    }
 
     void dispatch(Pass pass, GLuint x, GLuint y) {
         programs[pass].use();
@@ -120,14 +116,14 @@ GpuWaterSimulation::GpuWaterSimulation(HeightField terrain, std::vector<float> p
     impl_->groupsY = static_cast<GLuint>((height() + 15) / 16);
     impl_->partialCount = static_cast<GLuint>((n + 255) / 256);
     const auto bytes = [](std::size_t count, std::size_t size) { return static_cast<GLsizeiptr>(count * size); };
-    impl_->terrain = makeBuffer(bytes(n, sizeof(float)), terrain_.heights.data());
-    impl_->permeability = makeBuffer(bytes(n, sizeof(float)), permeability_.data());
-    for (GLuint& w : impl_->water) w = makeBuffer(bytes(n, sizeof(glm::vec2)), nullptr);
-    impl_->velocity = makeBuffer(bytes(n, sizeof(glm::vec2)), nullptr);
-    impl_->flow = makeBuffer(bytes(n, sizeof(glm::vec2)), nullptr);
-    impl_->ledgerCells = makeBuffer(bytes(n, 2 * sizeof(double)), nullptr);
-    impl_->partials = makeBuffer(bytes(impl_->partialCount, 2 * sizeof(double)), nullptr);
-    impl_->totals = makeBuffer(bytes(1, 2 * sizeof(double)), nullptr);
+    impl_->terrain = makeBuffer(impl_->ownedBuffers, bytes(n, sizeof(float)), terrain_.heights.data());
+    impl_->permeability = makeBuffer(impl_->ownedBuffers, bytes(n, sizeof(float)), permeability_.data());
+    for (GLuint& w : impl_->water) w = makeBuffer(impl_->ownedBuffers, bytes(n, sizeof(glm::vec2)), nullptr);
+    impl_->velocity = makeBuffer(impl_->ownedBuffers, bytes(n, sizeof(glm::vec2)), nullptr);
+    impl_->flow = makeBuffer(impl_->ownedBuffers, bytes(n, sizeof(glm::vec2)), nullptr);
+    impl_->ledgerCells = makeBuffer(impl_->ownedBuffers, bytes(n, 2 * sizeof(double)), nullptr);
+    impl_->partials = makeBuffer(impl_->ownedBuffers, bytes(impl_->partialCount, 2 * sizeof(double)), nullptr);
+    impl_->totals = makeBuffer(impl_->ownedBuffers, bytes(1, 2 * sizeof(double)), nullptr);
     gl::throwIfGlError("creating the water simulation's storage buffers");
     for (auto& p : impl_->programs) {
         setIfPresent(p, "u_gridSize", glm::ivec2(width(), height()));

@@ -11,6 +11,7 @@
 #include "prism/render/frame_uniforms.hpp"
 #include "prism/gl/framebuffer.hpp"
 #include "prism/gl/gl.hpp"
+#include "prism/gl/handles.hpp"
 #include "prism/water/gpu_water_simulation.hpp"
 #include "prism/water/rain_rates.hpp"
 #include "prism/water/terrain_mesh.hpp"
@@ -145,40 +146,27 @@ struct WaterSceneRenderer::Impl {
     GLsizei waterIndexCount = 0;
     GLuint rippleTexture = 0;
     GLuint albedoTexture = 0;  // the terrain's albedo per cell, for the ground seen through water
+    // The names above are owned here, through prism::gl handles (deleted with the renderer).
+    std::vector<gl::Buffer> ownedBuffers;
+    std::vector<gl::Texture> ownedTextures;
+    std::vector<gl::VertexArray> ownedVertexArrays;
 
     explicit Impl(const WaterScene& s) : scene(s) {}
 
-    ~Impl() {
-        GLuint textures[] = {skyTexture, depthTexture, heightTexture, rippleTexture, albedoTexture};
-        for (GLuint t : textures)
-            if (t) glDeleteTextures(1, &t);
-        GLuint buffers[] = {terrainBuffers[0], terrainBuffers[1], terrainBuffers[2],
-                            terrainBuffers[3], terrainBuffers[4], skyVbo,
-                            waterIndices};
-        for (GLuint b : buffers)
-            if (b) glDeleteBuffers(1, &b);
-        GLuint arrays[] = {terrainVao, skyVao, waterVao};
-        for (GLuint a : arrays)
-            if (a) glDeleteVertexArrays(1, &a);
-    }
-
     GLuint newBuffer(GLenum target, GLsizeiptr bytes, const void* data) {
-        GLuint b = 0;
-        glGenBuffers(1, &b);
+        const GLuint b = ownedBuffers.emplace_back(gl::Buffer::create()).id();
         glBindBuffer(target, b);
         glBufferData(target, bytes, data, GL_STATIC_DRAW);
         ++counts.buffers;
         return b;
     }
     GLuint newTexture() {
-        GLuint t = 0;
-        glGenTextures(1, &t);
+        const GLuint t = ownedTextures.emplace_back(gl::Texture::create()).id();
         ++counts.textures;
         return t;
     }
     GLuint newVertexArray() {
-        GLuint a = 0;
-        glGenVertexArrays(1, &a);
+        const GLuint a = ownedVertexArrays.emplace_back(gl::VertexArray::create()).id();
         ++counts.vertexArrays;
         return a;
     }

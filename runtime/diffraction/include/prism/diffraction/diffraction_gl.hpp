@@ -16,6 +16,7 @@
 
 #include "prism/diffraction/lookup_tables.hpp"
 #include "prism/gl/program.hpp"
+#include "prism/gl/handles.hpp"
 #include "prism/render/program_cache.hpp"
 
 namespace prism::diffraction {
@@ -25,9 +26,8 @@ class DiffractionTextures {
     explicit DiffractionTextures(const SpectralTables& tables);    // path (a): RG32F layers + wavelengths
     explicit DiffractionTextures(const IntegratedTables& tables);  // path (b): RGB32F layers
     explicit DiffractionTextures(const VolumeTables& tables);      // path (c): RGB32F 3D texture
-    ~DiffractionTextures();
-    DiffractionTextures(DiffractionTextures&& other) noexcept;
-    DiffractionTextures& operator=(DiffractionTextures&& other) noexcept;
+    DiffractionTextures(DiffractionTextures&& other) noexcept = default;
+    DiffractionTextures& operator=(DiffractionTextures&& other) noexcept = default;
     DiffractionTextures(const DiffractionTextures&) = delete;
     DiffractionTextures& operator=(const DiffractionTextures&) = delete;
 
@@ -40,9 +40,8 @@ class DiffractionTextures {
     void apply(gl::Program& program, int unit = 0) const;
 
   private:
-    void release() noexcept;
     int path_ = 0;
-    unsigned tables_ = 0, wavelengths_ = 0;
+    gl::Texture tables_, wavelengths_;
     int size_ = 0, terms_ = 0, wavelengthCount_ = 0, slices_ = 0;
     double extent_ = 0.0, heightScale_ = 0.0;
     std::size_t bytes_ = 0;
