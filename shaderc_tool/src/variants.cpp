@@ -72,9 +72,10 @@ FilterParseResult parseVariantFilters(const std::vector<std::string>& specs) {
 namespace {
 
 bool matches(const VariantFilter& f, const std::vector<std::pair<std::string, std::string>>& defines) {
-    for (const auto& [name, value] : f.fixed) {
+    for (const auto& fixed : f.fixed) {  // no structured binding: Clang 14 cannot capture one in a lambda
+        const std::string& name = fixed.first;
         auto it = std::find_if(defines.begin(), defines.end(), [&](const auto& d) { return d.first == name; });
-        if (it == defines.end() || it->second != value) return false;
+        if (it == defines.end() || it->second != fixed.second) return false;
     }
     return true;
 }
@@ -95,7 +96,9 @@ ChoicesResult variantChoices(const std::string& shader, const std::vector<Axis>&
             continue;
         }
         if (f.shader != shader) continue;
-        for (const auto& [name, value] : f.fixed) {
+        for (const auto& fixed : f.fixed) {  // no structured binding: Clang 14 cannot capture one in a lambda
+            const std::string& name = fixed.first;
+            const std::string& value = fixed.second;
             auto ax = std::find_if(axes.begin(), axes.end(), [&](const Axis& a) { return a.name == name; });
             if (ax == axes.end())
                 r.diagnostics.push_back(makeError(
