@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 
 namespace prism::shaderc {
 namespace {
@@ -54,7 +55,41 @@ struct Field {
     }
 };
 
+// Contracts nest 3 levels; deeper JSON is refused before parsing (docs/reliability.md).
+constexpr int kMaxJsonDepth = 64;
+
+// Byte offset of the first '[' or '{' nested deeper than `maxDepth` (strings skipped).
+std::optional<std::size_t> firstTooDeep(const std::string& text, int maxDepth) {
+    int depth = 0;
+    bool inString = false, escaped = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char ch = text[i];
+        if (inString) {
+            if (escaped)
+                escaped = false;
+            else if (ch == '\\')
+                escaped = true;
+            else if (ch == '"')
+                inString = false;
+        } else if (ch == '"') {
+            inString = true;
+        } else if (ch == '[' || ch == '{') {
+            if (++depth > maxDepth) return i;
+        } else if (ch == ']' || ch == '}') {
+            --depth;
+        }
+    }
+    return std::nullopt;
+}
+
 void loadOne(const std::string& path, const std::string& text, Contract& c, std::vector<Diagnostic>& out) {
+    if (const auto deep = firstTooDeep(text, kMaxJsonDepth)) {
+        auto [line, col] = lineColumnOf(text, *deep);
+        out.push_back(makeError(path, line, col,
+                                "contract JSON nested more than " + std::to_string(kMaxJsonDepth) +
+                                    " levels deep (the limit); a contract needs 3"));
+        return;
+    }
     json doc;
     try {
         doc = json::parse(text);
@@ -64,6 +99,12 @@ void loadOne(const std::string& path, const std::string& text, Contract& c, std:
         auto pos = what.find("syntax error");
         out.push_back(makeError(path, line, col,
                                 "malformed contract JSON: " + (pos == std::string::npos ? what : what.substr(pos))));
+        return;
+    } catch (const json::exception& e) {  // e.g. out_of_range 406: a number too large for a double
+        std::string what = e.what();
+        auto pos = what.find("] ");
+        out.push_back(makeError(path, 0, 0,
+                                "malformed contract JSON: " + (pos == std::string::npos ? what : what.substr(pos + 2))));
         return;
     }
     Field f{path, out};
