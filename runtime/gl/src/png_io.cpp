@@ -2,8 +2,10 @@
 #include "prism/png_io.hpp"
 
 #include <png.h>
+#include <signal.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstring>
 #include <string>
 #include <system_error>
@@ -16,6 +18,25 @@ std::string quoted(const std::filesystem::path& p) {
     out += p.string();
     out += '\'';
     return out;
+}
+
+// Removes `<name>.tmp-<pid>` files beside `target` that runs killed mid-write left behind
+// (their process no longer exists); a live writer's temp file is kept.
+void removeStaleTemps(const std::filesystem::path& target) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+    const std::string prefix = target.filename().string() + ".tmp-";
+    for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (name.size() <= prefix.size() || name.size() > prefix.size() + 9 || name.compare(0, prefix.size(), prefix) != 0)
+            continue;
+        const std::string digits = name.substr(prefix.size());
+        if (digits.find_first_not_of("0123456789") != std::string::npos) continue;
+        const auto pid = static_cast<pid_t>(std::stol(digits));
+        std::error_code ignored;
+        if (pid != ::getpid() && ::kill(pid, 0) != 0 && errno == ESRCH) fs::remove(it->path(), ignored);
+    }
 }
 
 }  // namespace
@@ -33,6 +54,7 @@ void writePng(const std::filesystem::path& path, const Image8& image) {
                            quoted(path.parent_path()) + ": " + ec.message());
     }
 
+    removeStaleTemps(path);
     std::filesystem::path temp = path;
     temp += ".tmp-" + std::to_string(::getpid());
 
@@ -73,6 +95,13 @@ Image8 readPng(const std::filesystem::path& path) {
         const std::string reason = png.message;
         png_image_free(&png);
         throw PngError("cannot read PNG " + quoted(path) + ": " + reason);
+    }
+    if (png.width > kMaxPngSide || png.height > kMaxPngSide ||
+        static_cast<std::uint64_t>(png.width) * png.height > kMaxPngPixels) {
+        png_image_free(&png);
+        throw PngError("cannot read PNG " + quoted(path) + ": " + std::to_string(png.width) + "x" +
+                       std::to_string(png.height) + " pixels is past the limit (" + std::to_string(kMaxPngSide) +
+                       " a side, " + std::to_string(kMaxPngPixels) + " in all)");
     }
     png.format = PNG_FORMAT_RGBA;
     Image8 image(static_cast<int>(png.width), static_cast<int>(png.height));

@@ -99,7 +99,12 @@ GreyImage readGreyPng(const std::filesystem::path& path) {
     state->h = png_get_image_height(png, info);
     state->depth = png_get_bit_depth(png, info);
     const int colorType = png_get_color_type(png, info);
-    if (colorType == PNG_COLOR_TYPE_PALETTE)
+    if (state->w > kMaxMapSide || state->h > kMaxMapSide ||
+        static_cast<std::uint64_t>(state->w) * state->h > kMaxMapCells)
+        state->problem = std::to_string(state->w) + "x" + std::to_string(state->h) +
+                         " pixels is past the limit for height and permeability maps (" + std::to_string(kMaxMapSide) +
+                         " a side, " + std::to_string(kMaxMapCells) + " in all)";
+    else if (colorType == PNG_COLOR_TYPE_PALETTE)
         state->problem =
             "palette PNG; height and permeability maps must be greyscale (or RGB, red channel) with 8 or 16 bits";
     else if (state->depth != 8 && state->depth != 16)
