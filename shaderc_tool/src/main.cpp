@@ -87,6 +87,7 @@ int main(int argc, char** argv) {
     catalog.data.commandLine = o.commandLine;
     catalog.data.fingerprint = fingerprint(catalog);
     if (sink.errorCount() == 0 && headerIsCurrent(o, catalog.data.fingerprint)) {
+        removeStaleTemps(o.output);  // nothing to write, but a killed run may have left a temp file
         sink.print(std::cerr, o.errorFormat);
         return writeBuildSystemFiles(o, catalog);
     }

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <system_error>
@@ -64,14 +65,30 @@ void writePng(const std::filesystem::path& path, const Image8& image) {
     png.width = static_cast<png_uint_32>(image.width);
     png.height = static_cast<png_uint_32>(image.height);
     png.format = PNG_FORMAT_RGBA;
-    const bool ok = png_image_write_to_file(&png, temp.c_str(), 0, image.data.data(),
-                                            static_cast<png_int_32>(image.width * 4), nullptr) != 0;
-    const std::string reason = png.message;
+    // Written through our own FILE so that a full disk or a read-only directory is
+    // reported with its errno (libpng alone says only "Write Error").
+    std::FILE* file = std::fopen(temp.c_str(), "wb");
+    if (!file)
+        throw PngError("cannot write PNG " + quoted(path) + ": " + std::strerror(errno) +
+                       " (check that the directory is writable)");
+    errno = 0;
+    bool ok = png_image_write_to_stdio(&png, file, 0, image.data.data(), static_cast<png_int_32>(image.width * 4),
+                                       nullptr) != 0;
+    int error = ok ? 0 : errno;
+    if (std::fflush(file) != 0 || std::ferror(file)) {
+        ok = false;
+        error = error ? error : errno;
+    }
+    if (std::fclose(file) != 0) {
+        ok = false;
+        error = error ? error : errno;
+    }
+    const std::string reason = error ? std::string(std::strerror(error)) : std::string(png.message);
     png_image_free(&png);
     if (!ok) {
         std::filesystem::remove(temp, ec);
         throw PngError("cannot write PNG " + quoted(path) + ": " + (reason.empty() ? "libpng failed" : reason) +
-                       " (check that the directory is writable)");
+                       (error == ENOSPC ? " (free some disk space)" : " (check that the directory is writable)"));
     }
 
     std::filesystem::rename(temp, path, ec);
