@@ -10,6 +10,7 @@
 #include <zlib.h>
 
 #include "contract.hpp"
+#include "variants.hpp"
 #include "prism/obj_loader.hpp"
 #include "prism/png_io.hpp"
 #include "prism/scene_loader.hpp"
@@ -64,6 +65,30 @@ TEST(JsonDepthLimit, ContractWith100000NestedArraysIsAnErrorNamingTheLimit) {
         << r.diagnostics[0].message;
     MemoryReader within{{"c.json", "{\"attributes\": [], \"uniforms\": [], \"x\": " + nested(62) + "}"}};
     EXPECT_TRUE(loadContracts({"c.json"}, within).diagnostics.empty());
+}
+
+// --- Variant combinations per shader: 4096 ---
+
+std::vector<prism::shaderc::Axis> booleanAxes(int count) {
+    std::vector<prism::shaderc::Axis> axes;
+    for (int i = 0; i < count; ++i) axes.push_back({"AXIS" + std::to_string(i), {"0", "1"}});
+    return axes;
+}
+
+TEST(VariantLimit, TwelveBooleanAxesGive4096Choices) {
+    const auto r = prism::shaderc::variantChoices("s", booleanAxes(12), {});
+    EXPECT_TRUE(r.diagnostics.empty());
+    EXPECT_EQ(r.choices.size(), 4096u);
+}
+
+TEST(VariantLimit, SixtyFourBooleanAxesAreAnErrorNamingTheLimitAtOnce) {
+    for (int count : {13, 64}) {
+        const auto r = prism::shaderc::variantChoices("s", booleanAxes(count), {});
+        ASSERT_EQ(r.diagnostics.size(), 1u) << count;
+        EXPECT_TRUE(r.choices.empty());
+        EXPECT_EQ(r.diagnostics[0].message,
+                  "shader 's' declares more than 4096 variant combinations (the limit); declare fewer axes or values");
+    }
 }
 
 // --- Scene budgets: image size, rain particles, water grid ---
