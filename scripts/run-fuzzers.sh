@@ -73,8 +73,10 @@ for target in "${TARGETS[@]}"; do
   fi
   runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo "?")
   cov=$(grep -o 'cov: [0-9]* ft: [0-9]*' "$log" | tail -1 || echo "cov: ? ft: ?")
+  pcs=$(grep -o 'PC tables ([0-9]* PCs)' "$log" | grep -o '[0-9][0-9]*' | tail -1 || echo "?")
   corpus=$(ls "$work" | wc -l)
-  printf '%s\t%s\t%s s\t%s executions\t%s\t%s new inputs\t%s\n' "$(date -u +%FT%TZ)" "$target" \
-    "$(( $(date +%s) - started ))" "$runs" "$cov" "$corpus" "$result" | tee -a "$BUILD_DIR/fuzz-stats.tsv"
+  printf '%s\t%s\t%s s\t%s executions\t%s of %s instrumented edges\t%s inputs in corpus\t%s\n' \
+    "$(date -u +%FT%TZ)" "$target" "$(( $(date +%s) - started ))" "$runs" "$cov" "$pcs" "$corpus" "$result" |
+    tee -a "$BUILD_DIR/fuzz-stats.tsv"
 done
 exit $status
