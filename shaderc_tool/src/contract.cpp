@@ -55,6 +55,12 @@ struct Field {
     }
 };
 
+bool isGlslIdentifier(const std::string& name) {
+    auto letter = [](char ch) { return (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || ch == '_'; };
+    if (name.empty() || !letter(name[0])) return false;
+    return std::all_of(name.begin(), name.end(), [&](char ch) { return letter(ch) || (ch >= '0' && ch <= '9'); });
+}
+
 // Contracts nest 3 levels; deeper JSON is refused before parsing (docs/reliability.md).
 constexpr int kMaxJsonDepth = 64;
 
@@ -125,7 +131,10 @@ void loadOne(const std::string& path, const std::string& text, Contract& c, std:
                 }
                 ContractAttribute attr{f.string(a, "name", at), f.string(a, "type", at),
                                        f.integer(a, "location", at, true)};
-                if (!attr.type.empty() && glTypeOf(attr.type) == 0) f.fail(at + "/type", "a GLSL type such as vec3");
+                if (a.contains("type") && a["type"].is_string() && glTypeOf(attr.type) == 0)  // "" too
+                    f.fail(at + "/type", "a GLSL type such as vec3");
+                if (a.contains("name") && a["name"].is_string() && !isGlslIdentifier(attr.name))
+                    f.fail(at + "/name", "a GLSL identifier such as a_position");
                 c.attributes.push_back(std::move(attr));
             }
     }
@@ -141,7 +150,10 @@ void loadOne(const std::string& path, const std::string& text, Contract& c, std:
                     continue;
                 }
                 ContractUniform uni{f.string(u, "name", at), f.string(u, "type", at), f.integer(u, "array", at, false)};
-                if (!uni.type.empty() && glTypeOf(uni.type) == 0) f.fail(at + "/type", "a GLSL type such as mat4");
+                if (u.contains("type") && u["type"].is_string() && glTypeOf(uni.type) == 0)  // "" too
+                    f.fail(at + "/type", "a GLSL type such as mat4");
+                if (u.contains("name") && u["name"].is_string() && !isGlslIdentifier(uni.name))
+                    f.fail(at + "/name", "a GLSL identifier such as u_world");
                 c.uniforms.push_back(std::move(uni));
             }
     }
