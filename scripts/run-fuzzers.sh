@@ -9,10 +9,11 @@
 # Options: --build-dir DIR (default build-san, shared with run-sanitizer-tests.sh),
 # --no-build, --seconds N, --corpus-only, then harness names (default: all built).
 # Each run fails on any crash, leak, timeout (-timeout=5 s per input) or out-of-memory
-# (-rss_limit_mb=2048). Inputs the fuzzer finds go to DIR/fuzz-work/<target>/ (never
-# into the source tree); a failing input is saved as DIR/fuzz-artifacts/<target>/crash-*,
-# to be added to tests/fuzz/corpus/<target>/ once the bug is fixed. Executions and
-# coverage of each run are appended to DIR/fuzz-stats.tsv.
+# (-rss_limit_mb=2048, and any one allocation over 1 GB: -malloc_limit_mb=1024). Inputs
+# the fuzzer finds go to DIR/fuzz-work/<target>/ (never into the source tree); a failing
+# input is saved as DIR/fuzz-artifacts/<target>/crash-* (or oom-*, timeout-*, leak-*), to
+# be added to tests/fuzz/corpus/<target>/ as regress-*.<ext> once the bug is fixed.
+# Executions and coverage of each run are appended to DIR/fuzz-stats.tsv.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$PWD
@@ -53,7 +54,7 @@ for target in "${TARGETS[@]}"; do
   mkdir -p "$artifacts"
   if [ "$CORPUS_ONLY" = 1 ]; then
     echo "run-fuzzers: $target: every input of $seeds once"
-    "$exe" -artifact_prefix="$artifacts/" "$seeds"/* >"$artifacts/corpus.log" 2>&1 || {
+    "$exe" -rss_limit_mb=2048 -malloc_limit_mb=1024 -artifact_prefix="$artifacts/" "$seeds"/* >"$artifacts/corpus.log" 2>&1 || {
       status=1; tail -40 "$artifacts/corpus.log"; echo "run-fuzzers: $target: FAILED on a corpus input"; }
     continue
   fi
@@ -64,7 +65,7 @@ for target in "${TARGETS[@]}"; do
   log=$artifacts/fuzz.log
   echo "run-fuzzers: $target: fuzzing for $SECONDS_EACH s"
   started=$(date +%s)
-  if "$exe" -max_total_time="$SECONDS_EACH" -timeout=5 -rss_limit_mb=2048 -print_final_stats=1 \
+  if "$exe" -max_total_time="$SECONDS_EACH" -timeout=5 -rss_limit_mb=2048 -malloc_limit_mb=1024 -print_final_stats=1 \
       -artifact_prefix="$artifacts/" "${dict[@]}" "$work" "$seeds" >"$log" 2>&1; then
     result=ok
   else

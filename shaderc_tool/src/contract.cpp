@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <limits>
 #include <map>
 #include <optional>
 
@@ -47,8 +48,10 @@ struct Field {
             if (required) fail(at + "/" + key, "an integer");
             return 0;
         }
-        if (!obj[key].is_number_integer() || obj[key].get<long long>() < 0) {
-            fail(at + "/" + key, "a non-negative integer");
+        // Checked as unsigned too: 2^31 and more would wrap to a negative int (found by fuzzing).
+        if (!obj[key].is_number_integer() || obj[key].get<long long>() < 0 ||
+            obj[key].get<unsigned long long>() > static_cast<unsigned long long>(std::numeric_limits<int>::max())) {
+            fail(at + "/" + key, "a non-negative integer up to 2147483647");
             return 0;
         }
         return obj[key].get<int>();

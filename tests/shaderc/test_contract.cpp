@@ -127,3 +127,16 @@ TEST(Contract, EmptyTypeAndNonIdentifierNamesAreErrors) {
     EXPECT_NE(all.find("/uniforms/0/name: expected a GLSL identifier such as u_world"), std::string::npos) << all;
     EXPECT_NE(all.find("/uniforms/1/name: expected a GLSL identifier"), std::string::npos) << all;
 }
+
+// Found by the contract_json fuzzer (corpus/contract_json/regress-location-past-int.json):
+// a location of 2^31 or more wrapped to a negative int and was accepted.
+TEST(Contract, LocationPastIntRangeIsAnError) {
+    MemoryReader files{{"c.json", R"({"attributes": [{"name": "a_x", "type": "vec3", "location": 2147483648}],
+                                      "uniforms": [{"name": "u_a", "type": "float", "array": 4294967296}]})"}};
+    auto r = loadContracts({"c.json"}, files);
+    std::string all;
+    for (const auto& d : r.diagnostics) all += formatDiagnostic(d, ErrorFormat::Gcc);
+    EXPECT_NE(all.find("/attributes/0/location: expected a non-negative integer up to 2147483647"), std::string::npos)
+        << all;
+    EXPECT_NE(all.find("/uniforms/0/array: expected a non-negative integer up to 2147483647"), std::string::npos) << all;
+}
