@@ -96,8 +96,10 @@ GreyImage readGreyPng(const std::filesystem::path& path) {
     }
     png_init_io(png, file.get());
     png_set_sig_bytes(png, 8);
-    // Ancillary chunks (iCCP, zTXt, ...) may claim any decompressed size; libpng here
-    // sets no cap, and a 90-byte file asked for 1.6 GB (found by fuzzing). Maps need none.
+    // Compressed ancillary chunks may claim any size: a 90-byte file's iCCP profile made
+    // libpng allocate 1.6 GB (found by fuzzing). Maps need none of them: skip them unread.
+    static const png_byte kSkipped[] = "iCCP\0zTXt\0iTXt\0tEXt\0sPLT\0eXIf\0pCAL\0sCAL";
+    png_set_keep_unknown_chunks(png, PNG_HANDLE_CHUNK_NEVER, kSkipped, 8);
     png_set_chunk_malloc_max(png, kMaxAncillaryChunkBytes);
     png_read_info(png, info);
     state->w = png_get_image_width(png, info);
