@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Sets up a fresh Debian 12 machine (idempotent), builds everything and runs every test
-# tier (unit, GL, rendering, integration) with CTest. This is what .ci/run calls.
+# tier (unit, GL, rendering, integration) with CTest, then the sanitizer and fuzz tiers
+# (docs/reliability.md). This is what .ci/run calls.
 # Benchmarks are not tests: they are built and run on their own (see docs/).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -10,3 +11,11 @@ cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DPRISM_BUILD_RUNTIME=ON -DPRISM_BUILD_TESTS=ON -DPRISM_BUILD_EXAMPLES=ON -DPRISM_BUILD_BENCH=OFF
 cmake --build "$BUILD_DIR" -j "$(nproc)"
 ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$(nproc)" --timeout 900
+
+# Sanitizer tier: the unit and GL tests again, built with Clang 14, ASan and UBSan; then
+# the fuzz tier (label fuzz): each libFuzzer harness over its committed corpus and for
+# PRISM_FUZZ_SECONDS (30) s, in the same build.
+SAN_BUILD_DIR=${SAN_BUILD_DIR:-build-san}
+bash scripts/run-sanitizer-tests.sh --build-dir "$SAN_BUILD_DIR"
+cmake --build "$SAN_BUILD_DIR" --target prism_fuzzers -j "$(nproc)"
+ctest --test-dir "$SAN_BUILD_DIR" -L '^fuzz$' --output-on-failure -j "$(nproc)"

@@ -14,6 +14,7 @@ PACKAGES=(
   libcli11-dev libfmt-dev nlohmann-json3-dev
   libtinyobjloader-dev libstb-dev
   xvfb xauth
+  clang-14 libclang-rt-14-dev
 )
 
 missing=()

@@ -4,7 +4,9 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <limits>
 #include <map>
+#include <optional>
 
 namespace prism::shaderc {
 namespace {
@@ -46,15 +48,57 @@ struct Field {
             if (required) fail(at + "/" + key, "an integer");
             return 0;
         }
-        if (!obj[key].is_number_integer() || obj[key].get<long long>() < 0) {
-            fail(at + "/" + key, "a non-negative integer");
+        // Checked as unsigned too: 2^31 and more would wrap to a negative int (found by fuzzing).
+        if (!obj[key].is_number_integer() || obj[key].get<long long>() < 0 ||
+            obj[key].get<unsigned long long>() > static_cast<unsigned long long>(std::numeric_limits<int>::max())) {
+            fail(at + "/" + key, "a non-negative integer up to 2147483647");
             return 0;
         }
         return obj[key].get<int>();
     }
 };
 
+bool isGlslIdentifier(const std::string& name) {
+    auto letter = [](char ch) { return (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || ch == '_'; };
+    if (name.empty() || !letter(name[0])) return false;
+    return std::all_of(name.begin(), name.end(), [&](char ch) { return letter(ch) || (ch >= '0' && ch <= '9'); });
+}
+
+// Contracts nest 3 levels; deeper JSON is refused before parsing (docs/reliability.md).
+constexpr int kMaxJsonDepth = 64;
+
+// Byte offset of the first '[' or '{' nested deeper than `maxDepth` (strings skipped).
+std::optional<std::size_t> firstTooDeep(const std::string& text, int maxDepth) {
+    int depth = 0;
+    bool inString = false, escaped = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char ch = text[i];
+        if (inString) {
+            if (escaped)
+                escaped = false;
+            else if (ch == '\\')
+                escaped = true;
+            else if (ch == '"')
+                inString = false;
+        } else if (ch == '"') {
+            inString = true;
+        } else if (ch == '[' || ch == '{') {
+            if (++depth > maxDepth) return i;
+        } else if (ch == ']' || ch == '}') {
+            --depth;
+        }
+    }
+    return std::nullopt;
+}
+
 void loadOne(const std::string& path, const std::string& text, Contract& c, std::vector<Diagnostic>& out) {
+    if (const auto deep = firstTooDeep(text, kMaxJsonDepth)) {
+        auto [line, col] = lineColumnOf(text, *deep);
+        out.push_back(makeError(path, line, col,
+                                "contract JSON nested more than " + std::to_string(kMaxJsonDepth) +
+                                    " levels deep (the limit); a contract needs 3"));
+        return;
+    }
     json doc;
     try {
         doc = json::parse(text);
@@ -64,6 +108,12 @@ void loadOne(const std::string& path, const std::string& text, Contract& c, std:
         auto pos = what.find("syntax error");
         out.push_back(makeError(path, line, col,
                                 "malformed contract JSON: " + (pos == std::string::npos ? what : what.substr(pos))));
+        return;
+    } catch (const json::exception& e) {  // e.g. out_of_range 406: a number too large for a double
+        std::string what = e.what();
+        auto pos = what.find("] ");
+        out.push_back(makeError(path, 0, 0,
+                                "malformed contract JSON: " + (pos == std::string::npos ? what : what.substr(pos + 2))));
         return;
     }
     Field f{path, out};
@@ -84,7 +134,10 @@ void loadOne(const std::string& path, const std::string& text, Contract& c, std:
                 }
                 ContractAttribute attr{f.string(a, "name", at), f.string(a, "type", at),
                                        f.integer(a, "location", at, true)};
-                if (!attr.type.empty() && glTypeOf(attr.type) == 0) f.fail(at + "/type", "a GLSL type such as vec3");
+                if (a.contains("type") && a["type"].is_string() && glTypeOf(attr.type) == 0)  // "" too
+                    f.fail(at + "/type", "a GLSL type such as vec3");
+                if (a.contains("name") && a["name"].is_string() && !isGlslIdentifier(attr.name))
+                    f.fail(at + "/name", "a GLSL identifier such as a_position");
                 c.attributes.push_back(std::move(attr));
             }
     }
@@ -100,7 +153,10 @@ void loadOne(const std::string& path, const std::string& text, Contract& c, std:
                     continue;
                 }
                 ContractUniform uni{f.string(u, "name", at), f.string(u, "type", at), f.integer(u, "array", at, false)};
-                if (!uni.type.empty() && glTypeOf(uni.type) == 0) f.fail(at + "/type", "a GLSL type such as mat4");
+                if (u.contains("type") && u["type"].is_string() && glTypeOf(uni.type) == 0)  // "" too
+                    f.fail(at + "/type", "a GLSL type such as mat4");
+                if (u.contains("name") && u["name"].is_string() && !isGlslIdentifier(uni.name))
+                    f.fail(at + "/name", "a GLSL identifier such as u_world");
                 c.uniforms.push_back(std::move(uni));
             }
     }

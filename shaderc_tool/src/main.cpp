@@ -94,6 +94,7 @@ int main(int argc, char** argv) {
     catalog.data.sourcesBlock = sourcesBlock(recordSources(o, catalog.filesRead, disk));
     catalog.data.fingerprint = fingerprint(catalog);
     if (sink.errorCount() == 0 && headerIsCurrent(o, catalog.data.fingerprint)) {
+        removeStaleTemps(o.output);  // nothing to write, but a killed run may have left a temp file
         sink.print(std::cerr, o.errorFormat);
         return writeBuildSystemFiles(o, catalog.filesRead);
     }

@@ -7,12 +7,30 @@
 #include <fstream>
 #include <sstream>
 
+#include <signal.h>
 #include <unistd.h>
 
 namespace prism::shaderc {
 namespace fs = std::filesystem;
 
+void removeStaleTemps(const fs::path& target) {
+    std::error_code ec;
+    const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+    const std::string prefix = target.filename().string() + ".tmp.";
+    for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (name.size() <= prefix.size() || name.size() > prefix.size() + 9 || name.compare(0, prefix.size(), prefix) != 0)
+            continue;
+        const std::string digits = name.substr(prefix.size());
+        if (digits.find_first_not_of("0123456789") != std::string::npos) continue;
+        const auto pid = static_cast<pid_t>(std::stol(digits));
+        std::error_code ignored;
+        if (pid != ::getpid() && ::kill(pid, 0) != 0 && errno == ESRCH) fs::remove(it->path(), ignored);
+    }
+}
+
 namespace {
+
 bool sameContent(const std::string& path, const std::string& content) {
     std::ifstream in(path, std::ios::binary);
     if (!in) return false;
@@ -26,10 +44,11 @@ bool sameContent(const std::string& path, const std::string& content) {
 }  // namespace
 
 WriteOutcome writeIfChanged(const std::string& path, const std::string& content, std::string& error) {
-    if (sameContent(path, content)) return WriteOutcome::Unchanged;
     std::error_code ec;
     fs::path target(path);
     if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
+    removeStaleTemps(target);
+    if (sameContent(path, content)) return WriteOutcome::Unchanged;
     fs::path temp = target;
     temp += ".tmp." + std::to_string(::getpid());
     {
@@ -39,7 +58,7 @@ WriteOutcome writeIfChanged(const std::string& path, const std::string& content,
             return WriteOutcome::Failed;
         }
         out.write(content.data(), static_cast<std::streamsize>(content.size()));
-        out.flush();
+        out.close();  // a full disk may only show when the last buffer is written
         if (!out) {
             error = path + ": write failed (" + std::strerror(errno) + ")";
             fs::remove(temp, ec);

@@ -109,6 +109,17 @@ ChoicesResult variantChoices(const std::string& shader, const std::vector<Axis>&
         mine.push_back(f);
     }
     if (!r.diagnostics.empty()) return r;
+    std::size_t combinations = 1;  // checked before enumerating: 40 boolean axes would never finish
+    for (const auto& axis : axes) {
+        combinations *= std::max<std::size_t>(axis.values.size(), 1);
+        if (combinations > kMaxVariantCombinations) {
+            r.diagnostics.push_back(makeError("", 0, 0,
+                                              "shader '" + shader + "' declares more than " +
+                                                  std::to_string(kMaxVariantCombinations) +
+                                                  " variant combinations (the limit); declare fewer axes or values"));
+            return r;
+        }
+    }
 
     std::vector<std::size_t> index(axes.size(), 0);
     while (true) {

@@ -3,6 +3,7 @@
 // only those that `--variant SHADER:NAME=VALUE,...` asks for.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <utility>
 #include <vector>
@@ -46,6 +47,10 @@ FilterParseResult parseVariantFilters(const std::vector<std::string>& specs);
 // `shader` when there are any. Filters naming unknown axes or values are errors. A
 // filter for shader "*" applies to every shader, with only the axes that shader declares
 // (`--variant '*:DIRECTIONAL_LIGHTS=2'` builds just the two-light variants everywhere).
+// More combinations than this (the product of the axes' value counts) is an error
+// naming the shader, before any is enumerated (docs/reliability.md).
+inline constexpr std::size_t kMaxVariantCombinations = 4096;
+
 struct ChoicesResult {
     std::vector<VariantChoice> choices;
     std::vector<Diagnostic> diagnostics;

@@ -114,3 +114,29 @@ TEST(Contract, UniformOfWrongType) {
     ASSERT_FALSE(r.ok);
     EXPECT_NE(test::allMessages(r).find("uniform 'u_world' is `mat3` but the contract"), std::string::npos);
 }
+
+// Found by the contract_json fuzzer (tests/fuzz/corpus/contract_json/regress-empty-type.json):
+// an empty type string skipped the GLSL type check, and names were never checked.
+TEST(Contract, EmptyTypeAndNonIdentifierNamesAreErrors) {
+    MemoryReader files{{"c.json", R"({"attributes": [{"name": "a_x", "type": "", "location": 0}],
+                                      "uniforms": [{"name": "u_a:b", "type": "float"}, {"name": "", "type": "vec3"}]})"}};
+    auto r = loadContracts({"c.json"}, files);
+    std::string all;
+    for (const auto& d : r.diagnostics) all += formatDiagnostic(d, ErrorFormat::Gcc);
+    EXPECT_NE(all.find("/attributes/0/type: expected a GLSL type such as vec3"), std::string::npos) << all;
+    EXPECT_NE(all.find("/uniforms/0/name: expected a GLSL identifier such as u_world"), std::string::npos) << all;
+    EXPECT_NE(all.find("/uniforms/1/name: expected a GLSL identifier"), std::string::npos) << all;
+}
+
+// Found by the contract_json fuzzer (corpus/contract_json/regress-location-past-int.json):
+// a location of 2^31 or more wrapped to a negative int and was accepted.
+TEST(Contract, LocationPastIntRangeIsAnError) {
+    MemoryReader files{{"c.json", R"({"attributes": [{"name": "a_x", "type": "vec3", "location": 2147483648}],
+                                      "uniforms": [{"name": "u_a", "type": "float", "array": 4294967296}]})"}};
+    auto r = loadContracts({"c.json"}, files);
+    std::string all;
+    for (const auto& d : r.diagnostics) all += formatDiagnostic(d, ErrorFormat::Gcc);
+    EXPECT_NE(all.find("/attributes/0/location: expected a non-negative integer up to 2147483647"), std::string::npos)
+        << all;
+    EXPECT_NE(all.find("/uniforms/0/array: expected a non-negative integer up to 2147483647"), std::string::npos) << all;
+}

@@ -66,7 +66,7 @@ std::optional<std::string> checkIndex(std::string_view token, int kind, std::int
     if (index > totalInFile)
         return name + " index " + std::to_string(index) + " is out of range: the file defines " +
                std::to_string(totalInFile) + " " + name + (totalInFile == 1 ? "" : "s");
-    if (index < 0 && -index > definedSoFar)
+    if (index < 0 && index < -definedSoFar)  // not -index: INT64_MIN has no negation
         return "relative " + name + " index " + std::to_string(index) + " reaches before the first " + name + " (" +
                std::to_string(definedSoFar) + " defined so far)";
     return std::nullopt;
@@ -147,6 +147,9 @@ std::optional<ObjProblem> findFirstObjProblem(std::string_view text) {
             ++soFar.texcoords;
         } else if (tokens[0] == "f") {
             if (tokens.size() < 4) problem = "`f` needs at least 3 corners, got " + std::to_string(tokens.size() - 1);
+            if (tokens.size() - 1 > kMaxFaceCorners)
+                problem = "`f` has " + std::to_string(tokens.size() - 1) + " corners, more than the limit of " +
+                          std::to_string(kMaxFaceCorners) + " per face; split the polygon";
             for (std::size_t i = 1; !problem && i < tokens.size(); ++i)
                 problem = checkFaceCorner(tokens[i], total, soFar);
         }

@@ -2,8 +2,11 @@
 #include "prism/image/png_io.hpp"
 
 #include <png.h>
+#include <signal.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <system_error>
@@ -16,6 +19,25 @@ std::string quoted(const std::filesystem::path& p) {
     out += p.string();
     out += '\'';
     return out;
+}
+
+// Removes `<name>.tmp-<pid>` files beside `target` that runs killed mid-write left behind
+// (their process no longer exists); a live writer's temp file is kept.
+void removeStaleTemps(const std::filesystem::path& target) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+    const std::string prefix = target.filename().string() + ".tmp-";
+    for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (name.size() <= prefix.size() || name.size() > prefix.size() + 9 || name.compare(0, prefix.size(), prefix) != 0)
+            continue;
+        const std::string digits = name.substr(prefix.size());
+        if (digits.find_first_not_of("0123456789") != std::string::npos) continue;
+        const auto pid = static_cast<pid_t>(std::stol(digits));
+        std::error_code ignored;
+        if (pid != ::getpid() && ::kill(pid, 0) != 0 && errno == ESRCH) fs::remove(it->path(), ignored);
+    }
 }
 
 }  // namespace
@@ -33,6 +55,7 @@ void writePng(const std::filesystem::path& path, const Image8& image) {
                            quoted(path.parent_path()) + ": " + ec.message());
     }
 
+    removeStaleTemps(path);
     std::filesystem::path temp = path;
     temp += ".tmp-" + std::to_string(::getpid());
 
@@ -42,14 +65,30 @@ void writePng(const std::filesystem::path& path, const Image8& image) {
     png.width = static_cast<png_uint_32>(image.width);
     png.height = static_cast<png_uint_32>(image.height);
     png.format = PNG_FORMAT_RGBA;
-    const bool ok = png_image_write_to_file(&png, temp.c_str(), 0, image.data.data(),
-                                            static_cast<png_int_32>(image.width * 4), nullptr) != 0;
-    const std::string reason = png.message;
+    // Written through our own FILE so that a full disk or a read-only directory is
+    // reported with its errno (libpng alone says only "Write Error").
+    std::FILE* file = std::fopen(temp.c_str(), "wb");
+    if (!file)
+        throw PngError("cannot write PNG " + quoted(path) + ": " + std::strerror(errno) +
+                       " (check that the directory is writable)");
+    errno = 0;
+    bool ok = png_image_write_to_stdio(&png, file, 0, image.data.data(), static_cast<png_int_32>(image.width * 4),
+                                       nullptr) != 0;
+    int error = ok ? 0 : errno;
+    if (std::fflush(file) != 0 || std::ferror(file)) {
+        ok = false;
+        error = error ? error : errno;
+    }
+    if (std::fclose(file) != 0) {
+        ok = false;
+        error = error ? error : errno;
+    }
+    const std::string reason = error ? std::string(std::strerror(error)) : std::string(png.message);
     png_image_free(&png);
     if (!ok) {
         std::filesystem::remove(temp, ec);
         throw PngError("cannot write PNG " + quoted(path) + ": " + (reason.empty() ? "libpng failed" : reason) +
-                       " (check that the directory is writable)");
+                       (error == ENOSPC ? " (free some disk space)" : " (check that the directory is writable)"));
     }
 
     std::filesystem::rename(temp, path, ec);
@@ -73,6 +112,13 @@ Image8 readPng(const std::filesystem::path& path) {
         const std::string reason = png.message;
         png_image_free(&png);
         throw PngError("cannot read PNG " + quoted(path) + ": " + reason);
+    }
+    if (png.width > kMaxPngSide || png.height > kMaxPngSide ||
+        static_cast<std::uint64_t>(png.width) * png.height > kMaxPngPixels) {
+        png_image_free(&png);
+        throw PngError("cannot read PNG " + quoted(path) + ": " + std::to_string(png.width) + "x" +
+                       std::to_string(png.height) + " pixels is past the limit (" + std::to_string(kMaxPngSide) +
+                       " a side, " + std::to_string(kMaxPngPixels) + " in all)");
     }
     png.format = PNG_FORMAT_RGBA;
     Image8 image(static_cast<int>(png.width), static_cast<int>(png.height));

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <initializer_list>
 #include <limits>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -229,9 +230,41 @@ std::pair<int, int> lineColumn(const std::string& text, std::size_t byte) {
     return {line, col};
 }
 
+// Scenes nest 4 levels; deeper JSON is refused before parsing (docs/reliability.md).
+constexpr int kMaxJsonDepth = 64;
+
+// Byte offset of the first '[' or '{' nested deeper than `maxDepth` (strings skipped).
+std::optional<std::size_t> firstTooDeep(const std::string& text, int maxDepth) {
+    int depth = 0;
+    bool inString = false, escaped = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char ch = text[i];
+        if (inString) {
+            if (escaped)
+                escaped = false;
+            else if (ch == '\\')
+                escaped = true;
+            else if (ch == '"')
+                inString = false;
+        } else if (ch == '"') {
+            inString = true;
+        } else if (ch == '[' || ch == '{') {
+            if (++depth > maxDepth) return i;
+        } else if (ch == ']' || ch == '}') {
+            --depth;
+        }
+    }
+    return std::nullopt;
+}
+
 }  // namespace
 
 Scene parseScene(const std::string& text, const std::string& fileName) {
+    if (const auto deep = firstTooDeep(text, kMaxJsonDepth)) {
+        auto [line, col] = lineColumn(text, *deep + 1);
+        throw SceneError(fileName + ":" + std::to_string(line) + ":" + std::to_string(col) + ": JSON nested more than " +
+                         std::to_string(kMaxJsonDepth) + " levels deep (the limit); a scene needs 4");
+    }
     json j;
     try {
         j = json::parse(text);
@@ -241,6 +274,10 @@ Scene parseScene(const std::string& text, const std::string& fileName) {
         auto pos = what.find("syntax error");
         throw SceneError(fileName + ":" + std::to_string(line) + ":" + std::to_string(col) + ": " +
                          (pos == std::string::npos ? what : what.substr(pos)));
+    } catch (const json::exception& e) {  // e.g. out_of_range 406: a number too large for a double
+        std::string what = e.what();
+        auto pos = what.find("] ");
+        throw SceneError(fileName + ": " + (pos == std::string::npos ? what : what.substr(pos + 2)));
     }
     Reader r(fileName);
     r.object(j, "", {"camera", "image", "lights", "fog", "objects", "rain", "water", "comment"});

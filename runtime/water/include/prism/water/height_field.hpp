@@ -15,7 +15,9 @@
 // (row 0 = top row) and sits at local position (x h, height, z h). Maps may be
 // rectangular. Colour PNGs use their first (red) channel, as RainCL's scalar maps do (§4.2.3);
 // an alpha channel is ignored. Palette images and 1/2/4-bit images are rejected.
-// Every load error is a HeightMapError whose message starts with the file name.
+// Every load error is a HeightMapError whose message starts with the file name; so is a
+// map larger than kMaxMapSide a side or kMaxMapCells in all (checked before any pixel
+// memory is allocated).
 #pragma once
 
 #include <cstddef>
@@ -25,6 +27,10 @@
 #include <vector>
 
 namespace prism::water {
+
+// Limits on loaded maps (docs/reliability.md): 16384 a side and 2^26 (8192^2) cells.
+inline constexpr std::uint32_t kMaxMapSide = 16384;
+inline constexpr std::uint64_t kMaxMapCells = std::uint64_t{1} << 26;
 
 class HeightMapError : public std::runtime_error {
   public:
