@@ -77,7 +77,10 @@ int main(int argc, char** argv) {
 
     const bool writesHeaderOnly = !o.checkOnly && !o.output.empty() && o.emitGlslDir.empty();
     if (writesHeaderOnly)
-        if (auto files = unchangedSources(o, readWholeFile(o.output), disk)) return writeBuildSystemFiles(o, *files);
+        if (auto files = unchangedSources(o, readWholeFile(o.output), disk)) {
+            removeStaleTemps(o.output);  // nothing to write, but a killed run may have left a temp file
+            return writeBuildSystemFiles(o, *files);
+        }
 
     auto inputs = collectShaderInputs(o.inputs);
     sink.reportAll(inputs.diagnostics);
