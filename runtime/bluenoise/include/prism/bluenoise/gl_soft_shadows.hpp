@@ -1,15 +1,18 @@
 // The soft-shadow demo on the GPU (shader_sources/bluenoise/soft_shadows.*, using
 // modules/bluenoise/sampling.glsl), with the CPU frame loop of soft_shadows.hpp around it.
 //
-// Usage (needs a current GL 3.3 context, e.g. prism::gl::createContext()):
+// Usage (snippet: examples/snippets/bluenoise_gl_soft_shadows.cpp; needs a current GL 3.3 context):
 //
+//     #include "prism/bluenoise/gl_soft_shadows.hpp"
+//     #include "prism/bluenoise/void_and_cluster.hpp"
+//     #include "prism/gl/gl_context.hpp"
 //     namespace bn = prism::bluenoise;
 //     auto context = prism::gl::createContext();
-//     bn::StochasticSetup setup = bn::StochasticSetup::make(bn::generateVoidAndCluster({.width = 64, .height = 64}));
+//     bn::StochasticSetup setup = bn::StochasticSetup::make(bn::generateVoidAndCluster({.width = 32, .height = 32}));
 //     bn::RenderOptions options;
-//     options.width = options.height = 64;
+//     options.width = options.height = 32;
 //     options.sampler = bn::SamplerKind::BlueNoise;
-//     bn::GlSoftShadows gpu(64, 64);
+//     bn::GlSoftShadows gpu(32, 32);
 //     bn::RealImage image = gpu.render(bn::SoftShadowScene::classic(), setup, options);
 //     double ms = gpu.lastFrameMilliseconds();   // GPU draw + readback of the last frame
 //

@@ -1,7 +1,8 @@
 // Grey PNG files of 8 or 16 bits for masks, and atomic writes of any text or bytes.
 //
-// Usage:
+// Usage (snippet: examples/snippets/bluenoise_gray_png.cpp):
 //
+//     #include "prism/bluenoise/gray_png.hpp"
 //     prism::bluenoise::GrayImage image{4, 4, 16, std::vector<std::uint16_t>(16, 40000)};
 //     prism::bluenoise::writeGrayPng("out/mask.png", image);      // temp file + rename
 //     prism::bluenoise::GrayImage back = prism::bluenoise::readGrayPng("out/mask.png");

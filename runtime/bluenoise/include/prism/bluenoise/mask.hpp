@@ -1,9 +1,11 @@
 // A dither mask: one rank 0..N-1 per pixel (N = width * height, each rank once), as
 // void-and-cluster produces it, and its conversions to 8-bit, 16-bit and 32-bit values.
 //
-// Usage:
+// Usage (snippet: examples/snippets/bluenoise_mask.cpp):
 //
-//     prism::bluenoise::Mask mask = prism::bluenoise::generateVoidAndCluster({.width = 64, .height = 64});
+//     #include "prism/bluenoise/mask.hpp"
+//     #include "prism/bluenoise/void_and_cluster.hpp"
+//     prism::bluenoise::Mask mask = prism::bluenoise::generateVoidAndCluster({.width = 16, .height = 16});
 //     std::vector<std::uint16_t> png8 = prism::bluenoise::quantize(mask, 8);    // 0..255, uniform
 //     std::vector<std::uint32_t> fixed = prism::bluenoise::fixedPoint32(mask);  // rank * 2^32 / N
 //     std::uint32_t r = mask.rankAt(3, 5);

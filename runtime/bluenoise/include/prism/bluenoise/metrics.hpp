@@ -1,7 +1,8 @@
 // Quality metrics of a dither mask (or of any grey image, e.g. a rendering's error).
 //
-// Usage:
+// Usage (snippet: examples/snippets/bluenoise_metrics.cpp):
 //
+//     #include "prism/bluenoise/metrics.hpp"
 //     prism::bluenoise::GrayImage image{2, 1, 8, {0, 255}};        // width, height, bits, values
 //     bool uniform = prism::bluenoise::histogramUniform(image);      // levels as even as N allows
 //     double lf = prism::bluenoise::lowFrequencyPowerRatio(image);   // white noise ~ 1, blue << 1

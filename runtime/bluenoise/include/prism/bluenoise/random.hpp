@@ -1,7 +1,8 @@
 // Integer hashes and a seeded generator shared by the CPU code and modules/bluenoise/sampling.glsl.
 //
-// Usage:
+// Usage (snippet: examples/snippets/bluenoise_random.cpp):
 //
+//     #include "prism/bluenoise/random.hpp"
 //     std::uint32_t h = prism::bluenoise::pcgHash(42u);          // same bits as GLSL prism_bn_pcg(42u)
 //     prism::bluenoise::SplitMix64 rng(7);                       // deterministic per seed
 //     std::uint64_t a = rng.next();

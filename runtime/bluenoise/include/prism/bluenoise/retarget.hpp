@@ -1,16 +1,19 @@
 // The retargeting permutation of Heitz & Belcour 2019, precomputed by simulated
 // annealing (temporal blue noise thesis §2.4, Algorithm 5) and cached in a file.
 //
-// Usage:
+// Usage (snippet: examples/snippets/bluenoise_retarget.cpp):
 //
+//     #include "prism/bluenoise/retarget.hpp"
+//     #include "prism/bluenoise/void_and_cluster.hpp"
 //     namespace bn = prism::bluenoise;
-//     bn::Mask mask = bn::generateVoidAndCluster({.width = 32, .height = 32});
+//     bn::Mask mask = bn::generateVoidAndCluster({.width = 16, .height = 16});
 //     bn::RetargetOptions options;                       // radius 6, sigma_i 2.1, sigma_s 1
 //     options.schedule = bn::CoolingSchedule::Exponential;
-//     options.epochs = 8;
+//     options.epochs = 32;                               // of W*H proposed swaps
+//     bn::frameShift(mask.width, mask.height, options.shiftX, options.shiftY);  // towards the next frame's mask
 //     bn::RetargetResult r = bn::computeRetarget(mask, options);
 //     bool cached = false;
-//     bn::RetargetPermutation p = bn::loadOrComputeRetarget(mask, options, "/tmp/retarget.bin", &cached);
+//     bn::RetargetPermutation p = bn::loadOrComputeRetarget(mask, options, "out/retarget.bin", &cached);
 //
 // The state is a permutation `source` of the mask's pixels that starts as the identity;
 // the retargeted texture is T(m) = B(source[m]). A move swaps the sources of two pixels
@@ -54,7 +57,8 @@ struct RetargetOptions {
     double alpha = 0.9;
     int epochs = 32;
     std::uint64_t seed = 1;
-    // Shift (in mask pixels) from one frame's mask to the next: the R2 step.
+    // Shift (in mask pixels) from one frame's mask to the next: the R2 step (frameShift).
+    // Left at 0 the identity already matches the target, and annealing can only move away.
     int shiftX = 0, shiftY = 0;
 };
 
@@ -62,7 +66,7 @@ struct RetargetResult {
     RetargetPermutation permutation;
     double initialEnergy = 0.0, finalEnergy = 0.0;  // blue + target parts
     double initialTarget = 0.0, finalTarget = 0.0;  // the target part alone
-    std::uint64_t moves = 0, accepted = 0;
+    std::uint64_t moves = 0, accepted = 0;  // allowed proposals (of epochs * W * H), swaps made
 };
 
 // The R2 step between consecutive frames for a mask of this size (what applyRetarget's

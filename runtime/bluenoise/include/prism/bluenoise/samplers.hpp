@@ -1,9 +1,12 @@
 // The three per-pixel samplers, bit-identical to modules/bluenoise/sampling.glsl.
 //
-// Usage:
+// Usage (snippet: examples/snippets/bluenoise_samplers.cpp):
 //
+//     #include "prism/bluenoise/samplers.hpp"
+//     #include "prism/bluenoise/void_and_cluster.hpp"
 //     namespace bn = prism::bluenoise;
-//     bn::SamplerTables tables = bn::SamplerTables::fromMask(bn::generateVoidAndCluster({.width = 64, .height = 64}));
+//     bn::Mask mask = bn::generateVoidAndCluster({.width = 16, .height = 16});
+//     bn::SamplerTables tables = bn::SamplerTables::fromMask(mask);
 //     std::uint32_t w = bn::sample(bn::SamplerKind::White, tables, 10, 20, 7, 0);      // pixel (10, 20), frame 7, dim 0
 //     std::uint32_t b = bn::sample(bn::SamplerKind::BlueNoise, tables, 10, 20, 7, 1);
 //     float u = bn::toUnitFloat(b);                                                    // [0, 1)

@@ -1,16 +1,18 @@
 // A Monte Carlo effect to show the samplers: soft shadows of spheres on a ground plane
 // under a rectangular area light, seen from straight above, rendered on the CPU.
 //
-// Usage:
+// Usage (snippet: examples/snippets/bluenoise_soft_shadows.cpp):
 //
+//     #include "prism/bluenoise/soft_shadows.hpp"
+//     #include "prism/bluenoise/void_and_cluster.hpp"
 //     namespace bn = prism::bluenoise;
 //     bn::SoftShadowScene scene = bn::SoftShadowScene::classic();
-//     bn::StochasticSetup setup = bn::StochasticSetup::make(bn::generateVoidAndCluster({.width = 64, .height = 64}));
+//     bn::StochasticSetup setup = bn::StochasticSetup::make(bn::generateVoidAndCluster({.width = 32, .height = 32}));
 //     bn::RenderOptions options;
-//     options.width = options.height = 64;
+//     options.width = options.height = 32;
 //     options.sampler = bn::SamplerKind::BlueNoise;
 //     bn::RealImage image = bn::renderSoftShadows(scene, setup, options);    // 1 spp, frame 0
-//     bn::Reference reference = bn::renderReference(scene, 64, 64, 1024);
+//     bn::Reference reference = bn::renderReference(scene, 32, 32, 1024);
 //     bn::ErrorStats error = bn::compareToReference(image, reference);
 //
 // Pixel (x, y) sees the ground point ((x + 0.5) / W * 2e - e, e - (y + 0.5) / H * 2e), e =

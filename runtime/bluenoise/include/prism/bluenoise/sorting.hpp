@@ -2,8 +2,9 @@
 // §3.3, Algorithms 6-8): per-pixel seeds are permuted between frames so that the
 // rendered error follows a blue-noise mask.
 //
-// Usage:
+// Usage (snippet: examples/snippets/bluenoise_sorting.cpp):
 //
+//     #include "prism/bluenoise/sorting.hpp"
 //     namespace bn = prism::bluenoise;
 //     std::vector<std::uint32_t> seeds = bn::initialSeeds(8, 8, 1);
 //     std::vector<float> values(64, 0.5f);                 // frame t's pixel values (e.g. luminance)

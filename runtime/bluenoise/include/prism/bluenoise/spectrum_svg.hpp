@@ -1,8 +1,9 @@
 // SVG line plots: radially averaged power spectra (with white noise = 1 as reference) and
 // general x/y series (convergence plots of docs/bluenoise.md).
 //
-// Usage:
+// Usage (snippet: examples/snippets/bluenoise_spectrum_svg.cpp):
 //
+//     #include "prism/bluenoise/spectrum_svg.hpp"
 //     std::vector<prism::bluenoise::SpectrumRing> rings = {{0.1, 0.2, 4}, {0.2, 1.1, 8}};
 //     std::string svg = prism::bluenoise::spectrumSvg({{"void-and-cluster 64x64", rings}});
 //     prism::bluenoise::PlotSeries s{"white", {{1, 0.3}, {4, 0.15}}};

@@ -1,10 +1,11 @@
 // Void-and-cluster dither masks (Ulichney 1993) on a torus, for any size 1x1..512x512.
 //
-// Usage:
+// Usage (snippet: examples/snippets/bluenoise_void_and_cluster.cpp):
 //
+//     #include "prism/bluenoise/void_and_cluster.hpp"
 //     prism::bluenoise::VoidAndClusterOptions options;
-//     options.width = 128;
-//     options.height = 64;      // non-square and non-power-of-two sizes are fine
+//     options.width = 24;
+//     options.height = 16;      // non-square and non-power-of-two sizes are fine
 //     options.sigma = 1.5;      // Gaussian energy filter, in pixels
 //     options.seed = 7;         // same seed, same mask (bit for bit)
 //     prism::bluenoise::Mask mask = prism::bluenoise::generateVoidAndCluster(options);
