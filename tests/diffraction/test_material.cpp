@@ -6,7 +6,6 @@
 #include <string>
 
 #include "prism/diffraction/material.hpp"
-#include "prism/diffraction/taylor_bound.hpp"
 
 using namespace prism::diffraction;
 using nlohmann::json;
@@ -23,18 +22,6 @@ std::string errorOf(const std::string& text) {
 }
 
 }  // namespace
-
-TEST(DiffractionMaterial, HeaderExample) {
-    nlohmann::json j = nlohmann::json::parse(R"({"height_field": {"type": "sinusoid", "period_nm": 2500,
-        "amplitude_nm": 60, "periods": 8}, "path": "b", "table_size": 64, "wavelength_step_nm": 20})");
-    DiffractionMaterial m = parseDiffractionMaterial(j, "/objects/0/material/diffraction", ".");
-    StamBrdf brdf = makeBrdf(m);                           // N from the height range and m.tolerance
-    MaterialTables tables = buildMaterialTables(m, brdf);  // only path b's 2N + 1 layers
-    ASSERT_TRUE(tables.integrated.has_value());
-    EXPECT_FALSE(tables.spectral.has_value());
-    EXPECT_EQ(tables.integrated->size, 64);
-    EXPECT_EQ(tables.integrated->terms, termsForTolerance(60.0, kLambdaMinNm, 1e-3));
-}
 
 TEST(DiffractionMaterial, DefaultsAndPathA) {
     const DiffractionMaterial m = parseDiffractionMaterial(

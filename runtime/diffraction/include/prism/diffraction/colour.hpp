@@ -2,6 +2,9 @@
 // D65 spectrum (from Debian's colord-data, read at build time), wavelength grids of 1, 2, 5, 10 or
 // 20 nm over 380-780 nm with D65 inside the integral, and XYZ -> linear sRGB (IEC 61966-2-1).
 //
+// Usage (snippet: examples/snippets/diffraction_colour.cpp):
+//
+//     #include "prism/diffraction/colour.hpp"
 //     using namespace prism::diffraction;
 //     std::vector<SpectralWeight> grid = spectralWeights(5);        // 81 wavelengths
 //     Xyz white{};                                                  // a flat reflectance of 1

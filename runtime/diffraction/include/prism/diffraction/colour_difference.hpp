@@ -1,6 +1,9 @@
 // Colour difference for measuring the diffraction shader's error: linear sRGB -> CIELAB (D65
 // white) and CIEDE2000 (Sharma, Wu & Dalal 2005).
 //
+// Usage (snippet: examples/snippets/diffraction_colour_difference.cpp):
+//
+//     #include "prism/diffraction/colour_difference.hpp"
 //     using namespace prism::diffraction;
 //     Lab a = linearSrgbToLab({0.5, 0.2, 0.1}), b = linearSrgbToLab({0.5, 0.21, 0.1});
 //     double dE = ciede2000(a, b);   // ~1 is a just-noticeable difference

@@ -3,9 +3,12 @@
 // diffraction catalogue (prism/diffraction_shaders.hpp). The only file of prism_diffraction
 // that calls GL.
 //
+// Usage (snippet: examples/snippets/diffraction_diffraction_gl.cpp):
+//
+//     #include "prism/diffraction/diffraction_gl.hpp"
 //     using namespace prism::diffraction;
 //     StamBrdf brdf(sinusoidGrating({.amplitudeNm = 60, .periods = 16}), {.tolerance = 1e-4});
-//     DiffractionTextures textures(buildSpectralTables(brdf, {.size = 128}));  // path (a)
+//     DiffractionTextures textures(buildSpectralTables(brdf, {.size = 32}));  // path (a)
 //     prism::gl::Program& program = diffractionPrograms().get("brdf_map", {{"DIFFRACTION_PATH", textures.variant()}});
 //     textures.apply(program);   // binds units 0 and 1, sets u_diffraction*
 //

@@ -3,6 +3,9 @@
 // ridge field and a user's 8- or 16-bit grey PNG. All are periodic patches: the spectrum code
 // treats the patch as one tile of an infinite periodic surface (then windows it, spectrum.hpp).
 //
+// Usage (snippet: examples/snippets/diffraction_height_field.cpp):
+//
+//     #include "prism/diffraction/height_field.hpp"
 //     using namespace prism::diffraction;
 //     HeightField grating = sinusoidGrating({.periodNm = 2500, .amplitudeNm = 150});
 //     subtractMean(grating);                  // lowers k w h_max; |P|^2 is unchanged

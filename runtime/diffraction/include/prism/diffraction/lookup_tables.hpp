@@ -12,6 +12,9 @@
 // All times G / w^2 (stam_brdf.hpp). Texel i sits at (i - S/2) * cell, so frequency 0 is a
 // texel centre; lookups are bilinear with GL's clamp-to-edge rules.
 //
+// Usage (snippet: examples/snippets/diffraction_lookup_tables.cpp):
+//
+//     #include "prism/diffraction/lookup_tables.hpp"
 //     using namespace prism::diffraction;
 //     StamBrdf brdf(sinusoidGrating({.amplitudeNm = 60, .periods = 16}), {.tolerance = 1e-4});
 //     SpectralTables a = buildSpectralTables(brdf, {.size = 64, .wavelengthStepNm = 10});

@@ -2,6 +2,10 @@
 // height field and the lookup tables of the one path the material uses. The scene loader passes
 // the material's "diffraction" object and its JSON pointer; errors name the pointer.
 //
+// Usage (snippet: examples/snippets/diffraction_material.cpp):
+//
+//     #include <nlohmann/json.hpp>
+//     #include "prism/diffraction/material.hpp"
 //     using namespace prism::diffraction;
 //     nlohmann::json j = nlohmann::json::parse(R"({"height_field": {"type": "sinusoid", "period_nm": 2500,
 //         "amplitude_nm": 60, "periods": 8}, "path": "b", "table_size": 64, "wavelength_step_nm": 20})");

@@ -3,6 +3,9 @@
 // each local maximum by golden-section search to better than 0.001 deg and names its order m
 // from the grating equation sin(theta) = sin(incidence) + m lambda / d.
 //
+// Usage (snippet: examples/snippets/diffraction_peaks.cpp):
+//
+//     #include "prism/diffraction/peaks.hpp"
 //     using namespace prism::diffraction;
 //     StamBrdf brdf(sinusoidGrating({.periodNm = 2500, .amplitudeNm = 150}), {});
 //     std::vector<Peak> peaks = findPeaks(brdf, {.incidenceDeg = 0, .wavelengthsNm = {550}, .periodNm = 2500});

@@ -7,6 +7,9 @@
 // Gaussian of sigma_f = 1 / (2 pi sigmaNm):  P(f) = sum_j c_j exp(-|f - j/L|^2 / (2 sigma_f^2)),
 // truncated at radiusSigmas * sigma_f. A flat mirror has P(0) = 1.
 //
+// Usage (snippet: examples/snippets/diffraction_spectrum.cpp):
+//
+//     #include "prism/diffraction/spectrum.hpp"
 //     using namespace prism::diffraction;
 //     HeightField g = sinusoidGrating({.periodNm = 2500, .amplitudeNm = 150});
 //     subtractMean(g);

@@ -5,6 +5,9 @@
 // wi points to the light, wr to the viewer, z is the surface normal. Below the horizon
 // (cos <= 1e-6) the BRDF is 0. A mirror (h = 0) at normal incidence gives rho = 1.
 //
+// Usage (snippet: examples/snippets/diffraction_stam_brdf.cpp):
+//
+//     #include "prism/diffraction/stam_brdf.hpp"
 //     using namespace prism::diffraction;
 //     StamBrdf brdf(sinusoidGrating({.periodNm = 2500, .amplitudeNm = 150}), StamBrdf::Options{});
 //     double r = brdf.spectral(fromAngles(0, 0), fromAngles(12.709, 0), 550);  // first order

@@ -2,6 +2,9 @@
 // the Lagrange bound |E_N| <= e^x x^(N+1) / (N+1)!, with x = k_max w_max h_max,
 // k_max = 2 pi / lambda_min, w_max = 2 and h_max the largest |h| after mean subtraction.
 //
+// Usage (snippet: examples/snippets/diffraction_taylor_bound.cpp):
+//
+//     #include "prism/diffraction/taylor_bound.hpp"
 //     using namespace prism::diffraction;
 //     double x = taylorArgument(/*h_max nm*/ 150, /*lambda_min nm*/ 380);  // 4.96
 //     int n = termsForTolerance(150, 380, 1e-6);                          // smallest N with bound <= 1e-6
