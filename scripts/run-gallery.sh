@@ -9,5 +9,5 @@ BUILD_DIR=${BUILD_DIR:-build}
 OUT_DIR=${1:-gallery}
 cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPRISM_BUILD_RUNTIME=ON
 cmake --build "$BUILD_DIR" -j "$(nproc)" --target prism-gallery
-"$BUILD_DIR"/runtime/render/prism-gallery --out "$OUT_DIR"
+"$BUILD_DIR"/apps/prism-gallery --out "$OUT_DIR"
 echo "gallery written to $OUT_DIR/gallery.png"
