@@ -1,6 +1,7 @@
 // Run-time composition: dependency order (a diamond pulled in once), source layout,
 // errors mapped to module files, and rendering with the composed program.
 #include <algorithm>
+#include <iostream>
 
 #include "gl_test_support.hpp"
 #include "prism/gl/compose.hpp"
@@ -186,6 +187,7 @@ TEST_F(ComposeGl, MisspelledAttributeIsAnErrorAtTheModuleLineWithASuggestion) {
         FAIL() << "a_positon, which the runtime never provides, linked silently";
     } catch (const CompositionError& e) {
         const std::string what = e.what();
+        std::cout << what << "\n";  // docs/runtime.md quotes this diagnostic
         EXPECT_NE(what.find("lib/misspelled.glsl:2:"), std::string::npos) << what;
         EXPECT_NE(what.find("a_positon"), std::string::npos) << what;
         EXPECT_NE(what.find("did you mean 'a_position'"), std::string::npos) << what;
