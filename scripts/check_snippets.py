@@ -31,7 +31,8 @@ import sys
 import tempfile
 
 SNIPPET_DIR = "examples/snippets"
-HEADER_GLOBS = ["runtime/*/include/prism/**/*.hpp", "shaderc_tool/include/prism/catalog/*.hpp"]
+HEADER_GLOBS = ["runtime/*/include/prism/**/*.hpp", "shaderc_tool/include/prism/catalog/*.hpp",
+                "shaderc_tool/include/prism/io/*.hpp"]
 DOC_GLOBS = ["docs/*.md", "README.md"]
 FULLY_CHECKED_DOCS = ["docs/runtime.md"]  # here every ```cpp / ```cmake block needs a marker
 MD_MARKER = re.compile(r"^<!-- snippet: (\S+) -->\s*$")

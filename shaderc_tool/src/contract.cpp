@@ -1,4 +1,5 @@
 // Loading of the binding contract and the check of shaders against it.
+#include "prism/io/json_nesting.hpp"
 #include "contract.hpp"
 
 #include <nlohmann/json.hpp>
@@ -67,32 +68,8 @@ bool isGlslIdentifier(const std::string& name) {
 // Contracts nest 3 levels; deeper JSON is refused before parsing (docs/reliability.md).
 constexpr int kMaxJsonDepth = 64;
 
-// Byte offset of the first '[' or '{' nested deeper than `maxDepth` (strings skipped).
-std::optional<std::size_t> firstTooDeep(const std::string& text, int maxDepth) {
-    int depth = 0;
-    bool inString = false, escaped = false;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        const char ch = text[i];
-        if (inString) {
-            if (escaped)
-                escaped = false;
-            else if (ch == '\\')
-                escaped = true;
-            else if (ch == '"')
-                inString = false;
-        } else if (ch == '"') {
-            inString = true;
-        } else if (ch == '[' || ch == '{') {
-            if (++depth > maxDepth) return i;
-        } else if (ch == ']' || ch == '}') {
-            --depth;
-        }
-    }
-    return std::nullopt;
-}
-
 void loadOne(const std::string& path, const std::string& text, Contract& c, std::vector<Diagnostic>& out) {
-    if (const auto deep = firstTooDeep(text, kMaxJsonDepth)) {
+    if (const auto deep = io::firstTooDeep(text, kMaxJsonDepth)) {
         auto [line, col] = lineColumnOf(text, *deep);
         out.push_back(makeError(path, line, col,
                                 "contract JSON nested more than " + std::to_string(kMaxJsonDepth) +

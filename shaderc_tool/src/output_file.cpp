@@ -1,4 +1,5 @@
 // Atomic, change-only file writes (see output_file.hpp).
+#include "prism/io/atomic_output.hpp"
 #include "output_file.hpp"
 
 #include <cerrno>
@@ -14,19 +15,7 @@ namespace prism::shaderc {
 namespace fs = std::filesystem;
 
 void removeStaleTemps(const fs::path& target) {
-    std::error_code ec;
-    const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-    const std::string prefix = target.filename().string() + ".tmp.";
-    for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-        const std::string name = it->path().filename().string();
-        if (name.size() <= prefix.size() || name.size() > prefix.size() + 9 || name.compare(0, prefix.size(), prefix) != 0)
-            continue;
-        const std::string digits = name.substr(prefix.size());
-        if (digits.find_first_not_of("0123456789") != std::string::npos) continue;
-        const auto pid = static_cast<pid_t>(std::stol(digits));
-        std::error_code ignored;
-        if (pid != ::getpid() && ::kill(pid, 0) != 0 && errno == ESRCH) fs::remove(it->path(), ignored);
-    }
+    io::removeStaleTemps(target, ".tmp.");
 }
 
 namespace {

@@ -1,4 +1,5 @@
 // PNG reading and atomic writing with libpng's simplified API.
+#include "prism/io/atomic_output.hpp"
 #include "prism/image/png_io.hpp"
 
 #include <png.h>
@@ -21,24 +22,6 @@ std::string quoted(const std::filesystem::path& p) {
     return out;
 }
 
-// Removes `<name>.tmp-<pid>` files beside `target` that runs killed mid-write left behind
-// (their process no longer exists); a live writer's temp file is kept.
-void removeStaleTemps(const std::filesystem::path& target) {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-    const std::string prefix = target.filename().string() + ".tmp-";
-    for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-        const std::string name = it->path().filename().string();
-        if (name.size() <= prefix.size() || name.size() > prefix.size() + 9 || name.compare(0, prefix.size(), prefix) != 0)
-            continue;
-        const std::string digits = name.substr(prefix.size());
-        if (digits.find_first_not_of("0123456789") != std::string::npos) continue;
-        const auto pid = static_cast<pid_t>(std::stol(digits));
-        std::error_code ignored;
-        if (pid != ::getpid() && ::kill(pid, 0) != 0 && errno == ESRCH) fs::remove(it->path(), ignored);
-    }
-}
 
 }  // namespace
 
@@ -55,7 +38,7 @@ void writePng(const std::filesystem::path& path, const Image8& image) {
                            quoted(path.parent_path()) + ": " + ec.message());
     }
 
-    removeStaleTemps(path);
+    io::removeStaleTemps(path, ".tmp-");
     std::filesystem::path temp = path;
     temp += ".tmp-" + std::to_string(::getpid());
 

@@ -1,4 +1,5 @@
 // JSON scene reading with path-precise errors (see prism/scene_loader.hpp).
+#include "prism/io/json_nesting.hpp"
 #include "prism/scene/scene_loader.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -233,34 +234,10 @@ std::pair<int, int> lineColumn(const std::string& text, std::size_t byte) {
 // Scenes nest 4 levels; deeper JSON is refused before parsing (docs/reliability.md).
 constexpr int kMaxJsonDepth = 64;
 
-// Byte offset of the first '[' or '{' nested deeper than `maxDepth` (strings skipped).
-std::optional<std::size_t> firstTooDeep(const std::string& text, int maxDepth) {
-    int depth = 0;
-    bool inString = false, escaped = false;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        const char ch = text[i];
-        if (inString) {
-            if (escaped)
-                escaped = false;
-            else if (ch == '\\')
-                escaped = true;
-            else if (ch == '"')
-                inString = false;
-        } else if (ch == '"') {
-            inString = true;
-        } else if (ch == '[' || ch == '{') {
-            if (++depth > maxDepth) return i;
-        } else if (ch == ']' || ch == '}') {
-            --depth;
-        }
-    }
-    return std::nullopt;
-}
-
 }  // namespace
 
 Scene parseScene(const std::string& text, const std::string& fileName) {
-    if (const auto deep = firstTooDeep(text, kMaxJsonDepth)) {
+    if (const auto deep = io::firstTooDeep(text, kMaxJsonDepth)) {
         auto [line, col] = lineColumn(text, *deep + 1);
         throw SceneError(fileName + ":" + std::to_string(line) + ":" + std::to_string(col) + ": JSON nested more than " +
                          std::to_string(kMaxJsonDepth) + " levels deep (the limit); a scene needs 4");
