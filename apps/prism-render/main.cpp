@@ -67,7 +67,7 @@ int renderScene(const Arguments& a) {
         prism::image::writePng(a.out, image);
         for (const auto& v : renderer.lastFrame().variants) std::cout << "draw: " << v << "\n";
         std::cout << "prism-render: wrote " << a.out << " (" << renderer.lastFrame().draws << " draws, "
-                  << renderer.programs().size() << " programs)\n";
+                  << renderer.programs().size() + renderer.diffractionProgramsBuilt() << " programs)\n";
     } catch (const std::invalid_argument& e) {
         return badInput(e.what());
     } catch (const std::exception& e) {
