@@ -70,6 +70,8 @@ int renderScene(const Arguments& a) {
                   << renderer.programs().size() + renderer.diffractionProgramsBuilt() << " programs)\n";
     } catch (const std::invalid_argument& e) {
         return badInput(e.what());
+    } catch (const prism::scene::SceneError& e) {  // e.g. a diffraction material needing N > 200
+        return badInput(e.what());
     } catch (const std::exception& e) {
         std::cerr << "prism-render: error: " << e.what() << "\n";
         return kExitFailure;
