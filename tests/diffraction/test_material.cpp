@@ -110,8 +110,8 @@ TEST(DiffractionMaterial, HugeHeightsAreAClearError) {
 }
 
 TEST(DiffractionMaterial, RadialTangentForCircularGrooves) {
-    const DiffractionMaterial radial = parseDiffractionMaterial(
-        json::parse(R"({"height_field": {"type": "cd"}, "tangent": "radial"})"), "/m", ".");
+    const DiffractionMaterial radial =
+        parseDiffractionMaterial(json::parse(R"({"height_field": {"type": "cd"}, "tangent": "radial"})"), "/m", ".");
     EXPECT_TRUE(radial.radialTangent);
     const DiffractionMaterial fixed =
         parseDiffractionMaterial(json::parse(R"({"height_field": {"type": "cd"}, "tangent": [0, 0, 2]})"), "/m", ".");

@@ -222,8 +222,9 @@ TEST(SceneRendering, DiffractionObjectBuildsOnlyItsPathsTables) {
     EXPECT_EQ(renderer.diffractionProgramsBuilt(), 1u);
     EXPECT_EQ(renderer.programs().size(), 0u) << "no classic program for a diffraction-only scene";
     ASSERT_EQ(renderer.lastFrame().variants.size(), 1u);
-    EXPECT_EQ(renderer.lastFrame().variants[0].rfind("diffraction DIRECTIONAL_LIGHTS=1,POINT_LIGHTS=0,DIFFRACTION_PATH=1", 0),
-              0u)
+    EXPECT_EQ(
+        renderer.lastFrame().variants[0].rfind("diffraction DIRECTIONAL_LIGHTS=1,POINT_LIGHTS=0,DIFFRACTION_PATH=1", 0),
+        0u)
         << renderer.lastFrame().variants[0];
     EXPECT_EQ(renderer.lastFrame().diffractionTableBytes, std::size_t{9} * 64 * 64 * 3 * sizeof(float));
     m.path = 'a';

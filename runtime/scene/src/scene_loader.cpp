@@ -164,7 +164,8 @@ SceneObject readObject(const Reader& r, const json& j, const std::string& at, co
         if (mj.contains("shader")) o.shader = r.string(mj["shader"], m + "/shader");
         if (o.shader == "diffraction") {
             if (!mj.contains("diffraction"))
-                r.fail(m + "/diffraction", "the diffraction parameters (an object with a height_field; docs/scenes.md)");
+                r.fail(m + "/diffraction",
+                       "the diffraction parameters (an object with a height_field; docs/scenes.md)");
             o.diffractionPointer = m + "/diffraction";
             try {
                 o.diffraction = diffraction::parseDiffractionMaterial(mj["diffraction"], o.diffractionPointer, baseDir);

@@ -148,8 +148,8 @@ void SceneRenderer::drawWater(const Scene& scene) {
                                   std::to_string(static_cast<int>(w.seconds)) + " s of rain");
 }
 
-void SceneRenderer::drawDiffraction(const Scene& scene, const SceneObject& object,
-                                    const render::FeatureSet& features, float aspect) {
+void SceneRenderer::drawDiffraction(const Scene& scene, const SceneObject& object, const render::FeatureSet& features,
+                                    float aspect) {
     const std::string pointer = object.diffractionPointer.empty() ? "/objects" : object.diffractionPointer;
     if (!object.diffraction)
         throw SceneError(scene.file + ": " + pointer + ": expected the diffraction parameters of a diffraction object");
@@ -193,10 +193,10 @@ void SceneRenderer::drawDiffraction(const Scene& scene, const SceneObject& objec
     program.use();
     mesh.draw();
     ++lastFrame_.draws;
-    lastFrame_.variants.push_back("diffraction " + std::string(diffractionPrograms_->variantOf("diffraction", variant).name) +
-                                  " (path " + m.path + ", N=" + std::to_string(terms) + ", " +
-                                  std::to_string(m.tableSize) + "^2, " + std::to_string(textures->bytes() / 1024) +
-                                  " KiB)");
+    lastFrame_.variants.push_back(
+        "diffraction " + std::string(diffractionPrograms_->variantOf("diffraction", variant).name) + " (path " +
+        m.path + ", N=" + std::to_string(terms) + ", " + std::to_string(m.tableSize) + "^2, " +
+        std::to_string(textures->bytes() / 1024) + " KiB)");
 }
 
 image::Image8 SceneRenderer::render(const Scene& scene) {
