@@ -67,8 +67,10 @@ int renderScene(const Arguments& a) {
         prism::image::writePng(a.out, image);
         for (const auto& v : renderer.lastFrame().variants) std::cout << "draw: " << v << "\n";
         std::cout << "prism-render: wrote " << a.out << " (" << renderer.lastFrame().draws << " draws, "
-                  << renderer.programs().size() << " programs)\n";
+                  << renderer.programs().size() + renderer.diffractionProgramsBuilt() << " programs)\n";
     } catch (const std::invalid_argument& e) {
+        return badInput(e.what());
+    } catch (const prism::scene::SceneError& e) {  // e.g. a diffraction material needing N > 200
         return badInput(e.what());
     } catch (const std::exception& e) {
         std::cerr << "prism-render: error: " << e.what() << "\n";

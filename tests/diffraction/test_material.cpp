@@ -95,3 +95,14 @@ TEST(DiffractionMaterial, HugeHeightsAreAClearError) {
         EXPECT_EQ(std::string(e.what()).rfind("tolerance: ", 0), 0u) << e.what();
     }
 }
+
+TEST(DiffractionMaterial, RadialTangentForCircularGrooves) {
+    const DiffractionMaterial radial =
+        parseDiffractionMaterial(json::parse(R"({"height_field": {"type": "cd"}, "tangent": "radial"})"), "/m", ".");
+    EXPECT_TRUE(radial.radialTangent);
+    const DiffractionMaterial fixed =
+        parseDiffractionMaterial(json::parse(R"({"height_field": {"type": "cd"}, "tangent": [0, 0, 2]})"), "/m", ".");
+    EXPECT_FALSE(fixed.radialTangent);
+    EXPECT_EQ(errorOf(R"({"height_field": {"type": "cd"}, "tangent": "spiral"})"),
+              "/objects/0/material/diffraction/tangent: expected [x, y, z] or \"radial\"");
+}

@@ -2,6 +2,8 @@
 // JSON path and what was expected (or file:line:col for syntax errors).
 #include <gtest/gtest.h>
 
+#include <variant>
+
 #include "prism/scene/scene_loader.hpp"
 
 using prism::scene::parseScene;
@@ -121,4 +123,74 @@ TEST(SceneLoader, RejectsOverflowingRainAndUnstableWaterRuns) {
     EXPECT_EQ(tooLong.rfind("scene.json: /water/seconds: expected a time the water step can take", 0), 0u) << tooLong;
     EXPECT_NE(tooLong.find("c dt / h <= 1/sqrt(2)"), std::string::npos) << tooLong;
     EXPECT_NE(tooLong.find("largest stable substep"), std::string::npos) << tooLong;
+}
+
+TEST(SceneLoader, ReadsTheDiffractionScenes) {
+    for (const char* name : {"diffraction_cd", "diffraction_grating", "diffraction_snake"}) {
+        auto scene = prism::scene::loadScene(std::string(PRISM_SCENES_DIR) + "/" + name + ".json");
+        ASSERT_EQ(scene.objects.size(), 1u) << name;
+        EXPECT_EQ(scene.objects[0].shader, "diffraction") << name;
+        ASSERT_TRUE(scene.objects[0].diffraction.has_value()) << name;
+        EXPECT_EQ(scene.objects[0].diffractionPointer, "/objects/0/material/diffraction") << name;
+    }
+    auto cd = prism::scene::loadScene(std::string(PRISM_SCENES_DIR) + "/diffraction_cd.json");
+    EXPECT_EQ(cd.objects[0].diffraction->heightFieldType, "cd");
+    EXPECT_TRUE(cd.objects[0].diffraction->radialTangent);
+    auto grating = prism::scene::loadScene(std::string(PRISM_SCENES_DIR) + "/diffraction_grating.json");
+    const auto& g = *grating.objects[0].diffraction;
+    EXPECT_EQ(g.path, 'b');
+    EXPECT_EQ(g.tableSize, 256);
+    EXPECT_EQ(g.wavelengthStepNm, 10);
+    EXPECT_DOUBLE_EQ(std::get<prism::diffraction::GratingParams>(g.heightField).periodNm, 2500.0);
+}
+
+TEST(SceneLoader, DiffractionMaterialSyntax) {
+    const auto s = parseScene(R"({"objects": [{"mesh": "grid", "material": {"shader": "diffraction",
+        "diffraction": {"height_field": {"type": "blazed", "period_nm": 1800, "amplitude_nm": 80},
+                        "path": "a", "wavelength_step_nm": 20, "terms": 6, "table_size": 64,
+                        "tangent": [0, 0, 1]}}}]})",
+                              "dir/scene.json");
+    const auto& m = *s.objects[0].diffraction;
+    EXPECT_EQ(m.heightFieldType, "blazed");
+    EXPECT_EQ(m.path, 'a');
+    EXPECT_EQ(m.wavelengthStepNm, 20);
+    ASSERT_TRUE(m.terms.has_value());
+    EXPECT_EQ(*m.terms, 6);
+    EXPECT_EQ(m.tableSize, 64);
+    EXPECT_FALSE(m.radialTangent);
+    EXPECT_DOUBLE_EQ(m.tangent[2], 1.0);
+    // A PNG height field is relative to the scene file.
+    const auto png = parseScene(R"({"objects": [{"material": {"shader": "diffraction", "diffraction":
+        {"height_field": {"type": "png", "file": "h.png", "nm_per_pixel": 50, "height_scale_nm": 100}}}}]})",
+                                "dir/scene.json");
+    EXPECT_EQ(std::get<prism::diffraction::PngField>(png.objects[0].diffraction->heightField).file, "dir/h.png");
+}
+
+TEST(SceneLoader, DiffractionErrorsNameTheJsonPath) {
+    EXPECT_EQ(errorOf(R"({"objects": [{"material": {"shader": "diffraction"}}]})"),
+              "scene.json: /objects/0/material/diffraction: expected the diffraction parameters (an object with a "
+              "height_field; docs/scenes.md)");
+    EXPECT_EQ(errorOf(R"({"objects": [{"material": {"shader": "phong", "diffraction": {}}}]})"),
+              "scene.json: /objects/0/material/diffraction: expected no diffraction parameters unless \"shader\" is "
+              "\"diffraction\"");
+    EXPECT_EQ(errorOf(R"({"objects": [{"material": {"shader": "diffraction", "diffraction":
+        {"height_field": {"type": "sinusoid", "period_nm": -2500}}}}]})"),
+              "scene.json: /objects/0/material/diffraction/height_field/period_nm: expected a number in (0, 1e+09]");
+    EXPECT_EQ(errorOf(R"({"objects": [{"material": {"shader": "diffraction", "diffraction":
+        {"height_field": {"type": "cd"}, "path": "d"}}}]})"),
+              "scene.json: /objects/0/material/diffraction/path: expected \"a\" (per wavelength), \"b\" "
+              "(pre-integrated tables) or \"c\" (w volume)");
+    EXPECT_EQ(errorOf(R"({"objects": [{"material": {"shader": "diffraction", "diffraction":
+        {"height_field": {"type": "cd"}, "wavelength_step_nm": 3}}}]})"),
+              "scene.json: /objects/0/material/diffraction/wavelength_step_nm: expected 1, 2, 5, 10 or 20");
+    EXPECT_EQ(errorOf(R"({"objects": [{"material": {"shader": "diffraction", "diffraction":
+        {"height_field": {"type": "cd"}, "tolerance": 1e-3, "terms": 4}}}]})"),
+              "scene.json: /objects/0/material/diffraction/terms: give either tolerance or terms, not both");
+    EXPECT_EQ(errorOf(R"({"objects": [{"material": {"shader": "diffraction", "diffraction":
+        {"height_field": {"type": "cd"}, "tangent": "spiral"}}}]})"),
+              "scene.json: /objects/0/material/diffraction/tangent: expected [x, y, z] or \"radial\"");
+    EXPECT_EQ(errorOf(R"({"objects": [{"material": {"shader": "diffraction", "diffraction":
+        {"height_field": {"type": "cd"}, "pathh": "b"}}}]})")
+                  .rfind("scene.json: /objects/0/material/diffraction/pathh: unknown key", 0),
+              0u);
 }

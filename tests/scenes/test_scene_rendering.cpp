@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <cstdio>
 #include <memory>
+#include <variant>
 
 #include "prism/render/feature_variants.hpp"
 #include "prism/gl/gl_context.hpp"
@@ -196,6 +198,60 @@ TEST(SceneRendering, RainReachesTheTerrainInTheWaterScene) {
     EXPECT_GT(belowTerrain, 0) << "the cylinder reaches the lowest ground, so some drops pass under higher ground";
 }
 
+TEST(SceneRendering, NoDiffractionMaterialNoDiffractionTablesOrProgram) {
+    prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
+    auto scene = exampleScene("four_lights");
+    scene.width = scene.height = 64;
+    renderer.render(scene);
+    EXPECT_EQ(renderer.diffractionTablesBuilt(), 0u);
+    EXPECT_EQ(renderer.diffractionProgramsBuilt(), 0u);
+    EXPECT_EQ(renderer.lastFrame().diffractionTableBytes, 0u);
+}
+
+// Only the chosen path's tables are built, with N terms: path b has 2N + 1 RGB layers, path a
+// N + 1 RG layers plus the wavelength row; the program is the variant of that path.
+TEST(SceneRendering, DiffractionObjectBuildsOnlyItsPathsTables) {
+    prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
+    auto scene = exampleScene("diffraction_grating");
+    scene.width = scene.height = 64;
+    auto& m = *scene.objects[0].diffraction;
+    m.tableSize = 64;
+    m.terms = 4;
+    renderer.render(scene);
+    EXPECT_EQ(renderer.diffractionTablesBuilt(), 1u);
+    EXPECT_EQ(renderer.diffractionProgramsBuilt(), 1u);
+    EXPECT_EQ(renderer.programs().size(), 0u) << "no classic program for a diffraction-only scene";
+    ASSERT_EQ(renderer.lastFrame().variants.size(), 1u);
+    EXPECT_EQ(
+        renderer.lastFrame().variants[0].rfind("diffraction DIRECTIONAL_LIGHTS=1,POINT_LIGHTS=0,DIFFRACTION_PATH=1", 0),
+        0u)
+        << renderer.lastFrame().variants[0];
+    EXPECT_EQ(renderer.lastFrame().diffractionTableBytes, std::size_t{9} * 64 * 64 * 3 * sizeof(float));
+    m.path = 'a';
+    m.wavelengthStepNm = 20;  // 21 wavelengths
+    renderer.render(scene);
+    EXPECT_EQ(renderer.diffractionTablesBuilt(), 2u);
+    EXPECT_EQ(renderer.diffractionProgramsBuilt(), 2u);
+    EXPECT_NE(renderer.lastFrame().variants[0].find("DIFFRACTION_PATH=0"), std::string::npos);
+    EXPECT_EQ(renderer.lastFrame().diffractionTableBytes,
+              std::size_t{5} * 64 * 64 * 2 * sizeof(float) + std::size_t{21} * 4 * sizeof(float));
+}
+
+TEST(SceneRendering, DiffractionTooManyTermsNamesTheMaterial) {
+    prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
+    auto scene = prism::scene::parseScene(R"({"objects": [{"mesh": "grid", "material": {"shader": "diffraction",
+        "diffraction": {"height_field": {"type": "sinusoid", "amplitude_nm": 100000}, "table_size": 16}}}]})",
+                                          "deep.json");
+    try {
+        renderer.render(scene);
+        FAIL() << "no error";
+    } catch (const prism::scene::SceneError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("deep.json: /objects/0/material/diffraction/tolerance: ", 0), 0u)
+            << e.what();
+    }
+    EXPECT_EQ(renderer.diffractionTablesBuilt(), 0u);
+}
+
 class SceneGolden : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SceneGolden, MatchesTheGoldenImage) {
@@ -221,4 +277,24 @@ TEST_P(SceneGolden, MatchesTheGoldenImage) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ExampleScenes, SceneGolden,
-                         ::testing::Values("one_light", "four_lights", "fog", "rain", "water", "puddles_closeup"));
+                         ::testing::Values("one_light", "four_lights", "fog", "rain", "water", "puddles_closeup",
+                                           "diffraction_cd", "diffraction_grating", "diffraction_snake"));
+
+// Mutation check: the grating golden pins the period. At 2400 nm instead of 2500 nm every order
+// moves (sin t = sin 75 - m lambda / d), and the image must fail the golden's thresholds.
+TEST(SceneGoldenMutation, GratingPeriod2400FailsTheGolden) {
+    auto scene = exampleScene("diffraction_grating");
+    scene.width /= 2;
+    scene.height /= 2;
+    auto& grating = std::get<prism::diffraction::GratingParams>(scene.objects[0].diffraction->heightField);
+    ASSERT_DOUBLE_EQ(grating.periodNm, 2500.0);
+    grating.periodNm = 2400.0;
+    prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
+    const auto mutated = renderer.render(scene);
+    const fs::path golden = fs::path(PRISM_GOLDEN_DIR) / "scenes" / "diffraction_grating.png";
+    if (!fs::exists(golden)) GTEST_SKIP() << golden << " missing; run with PRISM_UPDATE_GOLDENS=1";
+    const auto stats = prism::image::compareImages(mutated, prism::image::readPng(golden), kThresholds.maxChannelDiff);
+    EXPECT_FALSE(prism::image::passes(stats, kThresholds))
+        << "a 2400 nm grating passes the 2500 nm golden: " << prism::image::describe(stats, kThresholds);
+    std::printf("2400 nm vs the 2500 nm golden: %s\n", prism::image::describe(stats, kThresholds).c_str());
+}

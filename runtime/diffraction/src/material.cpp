@@ -132,12 +132,15 @@ DiffractionMaterial parseDiffractionMaterial(const json& j, const std::string& p
     if (j.contains("coherence_nm")) m.coherenceNm = number(j, p, "coherence_nm", 0.0, 0.0, 1e9, false);
     if (j.contains("tangent")) {
         const json& t = j.at("tangent");
-        if (!t.is_array() || t.size() != 3 || !t[0].is_number() || !t[1].is_number() || !t[2].is_number()) {
-            fail(p + "/tangent", "expected [x, y, z]");
+        if (t.is_string() && t == "radial") {
+            m.radialTangent = true;
+        } else if (!t.is_array() || t.size() != 3 || !t[0].is_number() || !t[1].is_number() || !t[2].is_number()) {
+            fail(p + "/tangent", "expected [x, y, z] or \"radial\"");
+        } else {
+            m.tangent = {t[0].get<double>(), t[1].get<double>(), t[2].get<double>()};
+            const double len = std::hypot(m.tangent[0], m.tangent[1], m.tangent[2]);
+            if (!(len > 1e-9) || !std::isfinite(len)) fail(p + "/tangent", "expected a finite non-zero direction");
         }
-        m.tangent = {t[0].get<double>(), t[1].get<double>(), t[2].get<double>()};
-        const double len = std::hypot(m.tangent[0], m.tangent[1], m.tangent[2]);
-        if (!(len > 1e-9) || !std::isfinite(len)) fail(p + "/tangent", "expected a finite non-zero direction");
     }
     return m;
 }

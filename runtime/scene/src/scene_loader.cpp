@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <initializer_list>
 #include <limits>
@@ -27,6 +28,11 @@ class Reader {
 
     [[noreturn]] void fail(const std::string& pointer, const std::string& expected) const {
         throw SceneError(file_ + ": " + (pointer.empty() ? "/" : pointer) + ": expected " + expected);
+    }
+
+    // A message that already starts with its JSON pointer ("/objects/0/...: expected ...").
+    [[noreturn]] void failWith(const std::string& pointerAndMessage) const {
+        throw SceneError(file_ + ": " + pointerAndMessage);
     }
 
     void object(const json& j, const std::string& at, std::initializer_list<const char*> allowed) const {
@@ -147,7 +153,7 @@ glm::mat4 readTransform(const Reader& r, const json& j, const std::string& at) {
     return m;
 }
 
-SceneObject readObject(const Reader& r, const json& j, const std::string& at) {
+SceneObject readObject(const Reader& r, const json& j, const std::string& at, const std::string& baseDir) {
     r.object(j, at, {"mesh", "subdivision", "transform", "material"});
     SceneObject o;
     if (j.contains("mesh")) o.mesh = r.string(j["mesh"], at + "/mesh");
@@ -156,8 +162,21 @@ SceneObject readObject(const Reader& r, const json& j, const std::string& at) {
     if (j.contains("material")) {
         const std::string m = at + "/material";
         const json& mj = j["material"];
-        r.object(mj, m, {"shader", "color", "shininess", "specular", "variant"});
+        r.object(mj, m, {"shader", "color", "shininess", "specular", "variant", "diffraction"});
         if (mj.contains("shader")) o.shader = r.string(mj["shader"], m + "/shader");
+        if (o.shader == "diffraction") {
+            if (!mj.contains("diffraction"))
+                r.fail(m + "/diffraction",
+                       "the diffraction parameters (an object with a height_field; docs/scenes.md)");
+            o.diffractionPointer = m + "/diffraction";
+            try {
+                o.diffraction = diffraction::parseDiffractionMaterial(mj["diffraction"], o.diffractionPointer, baseDir);
+            } catch (const diffraction::MaterialError& e) {
+                r.failWith(e.what());
+            }
+        } else if (mj.contains("diffraction")) {
+            r.fail(m + "/diffraction", "no diffraction parameters unless \"shader\" is \"diffraction\"");
+        }
         if (mj.contains("color")) o.material.color = glm::vec4(r.color(mj["color"], m + "/color"), 1.0f);
         if (mj.contains("shininess"))
             o.material.shininess = static_cast<float>(r.number(mj["shininess"], m + "/shininess", 0.0));
@@ -257,6 +276,8 @@ Scene parseScene(const std::string& text, const std::string& fileName) {
         throw SceneError(fileName + ": " + (pos == std::string::npos ? what : what.substr(pos + 2)));
     }
     Reader r(fileName);
+    // Files a scene names (a diffraction PNG height field) are relative to the scene file.
+    const std::string baseDir = std::filesystem::path(fileName).parent_path().string();
     r.object(j, "", {"camera", "image", "lights", "fog", "objects", "rain", "water", "comment"});
     Scene s;
     s.file = fileName;
@@ -284,7 +305,7 @@ Scene parseScene(const std::string& text, const std::string& fileName) {
     if (j.contains("objects")) {
         if (!j["objects"].is_array()) r.fail("/objects", "an array of objects");
         for (std::size_t i = 0; i < j["objects"].size(); ++i)
-            s.objects.push_back(readObject(r, j["objects"][i], "/objects/" + std::to_string(i)));
+            s.objects.push_back(readObject(r, j["objects"][i], "/objects/" + std::to_string(i), baseDir));
     }
     if (j.contains("rain")) s.rain = readRain(r, j["rain"]);
     if (j.contains("water")) s.water = readWater(r, j["water"]);

@@ -1,6 +1,7 @@
 // Scene drawing with minimal, shared programs (see prism/scene_renderer.hpp).
 #include "prism/scene/scene_renderer.hpp"
 
+#include "prism/diffraction/diffraction_gl.hpp"
 #include "prism/render/feature_variants.hpp"
 #include "prism/render/frame_uniforms.hpp"
 #include "prism/gl/framebuffer.hpp"
@@ -11,6 +12,7 @@
 #include "prism/rain/rain_programs.hpp"
 #include "prism/rain/rain_system.hpp"
 #include "prism/render/shader_meshes.hpp"
+#include "prism/scene/scene_loader.hpp"
 #include "prism/water/rain_rates.hpp"
 #include "prism/water/water_scene.hpp"
 
@@ -19,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace prism::scene {
 
@@ -145,6 +148,57 @@ void SceneRenderer::drawWater(const Scene& scene) {
                                   std::to_string(static_cast<int>(w.seconds)) + " s of rain");
 }
 
+void SceneRenderer::drawDiffraction(const Scene& scene, const SceneObject& object, const render::FeatureSet& features,
+                                    float aspect) {
+    const std::string pointer = object.diffractionPointer.empty() ? "/objects" : object.diffractionPointer;
+    if (!object.diffraction)
+        throw SceneError(scene.file + ": " + pointer + ": expected the diffraction parameters of a diffraction object");
+    const diffraction::DiffractionMaterial& m = *object.diffraction;
+    std::optional<diffraction::DiffractionTextures> textures;
+    int terms = 0;
+    try {  // the height field, N from its range, and the tables of the material's path only
+        const diffraction::StamBrdf brdf = diffraction::makeBrdf(m);
+        terms = brdf.terms();
+        const diffraction::MaterialTables tables = diffraction::buildMaterialTables(m, brdf);
+        if (tables.spectral) {
+            textures.emplace(*tables.spectral);
+        } else if (tables.integrated) {
+            textures.emplace(*tables.integrated);
+        } else {
+            textures.emplace(*tables.volume);
+        }
+    } catch (const diffraction::MaterialError& e) {  // "terms: ..." or "tolerance: ..."
+        throw SceneError(scene.file + ": " + pointer + "/" + e.what());
+    } catch (const std::invalid_argument& e) {  // e.g. an unreadable PNG height field
+        throw SceneError(scene.file + ": " + pointer + "/height_field: " + e.what());
+    }
+    ++diffractionTablesBuilt_;
+    lastFrame_.diffractionTableBytes += textures->bytes();
+
+    if (!diffractionPrograms_)
+        diffractionPrograms_ = std::make_unique<render::ProgramCache>(diffraction::diffractionPrograms().catalog());
+    const auto* shader = catalog::findShader(diffractionPrograms_->catalog(), "diffraction");
+    render::VariantValues requested = object.variantOverrides;
+    requested.emplace_back("DIFFRACTION_PATH", textures->variant());  // the material decides the path
+    const render::VariantValues variant = variantFor(*shader, features, requested);
+    gl::Program& program = diffractionPrograms_->get("diffraction", variant);
+    render::GpuMesh mesh(render::meshForShader("diffraction", render::namedMesh(object.mesh, object.subdivision)),
+                         diffractionPrograms_->catalog().contractAttributes);
+    // The diffraction shader has no fog axis: a diffraction object is drawn unfogged.
+    render::setFrameUniforms(program, scene.camera, aspect, scene.lights, object.world, object.material);
+    program.set("u_diffractionTangent", glm::vec3(static_cast<float>(m.tangent[0]), static_cast<float>(m.tangent[1]),
+                                                  static_cast<float>(m.tangent[2])));
+    program.set("u_diffractionRadial", m.radialTangent ? 1.0f : 0.0f);
+    textures->apply(program);
+    program.use();
+    mesh.draw();
+    ++lastFrame_.draws;
+    lastFrame_.variants.push_back(
+        "diffraction " + std::string(diffractionPrograms_->variantOf("diffraction", variant).name) + " (path " +
+        m.path + ", N=" + std::to_string(terms) + ", " + std::to_string(m.tableSize) + "^2, " +
+        std::to_string(textures->bytes() / 1024) + " KiB)");
+}
+
 image::Image8 SceneRenderer::render(const Scene& scene) {
     const render::FeatureSet features = render::featuresOf(scene.lights, scene.fog.has_value());
     const float aspect = static_cast<float>(scene.width) / static_cast<float>(scene.height);
@@ -163,6 +217,10 @@ image::Image8 SceneRenderer::render(const Scene& scene) {
     glDisable(GL_BLEND);
 
     for (const auto& object : scene.objects) {
+        if (object.shader == "diffraction") {
+            drawDiffraction(scene, object, features, aspect);
+            continue;
+        }
         const auto* shader = catalog::findShader(programs_.catalog(), object.shader);
         if (!shader) programs_.variantOf(object.shader, {});  // throws render::UnknownShaderError with the list
         const render::VariantValues variant = variantFor(*shader, features, object.variantOverrides);

@@ -21,7 +21,8 @@
 //   path: "a" | "b" | "c" (c)   w_slices: 2..256 (8, path c)
 //   wavelength_step_nm: 1|2|5|10|20 (5)   table_size: 8..2048 (512)
 //   tolerance: (0, 1) (1e-3) or terms: 0..200   coherence_nm: > 0 (a quarter of the patch)
-//   tangent: [x, y, z], object-space direction across the grooves ([1, 0, 0])
+//   tangent: [x, y, z], object-space direction across the grooves ([1, 0, 0]), or "radial":
+//            away from the object's y axis (circular grooves, like a CD's tracks)
 #pragma once
 
 #include <array>
@@ -58,6 +59,7 @@ struct DiffractionMaterial {
     std::optional<int> terms;
     std::optional<double> coherenceNm;
     std::array<double, 3> tangent{1.0, 0.0, 0.0};
+    bool radialTangent = false;  // "tangent": "radial" (u_diffractionRadial)
 };
 
 DiffractionMaterial parseDiffractionMaterial(const nlohmann::json& object, const std::string& pointer,

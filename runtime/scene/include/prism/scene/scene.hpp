@@ -26,6 +26,7 @@
 #include <utility>
 #include <vector>
 
+#include "prism/diffraction/material.hpp"
 #include "prism/view/camera.hpp"
 #include "prism/view/lighting.hpp"
 
@@ -38,6 +39,11 @@ struct SceneObject {
     std::string shader = "phong";
     std::vector<std::pair<std::string, std::string>> variantOverrides;  // e.g. BLINN=1
     view::Material material;
+    // "shader": "diffraction" only: the material's "diffraction" parameters (height field,
+    // path, wavelength step, tolerance or terms; prism/diffraction/material.hpp) and their
+    // JSON pointer, which errors found when the tables are built name.
+    std::optional<diffraction::DiffractionMaterial> diffraction;
+    std::string diffractionPointer;
 };
 
 // Rain as a scene asks for it: an intensity class (the seed's Table 2) or a rate.

@@ -5,7 +5,10 @@
 // a rain system (prism/rain/rain_system.hpp) drawn over the objects; one without gets
 // none: no particle buffer, no compute update, no rain program. A scene with `water`
 // is drawn on a rain-fed water scene (terrain, sky, water map; prism/water/water_scene.hpp)
-// simulated for its `seconds`; one without creates no water map.
+// simulated for its `seconds`; one without creates no water map. An object with
+// "shader": "diffraction" is drawn with the diffraction catalogue's program for the scene's
+// lights and its material's path, from lookup tables built for that path only (and only
+// its N terms); a scene without one builds no diffraction table or program.
 //
 // Usage (snippet: examples/snippets/scene_scene_renderer.cpp):
 //
@@ -25,6 +28,7 @@
 #include <vector>
 
 #include "prism/image/image.hpp"
+#include "prism/render/feature_variants.hpp"
 #include "prism/render/program_cache.hpp"
 #include "prism/scene/scene.hpp"
 
@@ -51,6 +55,7 @@ water::HeightField sceneTerrain(const WaterSettings& settings);
 struct SceneFrameInfo {
     std::size_t draws = 0;
     std::vector<std::string> variants;  // "<shader> <variant name>" of each draw, in order
+    std::size_t diffractionTableBytes = 0;  // GPU memory of this frame's diffraction tables
 };
 
 class SceneRenderer {
@@ -68,6 +73,10 @@ class SceneRenderer {
     std::size_t rainProgramsBuilt() const;
     // Water maps created so far: one per rendered frame of a scene with water.
     std::size_t waterSystemsCreated() const { return waterSystemsCreated_; }
+    // Diffraction table sets built so far: one per diffraction object per frame, none for
+    // scenes without one; and the diffraction programs built so far.
+    std::size_t diffractionTablesBuilt() const { return diffractionTablesBuilt_; }
+    std::size_t diffractionProgramsBuilt() const { return diffractionPrograms_ ? diffractionPrograms_->size() : 0; }
 
     // Simulated time before a rain frame is drawn, so drops fill the cylinder as in a
     // running scene; fixed steps, so the image is the same on every render.
@@ -78,12 +87,16 @@ class SceneRenderer {
     void drawRain(const Scene& scene);
     void drawWater(const Scene& scene);
     void drawFogBillboards(const Scene& scene);
+    void drawDiffraction(const Scene& scene, const SceneObject& object, const render::FeatureSet& features,
+                         float aspect);
 
     render::ProgramCache programs_;
     SceneFrameInfo lastFrame_;
     std::unique_ptr<rain::RainPrograms> rainPrograms_;
     std::size_t rainSystemsCreated_ = 0;
     std::size_t waterSystemsCreated_ = 0;
+    std::unique_ptr<render::ProgramCache> diffractionPrograms_;  // created with the first diffraction object
+    std::size_t diffractionTablesBuilt_ = 0;
 };
 
 }  // namespace prism::scene
