@@ -255,12 +255,15 @@ StochasticSettings readStochastic(const Reader& r, const json& j) {
             const json& o = j["spheres"][i];
             r.object(o, at, {"center", "radius"});
             if (!o.contains("center")) r.fail(at + "/center", "3 numbers (the sphere's centre)");
+            const json& c = o["center"];
+            (void)r.vec3(c, at + "/center");  // 3 finite numbers; read again in double precision
+            double centre[3];
+            for (std::size_t k = 0; k < 3; ++k) centre[k] = c[k].get<double>();
             if (!o.contains("radius")) r.fail(at + "/radius", "a number (the sphere's radius)");
-            const glm::vec3 c = r.vec3(o["center"], at + "/center");
             const double radius = r.number(o["radius"], at + "/radius", 1e-4, 1e4);
-            if (c.z <= 0.0f || c.z >= s.light.lightHeight)
+            if (centre[2] <= 0.0 || centre[2] >= s.light.lightHeight)
                 r.fail(at + "/center/2", "a height between the ground (0) and the light");
-            s.light.spheres.push_back({c.x, c.y, c.z, radius});
+            s.light.spheres.push_back({centre[0], centre[1], centre[2], radius});
         }
     }
     if (j.contains("mask")) {
