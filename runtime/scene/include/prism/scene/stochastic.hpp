@@ -3,7 +3,7 @@
 // blue-noise or sorted samples (docs/bluenoise.md). Deterministic: the same settings give
 // the same image on every machine run.
 //
-// Usage:
+// Usage (snippet: examples/snippets/scene_stochastic.cpp):
 //
 //     #include "prism/scene/stochastic.hpp"
 //     prism::scene::Scene scene = prism::scene::loadScene("examples/scenes/soft_shadows.json");
