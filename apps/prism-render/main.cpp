@@ -2,6 +2,10 @@
 // (--scene FILE.json, docs/scenes.md), into a PNG, headlessly.
 //   prism-render --shader phong --mesh torus --subdiv 3 --shininess 64
 //                --light-dir -1,-1,-1 --size 512x512 --out phong.png [--backend egl or osmesa]
+//   prism-render --scene examples/scenes/soft_shadows.json --spp 1 --sampler sorted --frames 8 --out s.png
+// --spp, --sampler, --frame and --frames override the scene's "stochastic" settings (a
+// usage error for a scene without them): --frame K renders frame K of the sequence,
+// --frames K the mean of frames 0..K-1.
 // --check-finite renders to RGBA32F and exits 3, printing the count, if any pixel is
 // NaN or Inf. Bad input exits 2 with a message and writes no image.
 #include <CLI/CLI.hpp>
@@ -18,6 +22,7 @@
 #include "prism/image/png_io.hpp"
 #include "prism/scene/scene_loader.hpp"
 #include "prism/scene/scene_renderer.hpp"
+#include "prism/scene/stochastic.hpp"
 #include "prism/render/shader_meshes.hpp"
 #include "prism/shaders.hpp"
 
@@ -31,6 +36,17 @@ struct Arguments {
     std::vector<std::string> variants;
     unsigned subdiv = 3;
     bool checkFinite = false;
+    // Overrides of the scene's "stochastic" settings; nullopt: not given.
+    std::optional<int> spp, frame, frames;
+    std::optional<std::string> sampler;
+    bool stochasticGiven() const { return spp || frame || frames || sampler; }
+    std::string stochasticFlags() const {
+        std::string f;
+        for (const auto& [given, name] : {std::pair{spp.has_value(), "--spp"}, std::pair{sampler.has_value(), "--sampler"},
+                                          std::pair{frame.has_value(), "--frame"}, std::pair{frames.has_value(), "--frames"}})
+            if (given) f += (f.empty() ? "" : ", ") + std::string(name);
+        return f;
+    }
 };
 
 int badInput(const std::string& message) {
@@ -59,6 +75,46 @@ int renderScene(const Arguments& a) {
             (void)prism::render::namedMesh(o.mesh, 0);
     } catch (const std::exception& e) {
         return badInput(e.what());
+    }
+    if (a.stochasticGiven()) {  // flags override the scene's settings, never silently ignored
+        if (!scene.stochastic)
+            return badInput(a.stochasticFlags() + ": " + a.scene +
+                            " has no \"stochastic\" effect (docs/scenes.md); these flags need one");
+        auto& st = *scene.stochastic;
+        if (a.sampler) {
+            const auto kind = prism::scene::parseStochasticSampler(*a.sampler);
+            if (!kind) return badInput("--sampler " + *a.sampler + ": expected white, bluenoise or sorted");
+            st.sampler = *kind;
+        }
+        if (a.spp) st.spp = *a.spp;
+        if (a.frame) {  // one frame: the scene's accumulation no longer applies
+            st.frame = *a.frame;
+            st.frames = 1;
+        }
+        if (a.frames) {  // the mean from frame 0
+            st.frames = *a.frames;
+            st.frame = 0;
+        }
+        if (st.sampler == prism::bluenoise::SamplerKind::Sorted && st.frame > static_cast<int>(prism::scene::kMaxSortedFrame))
+            return badInput("--frame " + std::to_string(st.frame) + ": the sorted sampler replays every frame before K; use K <= " +
+                            std::to_string(prism::scene::kMaxSortedFrame));
+    }
+    if (scene.stochastic) {  // CPU only: no GL context
+        try {
+            const auto& st = *scene.stochastic;
+            prism::image::writePng(a.out, prism::scene::renderStochastic(st, scene.width, scene.height));
+            std::cout << "prism-render: wrote " << a.out << " (soft shadows, "
+                      << prism::scene::stochasticSamplerName(st.sampler) << ", " << st.spp << " spp, "
+                      << (st.frames > 1 ? "mean of frames 0.." + std::to_string(st.frames - 1)
+                                        : "frame " + std::to_string(st.frame))
+                      << ")\n";
+        } catch (const std::invalid_argument& e) {
+            return badInput(e.what());
+        } catch (const std::exception& e) {
+            std::cerr << "prism-render: error: " << e.what() << "\n";
+            return kExitFailure;
+        }
+        return kExitOk;
     }
     try {
         auto context = backend ? prism::gl::createContext(*backend) : prism::gl::createContext();
@@ -99,6 +155,16 @@ int main(int argc, char** argv) {
     app.add_option("--size", a.size, "image size WxH")->capture_default_str();
     app.add_option("--out", a.out, "output PNG");
     app.add_option("--backend", a.backend, "egl|osmesa (default: egl, else osmesa)");
+    using prism::scene::kMaxStochasticFrame, prism::scene::kMaxStochasticFrames, prism::scene::kMaxStochasticSpp;
+    app.add_option("--spp", a.spp, "with --scene: samples per pixel of its stochastic effect")
+        ->check(CLI::Range(1, static_cast<int>(kMaxStochasticSpp)));
+    app.add_option("--sampler", a.sampler, "with --scene: white|bluenoise|sorted for its stochastic effect");
+    auto* frameOption = app.add_option("--frame", a.frame, "with --scene: render frame K of the stochastic sequence")
+                            ->check(CLI::Range(0, static_cast<int>(kMaxStochasticFrame)));
+    auto* framesOption = app.add_option("--frames", a.frames, "with --scene: the mean of frames 0..K-1")
+                             ->check(CLI::Range(1, static_cast<int>(kMaxStochasticFrames)));
+    frameOption->excludes(framesOption);
+    framesOption->excludes(frameOption);
     app.add_flag("--check-finite", a.checkFinite, "render RGBA32F; exit 3 if any pixel is NaN or Inf");
     try {
         app.parse(argc, argv);
@@ -107,6 +173,7 @@ int main(int argc, char** argv) {
     }
 
     if (!a.scene.empty()) return renderScene(a);
+    if (a.stochasticGiven()) return badInput(a.stochasticFlags() + ": only with --scene FILE.json (a \"stochastic\" scene)");
     if (a.shader.empty()) return badInput("give --shader NAME or --scene FILE.json");
 
     // Validate everything before touching GL, so bad input writes nothing.

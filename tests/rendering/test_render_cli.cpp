@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "prism/image/image_compare.hpp"
 #include "prism/image/png_io.hpp"
 #include "prism/shaders.hpp"
 #include "rendering_test_support.hpp"
@@ -219,6 +220,120 @@ TEST(PrismRenderCli, CheckFiniteWithOutWritesPng) {
     const image::Image8 image = image::readPng(out);
     EXPECT_EQ(image.width, 40);
     EXPECT_EQ(image.height, 30);
+}
+
+// --- Stochastic scenes: --spp, --sampler, --frame, --frames -----------------------------
+
+const std::string kSoftShadows = std::string(PRISM_SCENES_DIR) + "/soft_shadows.json";
+const image::Thresholds kStochasticThresholds{3, 0.001, 0.5};  // as the scene goldens
+
+fs::path sceneGolden(const std::string& sampler) {
+    return fs::path(PRISM_GOLDEN_DIR) / "scenes" / ("soft_shadows_" + sampler + ".png");
+}
+
+bool sameWithin(const image::Image8& a, const image::Image8& b) {
+    return image::passes(image::compareImages(a, b, kStochasticThresholds.maxChannelDiff), kStochasticThresholds);
+}
+
+TEST(PrismRenderCliStochastic, SamplerFlagOverridesTheSceneAndMatchesItsGolden) {
+    // The scene says "bluenoise"; each --sampler gives that sampler's golden (the goldens
+    // of tests/scenes), and no other.
+    const fs::path dir = testDir();
+    for (const char* sampler : {"white", "bluenoise", "sorted"}) {
+        const fs::path out = dir / (std::string(sampler) + ".png");
+        const auto r = runPrismRender({"--scene", kSoftShadows, "--sampler", sampler, "--spp", "1", "--out", out.string()}, dir);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_NE(r.out.find(std::string(sampler) + ", 1 spp, frame 0"), std::string::npos) << r.out;
+        const image::Image8 image = image::readPng(out);
+        EXPECT_EQ(image.width, 128);
+        EXPECT_EQ(image.height, 128);
+        for (const char* other : {"white", "bluenoise", "sorted"})
+            EXPECT_EQ(sameWithin(image, image::readPng(sceneGolden(other))), std::string(sampler) == other)
+                << "--sampler " << sampler << " against the " << other << " golden";
+    }
+}
+
+TEST(PrismRenderCliStochastic, FrameSppAndFramesChangeTheImage) {
+    const fs::path dir = testDir();
+    const auto golden = image::readPng(sceneGolden("bluenoise"));
+    for (const std::vector<std::string>& flags :
+         {std::vector<std::string>{"--frame", "1"}, {"--frame", "1000000"}, {"--spp", "4"}, {"--frames", "4"}}) {
+        const fs::path out = dir / "out.png";
+        fs::remove(out);
+        std::vector<std::string> args{"--scene", kSoftShadows, "--out", out.string()};
+        args.insert(args.end(), flags.begin(), flags.end());
+        const auto r = runPrismRender(args, dir);
+        ASSERT_EQ(r.exitCode, 0) << flags[0] << ": " << r.err;
+        EXPECT_FALSE(sameWithin(image::readPng(out), golden)) << flags[0] << " " << flags[1] << " was ignored";
+    }
+}
+
+TEST(PrismRenderCliStochastic, FramesIsTheMeanAndFlagsOverrideTheScenesFrames) {
+    // A copy of the scene that accumulates 4 frames of the sorted sampler: --frames 4 on
+    // the example gives the same image, and --frame 0 on the copy gives frame 0.
+    const fs::path dir = testDir();
+    std::string text = readText(kSoftShadows);
+    const std::string from = "\"sampler\": \"bluenoise\",", to = "\"sampler\": \"sorted\", \"frames\": 4,";
+    const std::string frameKey = "\"frame\": 0,";
+    ASSERT_NE(text.find(from), std::string::npos);
+    ASSERT_NE(text.find(frameKey), std::string::npos);
+    text.replace(text.find(from), from.size(), to);
+    text.erase(text.find(frameKey), frameKey.size());
+    const fs::path scene = writeFile(dir / "four_frames.json", text);
+    const auto a = runPrismRender({"--scene", scene.string(), "--out", (dir / "a.png").string()}, dir);
+    ASSERT_EQ(a.exitCode, 0) << a.err;
+    EXPECT_NE(a.out.find("mean of frames 0..3"), std::string::npos) << a.out;
+    const auto b = runPrismRender(
+        {"--scene", kSoftShadows, "--sampler", "sorted", "--frames", "4", "--out", (dir / "b.png").string()}, dir);
+    ASSERT_EQ(b.exitCode, 0) << b.err;
+    EXPECT_EQ(image::readPng(dir / "a.png"), image::readPng(dir / "b.png"));
+    const auto c = runPrismRender({"--scene", scene.string(), "--frame", "0", "--out", (dir / "c.png").string()}, dir);
+    ASSERT_EQ(c.exitCode, 0) << c.err;
+    EXPECT_TRUE(sameWithin(image::readPng(dir / "c.png"), image::readPng(sceneGolden("sorted"))));
+}
+
+struct StochasticUsage {
+    std::vector<std::string> args;  // after --out
+    std::string expected;           // in stderr
+    std::string testName;
+    bool scene = true;              // with --scene soft_shadows.json (else one_light.json)
+};
+
+class PrismRenderCliStochasticUsage : public ::testing::TestWithParam<StochasticUsage> {};
+
+TEST_P(PrismRenderCliStochasticUsage, ExitsWithBadInputWritesNothing) {
+    const StochasticUsage& p = GetParam();
+    const fs::path dir = testDir();
+    std::vector<std::string> args{"--scene", p.scene ? kSoftShadows : std::string(PRISM_SCENES_DIR) + "/one_light.json",
+                                  "--out", (dir / "out.png").string()};
+    args.insert(args.end(), p.args.begin(), p.args.end());
+    const auto r = runPrismRender(args, dir);
+    EXPECT_EQ(r.exitCode, kExitBadInput) << r.err;
+    EXPECT_NE(r.err.find(p.expected), std::string::npos) << r.err;
+    EXPECT_TRUE(imagesIn(dir).empty());
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Flags, PrismRenderCliStochasticUsage,
+    ::testing::Values(StochasticUsage{{"--spp", "2"}, "--spp", "SppWithoutStochastic", false},
+                      StochasticUsage{{"--sampler", "white"}, "--sampler", "SamplerWithoutStochastic", false},
+                      StochasticUsage{{"--frame", "3"}, "--frame", "FrameWithoutStochastic", false},
+                      StochasticUsage{{"--frames", "3"}, "--frames", "FramesWithoutStochastic", false},
+                      StochasticUsage{{"--sampler", "pink"}, "--sampler pink", "UnknownSampler"},
+                      StochasticUsage{{"--spp", "0"}, "--spp", "ZeroSpp"},
+                      StochasticUsage{{"--frames", "0"}, "--frames", "ZeroFrames"},
+                      StochasticUsage{{"--frame", "-1"}, "--frame", "NegativeFrame"},
+                      StochasticUsage{{"--frame", "1", "--frames", "2"}, "excludes", "FrameAndFrames"},
+                      StochasticUsage{{"--sampler", "sorted", "--frame", "200000"}, "sorted", "SortedFrameTooFar"}),
+    [](const ::testing::TestParamInfo<StochasticUsage>& info) { return info.param.testName; });
+
+TEST(PrismRenderCliStochastic, FlagsWithShaderAreAUsageError) {
+    const fs::path dir = testDir();
+    const auto r = runPrismRender(
+        {"--shader", "phong", "--size", "32x32", "--sampler", "white", "--out", (dir / "out.png").string()}, dir);
+    EXPECT_EQ(r.exitCode, kExitBadInput) << r.err;
+    EXPECT_NE(r.err.find("--sampler"), std::string::npos) << r.err;
+    EXPECT_TRUE(imagesIn(dir).empty());
 }
 
 }  // namespace

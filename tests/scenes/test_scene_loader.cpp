@@ -194,3 +194,65 @@ TEST(SceneLoader, DiffractionErrorsNameTheJsonPath) {
                   .rfind("scene.json: /objects/0/material/diffraction/pathh: unknown key", 0),
               0u);
 }
+
+// --- "stochastic": the soft-shadow Monte Carlo effect -----------------------------------
+
+TEST(SceneLoader, StochasticExampleAndAbsence) {
+    auto s = prism::scene::loadScene(std::string(PRISM_SCENES_DIR) + "/soft_shadows.json");
+    ASSERT_TRUE(s.stochastic.has_value());
+    EXPECT_EQ(s.stochastic->sampler, prism::bluenoise::SamplerKind::BlueNoise);
+    EXPECT_EQ(s.stochastic->spp, 1);
+    EXPECT_EQ(s.stochastic->frame, 0);
+    EXPECT_EQ(s.stochastic->frames, 1);
+    ASSERT_EQ(s.stochastic->light.spheres.size(), 3u);
+    EXPECT_DOUBLE_EQ(s.stochastic->light.spheres[1].z, 0.9);
+    EXPECT_DOUBLE_EQ(s.stochastic->light.lightHalfLength, 0.8);
+    EXPECT_TRUE(s.objects.empty());
+    // A scene without the key has no effect at all.
+    EXPECT_FALSE(prism::scene::loadScene(std::string(PRISM_SCENES_DIR) + "/one_light.json").stochastic.has_value());
+    EXPECT_FALSE(parseScene("{}", "e.json").stochastic.has_value());
+}
+
+TEST(SceneLoader, StochasticFullSyntax) {
+    auto s = parseScene(R"({"stochastic": {"sampler": "sorted", "spp": 4, "frames": 16, "extent": 2,
+        "light": {"height": 3, "halfLength": 0.5, "halfWidth": 0.2, "radiance": 2},
+        "spheres": [{"center": [0, 0, 1], "radius": 0.4}], "mask": {"size": 32, "seed": 7},
+        "block": 16, "retargetEpochs": 0}})",
+                        "s.json");
+    ASSERT_TRUE(s.stochastic);
+    const auto& st = *s.stochastic;
+    EXPECT_EQ(st.sampler, prism::bluenoise::SamplerKind::Sorted);
+    EXPECT_EQ(st.spp, 4);
+    EXPECT_EQ(st.frames, 16);
+    EXPECT_DOUBLE_EQ(st.light.extent, 2.0);
+    EXPECT_DOUBLE_EQ(st.light.lightHeight, 3.0);
+    EXPECT_DOUBLE_EQ(st.light.lightHalfWidth, 0.2);
+    EXPECT_DOUBLE_EQ(st.light.radiance, 2.0);
+    ASSERT_EQ(st.light.spheres.size(), 1u);
+    EXPECT_DOUBLE_EQ(st.light.spheres[0].radius, 0.4);
+    EXPECT_EQ(st.maskSize, 32);
+    EXPECT_EQ(st.maskSeed, 7u);
+    EXPECT_EQ(st.block, 16);
+    EXPECT_EQ(st.retargetEpochs, 0);
+}
+
+TEST(SceneLoader, StochasticErrorsNameTheJsonPath) {
+    EXPECT_EQ(errorOf(R"({"stochastic": {"sampler": "pink"}})"),
+              "scene.json: /stochastic/sampler: expected white, bluenoise or sorted, not \"pink\"");
+    EXPECT_EQ(errorOf(R"({"stochastic": {"spp": 0}})"),
+              "scene.json: /stochastic/spp: expected a whole number from 1 to 1024");
+    EXPECT_EQ(errorOf(R"({"stochastic": {"frame": 2, "frames": 4}})"),
+              "scene.json: /stochastic/frames: expected either frame or frames > 1, not both");
+    EXPECT_NE(errorOf(R"({"stochastic": {"spheres": [{"center": [0, 0, 1], "radius": 0.2}, {"center": [0, 0]}]}})")
+                  .find("scene.json: /stochastic/spheres/1/center: expected 3 numbers"),
+              std::string::npos);
+    EXPECT_NE(errorOf(R"({"stochastic": {"spheres": [{"center": [0, 0, 5], "radius": 0.2}]}})")
+                  .find("/stochastic/spheres/0/center/2"),
+              std::string::npos);
+    EXPECT_NE(errorOf(R"({"stochastic": {"light": {"heigth": 2}}})").find("/stochastic/light/heigth: expected no such key"),
+              std::string::npos);
+    EXPECT_NE(errorOf(R"({"stochastic": {"effect": "ao"}})").find("/stochastic/effect"), std::string::npos);
+    EXPECT_NE(errorOf(R"({"stochastic": {"block": 5}})").find("/stochastic/block: expected 4, 8 or 16"), std::string::npos);
+    EXPECT_NE(errorOf(R"({"stochastic": {"mask": {"size": 0}}})").find("/stochastic/mask/size"), std::string::npos);
+    EXPECT_NE(errorOf(R"({"stochastic": 3})").find("/stochastic: expected an object"), std::string::npos);
+}

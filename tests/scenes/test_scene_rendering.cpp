@@ -10,6 +10,8 @@
 #include <cstdio>
 #include <memory>
 #include <variant>
+#include <utility>
+#include <vector>
 
 #include "prism/render/feature_variants.hpp"
 #include "prism/gl/gl_context.hpp"
@@ -20,6 +22,7 @@
 #include "prism/water/height_field.hpp"
 #include "prism/scene/scene_loader.hpp"
 #include "prism/scene/scene_renderer.hpp"
+#include "prism/scene/stochastic.hpp"
 #include "prism/shaders.hpp"
 
 namespace fs = std::filesystem;
@@ -278,7 +281,8 @@ TEST_P(SceneGolden, MatchesTheGoldenImage) {
 
 INSTANTIATE_TEST_SUITE_P(ExampleScenes, SceneGolden,
                          ::testing::Values("one_light", "four_lights", "fog", "rain", "water", "puddles_closeup",
-                                           "diffraction_cd", "diffraction_grating", "diffraction_snake"));
+                                           "diffraction_cd", "diffraction_grating", "diffraction_snake",
+                                           "soft_shadows"));
 
 // Mutation check: the grating golden pins the period. At 2400 nm instead of 2500 nm every order
 // moves (sin t = sin 75 - m lambda / d), and the image must fail the golden's thresholds.
@@ -297,4 +301,92 @@ TEST(SceneGoldenMutation, GratingPeriod2400FailsTheGolden) {
     EXPECT_FALSE(prism::image::passes(stats, kThresholds))
         << "a 2400 nm grating passes the 2500 nm golden: " << prism::image::describe(stats, kThresholds);
     std::printf("2400 nm vs the 2500 nm golden: %s\n", prism::image::describe(stats, kThresholds).c_str());
+}
+
+// --- The stochastic effect: goldens of the three samplers, with mutation checks --------
+//
+// examples/scenes/soft_shadows.json at its full 128x128, 1 spp, frame 0, once per sampler
+// (tests/golden/scenes/soft_shadows_<sampler>.png). The effect runs on the CPU in double
+// precision and is deterministic, so the same kThresholds apply (over 3/255 on at most
+// 0.1 % of pixels = 16 pixels, mean <= 0.5/255); they absorb a compiler rounding a
+// penumbra sample the other way, not a different sampler or frame: the mutation test
+// checks that every other sampler and frame 1 of the same sampler fail the golden.
+
+namespace {
+
+const char* const kSamplers[] = {"white", "bluenoise", "sorted"};
+
+prism::image::Image8 renderStochasticScene(const std::string& sampler, int frame) {
+    auto scene = exampleScene("soft_shadows");
+    scene.stochastic->sampler = *prism::scene::parseStochasticSampler(sampler);
+    scene.stochastic->frame = frame;
+    prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
+    auto image = renderer.render(scene);
+    EXPECT_EQ(renderer.lastFrame().draws, 0u) << "the stochastic effect draws nothing with GL";
+    return image;
+}
+
+fs::path stochasticGolden(const std::string& sampler) {
+    return fs::path(PRISM_GOLDEN_DIR) / "scenes" / ("soft_shadows_" + sampler + ".png");
+}
+
+}  // namespace
+
+class StochasticGolden : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(StochasticGolden, MatchesTheGoldenImage) {
+    const auto actual = renderStochasticScene(GetParam(), 0);
+    const fs::path golden = stochasticGolden(GetParam());
+    if (envFlag("PRISM_UPDATE_GOLDENS")) {
+        prism::image::writePng(golden, actual);
+        GTEST_SKIP() << "rewrote " << golden;
+    }
+    ASSERT_TRUE(fs::exists(golden)) << golden << " missing; run with PRISM_UPDATE_GOLDENS=1";
+    const auto stats = prism::image::compareImages(actual, prism::image::readPng(golden), kThresholds.maxChannelDiff);
+    const bool ok = prism::image::passes(stats, kThresholds);
+    if (!ok || envFlag("PRISM_SAVE_ACTUAL")) {
+        const fs::path out = fs::path(PRISM_GOLDEN_FAILURE_DIR) / "scenes";
+        prism::image::writePng(out / ("soft_shadows_" + GetParam() + ".actual.png"), actual);
+        prism::image::writePng(out / ("soft_shadows_" + GetParam() + ".diff.png"), stats.diff);
+    }
+    EXPECT_TRUE(ok) << prism::image::describe(stats, kThresholds);
+}
+
+TEST_P(StochasticGolden, AnotherSamplerOrFrameFailsTheGolden) {
+    const fs::path golden = stochasticGolden(GetParam());
+    if (!fs::exists(golden)) GTEST_SKIP() << golden << " missing";
+    const auto expected = prism::image::readPng(golden);
+    std::vector<std::pair<std::string, prism::image::Image8>> mutants;
+    for (const char* other : kSamplers)
+        if (GetParam() != other) mutants.emplace_back(std::string("sampler ") + other, renderStochasticScene(other, 0));
+    mutants.emplace_back("frame 1", renderStochasticScene(GetParam(), 1));
+    for (const auto& [what, image] : mutants) {
+        const auto stats = prism::image::compareImages(image, expected, kThresholds.maxChannelDiff);
+        EXPECT_FALSE(prism::image::passes(stats, kThresholds))
+            << what << " passes the " << GetParam() << " golden: " << prism::image::describe(stats, kThresholds);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Samplers, StochasticGolden, ::testing::Values("white", "bluenoise", "sorted"));
+
+TEST(StochasticScene, AccumulatedFramesConvergeTowardsTheReference) {
+    // The mean of 16 frames is closer to a 256-spp reference than frame 0 alone, for
+    // every sampler; blue noise's frame 0 has a lower blurred error than white's.
+    auto scene = exampleScene("soft_shadows");
+    auto& st = *scene.stochastic;
+    const int w = 64, h = 64;
+    const auto reference = prism::bluenoise::renderReference(st.light, w, h, 256);
+    double blurred[2] = {0, 0};
+    for (const char* sampler : kSamplers) {
+        st.sampler = *prism::scene::parseStochasticSampler(sampler);
+        st.frame = 0;
+        st.frames = 1;
+        const auto one = prism::bluenoise::compareToReference(prism::scene::renderStochasticValues(st, w, h), reference);
+        st.frames = 16;
+        const auto many = prism::bluenoise::compareToReference(prism::scene::renderStochasticValues(st, w, h), reference);
+        EXPECT_LT(many.rms, 0.6 * one.rms) << sampler;
+        if (st.sampler == prism::bluenoise::SamplerKind::White) blurred[0] = one.blurredRms;
+        if (st.sampler == prism::bluenoise::SamplerKind::BlueNoise) blurred[1] = one.blurredRms;
+    }
+    EXPECT_LT(blurred[1], blurred[0]);
 }

@@ -14,6 +14,7 @@
 #include <set>
 #include <sstream>
 
+#include "prism/scene/stochastic.hpp"
 #include "prism/water/rain_rates.hpp"
 #include "prism/water/water_simulation.hpp"
 
@@ -237,6 +238,70 @@ WaterSettings readWater(const Reader& r, const json& j) {
     return s;
 }
 
+bluenoise::SamplerKind samplerNamed(const Reader& r, const json& j, const std::string& at) {
+    const std::string name = r.string(j, at);
+    if (const auto kind = parseStochasticSampler(name)) return *kind;
+    r.fail(at, "white, bluenoise or sorted, not \"" + name + "\"");
+}
+
+StochasticSettings readStochastic(const Reader& r, const json& j) {
+    r.object(j, "/stochastic",
+             {"effect", "sampler", "spp", "frame", "frames", "light", "spheres", "extent", "mask", "block", "retargetEpochs"});
+    StochasticSettings s;
+    if (j.contains("effect") && r.string(j["effect"], "/stochastic/effect") != "softShadows")
+        r.fail("/stochastic/effect", "\"softShadows\" (the only effect so far)");
+    if (j.contains("sampler")) s.sampler = samplerNamed(r, j["sampler"], "/stochastic/sampler");
+    if (j.contains("spp")) s.spp = static_cast<int>(r.whole(j["spp"], "/stochastic/spp", 1, kMaxStochasticSpp));
+    if (j.contains("frame")) s.frame = static_cast<int>(r.whole(j["frame"], "/stochastic/frame", 0, kMaxStochasticFrame));
+    if (j.contains("frames"))
+        s.frames = static_cast<int>(r.whole(j["frames"], "/stochastic/frames", 1, kMaxStochasticFrames));
+    if (s.frame > 0 && s.frames > 1) r.fail("/stochastic/frames", "either frame or frames > 1, not both");
+    if (j.contains("extent"))
+        s.light.extent = r.number(j["extent"], "/stochastic/extent", 1e-3, 1e4);
+    if (j.contains("light")) {
+        const json& l = j["light"];
+        r.object(l, "/stochastic/light", {"height", "halfLength", "halfWidth", "radiance"});
+        if (l.contains("height")) s.light.lightHeight = r.number(l["height"], "/stochastic/light/height", 1e-3, 1e4);
+        if (l.contains("halfLength"))
+            s.light.lightHalfLength = r.number(l["halfLength"], "/stochastic/light/halfLength", 1e-4, 1e4);
+        if (l.contains("halfWidth"))
+            s.light.lightHalfWidth = r.number(l["halfWidth"], "/stochastic/light/halfWidth", 1e-4, 1e4);
+        if (l.contains("radiance")) s.light.radiance = r.number(l["radiance"], "/stochastic/light/radiance", 0.0, 1e6);
+    }
+    if (j.contains("spheres")) {
+        if (!j["spheres"].is_array()) r.fail("/stochastic/spheres", "an array of spheres");
+        s.light.spheres.clear();
+        for (std::size_t i = 0; i < j["spheres"].size(); ++i) {
+            const std::string at = "/stochastic/spheres/" + std::to_string(i);
+            const json& o = j["spheres"][i];
+            r.object(o, at, {"center", "radius"});
+            if (!o.contains("center")) r.fail(at + "/center", "3 numbers (the sphere's centre)");
+            const json& c = o["center"];
+            (void)r.vec3(c, at + "/center");  // 3 finite numbers; read again in double precision
+            double centre[3];
+            for (std::size_t k = 0; k < 3; ++k) centre[k] = c[k].get<double>();
+            if (!o.contains("radius")) r.fail(at + "/radius", "a number (the sphere's radius)");
+            const double radius = r.number(o["radius"], at + "/radius", 1e-4, 1e4);
+            if (centre[2] <= 0.0 || centre[2] >= s.light.lightHeight)
+                r.fail(at + "/center/2", "a height between the ground (0) and the light");
+            s.light.spheres.push_back({centre[0], centre[1], centre[2], radius});
+        }
+    }
+    if (j.contains("mask")) {
+        const json& m = j["mask"];
+        r.object(m, "/stochastic/mask", {"size", "seed"});
+        if (m.contains("size")) s.maskSize = static_cast<int>(r.whole(m["size"], "/stochastic/mask/size", 1, 256));
+        if (m.contains("seed")) s.maskSeed = r.whole(m["seed"], "/stochastic/mask/seed", 0, 0xffffffffu);
+    }
+    if (j.contains("block")) {
+        s.block = static_cast<int>(r.whole(j["block"], "/stochastic/block", 4, 16));
+        if (s.block != 4 && s.block != 8 && s.block != 16) r.fail("/stochastic/block", "4, 8 or 16");
+    }
+    if (j.contains("retargetEpochs"))
+        s.retargetEpochs = static_cast<int>(r.whole(j["retargetEpochs"], "/stochastic/retargetEpochs", 0, 256));
+    return s;
+}
+
 std::pair<int, int> lineColumn(const std::string& text, std::size_t byte) {
     int line = 1, col = 1;
     for (std::size_t i = 0; i + 1 < byte && i < text.size(); ++i) {
@@ -278,7 +343,7 @@ Scene parseScene(const std::string& text, const std::string& fileName) {
     Reader r(fileName);
     // Files a scene names (a diffraction PNG height field) are relative to the scene file.
     const std::string baseDir = std::filesystem::path(fileName).parent_path().string();
-    r.object(j, "", {"camera", "image", "lights", "fog", "objects", "rain", "water", "comment"});
+    r.object(j, "", {"camera", "image", "lights", "fog", "objects", "rain", "water", "stochastic", "comment"});
     Scene s;
     s.file = fileName;
     if (j.contains("camera")) s.camera = readCamera(r, j["camera"]);
@@ -309,6 +374,7 @@ Scene parseScene(const std::string& text, const std::string& fileName) {
     }
     if (j.contains("rain")) s.rain = readRain(r, j["rain"]);
     if (j.contains("water")) s.water = readWater(r, j["water"]);
+    if (j.contains("stochastic")) s.stochastic = readStochastic(r, j["stochastic"]);
     return s;
 }
 

@@ -1,5 +1,6 @@
 // Scene drawing with minimal, shared programs (see prism/scene_renderer.hpp).
 #include "prism/scene/scene_renderer.hpp"
+#include "prism/scene/stochastic.hpp"
 
 #include "prism/diffraction/diffraction_gl.hpp"
 #include "prism/render/feature_variants.hpp"
@@ -200,6 +201,10 @@ void SceneRenderer::drawDiffraction(const Scene& scene, const SceneObject& objec
 }
 
 image::Image8 SceneRenderer::render(const Scene& scene) {
+    if (scene.stochastic) {  // the Monte Carlo effect, on the CPU: no draws
+        lastFrame_ = {};
+        return renderStochastic(*scene.stochastic, scene.width, scene.height);
+    }
     const render::FeatureSet features = render::featuresOf(scene.lights, scene.fog.has_value());
     const float aspect = static_cast<float>(scene.width) / static_cast<float>(scene.height);
     lastFrame_ = {};

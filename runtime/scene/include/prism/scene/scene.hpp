@@ -27,6 +27,8 @@
 #include <vector>
 
 #include "prism/diffraction/material.hpp"
+#include "prism/bluenoise/samplers.hpp"
+#include "prism/bluenoise/soft_shadows.hpp"
 #include "prism/view/camera.hpp"
 #include "prism/view/lighting.hpp"
 
@@ -71,6 +73,22 @@ struct WaterSettings {
     float cloudCover = 0.6f;                   // of the procedural sky: 0 clear (bright) .. 1 overcast
 };
 
+// A Monte Carlo effect as a scene asks for it (docs/scenes.md, docs/bluenoise.md): soft
+// shadows of spheres on a ground plane under a rectangular area light, seen from above,
+// estimated on the CPU with `spp` samples per pixel from one of the three samplers.
+// Frame `frame` alone, or (frames > 1) the mean of frames 0 .. frames-1.
+struct StochasticSettings {
+    bluenoise::SoftShadowScene light = bluenoise::SoftShadowScene::classic();  // light + spheres
+    bluenoise::SamplerKind sampler = bluenoise::SamplerKind::BlueNoise;        // White, BlueNoise or Sorted
+    int spp = 1;
+    int frame = 0;
+    int frames = 1;
+    int maskSize = 64;       // void-and-cluster mask, maskSize^2
+    unsigned maskSeed = 0;
+    int block = 8;           // sorting block size of the sorted sampler
+    int retargetEpochs = 8;  // annealing epochs of the sorted sampler's retarget permutation
+};
+
 struct Scene {
     std::string file;  // where it was read from, for messages
     view::Camera camera;
@@ -86,6 +104,7 @@ struct Scene {
     std::vector<SceneObject> objects;
     std::optional<RainSettings> rain;
     std::optional<WaterSettings> water;
+    std::optional<StochasticSettings> stochastic;  // replaces the raster image when given
 };
 
 }  // namespace prism::scene
