@@ -62,10 +62,15 @@ std::string fingerprintOf(const Options& o, const std::vector<std::string>& embe
         const auto text = reader.read(joinPath(o.baseDir, file));
         h.mix(text ? *text : std::string("\0missing", 8));
     }
+    // Folders as embedded (relative to --base-dir), so that the same tree checked out at
+    // another absolute path gives the same fingerprint and a byte-identical header.
+    const auto shown = [&](const std::string& dir) {
+        return embeddedPath(fs::absolute(dir).lexically_normal().string(), o.baseDir);
+    };
     for (const auto& dir : o.includeDirs)
-        for (const auto& name : listing(dir, isModule)) h.mix("-I " + dir + "/" + name);
+        for (const auto& name : listing(dir, isModule)) h.mix("-I " + shown(dir) + "/" + name);
     for (const auto& input : o.inputs)
-        for (const auto& name : listing(input, isStage)) h.mix("in " + input + "/" + name);
+        for (const auto& name : listing(input, isStage)) h.mix("in " + shown(input) + "/" + name);
     return h.hex();
 }
 

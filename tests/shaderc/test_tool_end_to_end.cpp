@@ -270,3 +270,24 @@ TEST(ToolVariants, WildcardFilterAndItsTypoCheck) {
     EXPECT_EQ(typo.exitCode, 1);
     EXPECT_NE(typo.output.find("no shader declares a variant 'LIGTHS'"), std::string::npos) << typo.output;
 }
+
+// Hermetic output: the same sources checked out at two absolute paths of different depth
+// give byte-identical headers (names are relative to --base-dir, and so is everything the
+// fingerprints hash).
+TEST(GoldenHeader, TwoCheckoutsGiveByteIdenticalHeaders) {
+    ScratchDir dir("two-checkouts");
+    std::string headers[2];
+    const std::string roots[2] = {dir.str() + "/a", dir.str() + "/deeper/checkout/b"};
+    for (int i = 0; i < 2; ++i) {
+        fs::create_directories(roots[i]);
+        fs::copy(kSource + "/modules", roots[i] + "/modules", fs::copy_options::recursive);
+        fs::copy(kSource + "/shader_sources", roots[i] + "/shader_sources", fs::copy_options::recursive);
+        const std::string args = "-o catalogue.hpp --base-dir " + roots[i] + " -I " + roots[i] + "/modules --contract " +
+                                 roots[i] + "/modules/contract.json " + roots[i] + "/shader_sources";
+        auto run = prism::test::runShaderc(args, roots[i]);
+        ASSERT_EQ(run.exitCode, 0) << run.output;
+        headers[i] = readFile(fs::path(roots[i]) / "catalogue.hpp");
+    }
+    EXPECT_FALSE(headers[0].empty());
+    EXPECT_TRUE(headers[0] == headers[1]) << "the header depends on where the sources are checked out";
+}
