@@ -256,3 +256,13 @@ TEST(SceneLoader, StochasticErrorsNameTheJsonPath) {
     EXPECT_NE(errorOf(R"({"stochastic": {"mask": {"size": 0}}})").find("/stochastic/mask/size"), std::string::npos);
     EXPECT_NE(errorOf(R"({"stochastic": 3})").find("/stochastic: expected an object"), std::string::npos);
 }
+
+// A number finite as a double but past float's range would become infinity in the scene's
+// float fields (fuzz.scene_json found `"eye": [0, 1, 4e94]`): it is an error at its path.
+TEST(SceneLoader, NumberPastFloatRangeIsAnError) {
+    EXPECT_NE(errorOf(R"({"camera": {"eye": [0, 1, 4e94]}})").find("scene.json: /camera/eye/2: expected a number in"),
+              std::string::npos)
+        << errorOf(R"({"camera": {"eye": [0, 1, 4e94]}})");
+    EXPECT_NE(errorOf(R"({"objects": [{"mesh": "sphere", "scale": -1e39}]})").find("/objects/0/scale"), std::string::npos);
+    EXPECT_NO_THROW(prism::scene::parseScene(R"({"camera": {"eye": [0, 1, 3e38]}})", "scene.json"));
+}

@@ -47,8 +47,10 @@ class Reader {
         }
     }
 
-    double number(const json& j, const std::string& at, double min = -std::numeric_limits<double>::max(),
-                  double max = std::numeric_limits<double>::max()) const {
+    // Scenes store their numbers as float: by default a number must fit one (4e94 would
+    // become infinity, found by fuzz.scene_json).
+    double number(const json& j, const std::string& at, double min = -std::numeric_limits<float>::max(),
+                  double max = std::numeric_limits<float>::max()) const {
         if (!j.is_number()) fail(at, "a number");
         const double v = j.get<double>();
         if (!std::isfinite(v) || v < min || v > max) {
