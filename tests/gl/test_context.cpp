@@ -81,6 +81,27 @@ TEST(EglContext, CreatesCurrentCoreContext) {
     EXPECT_EQ(ctx->drawableWidth(), 0);
 }
 
+// The device platform (EGL_EXT_platform_device) is what NVIDIA's EGL offers instead of
+// Mesa's surfaceless one; Mesa lists a software device, so it is exercised here too.
+TEST(EglContext, DevicePlatformRendersWhenAskedFor) {
+    ScopedEnv env("PRISM_EGL_PLATFORM", "device");
+    auto ctx = prism::gl::createContext(Backend::Egl);
+    expectUsableCoreContext(*ctx, Backend::Egl);
+    prism::gl::Framebuffer fb(4, 4);
+    fb.clear({1.f, 0.f, 0.f, 1.f});
+    EXPECT_EQ(fb.readImage8().at(1, 1), (prism::image::Rgba8{255, 0, 0, 255}));
+}
+
+TEST(EglContext, UnknownPlatformIsAnErrorNamingIt) {
+    ScopedEnv env("PRISM_EGL_PLATFORM", "wayland");
+    try {
+        auto ctx = prism::gl::createContext(Backend::Egl);
+        FAIL() << "a bad PRISM_EGL_PLATFORM was accepted";
+    } catch (const ContextError& e) {
+        EXPECT_NE(std::string(e.what()).find("PRISM_EGL_PLATFORM='wayland'"), std::string::npos) << e.what();
+    }
+}
+
 TEST(OsMesaContext, CreatesCurrentCoreContext) {
     ASSERT_TRUE(prism::gl::isBackendCompiledIn(Backend::OsMesa));
     auto ctx = prism::gl::createContext(Backend::OsMesa, {.width = 32, .height = 16});

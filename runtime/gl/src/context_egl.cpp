@@ -1,11 +1,15 @@
-// The EGL backend: a GL core context on Mesa's surfaceless platform (no display,
-// no window, no surface); rendering goes into framebuffer objects.
+// The EGL backend: a GL core context with no display, no window and no surface, on
+// Mesa's surfaceless platform (llvmpipe, the default) or, where that platform is
+// missing (NVIDIA's EGL) or PRISM_EGL_PLATFORM=device asks for it, on the first EGL
+// device that initialises (EGL_EXT_platform_device); rendering goes into framebuffer
+// objects.
 #define EGL_NO_X11
 #define MESA_EGL_NO_X11_HEADERS
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <mutex>
 #include <string>
@@ -78,6 +82,22 @@ std::mutex gDisplayMutex;
 EGLDisplay gDisplay = EGL_NO_DISPLAY;
 int gDisplayUsers = 0;
 
+// The first device of EGL_EXT_platform_device that initialises, or EGL_NO_DISPLAY.
+EGLDisplay initialiseFirstDevice(const char* clientExtensions, PFNEGLGETPLATFORMDISPLAYEXTPROC getPlatformDisplay) {
+    if (!hasExtension(clientExtensions, "EGL_EXT_platform_device")) return EGL_NO_DISPLAY;
+    auto queryDevices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+    if (!queryDevices) return EGL_NO_DISPLAY;
+    EGLDeviceEXT devices[16];
+    EGLint count = 0;
+    if (!queryDevices(16, devices, &count)) return EGL_NO_DISPLAY;
+    for (EGLint i = 0; i < count; ++i) {
+        EGLDisplay display = getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
+        EGLint major = 0, minor = 0;
+        if (display != EGL_NO_DISPLAY && eglInitialize(display, &major, &minor)) return display;
+    }
+    return EGL_NO_DISPLAY;
+}
+
 EGLDisplay acquireDisplay() {
     std::lock_guard lock(gDisplayMutex);
     if (gDisplayUsers > 0) {
@@ -85,16 +105,34 @@ EGLDisplay acquireDisplay() {
         return gDisplay;
     }
     const char* clientExtensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-    if (!hasExtension(clientExtensions, "EGL_MESA_platform_surfaceless"))
+    auto getPlatformDisplay =
+        reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+    if (!getPlatformDisplay)
+        throw ContextError("prism: EGL backend: eglGetPlatformDisplayEXT is missing; install libegl1-mesa-dev");
+    const char* platformChoice = std::getenv("PRISM_EGL_PLATFORM");
+    const std::string platform = platformChoice ? platformChoice : "";
+    if (!platform.empty() && platform != "surfaceless" && platform != "device")
+        throw ContextError("prism: EGL backend: PRISM_EGL_PLATFORM='" + platform +
+                           "' is not a platform; use 'surfaceless' (Mesa) or 'device' (EGL_EXT_platform_device)");
+    const bool haveSurfaceless = hasExtension(clientExtensions, "EGL_MESA_platform_surfaceless");
+    if (platform == "device" || (platform.empty() && !haveSurfaceless)) {
+        EGLDisplay display = initialiseFirstDevice(clientExtensions, getPlatformDisplay);
+        if (display == EGL_NO_DISPLAY)
+            throw ContextError(
+                "prism: EGL backend: no EGL device initialised and Mesa's surfaceless platform is " +
+                std::string(haveSurfaceless ? "not chosen" : "missing") + " (client extensions: " +
+                std::string(clientExtensions ? clientExtensions : "none") +
+                "); install Mesa's EGL (libegl1-mesa-dev, libegl-mesa0) or use PRISM_GL_BACKEND=osmesa");
+        gDisplay = display;
+        gDisplayUsers = 1;
+        return display;
+    }
+    if (!haveSurfaceless)
         throw ContextError(
             "prism: EGL backend: the EGL library lacks EGL_MESA_platform_surfaceless (client "
             "extensions: " +
             std::string(clientExtensions ? clientExtensions : "none") +
             "); install Mesa's EGL (libegl1-mesa-dev, libegl-mesa0) or use PRISM_GL_BACKEND=osmesa");
-    auto getPlatformDisplay =
-        reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
-    if (!getPlatformDisplay)
-        throw ContextError("prism: EGL backend: eglGetPlatformDisplayEXT is missing; install libegl1-mesa-dev");
     EGLDisplay display = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
     if (display == EGL_NO_DISPLAY)
         fail("eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA)", "install libgl1-mesa-dri");
