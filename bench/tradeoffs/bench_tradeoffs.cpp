@@ -61,6 +61,9 @@ namespace {
 
 using namespace prism;
 using namespace prism::bench;
+using namespace prism::render;
+using namespace prism::image;
+using namespace prism::view;
 using Clock = std::chrono::steady_clock;
 
 struct Options {
