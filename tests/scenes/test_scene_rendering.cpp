@@ -240,6 +240,28 @@ TEST(SceneRendering, DiffractionObjectBuildsOnlyItsPathsTables) {
               std::size_t{5} * 64 * 64 * 2 * sizeof(float) + std::size_t{21} * 4 * sizeof(float));
 }
 
+// Tables belong to the material, not the frame: a second frame of the same material, or of
+// one seen before, builds nothing and draws the same image.
+TEST(SceneRendering, DiffractionTablesAreBuiltOncePerMaterial) {
+    prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
+    auto scene = exampleScene("diffraction_grating");
+    scene.width = scene.height = 48;
+    auto& m = *scene.objects[0].diffraction;
+    m.tableSize = 32;
+    m.terms = 3;
+    const auto first = renderer.render(scene);
+    EXPECT_EQ(renderer.render(scene).data, first.data);
+    EXPECT_EQ(renderer.diffractionTablesBuilt(), 1u);
+    EXPECT_GT(renderer.lastFrame().diffractionTableBytes, 0u) << "a cached set still counts in the frame";
+    m.terms = 4;
+    const auto fourTerms = renderer.render(scene);
+    EXPECT_EQ(renderer.diffractionTablesBuilt(), 2u);
+    EXPECT_NE(fourTerms.data, first.data) << "a changed material got the old tables";
+    m.terms = 3;
+    renderer.render(scene);
+    EXPECT_EQ(renderer.diffractionTablesBuilt(), 2u);
+}
+
 TEST(SceneRendering, DiffractionTooManyTermsNamesTheMaterial) {
     prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
     auto scene = prism::scene::parseScene(R"({"objects": [{"mesh": "grid", "material": {"shader": "diffraction",

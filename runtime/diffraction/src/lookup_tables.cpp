@@ -1,15 +1,36 @@
 // Lookup tables for the GPU paths and their CPU emulation (see lookup_tables.hpp).
 #include "prism/diffraction/lookup_tables.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <numbers>
 #include <stdexcept>
+#include <thread>
+#include <vector>
 
 namespace prism::diffraction {
 namespace {
 
 using Complex = std::complex<double>;
+
+// Runs rowBand(first, last) over [0, rows) in contiguous bands, one per hardware thread (at
+// most 16). Each texel depends on its own row only, so the tables are bit-identical for every
+// thread count.
+template <class RowBand>
+void forEachRowBand(int rows, RowBand rowBand) {
+    const int threads = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, std::min(16, rows));
+    if (threads <= 1) {
+        rowBand(0, rows);
+        return;
+    }
+    std::vector<std::thread> workers;
+    workers.reserve(static_cast<std::size_t>(threads - 1));
+    for (int t = 1; t < threads; ++t)
+        workers.emplace_back(rowBand, rows * t / threads, rows * (t + 1) / threads);
+    rowBand(0, rows / threads);
+    for (auto& w : workers) w.join();
+}
 
 // GL_LINEAR + GL_CLAMP_TO_EDGE lookup of `channels` floats at coordinate x (texture units, the
 // texel grid maps [-extent, extent] with texel i centred at (i - S/2) * 2 extent / S).
@@ -69,15 +90,17 @@ SpectralTables buildSpectralTables(const StamBrdf& brdf, const TableOptions& opt
     for (int n = 0; n <= t.terms; ++n) {
         const double norm = std::pow(t.heightScaleNm, -n);
         const Spectrum& spectrum = brdf.taylor().terms[n];
-        for (int j = 0; j < t.size; ++j) {
-            for (int i = 0; i < t.size; ++i) {
-                const Complex h =
-                    norm * spectrum.evaluate((i - t.size / 2) * cell, (j - t.size / 2) * cell, brdf.window());
-                float* texel = &t.texels[n * layer + (static_cast<std::size_t>(j) * t.size + i) * 2];
-                texel[0] = static_cast<float>(h.real());
-                texel[1] = static_cast<float>(h.imag());
+        forEachRowBand(t.size, [&, n, norm](int firstRow, int lastRow) {
+            for (int j = firstRow; j < lastRow; ++j) {
+                for (int i = 0; i < t.size; ++i) {
+                    const Complex h =
+                        norm * spectrum.evaluate((i - t.size / 2) * cell, (j - t.size / 2) * cell, brdf.window());
+                    float* texel = &t.texels[n * layer + (static_cast<std::size_t>(j) * t.size + i) * 2];
+                    texel[0] = static_cast<float>(h.real());
+                    texel[1] = static_cast<float>(h.imag());
+                }
             }
-        }
+        });
     }
     return t;
 }
@@ -90,38 +113,42 @@ IntegratedTables buildIntegratedTables(const SpectralTables& a) {
     const std::size_t layer = static_cast<std::size_t>(t.size) * t.size * 3;
     t.texels.assign(layer * layers, 0.0f);
     const double cell = 2.0 * kIntegratedExtent / t.size;
-    std::vector<Complex> b(static_cast<std::size_t>(a.terms) + 1);
-    std::vector<double> sums(static_cast<std::size_t>(layers) * 3);
-    for (int j = 0; j < t.size; ++j) {
-        for (int i = 0; i < t.size; ++i) {
-            const double u = (i - t.size / 2) * cell, v = (j - t.size / 2) * cell;
-            std::fill(sums.begin(), sums.end(), 0.0);
-            for (const WavelengthRgb& wl : a.wavelengths) {
-                const double ks = 2.0 * std::numbers::pi / wl.wavelengthNm * a.heightScaleNm;
-                Complex factor{1.0, 0.0};
-                for (int n = 0; n <= a.terms; ++n) {
-                    if (n > 0) factor *= Complex{0.0, ks / n};
-                    b[n] = factor * sampleSpectral(a, n, u / wl.wavelengthNm, v / wl.wavelengthNm);
-                }
-                bool any = false;
-                for (const Complex& c : b) any = any || c != Complex{0.0, 0.0};
-                if (!any) continue;  // outside every window: nothing to add (most texels of a 1-row field)
-                for (int n = 0; n <= a.terms; ++n) {
-                    for (int m = 0; m <= a.terms; ++m) {
-                        const double re = (b[n] * std::conj(b[m])).real();
-                        double* s = &sums[static_cast<std::size_t>(n + m) * 3];
-                        s[0] += re * wl.weight.r;
-                        s[1] += re * wl.weight.g;
-                        s[2] += re * wl.weight.b;
+    forEachRowBand(t.size, [&](int firstRow, int lastRow) {
+        std::vector<Complex> b(static_cast<std::size_t>(a.terms) + 1);
+        std::vector<double> sums(static_cast<std::size_t>(layers) * 3);
+        for (int j = firstRow; j < lastRow; ++j) {
+            for (int i = 0; i < t.size; ++i) {
+                const double u = (i - t.size / 2) * cell, v = (j - t.size / 2) * cell;
+                std::fill(sums.begin(), sums.end(), 0.0);
+                for (const WavelengthRgb& wl : a.wavelengths) {
+                    const double ks = 2.0 * std::numbers::pi / wl.wavelengthNm * a.heightScaleNm;
+                    Complex factor{1.0, 0.0};
+                    for (int n = 0; n <= a.terms; ++n) {
+                        if (n > 0) factor *= Complex{0.0, ks / n};
+                        b[n] = factor * sampleSpectral(a, n, u / wl.wavelengthNm, v / wl.wavelengthNm);
+                    }
+                    bool any = false;
+                    for (const Complex& c : b) any = any || c != Complex{0.0, 0.0};
+                    if (!any) continue;  // outside every window: nothing to add (most texels of a 1-row field)
+                    // Layer s = n + m sums Re(b_n conj(b_m)); the (n, m) and (m, n) terms are equal
+                    // (Re z = Re conj z), so each pair off the diagonal is taken once, twice.
+                    for (int n = 0; n <= a.terms; ++n) {
+                        for (int m = n; m <= a.terms; ++m) {
+                            const double re = (m == n ? 1.0 : 2.0) * (b[n] * std::conj(b[m])).real();
+                            double* s = &sums[static_cast<std::size_t>(n + m) * 3];
+                            s[0] += re * wl.weight.r;
+                            s[1] += re * wl.weight.g;
+                            s[2] += re * wl.weight.b;
+                        }
                     }
                 }
-            }
-            for (int s = 0; s < layers; ++s) {
-                float* texel = &t.texels[s * layer + (static_cast<std::size_t>(j) * t.size + i) * 3];
-                for (int c = 0; c < 3; ++c) texel[c] = static_cast<float>(sums[static_cast<std::size_t>(s) * 3 + c]);
+                for (int s = 0; s < layers; ++s) {
+                    float* texel = &t.texels[s * layer + (static_cast<std::size_t>(j) * t.size + i) * 3];
+                    for (int c = 0; c < 3; ++c) texel[c] = static_cast<float>(sums[static_cast<std::size_t>(s) * 3 + c]);
+                }
             }
         }
-    }
+    });
     return t;
 }
 

@@ -21,6 +21,7 @@
 #include <glm/trigonometric.hpp>
 
 #include <algorithm>
+#include <iterator>
 #include <cmath>
 #include <optional>
 
@@ -66,7 +67,14 @@ rain::RainParams rainParamsFor(const Scene& scene) {
     return p;
 }
 
+struct SceneRenderer::DiffractionTableSet {
+    diffraction::DiffractionMaterial material;
+    int terms = 0;
+    diffraction::DiffractionTextures textures;
+};
+
 SceneRenderer::SceneRenderer(const catalog::Catalog& catalog) : programs_(catalog) {}
+
 SceneRenderer::~SceneRenderer() = default;
 
 std::size_t SceneRenderer::rainProgramsBuilt() const {
@@ -155,25 +163,35 @@ void SceneRenderer::drawDiffraction(const Scene& scene, const SceneObject& objec
     if (!object.diffraction)
         throw SceneError(scene.file + ": " + pointer + ": expected the diffraction parameters of a diffraction object");
     const diffraction::DiffractionMaterial& m = *object.diffraction;
-    std::optional<diffraction::DiffractionTextures> textures;
-    int terms = 0;
-    try {  // the height field, N from its range, and the tables of the material's path only
-        const diffraction::StamBrdf brdf = diffraction::makeBrdf(m);
-        terms = brdf.terms();
-        const diffraction::MaterialTables tables = diffraction::buildMaterialTables(m, brdf);
-        if (tables.spectral) {
-            textures.emplace(*tables.spectral);
-        } else if (tables.integrated) {
-            textures.emplace(*tables.integrated);
-        } else {
-            textures.emplace(*tables.volume);
+    auto cached = std::find_if(diffractionTables_.begin(), diffractionTables_.end(),
+                               [&](const auto& set) { return set->material == m; });
+    if (cached == diffractionTables_.end()) {
+        std::optional<diffraction::DiffractionTextures> built;
+        int builtTerms = 0;
+        try {  // the height field, N from its range, and the tables of the material's path only
+            const diffraction::StamBrdf brdf = diffraction::makeBrdf(m);
+            builtTerms = brdf.terms();
+            const diffraction::MaterialTables tables = diffraction::buildMaterialTables(m, brdf);
+            if (tables.spectral) {
+                built.emplace(*tables.spectral);
+            } else if (tables.integrated) {
+                built.emplace(*tables.integrated);
+            } else {
+                built.emplace(*tables.volume);
+            }
+        } catch (const diffraction::MaterialError& e) {  // "terms: ..." or "tolerance: ..."
+            throw SceneError(scene.file + ": " + pointer + "/" + e.what());
+        } catch (const std::invalid_argument& e) {  // e.g. an unreadable PNG height field
+            throw SceneError(scene.file + ": " + pointer + "/height_field: " + e.what());
         }
-    } catch (const diffraction::MaterialError& e) {  // "terms: ..." or "tolerance: ..."
-        throw SceneError(scene.file + ": " + pointer + "/" + e.what());
-    } catch (const std::invalid_argument& e) {  // e.g. an unreadable PNG height field
-        throw SceneError(scene.file + ": " + pointer + "/height_field: " + e.what());
+        ++diffractionTablesBuilt_;
+        if (diffractionTables_.size() == kDiffractionTablesKept) diffractionTables_.erase(diffractionTables_.begin());
+        diffractionTables_.push_back(
+            std::make_unique<DiffractionTableSet>(DiffractionTableSet{m, builtTerms, std::move(*built)}));
+        cached = std::prev(diffractionTables_.end());
     }
-    ++diffractionTablesBuilt_;
+    const diffraction::DiffractionTextures* textures = &(*cached)->textures;
+    const int terms = (*cached)->terms;
     lastFrame_.diffractionTableBytes += textures->bytes();
 
     if (!diffractionPrograms_)

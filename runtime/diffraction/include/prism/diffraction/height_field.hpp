@@ -35,6 +35,8 @@ struct GratingParams {
     double amplitudeNm = 150.0;  // sinusoid: h = A sin(2 pi x / d); blazed: h rises 0..2A per period
     int periods = 64;            // periods in the patch
     int samplesPerPeriod = 32;
+
+    bool operator==(const GratingParams&) const = default;
 };
 // Throw std::invalid_argument naming the bad parameter (period <= 0, amplitude < 0, ...).
 HeightField sinusoidGrating(const GratingParams& params);
@@ -47,6 +49,8 @@ struct TrackParams {
     int size = 256;  // samples per side
     double pixelNm = 100.0;
     std::uint32_t seed = 1;  // RNG seed of the pit lengths
+
+    bool operator==(const TrackParams&) const = default;
 };
 // Tracks run along y; pits of random length (0.9-3.3 um) along each track.
 HeightField cdTracks(const TrackParams& params);
@@ -58,6 +62,8 @@ struct RidgeParams {
     int size = 256;
     double pixelNm = 100.0;
     std::uint32_t seed = 1;  // RNG seed of the meanders and spacing jitter
+
+    bool operator==(const RidgeParams&) const = default;
 };
 // Quasi-periodic finger-like ridges (after the Elaphe and Xenopeltis sheds of the diffraction thesis).
 HeightField snakeRidges(const RidgeParams& params);

@@ -46,6 +46,8 @@ struct PngField {
     std::string file;  // resolved against baseDir
     double nmPerPixel = 0.0;
     double heightScaleNm = 0.0;
+
+    bool operator==(const PngField&) const = default;
 };
 
 struct DiffractionMaterial {
@@ -60,6 +62,8 @@ struct DiffractionMaterial {
     std::optional<double> coherenceNm;
     std::array<double, 3> tangent{1.0, 0.0, 0.0};
     bool radialTangent = false;  // "tangent": "radial" (u_diffractionRadial)
+
+    bool operator==(const DiffractionMaterial&) const = default;  // equal materials share tables
 };
 
 DiffractionMaterial parseDiffractionMaterial(const nlohmann::json& object, const std::string& pointer,

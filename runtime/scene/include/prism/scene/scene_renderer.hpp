@@ -73,8 +73,9 @@ class SceneRenderer {
     std::size_t rainProgramsBuilt() const;
     // Water maps created so far: one per rendered frame of a scene with water.
     std::size_t waterSystemsCreated() const { return waterSystemsCreated_; }
-    // Diffraction table sets built so far: one per diffraction object per frame, none for
-    // scenes without one; and the diffraction programs built so far.
+    // Diffraction table sets built so far: one per distinct diffraction material (kept
+    // while the renderer lives, the kDiffractionTablesKept most recent), none for scenes
+    // without one; and the diffraction programs built so far.
     std::size_t diffractionTablesBuilt() const { return diffractionTablesBuilt_; }
     std::size_t diffractionProgramsBuilt() const { return diffractionPrograms_ ? diffractionPrograms_->size() : 0; }
 
@@ -82,6 +83,8 @@ class SceneRenderer {
     // running scene; fixed steps, so the image is the same on every render.
     static constexpr int kRainWarmupSteps = 30;
     static constexpr float kRainStep = 1.0f / 60.0f;
+    // Distinct diffraction materials whose tables stay uploaded between frames.
+    static constexpr std::size_t kDiffractionTablesKept = 8;
 
   private:
     void drawRain(const Scene& scene);
@@ -97,6 +100,8 @@ class SceneRenderer {
     std::size_t waterSystemsCreated_ = 0;
     std::unique_ptr<render::ProgramCache> diffractionPrograms_;  // created with the first diffraction object
     std::size_t diffractionTablesBuilt_ = 0;
+    struct DiffractionTableSet;  // a material, its N and its uploaded tables
+    std::vector<std::unique_ptr<DiffractionTableSet>> diffractionTables_;  // most recent last
 };
 
 }  // namespace prism::scene
