@@ -140,8 +140,8 @@ int main(int argc, char** argv) {
     const Image8 referenceImage = renderer.render(withSetting(reference));
 
     std::vector<Setting> settings = {
-        {"as written (b, " + std::to_string(asWritten.tableSize) + "^2, " + std::to_string(asWritten.wavelengthStepNm) +
-             " nm)",
+        {std::string("as written (") + asWritten.path + ", " + std::to_string(asWritten.tableSize) + "^2, " +
+             std::to_string(asWritten.wavelengthStepNm) + " nm)",
          asWritten.path, asWritten.tableSize, asWritten.wSlices, asWritten.wavelengthStepNm, asWritten.tolerance},
         {"c, 256^2, K 8, 5 nm", 'c', 256, 8, 5, 1e-6},
         {"c, 512^2, K 8, 5 nm (default)", 'c', 512, 8, 5, 1e-6},

@@ -57,10 +57,12 @@ TEST_F(GpuRain, SeedsWithTheSameRandomNumbersAsTheCpu) {
     float maxDiff = 0.0f;
     for (std::size_t i = 0; i < g.size(); ++i) {
         const Particle& c = cpu.particles()[i];
-        // Raw random numbers and the fall-speed factor: bit-identical (same integer hash).
+        // Raw random numbers: bit-identical (same integer hash). The fall-speed factor
+        // 0.9 + 0.2 u may be one fused multiply-add on the GPU (GLSL allows the contraction;
+        // NVIDIA's driver does it, llvmpipe does not): within one ulp of the CPU's.
         ASSERT_EQ(g[i].seed.w, c.seed.w) << i;
         ASSERT_EQ(g[i].position.w, c.position.w) << i;
-        ASSERT_EQ(g[i].velocity.w, c.velocity.w) << i;
+        ASSERT_LE(std::abs(g[i].velocity.w - c.velocity.w), std::nextafter(c.velocity.w, 2.0f) - c.velocity.w) << i;
         ASSERT_EQ(g[i].seed.y, c.seed.y) << i;
         maxDiff = std::max(maxDiff, glm::length(glm::vec3(g[i].position) - glm::vec3(c.position)));
         maxDiff = std::max(maxDiff, glm::length(glm::vec3(g[i].seed) - glm::vec3(c.seed)));
