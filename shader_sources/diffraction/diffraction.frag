@@ -1,12 +1,17 @@
 // Diffraction material: ambient plus, for every directional and point light of the scene
 // (lights.glsl's variant axes), Stam's diffraction BRDF (modules/diffraction/stam.glsl)
 // times the light's colour and cos(theta_i), in the tangent frame of the interpolated normal
-// and u_diffractionTangent.
+// and u_diffractionTangent. The FOG variant adds the scene's distance fog, as the classic
+// shaders do.
+#pragma prism variant FOG
 #include <version.glsl>
 #include <lights.glsl>
 #include <material.glsl>
 #include <diffraction/stam.glsl>
 #include <fragment_output.glsl>
+#if FOG
+#include <fog.glsl>
+#endif
 
 in vec3 v_eyePosition;
 in vec3 v_eyeNormal;
@@ -37,6 +42,9 @@ void main() {
         vec3 lightEye = (u_view * vec4(u_pointLightPosition[i], 1.0)).xyz;
         color += diffractionLight(safeNormalize(lightEye - v_eyePosition, n), u_pointLightColor[i], toTangent, toViewerT);
     }
+#endif
+#if FOG
+    color = applyFog(color, length(v_eyePosition));
 #endif
     frag = vec4(color, 1.0);
 }

@@ -226,7 +226,7 @@ TEST(SceneRendering, DiffractionObjectBuildsOnlyItsPathsTables) {
     EXPECT_EQ(renderer.programs().size(), 0u) << "no classic program for a diffraction-only scene";
     ASSERT_EQ(renderer.lastFrame().variants.size(), 1u);
     EXPECT_EQ(
-        renderer.lastFrame().variants[0].rfind("diffraction DIRECTIONAL_LIGHTS=1,POINT_LIGHTS=0,DIFFRACTION_PATH=1", 0),
+        renderer.lastFrame().variants[0].rfind("diffraction FOG=0,DIRECTIONAL_LIGHTS=1,POINT_LIGHTS=0,DIFFRACTION_PATH=1", 0),
         0u)
         << renderer.lastFrame().variants[0];
     EXPECT_EQ(renderer.lastFrame().diffractionTableBytes, std::size_t{9} * 64 * 64 * 3 * sizeof(float));
@@ -260,6 +260,27 @@ TEST(SceneRendering, DiffractionTablesAreBuiltOncePerMaterial) {
     m.terms = 3;
     renderer.render(scene);
     EXPECT_EQ(renderer.diffractionTablesBuilt(), 2u);
+}
+
+// A scene's fog covers its diffraction objects too: the FOG variant, fogged towards the fog
+// colour; without fog the FOG=0 program (no fog code).
+TEST(SceneRendering, DiffractionObjectsAreFoggedLikeTheRest) {
+    prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
+    auto scene = exampleScene("diffraction_grating");
+    scene.width = scene.height = 48;
+    auto& m = *scene.objects[0].diffraction;
+    m.tableSize = 32;
+    m.terms = 3;
+    const auto clear = renderer.render(scene);
+    EXPECT_NE(renderer.lastFrame().variants[0].find("FOG=0"), std::string::npos) << renderer.lastFrame().variants[0];
+    scene.fog = prism::view::Fog{.color = {1.0f, 0.0f, 1.0f}, .density = 5.0f};
+    const auto fogged = renderer.render(scene);
+    EXPECT_NE(renderer.lastFrame().variants[0].find("FOG=1"), std::string::npos) << renderer.lastFrame().variants[0];
+    const auto centre = fogged.at(24, 24);
+    EXPECT_GT(centre[0], 200) << "dense magenta fog over the grating";
+    EXPECT_LT(centre[1], 40);
+    EXPECT_GT(centre[2], 200);
+    EXPECT_NE(clear.at(24, 24), centre);
 }
 
 TEST(SceneRendering, DiffractionTooManyTermsNamesTheMaterial) {

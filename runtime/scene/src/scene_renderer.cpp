@@ -203,8 +203,8 @@ void SceneRenderer::drawDiffraction(const Scene& scene, const SceneObject& objec
     gl::Program& program = diffractionPrograms_->get("diffraction", variant);
     render::GpuMesh mesh(render::meshForShader("diffraction", render::namedMesh(object.mesh, object.subdivision)),
                          diffractionPrograms_->catalog().contractAttributes);
-    // The diffraction shader has no fog axis: a diffraction object is drawn unfogged.
-    render::setFrameUniforms(program, scene.camera, aspect, scene.lights, object.world, object.material);
+    render::setFrameUniforms(program, scene.camera, aspect, scene.lights, object.world, object.material,
+                             scene.fog ? &*scene.fog : nullptr);
     program.set("u_diffractionTangent", glm::vec3(static_cast<float>(m.tangent[0]), static_cast<float>(m.tangent[1]),
                                                   static_cast<float>(m.tangent[2])));
     program.set("u_diffractionRadial", m.radialTangent ? 1.0f : 0.0f);
