@@ -90,8 +90,9 @@ def caption_text(image):
 
 def image_html(image, width=None):
     cls = ' class="wide"' if image.get("wide") else ""
-    w = f' width="{int(width)}"' if width else ""
-    return (f'<figure{cls}><a href="{esc(image["src"])}"><img src="{esc(image["src"])}" alt="{esc(caption_text(image))}"'
+    w = f' width="{int(width)}"' if width and not image.get("wide") else ""
+    fw = f' style="width:{int(width)}px"' if w else ""
+    return (f'<figure{cls}{fw}><a href="{esc(image["src"])}"><img src="{esc(image["src"])}" alt="{esc(caption_text(image))}"'
             f'{w} loading="eager"></a><figcaption>{esc(caption_text(image))}</figcaption></figure>')
 
 

@@ -153,7 +153,8 @@ def main(argv=None):
         sections = {sid: {"id": sid, "title": t, "intro": i, "images": []} for sid, t, i in SECTIONS}
         sections["catalogue"]["images"] = catalogue + [
             {"src": "gallery.png", "note": "contact sheet of the catalogue", "wide": True}]
-        sections["catalogue"]["thumb_width"] = 160
+        for sid in sections:  # thumbnails; wide strips keep their size
+            sections[sid]["thumb_width"] = {"catalogue": 160, "bluenoise": 256}.get(sid, 320)
         for section, label, cmd, image in jobs:
             seconds = run_timed(cmd)
             progress.line(label, seconds)
