@@ -86,7 +86,7 @@ def jobs_after_catalogue(a, bins, out, tmp):
         for frames in (1, accumulated):
             src = f"bluenoise/{sampler}-{frames}.png"
             cmd = [bins["bluenoise"], "render", "--sampler", sampler, "--spp", "1", "--size", bn_size,
-                   "--retarget-cache", os.path.join(tmp, "retarget.bin"), "--out", os.path.join(out, src)]
+                   "--out", os.path.join(out, src)]
             if frames > 1:
                 cmd += ["--frames", str(frames)]
             label = "1 spp, frame 0" if frames == 1 else f"1 spp, mean of {frames} frames"
