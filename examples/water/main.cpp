@@ -375,15 +375,15 @@ int main(int argc, char** argv) {
         const int rc = app.exit(e);  // prints help or the error
         return rc == 0 ? 0 : 2;      // usage errors exit 2
     }
-    if (const std::string m = misplacedFlag(app, o); !m.empty()) {
-        std::cerr << "water: error: " << m << "\n";
-        return 2;
-    }
     if (o.window && app.count("--grid") == 0) o.grid = 128;
     try {
         checkOptions(o);
     } catch (const UsageError& e) {
         std::cerr << "water: error: " << e.what() << "\n";
+        return 2;
+    }
+    if (const std::string m = misplacedFlag(app, o); !m.empty()) {
+        std::cerr << "water: error: " << m << "\n";
         return 2;
     }
     try {
