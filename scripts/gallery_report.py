@@ -70,7 +70,9 @@ figure img{max-width:100%;height:auto;border:1px solid #ccc;background:#000}
 figcaption{font-size:13px;max-width:320px}
 figure.wide figcaption{max-width:none}
 table{border-collapse:collapse;font-size:12px;margin:.5em 0}
-td,th{border:1px solid #ccc;padding:2px 6px}"""
+td,th{border:1px solid #ccc;padding:2px 6px}
+.glance figure{width:128px}
+.glance img{width:128px;height:96px;object-fit:cover}"""
 
 
 def esc(text):
@@ -114,7 +116,15 @@ def build_html(manifest, plots=(), tables=(), docs=()):
            f"{len([i for s in manifest['sections'] for i in s['images']])} images in "
            f"{manifest['total_seconds']:.1f} s.</p><nav>"]
     out.append(" | ".join(f'<a href="#{esc(s["id"])}">{esc(s["title"])}</a>' for s in manifest["sections"]))
-    out.append(' | <a href="#trades">trade-offs</a> | <a href="#docs">docs</a></nav></header>')
+    out.append(' | <a href="#trades">trade-offs</a> | <a href="#docs">docs</a></nav>')
+    out.append('<div class="glance">')  # one image per system, linking to its section
+    for section in manifest["sections"]:
+        pick = next((i for i in section["images"] if i["src"] == section.get("glance")), None)
+        pick = pick or (section["images"][0] if section["images"] else None)
+        if pick:
+            out.append(f'<figure><a href="#{esc(section["id"])}"><img src="{esc(pick["src"])}" alt="{esc(section["title"])}">'
+                       f'</a><figcaption>{esc(section["title"])}</figcaption></figure>')
+    out.append("</div></header>")
     for section in manifest["sections"]:
         out.append(f'<section id="{esc(section["id"])}" class="system"><h2>{esc(section["title"])}</h2>')
         if section.get("intro"):

@@ -17,7 +17,6 @@ import os
 import re
 import subprocess
 import sys
-import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -67,9 +66,21 @@ def run_timed(cmd):
     return time.monotonic() - start
 
 
-def jobs_after_catalogue(a, bins, out, tmp):
+def jobs_after_catalogue(a, bins, out):
     """(section, label, command, image dict) for everything but the catalogue."""
     jobs = []
+    bn_size = "64x64" if a.quick else "256x256"
+    accumulated = 4 if a.quick else 32
+    for frames in (1, accumulated):  # a row at 1 spp, then a row accumulated
+        for sampler in ("white", "bluenoise", "sorted"):
+            src = f"bluenoise/{sampler}-{frames}.png"
+            cmd = [bins["bluenoise"], "render", "--sampler", sampler, "--spp", "1", "--size", bn_size,
+                   "--out", os.path.join(out, src)]
+            if frames > 1:
+                cmd += ["--frames", str(frames)]
+            label = "1 spp, frame 0" if frames == 1 else f"1 spp, mean of {frames} frames"
+            jobs.append(("bluenoise", f"bluenoise {sampler} {label}", cmd,
+                         {"src": src, "sampler": sampler, "note": label}))
     scenes = sorted(f for f in os.listdir(os.path.join(ROOT, "examples", "scenes")) if f.endswith(".json"))
     size = "160x120" if a.quick else None
     for name in scenes:
@@ -80,23 +91,11 @@ def jobs_after_catalogue(a, bins, out, tmp):
         if size:
             cmd += ["--size", size]
         jobs.append((section, f"{stem} scene", cmd, {"src": f"scenes/{stem}.png", "scene": f"examples/scenes/{name}"}))
-    bn_size = "64x64" if a.quick else "256x256"
-    accumulated = 4 if a.quick else 32
-    for sampler in ("white", "bluenoise", "sorted"):
-        for frames in (1, accumulated):
-            src = f"bluenoise/{sampler}-{frames}.png"
-            cmd = [bins["bluenoise"], "render", "--sampler", sampler, "--spp", "1", "--size", bn_size,
-                   "--out", os.path.join(out, src)]
-            if frames > 1:
-                cmd += ["--frames", str(frames)]
-            label = "1 spp, frame 0" if frames == 1 else f"1 spp, mean of {frames} frames"
-            jobs.append(("bluenoise", f"bluenoise {sampler} {label}", cmd,
-                         {"src": src, "sampler": sampler, "note": label}))
     n, w, h = (4, 96, 72) if a.quick else (8, 240, 180)
     jobs.append(("rain", f"rain sequence of {n} frames",
-                 [bins["rain"], "--sequence", str(n), "--width", str(w), "--height", str(h),
+                 [bins["rain"], "--sequence", str(n), "--intensity", "heavy", "--width", str(w), "--height", str(h),
                   "--out", os.path.join(out, "rain-sequence")],
-                 {"src": "rain-sequence/sequence.png", "scene": "prism-rain view 0, moderate rain",
+                 {"src": "rain-sequence/sequence.png", "scene": "prism-rain view 0, heavy rain",
                   "frames": f"{n} at 1/30 s", "wide": True}))
     jobs.append(("water", f"water sequence of {n} frames",
                  [bins["water"], "--sequence", str(n), "--grid", "64" if a.quick else "128", "--steps",
@@ -147,18 +146,23 @@ def main(argv=None):
     start = time.monotonic()
     for sub in ("scenes", "bluenoise"):
         os.makedirs(os.path.join(a.out, sub), exist_ok=True)
-    with tempfile.TemporaryDirectory() as tmp:
-        jobs = jobs_after_catalogue(a, bins, a.out, tmp)
-        renderer, progress, catalogue = render_catalogue(bins, a.out, a.quick, len(jobs))
-        sections = {sid: {"id": sid, "title": t, "intro": i, "images": []} for sid, t, i in SECTIONS}
-        sections["catalogue"]["images"] = catalogue + [
-            {"src": "gallery.png", "note": "contact sheet of the catalogue", "wide": True}]
-        for sid in sections:  # thumbnails; wide strips keep their size
-            sections[sid]["thumb_width"] = {"catalogue": 160, "bluenoise": 256}.get(sid, 320)
-        for section, label, cmd, image in jobs:
-            seconds = run_timed(cmd)
-            progress.line(label, seconds)
-            sections[section]["images"].append(dict(image, seconds=seconds))
+    jobs = jobs_after_catalogue(a, bins, a.out)
+    accumulated = 4 if a.quick else 32
+    renderer, progress, catalogue = render_catalogue(bins, a.out, a.quick, len(jobs))
+    sections = {sid: {"id": sid, "title": t, "intro": i, "images": []} for sid, t, i in SECTIONS}
+    sections["catalogue"]["images"] = catalogue + [
+        {"src": "gallery.png", "note": "contact sheet of the catalogue", "wide": True}]
+    glance = {"catalogue": "phong.BLINN-1-torus.png", "scenes": "scenes/four_lights.png",
+              "rain": "scenes/rain.png", "water": "scenes/puddles_closeup.png",
+              "diffraction": "scenes/diffraction_cd.png", "bluenoise": f"bluenoise/sorted-{accumulated}.png"}
+    for sid in sections:  # the header's one image per system
+        sections[sid]["glance"] = glance[sid]
+    for sid in sections:  # thumbnails; wide strips keep their size
+        sections[sid]["thumb_width"] = {"catalogue": 160, "bluenoise": 256}.get(sid, 320)
+    for section, label, cmd, image in jobs:
+        seconds = run_timed(cmd)
+        progress.line(label, seconds)
+        sections[section]["images"].append(dict(image, seconds=seconds))
     manifest = {"version": version(), "renderer": renderer,
                 "date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
                 "total_seconds": time.monotonic() - start, "sections": [sections[sid] for sid, _, _ in SECTIONS]}

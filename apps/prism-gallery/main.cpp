@@ -114,7 +114,7 @@ int main(int argc, char** argv) {
                 std::cout << "[" << shots.size() + 1 << "/" << total << "] " << entry.label << " / " << meshName << " "
                           << line << std::endl;
                 shots.push_back(std::move(image));
-                labels.push_back(entry.label + " / " + meshName);
+                labels.push_back(entry.label + "\n" + meshName);  // two lines: legible at 14 px in small cells
             }
         }
         if (!tsv.flush()) throw std::runtime_error("cannot write " + (std::filesystem::path(outDir) / "catalogue.tsv").string());

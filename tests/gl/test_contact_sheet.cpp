@@ -105,4 +105,25 @@ TEST(ContactSheet, DefaultLabelsAreAtLeast12PixelsTall) {
     EXPECT_GE(bottom - top + 1, 12);
 }
 
+// A two-line label makes the strip two lines tall, and each line is shortened on its own.
+TEST(ContactSheet, MultiLineLabelsGetATallerStrip) {
+    const std::vector<prism::image::Image8> images = {prism::image::Image8(24, 8, {0, 0, 0, 255}),
+                                                      prism::image::Image8(24, 8, {0, 0, 0, 255})};
+    prism::image::ContactSheetStyle style;
+    style.labelScale = 1;
+    const std::vector<std::string> oneLine = {"A", "B"}, twoLines = {"A\nTWO", "B"};
+    const auto flat = prism::image::composeContactSheet(images, oneLine, 2, style);
+    const auto tall = prism::image::composeContactSheet(images, twoLines, 2, style);
+    EXPECT_EQ(tall.height - flat.height, prism::image::textHeight("A\nB") - prism::image::textHeight("A"));
+    const int secondLineY = style.padding + 8 + style.padding + 8;  // glyph rows 7 + 1 spacing below the first
+    bool inked = false;
+    for (int x = style.padding; x < style.padding + 24; ++x) inked |= tall.at(x, secondLineY) == style.labelColour;
+    EXPECT_TRUE(inked) << "the second line was not drawn";
+    const std::vector<std::string> longLines = {"AB\nVERY LONG LINE", "B"};
+    const auto cut = prism::image::composeContactSheet(images, longLines, 2, style);
+    for (int y = 0; y < cut.height; ++y)  // nothing spills into the gap before the second cell
+        for (int x = style.padding + 24; x < style.padding + 24 + style.padding; ++x)
+            EXPECT_NE(cut.at(x, y), style.labelColour) << x << "," << y;
+}
+
 }  // namespace

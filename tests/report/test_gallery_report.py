@@ -68,7 +68,7 @@ class BuildHtml(unittest.TestCase):
         self.assertIn("<figcaption>scene examples/scenes/water.json, 1.25 s</figcaption>", self.page)
 
     def test_every_image_links_to_itself_and_thumbnails_take_the_section_width(self):
-        imgs = [a for tag, a in self.tags if tag == "img"]
+        imgs = [a for tag, a in self.tags if tag == "img"][3:]  # after the header's one per system
         self.assertEqual([i["src"] for i in imgs], ["phong.BLINN-1-torus.png", "scenes/water.png",
                                                     "water-sequence/sequence.png", "a b.png", "plots/t.svg"])
         self.assertEqual(imgs[0].get("width"), "160")
@@ -76,6 +76,12 @@ class BuildHtml(unittest.TestCase):
         hrefs = [a["href"] for tag, a in self.tags if tag == "a"]
         for i in imgs:
             self.assertIn(i["src"], hrefs)
+
+    def test_header_shows_one_image_per_system_linking_to_its_section(self):
+        glance = [a for tag, a in self.tags if tag == "img"][:3]
+        self.assertEqual([i["src"] for i in glance], ["phong.BLINN-1-torus.png", "scenes/water.png", "a b.png"])
+        for sid in ("catalogue", "water", "odd"):
+            self.assertIn(f'<a href="#{sid}"><img', self.page)
 
     def test_plots_tables_and_docs_with_their_sentences(self):
         self.assertIn("Read the front.", self.page)
@@ -129,7 +135,7 @@ class RenderGallery(unittest.TestCase):
         class A:
             quick = True
         jobs = render_gallery.jobs_after_catalogue(A(), {k: k for k in ("render", "bluenoise", "rain", "water")},
-                                                   "out", "tmp")
+                                                   "out")
         scenes = sorted(f for f in os.listdir(os.path.join(ROOT, "examples", "scenes")) if f.endswith(".json"))
         rendered = [j[3]["scene"] for j in jobs if j[2][0] == "render"]
         self.assertEqual(rendered, [f"examples/scenes/{s}" for s in scenes])

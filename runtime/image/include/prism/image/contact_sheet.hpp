@@ -15,7 +15,8 @@
 // The font covers A-Z (lower case drawn as upper case), 0-9 and  - _ . : / ( ) = , + % [ ] ?
 // and space; any other character draws as '?'. '\n' starts a new line. Text is clipped
 // at the image border. On a sheet every cell is as large as the largest image; the
-// label sits in a strip under its image and is shortened with ".." when too long.
+// label sits in a strip under its image (as tall as the tallest label: a label may have
+// several lines) and each line is shortened with ".." when too long.
 #pragma once
 
 #include <span>
