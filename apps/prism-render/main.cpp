@@ -44,7 +44,7 @@ struct Arguments {
     std::optional<int> spp, frame, frames;
     std::optional<std::string> sampler;
     std::vector<std::string> shaderOnlyGiven;  // catalogue-render flags given (refused with --scene)
-    bool sizeGiven = false;
+    bool sizeGiven = false, subdivGiven = false;
     bool stochasticGiven() const { return spp || frame || frames || sampler; }
     std::string stochasticFlags() const {
         std::string f;
@@ -189,6 +189,7 @@ int main(int argc, char** argv) {
     for (const char* flag : {"--mesh", "--subdiv", "--variant", "--shininess", "--specular", "--color", "--light-dir", "--scale"})
         if (app.count(flag) > 0) a.shaderOnlyGiven.emplace_back(flag);
     a.sizeGiven = app.count("--size") > 0;
+    a.subdivGiven = app.count("--subdiv") > 0;
 
     if (!a.scene.empty()) return renderScene(a);
     if (a.stochasticGiven()) return badInput(a.stochasticFlags() + ": only with --scene FILE.json (a \"stochastic\" scene)");
@@ -221,6 +222,8 @@ int main(int argc, char** argv) {
     if (!scale) return badInput("--scale " + a.scale + ": expected three finite numbers x,y,z");
     if (!size) return badInput("--size " + a.size + ": expected WxH with 1 <= W, H <= 16384, e.g. 512x512");
     if (a.out.empty() && !a.checkFinite) return badInput("give --out FILE.png (or --check-finite)");
+    if (a.subdivGiven && a.mesh != "sphere" && a.mesh != "icosphere" && a.mesh != "torus" && a.mesh != "grid")
+        return badInput("--subdiv: mesh " + a.mesh + " has no subdivision levels (sphere, icosphere, torus and grid have)");
     bool backendOk = true;
     const auto backend = backendOf(a, backendOk);
     if (!backendOk) return badInput("--backend " + a.backend + ": expected egl or osmesa");

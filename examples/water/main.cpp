@@ -70,6 +70,7 @@ std::string misplacedFlag(const CLI::App& app, const Options& o) {
     if (o.window) {
         for (const char* f : {"--out", "--steps", "--sequence"})
             if (given(f)) return std::string(f) + " does not apply to --window";
+        if (given("--dt") && o.frames == 0) return "--dt with --window needs --frames (without it, time follows the clock)";
     } else if (given("--frames")) {
         return "--frames needs --window";
     }

@@ -55,6 +55,7 @@ CASES = [
     ("water", ["--window", "--steps", "3"], 2, "--steps does not apply to --window", []),
     ("water", ["--window", "--out", "{D}"], 2, "--out does not apply to --window", []),
     ("water", ["--window", "--sequence", "2"], 2, "--sequence does not apply to --window", []),
+    ("water", ["--window", "--dt", "2"], 2, "--dt with --window needs --frames", []),
 ]
 
 

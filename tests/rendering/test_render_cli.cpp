@@ -382,5 +382,18 @@ TEST(PrismRenderCliSceneFlags, FlagsTheSceneWouldIgnoreAreUsageErrors) {
     }
 }
 
+// --subdiv for a mesh without subdivision levels would be ignored: a usage error instead.
+TEST(PrismRenderCli, SubdivForAMeshWithoutLevelsIsAUsageError) {
+    for (const std::string mesh : {"cube", "trefoil"}) {
+        const fs::path dir = testDir();
+        const auto r = runPrismRender(
+            {"--shader", "phong", "--mesh", mesh, "--subdiv", "2", "--size", "32x32", "--out", (dir / "out.png").string()},
+            dir);
+        EXPECT_EQ(r.exitCode, kExitBadInput) << mesh << ": " << r.err;
+        EXPECT_NE(r.err.find("--subdiv: mesh " + mesh + " has no subdivision levels"), std::string::npos) << r.err;
+        EXPECT_TRUE(imagesIn(dir).empty());
+    }
+}
+
 }  // namespace
 }  // namespace prism::rendering_test
