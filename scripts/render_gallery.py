@@ -66,6 +66,14 @@ def run_timed(cmd):
     return time.monotonic() - start
 
 
+def scene_summary(path):
+    """The first sentence of a scene file's "comment" (what it shows), or ""."""
+    with open(path) as f:
+        comment = str(json.load(f).get("comment", ""))
+    first = re.split(r"(?<=\.)\s", comment, maxsplit=1)[0].rstrip(".")
+    return first if len(first) <= 160 else first[:157] + "..."
+
+
 def jobs_after_catalogue(a, bins, out):
     """(section, label, command, image dict) for everything but the catalogue."""
     jobs = []
@@ -90,7 +98,8 @@ def jobs_after_catalogue(a, bins, out):
                "--out", os.path.join(out, "scenes", stem + ".png")]
         if size:
             cmd += ["--size", size]
-        jobs.append((section, f"{stem} scene", cmd, {"src": f"scenes/{stem}.png", "scene": f"examples/scenes/{name}"}))
+        jobs.append((section, f"{stem} scene", cmd, {"src": f"scenes/{stem}.png", "scene": f"examples/scenes/{name}",
+                                                     "note": scene_summary(os.path.join(ROOT, "examples", "scenes", name))}))
     n, w, h = (4, 96, 72) if a.quick else (8, 240, 180)
     jobs.append(("rain", f"rain sequence of {n} frames",
                  [bins["rain"], "--sequence", str(n), "--intensity", "heavy", "--width", str(w), "--height", str(h),

@@ -145,6 +145,19 @@ class RenderGallery(unittest.TestCase):
                          ["bluenoise", "sorted", "white"])
         self.assertTrue(any("diffraction" in j[3]["scene"] for j in jobs if j[0] == "diffraction"))
 
+    def test_scene_captions_carry_the_first_sentence_of_the_scene_comment(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "s.json")
+            with open(path, "w") as f:
+                json.dump({"comment": "Fog: every shader with FOG=1. More text here."}, f)
+            self.assertEqual(render_gallery.scene_summary(path), "Fog: every shader with FOG=1")
+            with open(path, "w") as f:
+                json.dump({"comment": "A lit torus. Second sentence."}, f)
+            self.assertEqual(render_gallery.scene_summary(path), "A lit torus")
+            with open(path, "w") as f:
+                json.dump({"camera": {}}, f)
+            self.assertEqual(render_gallery.scene_summary(path), "")
+
 
 if __name__ == "__main__":
     unittest.main()
