@@ -58,6 +58,8 @@ void checkRenderFlags(const CLI::App& cmd, const RenderArgs& args) {
         if (given(f) && args.sampler == "sorted" && !retargets)
             refuse(f, "this render does not retarget (frame 0 alone, --no-retarget or --a-posteriori)");
     if (args.noRetarget && args.aPosteriori) refuse("--no-retarget", "--a-posteriori never retargets");
+    if (given("--frame") && given("--frames"))
+        refuse("--frame", "--frames K renders the mean of frames 0..K-1; give one of them");
 }
 
 int runRender(const RenderArgs& args) {
