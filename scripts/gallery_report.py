@@ -19,24 +19,25 @@ import sys
 # The benches' committed plots: (file in the repository, what to read from it).
 PLOTS = [
     ("docs/tradeoffs.svg",
-     "Frame time against mean error per shader and subdivision level: points on the Pareto "
-     "front are the cheapest way to reach their error; Gouraud falls behind Phong where a "
-     "highlight sits inside a triangle."),
+     "Median frame time against mean error per shader and subdivision level (log-log); left against the full "
+     "reference with the Pareto front: a point on the front is the cheapest way to reach its error."),
     ("docs/diffraction_bench.svg",
-     "Diffraction frame time against colour error (CIE dE) per Taylor-term count and table "
-     "size: read along the front to pick the fewest terms that still look right."),
+     "Diffraction cost (frame time relative to Phong) against mean colour error (CIE dE2000) for the three paths "
+     "and their settings; filled points form the Pareto front, so pick the cheapest filled point below the "
+     "error you can accept."),
     ("docs/bluenoise/bluenoise_convergence.svg",
-     "RMS error against accumulated frames per sampler: lower is better; blue noise and the "
-     "sorted sampler start lower than white noise at 1 spp."),
+     "RMS error against accumulated frames per sampler: the per-pixel RMS starts alike at 1 spp (about 0.33), "
+     "but the blurred RMS (what a viewer sees) of blue noise is 2.4x lower than white noise's, and the gap "
+     "grows with frames."),
     ("docs/bluenoise/bluenoise_spectra.svg",
-     "Radially averaged power spectra of the masks: a blue-noise mask has almost no energy "
-     "near zero frequency, white noise is flat."),
+     "Radially averaged power spectra of the masks: a blue-noise mask has almost no energy near zero frequency, "
+     "white noise is flat."),
     ("bench/rain/results/rain_bench.svg",
-     "Milliseconds per rain frame against particle count per streak technique: the gap "
-     "between lines is the cost of each technique at the same drop count."),
+     "Milliseconds per rain frame against particle count per streak technique (dashed: the compute update "
+     "alone); where a line crosses the 30 and 60 FPS marks is the largest drop count for that frame rate."),
     ("bench/water/results/water-bench.svg",
-     "Water step time against grid cells (log-log): a slope of one means the cost grows "
-     "linearly with the map's area."),
+     "CPU step, GPU (compute) step and scene render time against grid size (log-log): a slope of one means "
+     "the cost grows linearly with the number of cells."),
 ]
 
 # The benches' committed tables: (CSV in the repository, columns shown, what to read).
