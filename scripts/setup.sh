@@ -15,6 +15,7 @@ PACKAGES=(
   libtinyobjloader-dev libstb-dev
   xvfb xauth
   clang-14 libclang-rt-14-dev
+  chromium fonts-dejavu-core  # the browser test tier (tests/report, label browser)
 )
 
 missing=()

@@ -52,6 +52,8 @@ struct RenderArgs {
 
 void addGenerate(CLI::App& app, GenerateArgs& args);
 void addRender(CLI::App& app, RenderArgs& args);
+// Throws UsageError for a flag the render would not use (e.g. --block without sorted).
+void checkRenderFlags(const CLI::App& cmd, const RenderArgs& args);
 int runRender(const RenderArgs& args);
 void addMeasure(CLI::App& app, MeasureArgs& args);
 int runGenerate(const GenerateArgs& args);

@@ -24,6 +24,9 @@ void addGenerate(CLI::App& app, GenerateArgs& args) {
                   "D > 1: a spatiotemporal void-and-cluster stack instead of golden-ratio slices of one mask");
     cmd->add_option("--sigma-time", args.sigmaTime, "spatiotemporal: Gaussian sigma across slices")
         ->check(CLI::Range(0.05, 64.0));
+    cmd->callback([cmd, &args] {  // a flag is used or refused, never ignored
+        if (cmd->count("--sigma-time") > 0 && !args.spatiotemporal) throw UsageError("--sigma-time needs --spatiotemporal");
+    });
 }
 
 void addMeasure(CLI::App& app, MeasureArgs& args) {

@@ -36,6 +36,30 @@ void addRender(CLI::App& app, RenderArgs& args) {
     cmd->add_option("--reference", args.reference, "render the N-sample stratified reference instead")
         ->check(CLI::Range(1, 1 << 20));
     cmd->add_option("--out", args.out, "PNG path (8-bit grey, clamped to [0, 1])")->required();
+    cmd->callback([cmd, &args] { checkRenderFlags(*cmd, args); });
+}
+
+// Every flag given is used by the render it asks for, or refused (exit 2): none is ignored.
+void checkRenderFlags(const CLI::App& cmd, const RenderArgs& args) {
+    auto given = [&cmd](const char* flag) { return cmd.count(flag) > 0; };
+    const auto refuse = [](const std::string& flag, const std::string& why) { throw UsageError(flag + ": " + why); };
+    if (args.reference > 0) {
+        for (const char* f : {"--spp", "--sampler", "--stack-depth", "--frame", "--frames", "--mask-size", "--block",
+                              "--a-posteriori", "--no-retarget", "--schedule", "--epochs", "--retarget-cache"})
+            if (given(f)) refuse(f, "--reference renders the stratified reference, which uses no sampler settings");
+        return;
+    }
+    if (given("--stack-depth") && args.sampler != "stack") refuse("--stack-depth", "only for --sampler stack");
+    if (given("--mask-size") && args.sampler == "white") refuse("--mask-size", "the white sampler uses no mask");
+    for (const char* f : {"--block", "--a-posteriori", "--no-retarget", "--schedule", "--epochs", "--retarget-cache"})
+        if (given(f) && args.sampler != "sorted") refuse(f, "only for --sampler sorted");
+    const bool retargets = (args.frames > 1 || args.frame > 0) && !args.noRetarget && !args.aPosteriori;
+    for (const char* f : {"--schedule", "--epochs", "--retarget-cache"})
+        if (given(f) && args.sampler == "sorted" && !retargets)
+            refuse(f, "this render does not retarget (frame 0 alone, --no-retarget or --a-posteriori)");
+    if (args.noRetarget && args.aPosteriori) refuse("--no-retarget", "--a-posteriori never retargets");
+    if (given("--frame") && given("--frames"))
+        refuse("--frame", "--frames K renders the mean of frames 0..K-1; give one of them");
 }
 
 int runRender(const RenderArgs& args) {

@@ -6,6 +6,9 @@
 //     (sin theta = sin T + m lambda / d), angle and intensity relative to order 0.
 //   prism-diffraction bound --max-height-nm 150 --wavelength-nm 380 --tolerance 1e-6
 //     prints the number of Taylor terms N the thesis's error bound e^x x^(N+1)/(N+1)! requires.
+// A flag the chosen path does not use (--png without --height-field png, --amplitude-nm
+// for the cd or snake fields, --terms or --tolerance with --exact, --tolerance with
+// --terms) is refused with exit 2, never silently ignored.
 // Bad input (negative period, heights needing N > 200, wavelengths outside 300-900 nm, an
 // unreadable PNG, unknown flags) prints "prism-diffraction: error: ..." and exits 2.
 #include <CLI/CLI.hpp>
@@ -137,6 +140,24 @@ int runPeaks(const PeaksArgs& a) {
     return kExitOk;
 }
 
+// Throws UsageError naming a given flag that this peaks run would not use.
+void refuseUnusedPeaksFlags(const CLI::App& cmd, const PeaksArgs& a) {
+    auto given = [&cmd](const char* flag) { return cmd.count(flag) > 0; };
+    if (a.heightField != "png")
+        for (const char* f : {"--png", "--nm-per-pixel", "--height-scale-nm"})
+            if (given(f)) throw UsageError(std::string(f) + " needs --height-field png");
+    if (a.heightField != "sinusoid" && a.heightField != "blazed")
+        for (const char* f : {"--amplitude-nm", "--periods", "--samples-per-period"})
+            if (given(f))
+                throw UsageError(std::string(f) + " shapes the sinusoid and blazed gratings, not --height-field " +
+                                 a.heightField);
+    if (a.exact)
+        for (const char* f : {"--terms", "--tolerance"})
+            if (given(f)) throw UsageError(std::string(f) + ": --exact uses no Taylor series");
+    if (given("--terms") && given("--tolerance"))
+        throw UsageError("--tolerance picks N only when --terms is not given; give one of them");
+}
+
 int runBound(const BoundArgs& a) {
     checkWavelength(a.wavelengthNm, "--wavelength-nm");
     try {
@@ -185,6 +206,7 @@ int main(int argc, char** argv) {
         return app.exit(e) == 0 ? kExitOk : kExitBadInput;
     }
     try {
+        if (peaksCmd->parsed()) refuseUnusedPeaksFlags(*peaksCmd, peaks);
         return peaksCmd->parsed() ? runPeaks(peaks) : runBound(bound);
     } catch (const UsageError& e) {
         std::fprintf(stderr, "prism-diffraction: error: %s\n", e.what());

@@ -6,6 +6,10 @@
 // --spp, --sampler, --frame and --frames override the scene's "stochastic" settings (a
 // usage error for a scene without them): --frame K renders frame K of the sequence,
 // --frames K the mean of frames 0..K-1.
+// With --scene, --size WxH overrides the scene's "image" size; the flags that only
+// describe a catalogue render (--mesh, --subdiv, --variant, --shininess, --specular,
+// --color, --light-dir, --scale) are usage errors, as is --backend for a scene drawn on
+// the CPU: no flag is silently ignored.
 // --check-finite renders to RGBA32F and exits 3, printing the count, if any pixel is
 // NaN or Inf. Bad input exits 2 with a message and writes no image.
 #include <CLI/CLI.hpp>
@@ -39,6 +43,8 @@ struct Arguments {
     // Overrides of the scene's "stochastic" settings; nullopt: not given.
     std::optional<int> spp, frame, frames;
     std::optional<std::string> sampler;
+    std::vector<std::string> shaderOnlyGiven;  // catalogue-render flags given (refused with --scene)
+    bool sizeGiven = false, subdivGiven = false;
     bool stochasticGiven() const { return spp || frame || frames || sampler; }
     std::string stochasticFlags() const {
         std::string f;
@@ -65,6 +71,10 @@ std::optional<prism::gl::Backend> backendOf(const Arguments& a, bool& ok) {
 int renderScene(const Arguments& a) {
     if (a.out.empty()) return badInput("give --out FILE.png");
     if (a.checkFinite) return badInput("--check-finite works with --shader, not with --scene");
+    if (!a.shaderOnlyGiven.empty())
+        return badInput(a.shaderOnlyGiven.front() + " describes a --shader render; a --scene file sets its own (docs/scenes.md)");
+    const auto size = prism::apps::parseSize(a.size);
+    if (a.sizeGiven && !size) return badInput("--size " + a.size + ": expected WxH with 1 <= W, H <= 16384, e.g. 512x512");
     bool backendOk = true;
     auto backend = backendOf(a, backendOk);
     if (!backendOk) return badInput("--backend " + a.backend + ": expected egl or osmesa");
@@ -75,6 +85,10 @@ int renderScene(const Arguments& a) {
             (void)prism::render::namedMesh(o.mesh, 0);
     } catch (const std::exception& e) {
         return badInput(e.what());
+    }
+    if (a.sizeGiven) {  // the command line wins over the scene's "image" size
+        scene.width = size->first;
+        scene.height = size->second;
     }
     if (a.stochasticGiven()) {  // flags override the scene's settings, never silently ignored
         if (!scene.stochastic)
@@ -100,6 +114,7 @@ int renderScene(const Arguments& a) {
                             std::to_string(prism::scene::kMaxSortedFrame));
     }
     if (scene.stochastic) {  // CPU only: no GL context
+        if (!a.backend.empty()) return badInput("--backend: " + a.scene + " is drawn on the CPU (a \"stochastic\" scene); it uses no GL backend");
         try {
             const auto& st = *scene.stochastic;
             prism::image::writePng(a.out, prism::scene::renderStochastic(st, scene.width, scene.height));
@@ -171,6 +186,10 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         return app.exit(e) == 0 ? kExitOk : kExitBadInput;
     }
+    for (const char* flag : {"--mesh", "--subdiv", "--variant", "--shininess", "--specular", "--color", "--light-dir", "--scale"})
+        if (app.count(flag) > 0) a.shaderOnlyGiven.emplace_back(flag);
+    a.sizeGiven = app.count("--size") > 0;
+    a.subdivGiven = app.count("--subdiv") > 0;
 
     if (!a.scene.empty()) return renderScene(a);
     if (a.stochasticGiven()) return badInput(a.stochasticFlags() + ": only with --scene FILE.json (a \"stochastic\" scene)");
@@ -203,6 +222,8 @@ int main(int argc, char** argv) {
     if (!scale) return badInput("--scale " + a.scale + ": expected three finite numbers x,y,z");
     if (!size) return badInput("--size " + a.size + ": expected WxH with 1 <= W, H <= 16384, e.g. 512x512");
     if (a.out.empty() && !a.checkFinite) return badInput("give --out FILE.png (or --check-finite)");
+    if (a.subdivGiven && a.mesh != "sphere" && a.mesh != "icosphere" && a.mesh != "torus" && a.mesh != "grid")
+        return badInput("--subdiv: mesh " + a.mesh + " has no subdivision levels (sphere, icosphere, torus and grid have)");
     bool backendOk = true;
     const auto backend = backendOf(a, backendOk);
     if (!backendOk) return badInput("--backend " + a.backend + ": expected egl or osmesa");

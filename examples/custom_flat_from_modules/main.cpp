@@ -6,7 +6,7 @@
 // order, one #version is emitted, and a GLSL error would point at the module's own
 // file and line. Renders a flat-shaded icosphere to custom_flat.png and checks that
 // something was drawn.
-//   custom_flat_from_modules [output.png]
+//   custom_flat_from_modules [output.png]      (any other argument: usage error, exit 2)
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <iostream>
@@ -57,6 +57,11 @@ std::uint32_t id(ModuleId m) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    if (argc > 2 || (argc == 2 && argv[1][0] == '-')) {  // nothing is silently ignored
+        const bool help = argc == 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h");
+        (help ? std::cout : std::cerr) << "usage: custom_flat_from_modules [output.png]\n";
+        return help ? 0 : 2;
+    }
     const std::string out = argc > 1 ? argv[1] : "custom_flat.png";
     try {
         auto context = prism::gl::createContext();

@@ -9,12 +9,16 @@
 //       T       next streak technique (gs-quads, instanced-quads, point-sprites)
 //       Left/Right  turn the camera      Up/Down  walk      Esc  quit
 //   --frames N quits after N frames (tests); --demo-keys presses I, K, W, F, T once each.
+//   prism-rain --sequence 8 [--view V] --out DIR   8 frames 1/30 s apart: frame_00.png ..
+//                                                  and the strip sequence.png
+// A flag that does not apply to the chosen mode is a usage error (exit 2), never ignored.
 #include <CLI/CLI.hpp>
 
 #include <glm/geometric.hpp>
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -52,7 +56,28 @@ struct Options {
     bool window = false;
     long frames = 0;
     bool demoKeys = false;
+    int sequence = 0;  // > 0: that many consecutive frames and a strip
 };
+
+// The flags the chosen mode would not use, as a usage-error message ("" when none).
+std::string misplacedFlag(const CLI::App& app, const Options& o) {
+    auto given = [&app](const char* flag) { return app.count(flag) > 0; };
+    if (o.window) {
+        for (const char* f : {"--out", "--view", "--warmup", "--sequence"})
+            if (given(f)) return std::string(f) + " does not apply to --window";
+        if (!parseRainClass(o.intensity)) return "with --window, --intensity must name a class (drizzle..cloudburst)";
+    } else {
+        for (const char* f : {"--frames", "--demo-keys"})
+            if (given(f)) return std::string(f) + " needs --window";
+        if (o.view < 0 && o.sequence == 0)
+            for (const char* f : {"--intensity", "--wind", "--fog", "--fog-strength"})
+                if (given(f))
+                    return std::string(f) + " needs --view, --sequence or --window (the standard shots fix their own " +
+                           "rain, wind and fog)";
+    }
+    if (given("--fog-strength") && !o.fog) return "--fog-strength needs --fog";
+    return "";
+}
 
 float parseIntensity(const std::string& text) {
     if (auto c = parseRainClass(text)) return rainClassInfo(*c).intensity;
@@ -97,9 +122,35 @@ prism::image::Image8 shoot(const Options& o, const RainSceneDesc& desc) {
     return scene.render(o.width, o.height);
 }
 
+// --sequence N: N frames 1/30 s apart after the warm-up, each timed, and a one-row strip.
+int writeSequence(const Options& o) {
+    RainScene scene(sceneFor(o, std::max(o.view, 0), parseIntensity(o.intensity), o.wind, o.fog));
+    for (int i = 0; i < o.warmup; ++i) scene.update(1.0f / 30.0f);
+    std::vector<prism::image::Image8> frames;
+    std::vector<std::string> labels;
+    for (int i = 0; i < o.sequence; ++i) {
+        if (i > 0) scene.update(1.0f / 30.0f);
+        const auto t0 = std::chrono::steady_clock::now();
+        frames.push_back(scene.render(o.width, o.height));
+        char name[32];
+        std::snprintf(name, sizeof name, "frame_%02d.png", i);
+        prism::image::writePng(fs::path(o.out) / name, frames.back());
+        const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        char label[48];
+        std::snprintf(label, sizeof label, "t=%.3f s", static_cast<double>(o.warmup + i) / 30.0);
+        labels.emplace_back(label);
+        std::cout << "prism-rain: wrote " << (fs::path(o.out) / name).string() << " (" << s << " s)\n";
+    }
+    const fs::path strip = fs::path(o.out) / "sequence.png";
+    prism::image::writePng(strip, prism::image::composeContactSheet(frames, labels, o.sequence));
+    std::cout << "prism-rain: wrote " << strip.string() << "\n";
+    return 0;
+}
+
 int writeImages(const Options& o) {
     auto context = prism::gl::createContext(prism::gl::ContextOptions{.majorVersion = 4, .minorVersion = 3});
     fs::create_directories(o.out);
+    if (o.sequence > 0) return writeSequence(o);
     if (o.view >= 0) {
         const fs::path file = fs::path(o.out) / "rain.png";
         prism::image::writePng(file, shoot(o, sceneFor(o, o.view, parseIntensity(o.intensity), o.wind, o.fog)));
@@ -220,6 +271,14 @@ int runWindow(const Options& o) {
     live.wind = o.wind;
     live.windDirection = o.windDirection;
     live.fog = o.fog;
+    if (const auto c = parseRainClass(o.intensity)) {  // --intensity names the starting class
+        for (std::size_t i = 0; i < rainClasses().size(); ++i)
+            if (rainClasses()[i].intensity == rainClassInfo(*c).intensity) live.rainClass = static_cast<int>(i);
+    } else {
+        throw RainParameterError("rain: with --window, --intensity must name a class (drizzle..cloudburst)");
+    }
+    for (int i = 0; i < 3; ++i)  // --technique picks the starting technique
+        if (parseTechnique(o.technique) == kTechniques[i]) live.technique = i;
     auto build = [&] {
         RainSceneDesc d =
             sceneFor(o, 0, rainClasses()[static_cast<std::size_t>(live.rainClass)].intensity, live.wind, live.fog);
@@ -304,10 +363,16 @@ int main(int argc, char** argv) {
     app.add_flag("--window", o.window, "show the rain live in a GLFW window");
     app.add_option("--frames", o.frames, "with --window: quit after N frames (0 = run until Esc)");
     app.add_flag("--demo-keys", o.demoKeys, "with --window: press I, K, W, F, T once each (smoke test)");
+    app.add_option("--sequence", o.sequence, "render N consecutive frames (1/30 s apart) and a strip")
+        ->check(CLI::Range(1, 64));
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        return app.exit(e) == 0 ? 0 : 2;
+    }
+    if (const std::string m = misplacedFlag(app, o); !m.empty()) {
+        std::cerr << "prism-rain: error: " << m << "\n";
+        return 2;
     }
     try {
         return o.window ? runWindow(o) : writeImages(o);

@@ -5,6 +5,10 @@
 //         [--width W] [--height H] [--out DIR]          writes overview.png, ground.png, depth.png
 //   water --window [--frames N] ...                       live GLFW viewer (xvfb-run -a headless)
 //
+//   water --sequence 8 ... --out DIR     8 overview frames, --steps/8 steps apart:
+//                                         frame_00.png .. and the strip sequence.png
+// A flag the chosen mode would not use (--frames without --window, --height-scale
+// without --heightmap, ...) is a usage error: exit 2, never silently ignored.
 // Non-finite or out-of-range numbers (--rain 1e46, --dt inf, --cell 0) and a --dt that
 // needs more than WaterParams::maxSubsteps substeps are usage errors: exit 2, nothing written.
 //
@@ -17,6 +21,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -31,6 +36,7 @@
 #endif
 #include "prism/gl/framebuffer.hpp"
 #include "prism/gl/gl_context.hpp"
+#include "prism/image/contact_sheet.hpp"
 #include "prism/image/png_io.hpp"
 #include "prism/water/gpu_water_simulation.hpp"
 #include "prism/water/rain_rates.hpp"
@@ -55,7 +61,24 @@ struct Options {
     std::string out = "water-out";
     bool window = false;
     long frames = 0;
+    int sequence = 0;  // > 0: that many overview frames and a strip
 };
+
+// The flags the chosen mode would not use, as a usage-error message ("" when none).
+std::string misplacedFlag(const CLI::App& app, const Options& o) {
+    auto given = [&app](const char* flag) { return app.count(flag) > 0; };
+    if (o.window) {
+        for (const char* f : {"--out", "--steps", "--sequence"})
+            if (given(f)) return std::string(f) + " does not apply to --window";
+        if (given("--dt") && o.frames == 0) return "--dt with --window needs --frames (without it, time follows the clock)";
+    } else if (given("--frames")) {
+        return "--frames needs --window";
+    }
+    if (given("--heightmap") && given("--grid")) return "--grid makes a procedural terrain; it does not apply to --heightmap";
+    if (!given("--heightmap") && given("--height-scale")) return "--height-scale needs --heightmap";
+    if (!given("--permeability") && given("--permeability-max")) return "--permeability-max needs --permeability";
+    return "";
+}
 
 // Top-down map: terrain shaded grey by height, water in blue by depth (log scale).
 prism::image::Image8 depthMap(const WaterScene& scene) {
@@ -142,7 +165,38 @@ void checkOptions(const Options& o) {
     }
 }
 
+// --sequence N: the overview after every steps/N steps (N frames), each render timed, and
+// a one-row strip sequence.png.
+int runSequence(const Options& o) {
+    auto context = prism::gl::createContext({.majorVersion = o.gpu ? 4 : 3, .minorVersion = 3});
+    WaterScene scene(describe(o));
+    WaterSceneRenderer renderer(scene);
+    const std::filesystem::path out = o.out;
+    std::filesystem::create_directories(out);
+    const int stepsPerFrame = std::max(1, o.steps / o.sequence);
+    std::vector<prism::image::Image8> frames;
+    std::vector<std::string> labels;
+    for (int i = 0; i < o.sequence; ++i) {
+        for (int k = 0; k < stepsPerFrame; ++k) scene.water()->advance(o.dt);
+        const MassLedger ledger = scene.water()->simulation().ledger();
+        if (!std::isfinite(ledger.stored)) throw std::runtime_error("the water state is not finite; no more frames");
+        const auto t0 = std::chrono::steady_clock::now();
+        frames.push_back(renderer.renderImage(overviewCamera(scene.terrain()), o.width, o.height));
+        char name[32], label[48];
+        std::snprintf(name, sizeof name, "frame_%02d.png", i);
+        std::snprintf(label, sizeof label, "t=%.0f s", (i + 1) * stepsPerFrame * o.dt);
+        prism::image::writePng(out / name, frames.back());
+        labels.emplace_back(label);
+        std::cout << "water: wrote " << (out / name).string() << " ("
+                  << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s)\n";
+    }
+    prism::image::writePng(out / "sequence.png", prism::image::composeContactSheet(frames, labels, o.sequence));
+    std::cout << "water: wrote " << (out / "sequence.png").string() << "\n";
+    return 0;
+}
+
 int runOffscreen(const Options& o) {
+    if (o.sequence > 0) return runSequence(o);
     // Drawing needs GL 3.3; the compute-shader step 4.3.
     auto context = prism::gl::createContext({.majorVersion = o.gpu ? 4 : 3, .minorVersion = 3});
     WaterScene scene(describe(o));
@@ -162,6 +216,7 @@ int runOffscreen(const Options& o) {
         throw std::runtime_error("the water state is not finite; no images written");
     WaterSceneRenderer renderer(scene);
     const std::filesystem::path out = o.out;
+    std::filesystem::create_directories(out);
     prism::image::writePng(out / "overview.png", renderer.renderImage(overviewCamera(scene.terrain()), o.width, o.height));
     prism::image::writePng(out / "ground.png", renderer.renderImage(groundCamera(scene.terrain()), o.width, o.height));
     prism::image::writePng(out / "depth.png", depthMap(scene));
@@ -313,6 +368,8 @@ int main(int argc, char** argv) {
     app.add_option("--out", o.out, "output directory");
     app.add_flag("--window", o.window, "open the live GLFW viewer");
     app.add_option("--frames", o.frames, "with --window: quit after N frames");
+    app.add_option("--sequence", o.sequence, "write N overview frames, --steps/N steps apart, and a strip")
+        ->check(CLI::Range(1, 64));
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -324,6 +381,10 @@ int main(int argc, char** argv) {
         checkOptions(o);
     } catch (const UsageError& e) {
         std::cerr << "water: error: " << e.what() << "\n";
+        return 2;
+    }
+    if (const std::string m = misplacedFlag(app, o); !m.empty()) {
+        std::cerr << "water: error: " << m << "\n";
         return 2;
     }
     try {

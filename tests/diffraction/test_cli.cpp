@@ -117,6 +117,27 @@ TEST(DiffractionCli, BadInputExitsTwoWithAMessage) {
     }
 }
 
+// A flag the chosen path would not use is refused, never silently ignored (issue 15).
+TEST(DiffractionCli, FlagsThePathWouldNotUseAreRefused) {
+    const struct {
+        const char* args;
+        const char* message;
+    } cases[] = {
+        {"peaks --wavelengths-nm 550 --png h.png", "--png needs --height-field png"},
+        {"peaks --wavelengths-nm 550 --nm-per-pixel 10", "--nm-per-pixel needs --height-field png"},
+        {"peaks --wavelengths-nm 550 --height-field cd --amplitude-nm 100", "--amplitude-nm shapes the sinusoid"},
+        {"peaks --wavelengths-nm 550 --height-field snake --periods 8", "--periods shapes the sinusoid"},
+        {"peaks --wavelengths-nm 550 --exact --terms 10", "--terms: --exact uses no Taylor series"},
+        {"peaks --wavelengths-nm 550 --exact --tolerance 1e-3", "--tolerance: --exact uses no Taylor series"},
+        {"peaks --wavelengths-nm 550 --terms 10 --tolerance 1e-3", "give one of them"},
+    };
+    for (const auto& c : cases) {
+        const Result r = run(c.args);
+        EXPECT_EQ(r.status, 2) << c.args << "\n" << r.output;
+        EXPECT_NE(r.output.find(c.message), std::string::npos) << c.args << "\n" << r.output;
+    }
+}
+
 TEST(DiffractionCli, PngHeightFieldAsInTheDocs) {
     // docs/diffraction.md, "Bring your own height field": a 16-bit grey PNG of a 1400 nm
     // grating (14 px at 100 nm/px, 32 periods), read with --nm-per-pixel and --height-scale-nm.

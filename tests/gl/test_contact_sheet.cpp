@@ -59,6 +59,7 @@ TEST(ContactSheet, LayoutAndLabels) {
                                                prism::image::Image8(10, 8, {0, 0, 255, 255})};
     const std::vector<std::string> labels = {"A", "B"};
     prism::image::ContactSheetStyle style;
+    style.labelScale = 1;
     const prism::image::Image8 sheet = prism::image::composeContactSheet(images, labels, 2, style);
     // pad 4; cells 10x8; label strip 7 + pad.
     EXPECT_EQ(sheet.width, 4 + 2 * (10 + 4));
@@ -83,6 +84,46 @@ TEST(ContactSheet, LongLabelIsShortenedToItsCell) {
     prism::image::Image8 onlySecond = prism::image::composeContactSheet(images, std::vector<std::string>{"", "X"}, 2);
     for (int y = 0; y < sheet.height; ++y)
         for (int x = 4 + 20; x < sheet.width; ++x) ASSERT_EQ(sheet.at(x, y), onlySecond.at(x, y)) << x << "," << y;
+}
+
+// The default style (used by prism-gallery's contact sheet) draws labels whose glyphs
+// are at least 12 pixels tall: measured on the sheet, from the first to the last row
+// of the label strip that holds label-coloured pixels.
+TEST(ContactSheet, DefaultLabelsAreAtLeast12PixelsTall) {
+    const std::vector<prism::image::Image8> images = {prism::image::Image8(64, 16, {0, 0, 0, 255})};
+    const std::vector<std::string> labels = {"PHONG / TORUS"};
+    const prism::image::ContactSheetStyle style;
+    const prism::image::Image8 sheet = prism::image::composeContactSheet(images, labels, 1, style);
+    int top = -1, bottom = -1;
+    for (int y = style.padding + 16; y < sheet.height; ++y)
+        for (int x = 0; x < sheet.width; ++x)
+            if (sheet.at(x, y) == style.labelColour) {
+                if (top < 0) top = y;
+                bottom = y;
+            }
+    ASSERT_GE(top, 0) << "no label pixels";
+    EXPECT_GE(bottom - top + 1, 12);
+}
+
+// A two-line label makes the strip two lines tall, and each line is shortened on its own.
+TEST(ContactSheet, MultiLineLabelsGetATallerStrip) {
+    const std::vector<prism::image::Image8> images = {prism::image::Image8(24, 8, {0, 0, 0, 255}),
+                                                      prism::image::Image8(24, 8, {0, 0, 0, 255})};
+    prism::image::ContactSheetStyle style;
+    style.labelScale = 1;
+    const std::vector<std::string> oneLine = {"A", "B"}, twoLines = {"A\nTWO", "B"};
+    const auto flat = prism::image::composeContactSheet(images, oneLine, 2, style);
+    const auto tall = prism::image::composeContactSheet(images, twoLines, 2, style);
+    EXPECT_EQ(tall.height - flat.height, prism::image::textHeight("A\nB") - prism::image::textHeight("A"));
+    const int secondLineY = style.padding + 8 + style.padding + 8;  // glyph rows 7 + 1 spacing below the first
+    bool inked = false;
+    for (int x = style.padding; x < style.padding + 24; ++x) inked |= tall.at(x, secondLineY) == style.labelColour;
+    EXPECT_TRUE(inked) << "the second line was not drawn";
+    const std::vector<std::string> longLines = {"AB\nVERY LONG LINE", "B"};
+    const auto cut = prism::image::composeContactSheet(images, longLines, 2, style);
+    for (int y = 0; y < cut.height; ++y)  // nothing spills into the gap before the second cell
+        for (int x = style.padding + 24; x < style.padding + 24 + style.padding; ++x)
+            EXPECT_NE(cut.at(x, y), style.labelColour) << x << "," << y;
 }
 
 }  // namespace

@@ -336,5 +336,64 @@ TEST(PrismRenderCliStochastic, FlagsWithShaderAreAUsageError) {
     EXPECT_TRUE(imagesIn(dir).empty());
 }
 
+// --size with --scene overrides the scene's "image" size, for GL and CPU (stochastic)
+// scenes alike: the flag is never silently ignored (issue 15).
+TEST(PrismRenderCliSceneFlags, SizeOverridesTheScenesImageSize) {
+    const fs::path dir = testDir();
+    for (const std::string scene : {"one_light", "soft_shadows"}) {
+        const fs::path out = dir / (scene + ".png");
+        const auto r = runPrismRender(
+            {"--scene", std::string(PRISM_SCENES_DIR) + "/" + scene + ".json", "--size", "80x48", "--out", out.string()},
+            dir);
+        ASSERT_EQ(r.exitCode, 0) << scene << ": " << r.err;
+        const image::Image8 image = image::readPng(out);
+        EXPECT_EQ(image.width, 80) << scene;
+        EXPECT_EQ(image.height, 48) << scene;
+    }
+}
+
+// Every flag that describes a --shader render is refused with --scene, as is --backend
+// for a scene drawn on the CPU, and a malformed --size.
+TEST(PrismRenderCliSceneFlags, FlagsTheSceneWouldIgnoreAreUsageErrors) {
+    const struct {
+        std::vector<std::string> args;
+        std::string scene, expected;
+    } cases[] = {
+        {{"--mesh", "torus"}, "one_light", "--mesh describes a --shader render"},
+        {{"--subdiv", "2"}, "one_light", "--subdiv describes a --shader render"},
+        {{"--variant", "BLINN=1"}, "one_light", "--variant describes a --shader render"},
+        {{"--shininess", "8"}, "one_light", "--shininess describes a --shader render"},
+        {{"--specular", "0.2"}, "one_light", "--specular describes a --shader render"},
+        {{"--color", "1,0,0"}, "one_light", "--color describes a --shader render"},
+        {{"--light-dir", "0,-1,0"}, "one_light", "--light-dir describes a --shader render"},
+        {{"--scale", "2,2,2"}, "one_light", "--scale describes a --shader render"},
+        {{"--backend", "egl"}, "soft_shadows", "is drawn on the CPU"},
+        {{"--size", "80"}, "one_light", "--size 80: expected WxH"},
+    };
+    for (const auto& c : cases) {
+        const fs::path dir = testDir();
+        std::vector<std::string> args{"--scene", std::string(PRISM_SCENES_DIR) + "/" + c.scene + ".json", "--out",
+                                      (dir / "out.png").string()};
+        args.insert(args.end(), c.args.begin(), c.args.end());
+        const auto r = runPrismRender(args, dir);
+        EXPECT_EQ(r.exitCode, kExitBadInput) << c.args.front() << ": " << r.err;
+        EXPECT_NE(r.err.find(c.expected), std::string::npos) << r.err;
+        EXPECT_TRUE(imagesIn(dir).empty()) << c.args.front();
+    }
+}
+
+// --subdiv for a mesh without subdivision levels would be ignored: a usage error instead.
+TEST(PrismRenderCli, SubdivForAMeshWithoutLevelsIsAUsageError) {
+    for (const std::string mesh : {"cube", "trefoil"}) {
+        const fs::path dir = testDir();
+        const auto r = runPrismRender(
+            {"--shader", "phong", "--mesh", mesh, "--subdiv", "2", "--size", "32x32", "--out", (dir / "out.png").string()},
+            dir);
+        EXPECT_EQ(r.exitCode, kExitBadInput) << mesh << ": " << r.err;
+        EXPECT_NE(r.err.find("--subdiv: mesh " + mesh + " has no subdivision levels"), std::string::npos) << r.err;
+        EXPECT_TRUE(imagesIn(dir).empty());
+    }
+}
+
 }  // namespace
 }  // namespace prism::rendering_test

@@ -28,12 +28,25 @@ void blit(Image8& dst, const Image8& src, int x0, int y0) {
 }
 
 // `text` shortened with ".." so that it is at most `maxWidth` pixels wide at `scale`.
-std::string fitted(std::string_view text, int maxWidth, int scale) {
+std::string fittedLine(std::string_view text, int maxWidth, int scale) {
     if (textWidth(text, scale) <= maxWidth) return std::string(text);
     const int advance = font::kAdvance * scale;
     const int fits = (maxWidth + scale) / advance;  // the last glyph needs no spacing column
     if (fits <= 2) return std::string(text.substr(0, static_cast<std::size_t>(std::max(fits, 0))));
     return std::string(text.substr(0, static_cast<std::size_t>(fits - 2))) + "..";
+}
+
+// Every line of `text` shortened on its own.
+std::string fitted(std::string_view text, int maxWidth, int scale) {
+    std::string out;
+    for (std::size_t start = 0;;) {
+        const std::size_t end = text.find('\n', start);
+        out += fittedLine(text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start), maxWidth,
+                          scale);
+        if (end == std::string_view::npos) return out;
+        out += '\n';
+        start = end + 1;
+    }
 }
 
 }  // namespace
@@ -89,7 +102,8 @@ Image8 composeContactSheet(std::span<const Image8> images, std::span<const std::
         cellW = std::max(cellW, img.width);
         cellH = std::max(cellH, img.height);
     }
-    const int labelH = font::kGlyphHeight * scale;
+    int labelH = font::kGlyphHeight * scale;  // the strip is as tall as the tallest label
+    for (const auto& label : labels) labelH = std::max(labelH, textHeight(label, scale));
     const int count = static_cast<int>(images.size());
     const int cols = std::max(1, std::min(columns, count));
     const int rows = (count + cols - 1) / cols;

@@ -1,0 +1,70 @@
+#!/usr/bin/env python3
+"""Shows that the report's checks fail when the report is broken (CTest
+report.browser_detects_breakage): on copies of a good gallery it corrupts one PNG, drops
+a system's section, blanks the page, and deletes a linked file, and expects
+check_in_browser.py / check_links.py to fail naming the fault.
+
+    python3 tests/report/mutation_check.py GALLERY_DIR
+"""
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def run(script, *args):
+    proc = subprocess.run([sys.executable, os.path.join(HERE, script), *args], capture_output=True, text=True)
+    return proc.returncode, proc.stdout + proc.stderr
+
+
+def expect_failure(name, rc, output, needle):
+    if rc == 0 or needle not in output:
+        print(f"mutation '{name}' was not caught (exit {rc}; expected a message with '{needle}'):\n{output}")
+        return False
+    print(f"mutation '{name}' caught: exit {rc}")
+    return True
+
+
+def main(argv):
+    gallery = argv[1]
+    ok = True
+    with tempfile.TemporaryDirectory() as tmp:
+        def fresh(name):
+            copy = os.path.join(tmp, name)
+            shutil.copytree(gallery, copy)
+            return copy
+
+        g = fresh("broken-image")
+        with open(os.path.join(g, "scenes", "fog.png"), "wb") as f:
+            f.write(b"not a png")
+        rc, out = run("check_in_browser.py", g, "--screenshot", os.path.join(tmp, "a.png"))
+        ok &= expect_failure("corrupt scenes/fog.png", rc, out, "scenes/fog.png")
+
+        g = fresh("no-water")
+        page = os.path.join(g, "index.html")
+        with open(page) as f:
+            text = f.read()
+        with open(page, "w") as f:
+            f.write(re.sub(r'<section id="water".*?</section>', "", text, flags=re.S))
+        rc, out = run("check_in_browser.py", g, "--screenshot", os.path.join(tmp, "b.png"))
+        ok &= expect_failure("water section removed", rc, out, "section 'water' is missing")
+
+        g = fresh("blank")
+        with open(os.path.join(g, "index.html"), "w") as f:
+            f.write("<!DOCTYPE html><html><body></body></html>\n")
+        rc, out = run("check_in_browser.py", g, "--screenshot", os.path.join(tmp, "c.png"))
+        ok &= expect_failure("blank page", rc, out, "looks blank")
+
+        g = fresh("missing-file")
+        os.remove(os.path.join(g, "gallery.png"))
+        rc, out = run("check_links.py", os.path.join(g, "index.html"))
+        ok &= expect_failure("gallery.png deleted", rc, out, "gallery.png does not exist")
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
