@@ -294,7 +294,7 @@ void validateCatalog(ResolvedCatalog& rc, const Contract& contract, int jobs, Di
 }
 
 std::string fingerprint(const ResolvedCatalog& rc) {
-    // FNV-1a over the resolved texts, paths and everything else the header prints.
+    // FNV-1a over the resolved texts, paths and everything else the generated files print.
     std::uint64_t h = 1469598103934665603ull;
     auto mix = [&](std::string_view s) {
         for (unsigned char c : s) {
@@ -307,8 +307,7 @@ std::string fingerprint(const ResolvedCatalog& rc) {
     const auto& d = rc.data;
     mix(PRISM_VERSION);
     mix(d.nameSpace);
-    mix(d.commandLine);
-    mix(d.versionDirective);  // the banner shows the command
+    mix(d.versionDirective);
     mix(d.sourcesBlock);      // so a header with a stale record is rewritten
     for (const auto& s : d.shaders) {
         mix(s.name);

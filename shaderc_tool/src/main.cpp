@@ -1,8 +1,9 @@
 // prism-shaderc: the build-time GLSL toolchain. main() only sequences the stages:
 //   args -> no-op check on the recorded sources -> shader inputs -> contract
 //   -> include resolution + variants -> validation
-//   (glslang, interface and contract checks, reflection) -> header, GLSL, depfile.
+//   (glslang, interface and contract checks, reflection) -> header + data file, GLSL, depfile.
 // Exit status: 0 success, 1 shader errors, 2 usage or I/O errors.
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -33,16 +34,28 @@ std::string readWholeFile(const std::string& path) {
     return ss.str();
 }
 
-bool headerIsCurrent(const Options& o, const std::string& fingerprint) {
-    return !o.checkOnly && !o.output.empty() && o.emitGlslDir.empty() &&
-           fingerprintOfHeader(readWholeFile(o.output)) == fingerprint;
+// The data file records the fingerprint and is written after the header, so a run killed
+// between the two leaves a stale record that the next run does not trust.
+bool outputsAreCurrent(const Options& o, const std::string& fingerprint) {
+    return !o.checkOnly && !o.output.empty() && o.emitGlslDir.empty() && std::filesystem::exists(o.output) &&
+           recordedFingerprint(readWholeFile(dataPathFor(o.output))) == fingerprint;
+}
+
+void removeStaleOutputTemps(const Options& o) {  // nothing to write, but a killed run may have left temp files
+    removeStaleTemps(o.output);
+    removeStaleTemps(dataPathFor(o.output));
 }
 
 int writeOutputs(const Options& o, const ResolvedCatalog& rc) {
     std::string error;
-    if (!o.output.empty() && writeIfChanged(o.output, writeHeader(rc.data), error) == WriteOutcome::Failed) {
-        std::cerr << "prism-shaderc: error: " << error << "\n";
-        return kExitUsageOrIo;
+    const auto name = [](const std::string& path) { return std::filesystem::path(path).filename().string(); };
+    if (!o.output.empty()) {
+        const std::string data = dataPathFor(o.output);
+        if (writeIfChanged(o.output, writeHeader(rc.data, name(data)), error) == WriteOutcome::Failed ||
+            writeIfChanged(data, writeData(rc.data, name(o.output)), error) == WriteOutcome::Failed) {
+            std::cerr << "prism-shaderc: error: " << error << "\n";
+            return kExitUsageOrIo;
+        }
     }
     if (!o.emitGlslDir.empty() && !emitGlsl(o.emitGlslDir, rc.data, error)) {
         std::cerr << "prism-shaderc: error: " << error << "\n";
@@ -76,9 +89,14 @@ int main(int argc, char** argv) {
     DiskReader disk;
 
     const bool writesHeaderOnly = !o.checkOnly && !o.output.empty() && o.emitGlslDir.empty();
-    if (writesHeaderOnly)
-        if (auto files = unchangedSources(o, readWholeFile(o.output), disk)) {
-            removeStaleTemps(o.output);  // nothing to write, but a killed run may have left a temp file
+    if (writesHeaderOnly && dataPathFor(o.output) == o.output) {
+        std::cerr << "prism-shaderc: error: -o " << o.output
+                  << ": the data file would overwrite the header; name the header .hpp or .h\n";
+        return kExitUsageOrIo;
+    }
+    if (writesHeaderOnly && std::filesystem::exists(o.output))
+        if (auto files = unchangedSources(o, readWholeFile(dataPathFor(o.output)), disk)) {
+            removeStaleOutputTemps(o);
             return writeBuildSystemFiles(o, *files);
         }
 
@@ -93,11 +111,10 @@ int main(int argc, char** argv) {
     }
 
     auto catalog = resolveCatalog(o, inputs.shaders, contract.contract, disk, sink);
-    catalog.data.commandLine = o.commandLine;
     catalog.data.sourcesBlock = sourcesBlock(recordSources(o, catalog.filesRead, disk));
     catalog.data.fingerprint = fingerprint(catalog);
-    if (sink.errorCount() == 0 && headerIsCurrent(o, catalog.data.fingerprint)) {
-        removeStaleTemps(o.output);  // nothing to write, but a killed run may have left a temp file
+    if (sink.errorCount() == 0 && outputsAreCurrent(o, catalog.data.fingerprint)) {
+        removeStaleOutputTemps(o);
         sink.print(std::cerr, o.errorFormat);
         return writeBuildSystemFiles(o, catalog.filesRead);
     }

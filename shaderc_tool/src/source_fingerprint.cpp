@@ -56,17 +56,26 @@ bool isStage(const fs::path& p) {
 std::string fingerprintOf(const Options& o, const std::vector<std::string>& embedded, const SourceReader& reader) {
     Fnv1a h;
     h.mix(PRISM_VERSION);
-    h.mix(o.commandLine);
+    // Only the options that change the generated files, with paths as embedded (never
+    // --depfile, --stamp, --emit-glsl, -j or the error format).
+    const auto shown = [&](const std::string& dir) {
+        return embeddedPath(fs::absolute(dir).lexically_normal().string(), o.baseDir);
+    };
+    h.mix("ns " + o.nameSpace);
+    h.mix("glsl " + std::to_string(o.glslVersion) + " " + o.glslProfile);
+    h.mix("out " + fs::path(o.output).filename().string());
+    for (const auto& [name, value] : o.defines) h.mix("-D " + name + "=" + value);
+    for (const auto& filter : o.variantFilters) h.mix("--variant " + filter);
+    for (const auto& contract : o.contracts) h.mix("--contract " + shown(contract));
+    for (const auto& dir : o.includeDirs) h.mix("-I " + shown(dir));
+    for (const auto& input : o.inputs) h.mix("in " + shown(input));
     for (const auto& file : embedded) {
         h.mix(file);
         const auto text = reader.read(joinPath(o.baseDir, file));
         h.mix(text ? *text : std::string("\0missing", 8));
     }
     // Folders as embedded (relative to --base-dir), so that the same tree checked out at
-    // another absolute path gives the same fingerprint and a byte-identical header.
-    const auto shown = [&](const std::string& dir) {
-        return embeddedPath(fs::absolute(dir).lexically_normal().string(), o.baseDir);
-    };
+    // another absolute path gives the same fingerprint and byte-identical outputs.
     for (const auto& dir : o.includeDirs)
         for (const auto& name : listing(dir, isModule)) h.mix("-I " + shown(dir) + "/" + name);
     for (const auto& input : o.inputs)
