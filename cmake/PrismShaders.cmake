@@ -33,6 +33,15 @@ endif()
 cmake_policy(PUSH)
 cmake_policy(VERSION 3.20...3.25)
 
+# The library type of generated catalogues: STATIC (default) or SHARED. A shared catalogue
+# exports one symbol, kCatalog, which a module edit never changes; with
+# CMAKE_LINK_DEPENDS_NO_SHARED ON, a module edit then relinks only the catalogue's own
+# library, not every program that uses it. Prism's own build does both (top-level
+# CMakeLists.txt; docs/shaderc.md, "The edit loop").
+if(NOT DEFINED PRISM_SHADERS_LIBRARY_TYPE)
+  set(PRISM_SHADERS_LIBRARY_TYPE STATIC)
+endif()
+
 function(prism_add_shaders target)
   cmake_parse_arguments(PARSE_ARGV 1 PAS "" "HEADER;NAMESPACE;GLSL_VERSION"
                         "SOURCES;MODULE_DIRS;DEFINES;CONTRACT;VARIANTS")
@@ -105,7 +114,7 @@ function(prism_add_shaders target)
     COMMENT "prism-shaderc: generating ${PAS_HEADER}"
     VERBATIM)
   add_custom_target(${target}_generate DEPENDS ${stamp})
-  add_library(${target} STATIC ${data})
+  add_library(${target} ${PRISM_SHADERS_LIBRARY_TYPE} ${data})
   add_dependencies(${target} ${target}_generate)
   set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
   target_include_directories(${target} PUBLIC $<BUILD_INTERFACE:${gen_dir}>)
