@@ -4,6 +4,7 @@
 // and its own body), and so is a module's own text. The runtime concatenates a stage's
 // pieces (prism::catalog::joinChunks) once per program it builds.
 #include <algorithm>
+#include <cstdio>
 #include <map>
 #include <sstream>
 
@@ -275,10 +276,32 @@ class DataWriter {
     ArrayEmitter arrays_;
 };
 
+constexpr std::string_view kHeaderHashLine = "// ---- header hash: ";
+
+std::string textHash(const std::string& text) {  // FNV-1a, 64 bits
+    std::uint64_t h = 1469598103934665603ull;
+    for (unsigned char c : text) {
+        h ^= c;
+        h *= 1099511628211ull;
+    }
+    char buf[17];
+    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+    return buf;
+}
+
 }  // namespace
 
-std::string writeData(const CatalogData& catalog, const std::string& headerFileName) {
-    return DataWriter(catalog).write(headerFileName);
+std::string writeData(const CatalogData& catalog, const std::string& headerFileName, const std::string& headerText) {
+    // The hash goes last but for the sources record, so the no-op's read of the tail sees it.
+    auto text = DataWriter(catalog).write(headerFileName);
+    const auto record = catalog.sourcesBlock.empty() ? text.size() : text.rfind(catalog.sourcesBlock);
+    return text.insert(record, std::string(kHeaderHashLine) + textHash(headerText) + "\n");
+}
+
+bool headerMatchesData(const std::string& headerText, const std::string& dataText) {
+    const auto pos = dataText.rfind(kHeaderHashLine);
+    if (pos == std::string::npos || headerText.empty()) return false;
+    return dataText.compare(pos + kHeaderHashLine.size(), 17, textHash(headerText) + "\n") == 0;
 }
 
 }  // namespace prism::shaderc

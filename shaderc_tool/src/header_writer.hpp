@@ -23,8 +23,12 @@ inline constexpr std::size_t kMaxChunkBytes = 16000;
 // The header's text. It names the data file in a comment only (by file name).
 std::string writeHeader(const CatalogData& catalog, const std::string& dataFileName);
 
-// The data file's text; it includes the header by its file name (it sits beside it).
-std::string writeData(const CatalogData& catalog, const std::string& headerFileName);
+// The data file's text; it includes the header by its file name (it sits beside it) and
+// records a hash of `headerText`, so that a run can tell a stale or edited header.
+std::string writeData(const CatalogData& catalog, const std::string& headerFileName, const std::string& headerText);
+
+// True when `dataText` (or its tail) records the hash of `headerText`.
+bool headerMatchesData(const std::string& headerText, const std::string& dataText);
 
 // Where the data file of header `headerPath` goes: the same path with extension .cpp.
 std::string dataPathFor(const std::string& headerPath);

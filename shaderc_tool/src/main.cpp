@@ -49,9 +49,11 @@ std::string readRecord(const std::string& path) {
 
 // The data file records the fingerprint and is written after the header, so a run killed
 // between the two leaves a stale record that the next run does not trust.
+// The header must be the one the data file records (not deleted, edited or left stale).
 bool outputsAreCurrent(const Options& o, const std::string& fingerprint) {
-    return !o.checkOnly && !o.output.empty() && o.emitGlslDir.empty() && std::filesystem::exists(o.output) &&
-           recordedFingerprint(readWholeFile(dataPathFor(o.output))) == fingerprint;
+    if (o.checkOnly || o.output.empty() || !o.emitGlslDir.empty()) return false;
+    const auto data = readWholeFile(dataPathFor(o.output));
+    return headerMatchesData(readWholeFile(o.output), data) && recordedFingerprint(data) == fingerprint;
 }
 
 void removeStaleOutputTemps(const Options& o) {  // nothing to write, but a killed run may have left temp files
@@ -64,8 +66,12 @@ int writeOutputs(const Options& o, const ResolvedCatalog& rc) {
     const auto name = [](const std::string& path) { return std::filesystem::path(path).filename().string(); };
     if (!o.output.empty()) {
         const std::string data = dataPathFor(o.output);
-        if (writeIfChanged(o.output, writeHeader(rc.data, name(data)), error) == WriteOutcome::Failed ||
-            writeIfChanged(data, writeData(rc.data, name(o.output)), error) == WriteOutcome::Failed) {
+        const std::string header = writeHeader(rc.data, name(data));
+        const bool headerExisted = std::filesystem::exists(o.output);
+        if (writeIfChanged(o.output, header, error) == WriteOutcome::Failed ||
+            writeIfChanged(data, writeData(rc.data, name(o.output), header), error) == WriteOutcome::Failed) {
+            std::error_code ec;
+            if (!headerExisted) std::filesystem::remove(o.output, ec);  // nothing written on failure
             std::cerr << "prism-shaderc: error: " << error << "\n";
             return kExitUsageOrIo;
         }
@@ -107,11 +113,12 @@ int main(int argc, char** argv) {
                   << ": the data file would overwrite the header; name the header .hpp or .h\n";
         return kExitUsageOrIo;
     }
-    if (writesHeaderOnly && std::filesystem::exists(o.output))
-        if (auto files = unchangedSources(o, readRecord(dataPathFor(o.output)), disk)) {
-            removeStaleOutputTemps(o);
-            return writeBuildSystemFiles(o, *files);
-        }
+    if (writesHeaderOnly)
+        if (const auto record = readRecord(dataPathFor(o.output)); headerMatchesData(readWholeFile(o.output), record))
+            if (auto files = unchangedSources(o, record, disk)) {
+                removeStaleOutputTemps(o);
+                return writeBuildSystemFiles(o, *files);
+            }
 
     auto inputs = collectShaderInputs(o.inputs);
     sink.reportAll(inputs.diagnostics);

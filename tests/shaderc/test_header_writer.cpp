@@ -45,7 +45,7 @@ TEST(HeaderWriter, FingerprintRoundTripsThroughTheDataFile) {
     CatalogData c;
     c.nameSpace = "ns";
     c.fingerprint = "0123456789abcdef";
-    EXPECT_EQ(recordedFingerprint(writeData(c, "x.hpp")), "0123456789abcdef");
+    EXPECT_EQ(recordedFingerprint(writeData(c, "x.hpp", "h")), "0123456789abcdef");
     EXPECT_EQ(recordedFingerprint(writeHeader(c, "x.cpp")), "") << "the header must not change with the data";
     EXPECT_EQ(recordedFingerprint("// no banner\n"), "");
 }
@@ -98,7 +98,7 @@ TEST(DataWriter, ModuleTextIsStoredOnce) {
     const std::string body = "// Provides: shade(), a distinctive module body of some length.\n"
                              "vec3 shade(vec3 c) { return c * 0.5; }\n";
     auto c = twoVariantCatalogue(body);
-    const auto data = writeData(c, "x.hpp");
+    const auto data = writeData(c, "x.hpp", "h");
     EXPECT_EQ(occurrences(data, "vec3 shade(vec3 c)"), 1u) << data;
     EXPECT_EQ(occurrences(writeHeader(c, "x.cpp"), "vec3 shade"), 0u);
     EXPECT_NE(data.find("#include \"x.hpp\""), std::string::npos);
@@ -111,7 +111,21 @@ TEST(HeaderWriter, HeaderIgnoresTextEdits) {
     auto b = twoVariantCatalogue("// Provides: one, edited.\nfloat f() { return 2.0; }\n");
     b.fingerprint = "changed";
     EXPECT_EQ(writeHeader(a, "x.cpp"), writeHeader(b, "x.cpp"));
-    EXPECT_NE(writeData(a, "x.hpp"), writeData(b, "x.hpp"));
+    EXPECT_NE(writeData(a, "x.hpp", "h"), writeData(b, "x.hpp", "h"));
     b.modules[0].identifier = "shade2";
     EXPECT_NE(writeHeader(a, "x.cpp"), writeHeader(b, "x.cpp")) << "a renamed module changes a declaration";
+}
+
+// The data file records the header's hash: a run can tell a header that is stale, edited
+// or from another run (then it rewrites it instead of stopping at the no-op).
+TEST(DataWriter, RecordsTheHeadersHash) {
+    auto c = twoVariantCatalogue("// Provides: one.\nfloat f() { return 1.0; }\n");
+    c.sourcesBlock = "// ---- sources read (prism-shaderc's no-op check): 0123\n//   a.glsl\n";
+    const auto header = writeHeader(c, "x.cpp");
+    const auto data = writeData(c, "x.hpp", header);
+    EXPECT_TRUE(headerMatchesData(header, data));
+    EXPECT_FALSE(headerMatchesData(header + "// edited\n", data));
+    EXPECT_FALSE(headerMatchesData("", data)) << "a missing header";
+    EXPECT_FALSE(headerMatchesData(header, "// no record\n"));
+    EXPECT_TRUE(headerMatchesData(header, data.substr(data.size() - 200))) << "the tail holds the hash";
 }

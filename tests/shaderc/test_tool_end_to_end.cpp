@@ -165,10 +165,14 @@ TEST(ToolOutputs, NoOpChecksTheRecordedSources) {
     const std::string edited = readFile(data);
     EXPECT_NE(edited.find("// one more comment line"), std::string::npos);
 
-    // A deleted header is rewritten, although the data file's record is current.
+    // A deleted or overwritten header is rewritten, although the data file's record is current.
+    const std::string goodHeader = readFile(header);
     fs::remove(header);
     ASSERT_EQ(runShaderc(args, dir.str()).exitCode, 0);
-    EXPECT_TRUE(fs::exists(header));
+    EXPECT_EQ(readFile(header), goodHeader);
+    dir.write("out.hpp", "// an old header\n");
+    ASSERT_EQ(runShaderc(args, dir.str()).exitCode, 0);
+    EXPECT_EQ(readFile(header), goodHeader);
 
     dir.write("fx/modules/extra.glsl", "// Provides: a module nobody includes yet.\nfloat extra() { return 1.0; }\n");
     ASSERT_EQ(runShaderc(args, dir.str()).exitCode, 0);
