@@ -386,3 +386,44 @@ TEST(ToolOutputs, ProjectCatalogueStoresEachModuleOnce) {
     for (auto pos = data.find(line); pos != std::string::npos; pos = data.find(line, pos + 1)) ++n;
     EXPECT_EQ(n, 1u);
 }
+
+// Modules found outside --base-dir (an installed Prism's modules, say) are named relative
+// to the -I directory that found them, in the outputs and in the no-op record, so the
+// outputs do not depend on where that directory lies relative to the project; and the
+// no-op still finds those files to hash them.
+TEST(GoldenHeader, ModulesOutsideTheBaseDirAreNamedByTheirIncludeDir) {
+    ScratchDir dir("outside");
+    std::string outputs[2];
+    const std::string projects[2] = {dir.str() + "/one/proj", dir.str() + "/two/a/b/proj"};
+    const std::string prefixes[2] = {dir.str() + "/one/prefix/modules", dir.str() + "/two/x/modules"};
+    for (int i = 0; i < 2; ++i) {
+        fs::create_directories(projects[i]);
+        fs::create_directories(fs::path(prefixes[i]).parent_path());
+        fs::copy(kFixture + "/modules", prefixes[i], fs::copy_options::recursive);
+        fs::copy(kFixture + "/shaders", projects[i] + "/shaders", fs::copy_options::recursive);
+        fs::copy(kFixture + "/contract.json", projects[i] + "/contract.json");
+        const std::string args = "-o gen/out.hpp --depfile out.d --base-dir " + projects[i] + " -I " + prefixes[i] +
+                                 " --contract contract.json shaders";
+        auto run = runShaderc(args, projects[i]);
+        ASSERT_EQ(run.exitCode, 0) << run.output;
+        outputs[i] = readFile(projects[i] + "/gen/out.hpp") + readFile(projects[i] + "/gen/out.cpp");
+        EXPECT_EQ(outputs[i].find(".."), std::string::npos) << "a path climbs out of the base dir";
+        EXPECT_NE(outputs[i].find("\"fog.glsl\""), std::string::npos) << "fog.glsl is named by its -I directory";
+        EXPECT_NE(outputs[i].find("\n//   @I0/fog.glsl\n"), std::string::npos);
+
+        // The no-op hashes the module through its record: an edit there is noticed.
+        const auto before = fs::last_write_time(projects[i] + "/gen/out.cpp");
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        fs::remove(projects[i] + "/out.d");
+        ASSERT_EQ(runShaderc(args, projects[i]).exitCode, 0);
+        EXPECT_EQ(fs::last_write_time(projects[i] + "/gen/out.cpp"), before);
+        EXPECT_NE(readFile(projects[i] + "/out.d").find(prefixes[i] + "/fog.glsl"), std::string::npos);
+        prism::test::writeFile(prefixes[i] + "/fog.glsl", readFile(prefixes[i] + "/fog.glsl") + "// edited outside\n");
+        ASSERT_EQ(runShaderc(args, projects[i]).exitCode, 0);
+        EXPECT_NE(readFile(projects[i] + "/gen/out.cpp").find("// edited outside"), std::string::npos);
+        prism::test::writeFile(prefixes[i] + "/fog.glsl", readFile(kFixture + "/modules/fog.glsl"));
+        ASSERT_EQ(runShaderc(args, projects[i]).exitCode, 0);
+        outputs[i] = readFile(projects[i] + "/gen/out.hpp") + readFile(projects[i] + "/gen/out.cpp");
+    }
+    EXPECT_TRUE(outputs[0] == outputs[1]) << "the outputs depend on where the -I directory lies";
+}
