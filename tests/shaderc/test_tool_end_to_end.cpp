@@ -427,3 +427,25 @@ TEST(GoldenHeader, ModulesOutsideTheBaseDirAreNamedByTheirIncludeDir) {
     }
     EXPECT_TRUE(outputs[0] == outputs[1]) << "the outputs depend on where the -I directory lies";
 }
+
+// The no-op reads only the end of a large data file (over the 256 KB it reads), and
+// still stops there: a full run prints the warning about the module without a leading
+// comment, the no-op prints nothing and rewrites nothing.
+TEST(ToolOutputs, NoOpOnALargeDataFileStopsBeforeResolving) {
+    ScratchDir dir("large");
+    fs::copy(kFixture, dir.path() / "fx", fs::copy_options::recursive);
+    std::string big = "float bigValue() { return 1.0; }\n";
+    for (int i = 0; i < 4000; ++i)
+        big += "// filler line " + std::to_string(i) + " of a big module, so that the data file is large\n";
+    dir.write("fx/modules/big.glsl", big);
+    const std::string args = "-o out.hpp --base-dir . -I fx/modules --contract fx/contract.json fx/shaders";
+    auto full = runShaderc(args, dir.str());
+    ASSERT_EQ(full.exitCode, 0) << full.output;
+    EXPECT_NE(full.output.find("big.glsl"), std::string::npos) << "the full run warns about big.glsl";
+    ASSERT_GT(fs::file_size(dir.path() / "out.cpp"), 256u * 1024u);
+    const auto before = fs::last_write_time(dir.path() / "out.cpp");
+    auto noop = runShaderc(args, dir.str());
+    EXPECT_EQ(noop.exitCode, 0);
+    EXPECT_EQ(noop.output, "") << "the no-op resolved the catalogue";
+    EXPECT_EQ(fs::last_write_time(dir.path() / "out.cpp"), before);
+}
