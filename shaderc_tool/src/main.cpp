@@ -37,7 +37,7 @@ std::string readWholeFile(const std::string& path) {
 // The end of `path`, where the data file keeps its sources record: reading only that keeps
 // the no-op flat in the catalogue's size. The whole file when the record starts earlier.
 std::string readRecord(const std::string& path) {
-    constexpr std::streamoff kTail = 256 * 1024;
+    constexpr std::streamoff kTail = 64 * 1024;
     std::ifstream in(path, std::ios::binary | std::ios::ate);
     const std::streamoff size = in ? static_cast<std::streamoff>(in.tellg()) : 0;
     if (size <= kTail) return readWholeFile(path);

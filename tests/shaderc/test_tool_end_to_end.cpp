@@ -428,7 +428,7 @@ TEST(GoldenHeader, ModulesOutsideTheBaseDirAreNamedByTheirIncludeDir) {
     EXPECT_TRUE(outputs[0] == outputs[1]) << "the outputs depend on where the -I directory lies";
 }
 
-// The no-op reads only the end of a large data file (over the 256 KB it reads), and
+// The no-op reads only the end of a large data file (over the 64 KB it reads), and
 // still stops there: a full run prints the warning about the module without a leading
 // comment, the no-op prints nothing and rewrites nothing.
 TEST(ToolOutputs, NoOpOnALargeDataFileStopsBeforeResolving) {
