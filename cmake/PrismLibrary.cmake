@@ -78,16 +78,17 @@ function(prism_write_link_graph)
   file(WRITE ${PROJECT_BINARY_DIR}/prism_link_graph.txt "${lines}")
 endfunction()
 
-# Installs one of Prism's own generated catalogues (a prism_add_shaders() target) with its
-# header, so installed runtime libraries that use it can be linked by other projects.
+# Installs one of Prism's own generated catalogues (a prism_add_shaders() target: a static
+# library of the generated data) with its header, so installed runtime libraries that use it can be linked by other projects.
 function(prism_install_catalog target export_name)
   get_target_property(header ${target} PRISM_HEADER)
   get_target_property(gen_dirs ${target} INTERFACE_INCLUDE_DIRECTORIES)
   get_filename_component(header_dir ${header} DIRECTORY)
   string(REGEX REPLACE "^\\$<BUILD_INTERFACE:(.*)>$" "\\1" gen_dir "${gen_dirs}")
   file(RELATIVE_PATH header_rel ${gen_dir} ${header_dir})
-  target_include_directories(${target} INTERFACE $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  target_include_directories(${target} PUBLIC $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
   set_target_properties(${target} PROPERTIES EXPORT_NAME ${export_name})
-  install(TARGETS ${target} EXPORT PrismTargets)
+  install(TARGETS ${target} EXPORT PrismTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+                                               LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
   install(FILES ${header} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/${header_rel})
 endfunction()

@@ -1,5 +1,6 @@
-# prism_add_shaders(): runs prism-shaderc at build time and makes an INTERFACE library
-# target carrying the generated catalogue header.
+# prism_add_shaders(): runs prism-shaderc at build time and makes a static library
+# target holding the generated catalogue: a small header of declarations and a
+# generated .cpp of data beside it, which the library compiles (no extra CMake needed).
 #
 #   prism_add_shaders(<target>
 #     SOURCES <stage files...>          # .vert/.geom/.frag/.comp (or directories)
@@ -13,10 +14,12 @@
 #
 #   target_link_libraries(app PRIVATE <target>)   # then #include "<name.hpp>"
 #
-# The command's primary output is a stamp file; the header is a byproduct that the tool
-# rewrites only when its content changes, so touching a module re-runs the tool (and
-# only for the catalogues that read it, via the depfile) without recompiling code
-# whose header did not change. Works with Ninja and Unix Makefiles (CMake >= 3.20).
+# The command's primary output is a stamp file; the header and the data file are
+# byproducts that the tool rewrites only when their content changes, so touching a
+# module re-runs the tool (and only for the catalogues that read it, via the depfile)
+# and recompiles the one data file; code including the header recompiles only when a
+# shader or module is added, removed or renamed. Works with Ninja and Unix Makefiles
+# (CMake >= 3.20).
 include_guard(GLOBAL)
 if(CMAKE_VERSION VERSION_LESS 3.20)
   message(FATAL_ERROR "prism_add_shaders() needs CMake 3.20 or newer (DEPFILE with Makefile generators)")
@@ -29,6 +32,15 @@ endif()
 # the stamp as always dirty and re-runs prism-shaderc on every build.
 cmake_policy(PUSH)
 cmake_policy(VERSION 3.20...3.25)
+
+# The library type of generated catalogues: STATIC (default) or SHARED. A shared catalogue
+# exports one symbol, kCatalog, which a module edit never changes; with
+# CMAKE_LINK_DEPENDS_NO_SHARED ON, a module edit then relinks only the catalogue's own
+# library, not every program that uses it. Prism's own build does both (top-level
+# CMakeLists.txt; docs/shaderc.md, "The edit loop").
+if(NOT DEFINED PRISM_SHADERS_LIBRARY_TYPE)
+  set(PRISM_SHADERS_LIBRARY_TYPE STATIC)
+endif()
 
 function(prism_add_shaders target)
   cmake_parse_arguments(PARSE_ARGV 1 PAS "" "HEADER;NAMESPACE;GLSL_VERSION"
@@ -52,6 +64,11 @@ function(prism_add_shaders target)
 
   set(gen_dir ${CMAKE_CURRENT_BINARY_DIR}/${target}_generated)
   set(header ${gen_dir}/${PAS_HEADER})
+  string(REGEX REPLACE "\\.[^./]*$" "" data ${header})
+  set(data ${data}.cpp)  # written by prism-shaderc beside the header
+  if(data STREQUAL header)
+    message(FATAL_ERROR "prism_add_shaders(${target}): HEADER ${PAS_HEADER} must not end in .cpp")
+  endif()
   set(stamp ${CMAKE_CURRENT_BINARY_DIR}/${target}.stamp)
   set(depfile ${CMAKE_CURRENT_BINARY_DIR}/${target}.d)
 
@@ -90,17 +107,18 @@ function(prism_add_shaders target)
 
   add_custom_command(
     OUTPUT ${stamp}
-    BYPRODUCTS ${header}
+    BYPRODUCTS ${header} ${data}
     COMMAND Prism::shaderc ${args} ${sources}
     DEPENDS ${depends}
     DEPFILE ${depfile}
     COMMENT "prism-shaderc: generating ${PAS_HEADER}"
     VERBATIM)
   add_custom_target(${target}_generate DEPENDS ${stamp})
-  add_library(${target} INTERFACE)
+  add_library(${target} ${PRISM_SHADERS_LIBRARY_TYPE} ${data})
   add_dependencies(${target} ${target}_generate)
-  target_include_directories(${target} INTERFACE $<BUILD_INTERFACE:${gen_dir}>)
-  target_link_libraries(${target} INTERFACE Prism::catalog)
+  set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+  target_include_directories(${target} PUBLIC $<BUILD_INTERFACE:${gen_dir}>)
+  target_link_libraries(${target} PUBLIC Prism::catalog)
   set_target_properties(${target} PROPERTIES PRISM_HEADER ${header})
   if(COMMAND prism_set_layer)  # inside Prism's own build: catalogues are CPU-layer data
     prism_set_layer(${target} cpu)

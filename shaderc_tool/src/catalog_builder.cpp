@@ -10,6 +10,7 @@
 
 #include "include_resolver.hpp"
 #include "module_naming.hpp"
+#include "shown_path.hpp"
 #include "validator.hpp"
 #include "variants.hpp"
 
@@ -89,7 +90,7 @@ ModuleIndex indexModules(const Options& o, const std::vector<ShaderInput>& shade
         if (identifiers.contains(id)) {
             // Only possible for equal paths under two roots: name it by its path from --base-dir.
             const std::string first = id;
-            id = mangleModulePath(embeddedPath(files[i].canonical, o.baseDir));
+            id = mangleModulePath(shownPath(files[i].canonical, o));
             for (int n = 2; identifiers.contains(id); ++n) id = first + "__" + std::to_string(n);
             Diagnostic note = makeError(
                 files[i].path, 0, 0,
@@ -133,7 +134,7 @@ ModuleIndex indexModules(const Options& o, const std::vector<ShaderInput>& shade
                 sink.report(std::move(d));
             }
         }
-        CatalogModule m{identifier, embeddedPath(file.path, o.baseDir), scan.module.description, scan.module.text, {},
+        CatalogModule m{identifier, shownPath(file.path, o), scan.module.description, scan.module.text, {},
                         file.path};
         index.byCanonical[file.canonical] = static_cast<std::uint32_t>(index.modules.size());
         index.modules.push_back(std::move(m));
@@ -197,7 +198,7 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
                 ok = ok && r.ok;
                 CatalogStage cst{st.stage, r.stage.text, {}};
                 for (const auto& f : r.stage.files) {
-                    cst.files.push_back(embeddedPath(f.path, o.baseDir));
+                    cst.files.push_back(shownPath(f.path, o));
                     if (f.number > 0 && includedCanonical.insert(f.canonical).second)
                         includedPath[f.canonical] = f.path;
                 }
@@ -294,7 +295,7 @@ void validateCatalog(ResolvedCatalog& rc, const Contract& contract, int jobs, Di
 }
 
 std::string fingerprint(const ResolvedCatalog& rc) {
-    // FNV-1a over the resolved texts, paths and everything else the header prints.
+    // FNV-1a over the resolved texts, paths and everything else the generated files print.
     std::uint64_t h = 1469598103934665603ull;
     auto mix = [&](std::string_view s) {
         for (unsigned char c : s) {
@@ -307,8 +308,7 @@ std::string fingerprint(const ResolvedCatalog& rc) {
     const auto& d = rc.data;
     mix(PRISM_VERSION);
     mix(d.nameSpace);
-    mix(d.commandLine);
-    mix(d.versionDirective);  // the banner shows the command
+    mix(d.versionDirective);
     mix(d.sourcesBlock);      // so a header with a stale record is rewritten
     for (const auto& s : d.shaders) {
         mix(s.name);

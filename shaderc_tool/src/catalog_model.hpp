@@ -1,4 +1,4 @@
-// The in-memory catalogue the pipeline assembles and the header writer prints: every
+// The in-memory catalogue the pipeline assembles and the header and data writers print: every
 // shader with its validated variants, every module, and the binding contract.
 #pragma once
 
@@ -46,7 +46,6 @@ struct CatalogModule {
 
 struct CatalogData {
     std::string nameSpace;
-    std::string commandLine;
     std::string fingerprint;   // of every input; lets an unchanged run skip validation
     std::string sourcesBlock;  // closing comment: the files read and their fingerprint (source_fingerprint.hpp)
     std::string versionDirective;

@@ -1,8 +1,9 @@
 // prism-shaderc: the build-time GLSL toolchain. main() only sequences the stages:
 //   args -> no-op check on the recorded sources -> shader inputs -> contract
 //   -> include resolution + variants -> validation
-//   (glslang, interface and contract checks, reflection) -> header, GLSL, depfile.
+//   (glslang, interface and contract checks, reflection) -> header + data file, GLSL, depfile.
 // Exit status: 0 success, 1 shader errors, 2 usage or I/O errors.
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -33,16 +34,47 @@ std::string readWholeFile(const std::string& path) {
     return ss.str();
 }
 
-bool headerIsCurrent(const Options& o, const std::string& fingerprint) {
-    return !o.checkOnly && !o.output.empty() && o.emitGlslDir.empty() &&
-           fingerprintOfHeader(readWholeFile(o.output)) == fingerprint;
+// The end of `path`, where the data file keeps its sources record: reading only that keeps
+// the no-op flat in the catalogue's size. The whole file when the record starts earlier.
+std::string readRecord(const std::string& path) {
+    constexpr std::streamoff kTail = 64 * 1024;
+    std::ifstream in(path, std::ios::binary | std::ios::ate);
+    const std::streamoff size = in ? static_cast<std::streamoff>(in.tellg()) : 0;
+    if (size <= kTail) return readWholeFile(path);
+    in.seekg(size - kTail);
+    std::string tail(static_cast<std::size_t>(kTail), '\0');
+    in.read(tail.data(), kTail);
+    return tail.find("\n// ---- sources read") != std::string::npos ? tail : readWholeFile(path);
+}
+
+// The data file records the fingerprint and is written after the header, so a run killed
+// between the two leaves a stale record that the next run does not trust.
+// The header must be the one the data file records (not deleted, edited or left stale).
+bool outputsAreCurrent(const Options& o, const std::string& fingerprint) {
+    if (o.checkOnly || o.output.empty() || !o.emitGlslDir.empty()) return false;
+    const auto data = readWholeFile(dataPathFor(o.output));
+    return headerMatchesData(readWholeFile(o.output), data) && recordedFingerprint(data) == fingerprint;
+}
+
+void removeStaleOutputTemps(const Options& o) {  // nothing to write, but a killed run may have left temp files
+    removeStaleTemps(o.output);
+    removeStaleTemps(dataPathFor(o.output));
 }
 
 int writeOutputs(const Options& o, const ResolvedCatalog& rc) {
     std::string error;
-    if (!o.output.empty() && writeIfChanged(o.output, writeHeader(rc.data), error) == WriteOutcome::Failed) {
-        std::cerr << "prism-shaderc: error: " << error << "\n";
-        return kExitUsageOrIo;
+    const auto name = [](const std::string& path) { return std::filesystem::path(path).filename().string(); };
+    if (!o.output.empty()) {
+        const std::string data = dataPathFor(o.output);
+        const std::string header = writeHeader(rc.data, name(data));
+        const bool headerExisted = std::filesystem::exists(o.output);
+        if (writeIfChanged(o.output, header, error) == WriteOutcome::Failed ||
+            writeIfChanged(data, writeData(rc.data, name(o.output), header), error) == WriteOutcome::Failed) {
+            std::error_code ec;
+            if (!headerExisted) std::filesystem::remove(o.output, ec);  // nothing written on failure
+            std::cerr << "prism-shaderc: error: " << error << "\n";
+            return kExitUsageOrIo;
+        }
     }
     if (!o.emitGlslDir.empty() && !emitGlsl(o.emitGlslDir, rc.data, error)) {
         std::cerr << "prism-shaderc: error: " << error << "\n";
@@ -76,11 +108,17 @@ int main(int argc, char** argv) {
     DiskReader disk;
 
     const bool writesHeaderOnly = !o.checkOnly && !o.output.empty() && o.emitGlslDir.empty();
+    if (writesHeaderOnly && dataPathFor(o.output) == o.output) {
+        std::cerr << "prism-shaderc: error: -o " << o.output
+                  << ": the data file would overwrite the header; name the header .hpp or .h\n";
+        return kExitUsageOrIo;
+    }
     if (writesHeaderOnly)
-        if (auto files = unchangedSources(o, readWholeFile(o.output), disk)) {
-            removeStaleTemps(o.output);  // nothing to write, but a killed run may have left a temp file
-            return writeBuildSystemFiles(o, *files);
-        }
+        if (const auto record = readRecord(dataPathFor(o.output)); headerMatchesData(readWholeFile(o.output), record))
+            if (auto files = unchangedSources(o, record, disk)) {
+                removeStaleOutputTemps(o);
+                return writeBuildSystemFiles(o, *files);
+            }
 
     auto inputs = collectShaderInputs(o.inputs);
     sink.reportAll(inputs.diagnostics);
@@ -93,11 +131,10 @@ int main(int argc, char** argv) {
     }
 
     auto catalog = resolveCatalog(o, inputs.shaders, contract.contract, disk, sink);
-    catalog.data.commandLine = o.commandLine;
     catalog.data.sourcesBlock = sourcesBlock(recordSources(o, catalog.filesRead, disk));
     catalog.data.fingerprint = fingerprint(catalog);
-    if (sink.errorCount() == 0 && headerIsCurrent(o, catalog.data.fingerprint)) {
-        removeStaleTemps(o.output);  // nothing to write, but a killed run may have left a temp file
+    if (sink.errorCount() == 0 && outputsAreCurrent(o, catalog.data.fingerprint)) {
+        removeStaleOutputTemps(o);
         sink.print(std::cerr, o.errorFormat);
         return writeBuildSystemFiles(o, catalog.filesRead);
     }

@@ -7,6 +7,8 @@
 #include <set>
 #include <sstream>
 
+#include "shown_path.hpp"
+
 namespace prism::shaderc {
 namespace {
 
@@ -56,17 +58,24 @@ bool isStage(const fs::path& p) {
 std::string fingerprintOf(const Options& o, const std::vector<std::string>& embedded, const SourceReader& reader) {
     Fnv1a h;
     h.mix(PRISM_VERSION);
-    h.mix(o.commandLine);
+    // Only the options that change the generated files, with paths as embedded (never
+    // --depfile, --stamp, --emit-glsl, -j or the error format).
+    const auto shown = [&](const std::string& dir) { return recordedName(dir, o); };
+    h.mix("ns " + o.nameSpace);
+    h.mix("glsl " + std::to_string(o.glslVersion) + " " + o.glslProfile);
+    h.mix("out " + fs::path(o.output).filename().string());
+    for (const auto& [name, value] : o.defines) h.mix("-D " + name + "=" + value);
+    for (const auto& filter : o.variantFilters) h.mix("--variant " + filter);
+    for (const auto& contract : o.contracts) h.mix("--contract " + shown(contract));
+    for (const auto& dir : o.includeDirs) h.mix("-I " + shown(dir));
+    for (const auto& input : o.inputs) h.mix("in " + shown(input));
     for (const auto& file : embedded) {
         h.mix(file);
-        const auto text = reader.read(joinPath(o.baseDir, file));
+        const auto text = reader.read(recordedToPath(file, o));
         h.mix(text ? *text : std::string("\0missing", 8));
     }
     // Folders as embedded (relative to --base-dir), so that the same tree checked out at
-    // another absolute path gives the same fingerprint and a byte-identical header.
-    const auto shown = [&](const std::string& dir) {
-        return embeddedPath(fs::absolute(dir).lexically_normal().string(), o.baseDir);
-    };
+    // another absolute path gives the same fingerprint and byte-identical outputs.
     for (const auto& dir : o.includeDirs)
         for (const auto& name : listing(dir, isModule)) h.mix("-I " + shown(dir) + "/" + name);
     for (const auto& input : o.inputs)
@@ -78,7 +87,7 @@ std::string fingerprintOf(const Options& o, const std::vector<std::string>& embe
 
 SourcesRecord recordSources(const Options& o, const std::vector<std::string>& filesRead, const SourceReader& reader) {
     std::set<std::string> unique;
-    for (const auto& f : filesRead) unique.insert(embeddedPath(fs::absolute(f).lexically_normal().string(), o.baseDir));
+    for (const auto& f : filesRead) unique.insert(recordedName(f, o));
     SourcesRecord record;
     record.files.assign(unique.begin(), unique.end());
     record.fingerprint = fingerprintOf(o, record.files, reader);
@@ -104,7 +113,7 @@ std::optional<std::vector<std::string>> unchangedSources(const Options& o, const
     }
     if (recorded.files.empty() || fingerprintOf(o, recorded.files, reader) != recorded.fingerprint) return std::nullopt;
     std::vector<std::string> paths;
-    for (const auto& f : recorded.files) paths.push_back(joinPath(o.baseDir, f));
+    for (const auto& f : recorded.files) paths.push_back(recordedToPath(f, o));
     return paths;
 }
 

@@ -1,10 +1,11 @@
-// Stage 0 of prism-shaderc: the cheap no-op check. A header records, at its end, every
-// file the run that wrote it read (relative to --base-dir) and a fingerprint of the
-// tool version, the command line, those files' contents and the listings of the -I
-// directories and input folders. When all of that is unchanged, nothing the header
-// depends on changed, and the run ends before any resolution or glslang call.
+// Stage 0 of prism-shaderc: the cheap no-op check. The data file records, at its end,
+// every file the run that wrote it read (relative to --base-dir) and a fingerprint of
+// the tool version, the options that change the output (never --depfile, --stamp or
+// --emit-glsl), those files' contents and the listings of the -I directories and input
+// folders. When all of that is unchanged, nothing the outputs depend on changed, and
+// the run ends before any resolution or glslang call.
 //
-//   if (auto files = unchangedSources(options, headerText, reader)) ... // no-op; *files for the depfile
+//   if (auto files = unchangedSources(options, dataText, reader)) ... // no-op; *files for the depfile
 #pragma once
 
 #include <optional>
@@ -25,12 +26,12 @@ struct SourcesRecord {
 SourcesRecord recordSources(const Options& options, const std::vector<std::string>& filesRead,
                             const SourceReader& reader);
 
-// The header's closing comment block holding `record`.
+// The data file's closing comment block holding `record`.
 std::string sourcesBlock(const SourcesRecord& record);
 
-// The files (paths to read them by) when `headerText` records sources whose fingerprint
+// The files (paths to read them by) when `dataText` records sources whose fingerprint
 // is still the same; nullopt when anything differs or there is no record.
-std::optional<std::vector<std::string>> unchangedSources(const Options& options, const std::string& headerText,
+std::optional<std::vector<std::string>> unchangedSources(const Options& options, const std::string& dataText,
                                                          const SourceReader& reader);
 
 }  // namespace prism::shaderc

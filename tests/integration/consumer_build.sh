@@ -5,7 +5,9 @@
 #   - a rebuild with nothing changed does nothing;
 #   - touching tint.glsl (read only by lit_shaders) re-runs prism-shaderc for lit_shaders
 #     alone, rewrites no header (content unchanged) and recompiles nothing;
-#   - editing tint.glsl rewrites the lit header only, and the program is rebuilt;
+#   - editing tint.glsl rewrites the lit data file (lit_shaders.cpp) only, leaves both
+#     headers' mtimes alone, compiles exactly one translation unit (that data file, not
+#     main.cpp) and relinks the program;
 #   - an include error fails the build with a GCC-style diagnostic at tint.glsl and
 #     leaves the previous header intact; fixing it recovers;
 #   - a module added to lit's module dir re-runs lit_shaders only;
@@ -123,6 +125,7 @@ check_generator() {
   local tint=$src/modules/lit/tint.glsl
   local lit_stamp=$bld/lit_shaders.stamp plain_stamp=$bld/plain_shaders.stamp
   local lit_hdr=$bld/lit_shaders_generated/consumer/lit_shaders.hpp
+  local lit_data=$bld/lit_shaders_generated/consumer/lit_shaders.cpp
   local plain_hdr=$bld/plain_shaders_generated/consumer/plain_shaders.hpp
   local exe=$bld/prism_consumer
   echo "== $gen: add_subdirectory($SOURCE)"
@@ -137,7 +140,7 @@ check_generator() {
   fi
   pass "$gen: build the consumer ($((SECONDS - started)) s)"
   local f missing=0
-  for f in "$lit_stamp" "$plain_stamp" "$lit_hdr" "$plain_hdr" "$exe"; do
+  for f in "$lit_stamp" "$plain_stamp" "$lit_hdr" "$lit_data" "$plain_hdr" "$exe"; do
     [ -f "$f" ] || { fail "$gen: expected build output $f"; missing=1; }
   done
   [ $missing = 0 ] || return
@@ -177,15 +180,21 @@ check_generator() {
   fi
 
   # Edit tint.glsl's leading comment: it is the module's description, embedded in the
-  # lit header and printed by the program.
+  # lit data file and printed by the program. The header only declares, so it keeps its
+  # mtime, and the one translation unit compiled is lit's data file (issue 10, item 1).
   local token="integration-edit-$tag-$$"
   snapshot; tick
+  local a_litdata; a_litdata=$(mtime "$lit_data")
   sed -i "1i // Edited by the integration test: $token." "$tint"
   if ! step "$logs/6-edit.log" build "$bld"; then
     fail "$gen: rebuild after editing tint.glsl"; show_log "$logs/6-edit.log"; return
   fi
-  check "$gen: edit tint.glsl -> lit header rewritten" later_time "$(mtime "$lit_hdr")" "$a_lith"
-  check "$gen: edit tint.glsl -> lit header holds the edit" grep -q "$token" "$lit_hdr"
+  check "$gen: edit tint.glsl -> lit data file rewritten" later_time "$(mtime "$lit_data")" "$a_litdata"
+  check "$gen: edit tint.glsl -> lit data file holds the edit" grep -q "$token" "$lit_data"
+  check "$gen: edit tint.glsl -> lit header not rewritten (mtime unchanged)" same_time "$(mtime "$lit_hdr")" "$a_lith"
+  local compiled; compiled=$(grep -c "Building CXX object" "$logs/6-edit.log")
+  check "$gen: edit tint.glsl -> compiled units: $compiled (at most 1 per catalogue that reads it: 1)" test "$compiled" -eq 1
+  check "$gen: edit tint.glsl -> the unit compiled is lit_shaders.cpp" grep -q "Building CXX object.*lit_shaders\.cpp" "$logs/6-edit.log"
   check "$gen: edit tint.glsl -> plain_shaders stamp unchanged" same_time "$(mtime "$plain_stamp")" "$a_plain"
   check "$gen: edit tint.glsl -> plain header untouched" same_time "$(mtime "$plain_hdr")" "$a_plainh"
   check "$gen: edit tint.glsl -> prism_consumer rebuilt" later_time "$(mtime "$exe")" "$a_exe"

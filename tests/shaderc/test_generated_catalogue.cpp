@@ -1,12 +1,15 @@
 // The project's own generated catalogue (prism/shaders.hpp, built by the CMake step):
-// it compiles, its lookups are constexpr, and its embedded GLSL is driver-safe with
+// it compiles, its name lookups are constexpr, and its embedded GLSL is driver-safe with
 // line tables that name the modules.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <regex>
+#include <sstream>
 
 #include "prism/shaders.hpp"
+#include "tool_runner.hpp"
 
 namespace shaders = prism::shaders;
 using prism::catalog::joinChunks;
@@ -15,7 +18,7 @@ static_assert(shaders::kShaderCount >= 5);
 static_assert(shaders::shaderIdFromName("phong") == shaders::ShaderId::phong);
 static_assert(!shaders::shaderIdFromName("no_such_shader"));
 static_assert(shaders::name(shaders::ModuleId::lights) == "lights");
-static_assert(shaders::moduleInfo(shaders::ModuleId::lights).path == "modules/lights.glsl");
+static_assert(shaders::modulePath(shaders::ModuleId::lights) == "modules/lights.glsl");
 
 TEST(GeneratedCatalogue, EveryStageStartsWithVersionAndHasNoIncludeExtensions) {
     for (const auto& s : shaders::kCatalog.shaders)
@@ -115,4 +118,51 @@ TEST(GeneratedCatalogue, AttributeLocationsComeFromTheContract) {
     } catch (const std::out_of_range& e) {
         EXPECT_NE(std::string(e.what()).find("'a_normall'"), std::string::npos) << e.what();
     }
+}
+
+// The data file stores each text piece once and a stage as a list of pieces (issue 10,
+// item 2). Differential check: every stage the runtime assembles equals the flattened
+// text prism-shaderc writes with --emit-glsl, which never goes through the pool.
+TEST(GeneratedCatalogue, AssembledStagesEqualTheEmittedGlsl) {
+    prism::test::ScratchDir dir("assembled");
+    const std::string src = PRISM_SOURCE_DIR;
+    auto run = prism::test::runShaderc("--emit-glsl glsl --base-dir " + src + " -I " + src + "/modules --contract " +
+                                           src + "/modules/contract.json " + src + "/shader_sources",
+                                       dir.str());
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    int compared = 0;
+    for (const auto& s : shaders::kCatalog.shaders)
+        for (const auto& v : s.variants) {
+            std::string base = std::string(s.name);
+            if (s.variants.size() > 1 || !v.defines.empty()) {
+                std::string suffix;
+                for (const auto& d : v.defines)
+                    suffix += (suffix.empty() ? "" : "_") + std::string(d.name) + "-" + std::string(d.value);
+                base += "." + suffix;
+            }
+            for (const auto& st : v.stages) {
+                const auto file = dir.path() / "glsl" / (base + "." + std::string(prism::catalog::stageName(st.stage)));
+                ASSERT_TRUE(std::filesystem::exists(file)) << file;
+                EXPECT_TRUE(joinChunks(st.chunks) == prism::test::readFile(file)) << file;
+                ++compared;
+            }
+        }
+    EXPECT_GT(compared, 100);
+}
+
+// A module's own text, assembled from shared pieces, is its file with the #include
+// lines blanked (line numbers kept).
+TEST(GeneratedCatalogue, ModuleTextIsItsFileWithIncludesBlanked) {
+    const auto text = joinChunks(shaders::moduleInfo(shaders::ModuleId::lighting).chunks);
+    std::istringstream file(prism::test::readFile(std::string(PRISM_SOURCE_DIR) + "/modules/lighting.glsl"));
+    std::istringstream assembled(text);
+    int lines = 0;
+    for (std::string want, got; std::getline(file, want); ++lines) {
+        ASSERT_TRUE(std::getline(assembled, got)) << "line " << lines + 1;
+        if (want.rfind("#include", 0) == 0 || want.rfind("#pragma once", 0) == 0 || want.rfind("#version", 0) == 0)
+            EXPECT_EQ(got.find_first_not_of(" \t"), std::string::npos) << want;
+        else
+            EXPECT_EQ(got, want);
+    }
+    EXPECT_GT(lines, 10);
 }

@@ -1,16 +1,18 @@
 // Types of the shader catalogue that prism-shaderc generates: the contract between
 // the build-time tool and the runtime.
 //
-// A generated header (see docs/shaderc.md) defines, in the namespace it was given:
+// A generated header (see docs/shaderc.md) declares, in the namespace it was given:
 //
 //     enum class ShaderId : std::uint32_t { unicolor, phong, ..., };
 //     enum class ModuleId : std::uint32_t { lights, transforms, ..., };
-//     inline constexpr prism::catalog::Catalog kCatalog{...};
-//     constexpr const prism::catalog::Shader& shaderInfo(ShaderId);
-//     constexpr const prism::catalog::Module& moduleInfo(ModuleId);
+//     extern const prism::catalog::Catalog kCatalog;   // defined in the generated .cpp
+//     const prism::catalog::Shader& shaderInfo(ShaderId);
+//     const prism::catalog::Module& moduleInfo(ModuleId);
 //
-// Everything below is constexpr data pointing into string literals and arrays of
-// static storage, so a header costs nothing at start-up.
+// and its generated .cpp defines kCatalog: constant-initialised data pointing into string
+// literals and arrays of static storage, so it costs nothing at start-up. A stage's
+// `chunks` are pieces shared with other stages (each text is stored once); joinChunks()
+// assembles them.
 //
 // Usage (snippet: examples/snippets/catalog_shader_catalog.cpp):
 //
@@ -54,7 +56,8 @@ struct SourceFile {
 };
 
 // One stage of one variant: driver-safe GLSL (version on line 1, integer #line only)
-// split into chunks of at most 16 KB (MSVC's string-literal limit); concatenate them.
+// as pieces of at most 16 KB (MSVC's string-literal limit) that other stages share: the
+// #version/#define block, #line lines, module bodies, the stage's body. Concatenate them.
 struct StageSource {
     Stage stage;
     std::span<const std::string_view> chunks;

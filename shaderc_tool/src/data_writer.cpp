@@ -1,0 +1,307 @@
+// The generated data file (see header_writer.hpp): each distinct piece of GLSL text is
+// stored once, in a pool of raw string literals; a stage is a list of references to
+// pool pieces (its #version/#define block, #line lines, the module bodies it includes
+// and its own body), and so is a module's own text. The runtime concatenates a stage's
+// pieces (prism::catalog::joinChunks) once per program it builds.
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <sstream>
+
+#include "header_writer.hpp"
+
+namespace prism::shaderc {
+namespace {
+
+std::string_view stageEnum(catalog::Stage s) {
+    switch (s) {
+        case catalog::Stage::Vertex:
+            return "Vertex";
+        case catalog::Stage::Geometry:
+            return "Geometry";
+        case catalog::Stage::Fragment:
+            return "Fragment";
+        case catalog::Stage::Compute:
+            return "Compute";
+    }
+    return "Vertex";
+}
+
+// Distinct text pieces, each defined once as `constexpr std::string_view pN`, in order
+// of first use. Pieces over the 16 KB literal limit become several pool entries.
+class TextPool {
+  public:
+    explicit TextPool(std::ostringstream& out) : out_(out) {}
+
+    // Appends the references to `piece` to `refs`.
+    void reference(const std::string& piece, std::vector<std::string>& refs) {
+        if (piece.empty()) return;
+        auto it = names_.find(piece);
+        if (it == names_.end()) {
+            std::vector<std::string> parts;
+            for (const auto& chunk : splitIntoChunks(piece)) {
+                std::string name = "p" + std::to_string(count_++);
+                out_ << "constexpr std::string_view " << name << " = " << rawStringLiteral(chunk) << ";\n";
+                parts.push_back(name);
+            }
+            it = names_.emplace(piece, std::move(parts)).first;
+            if (piece.size() >= kMinSharedPiece) shareable_.push_back(piece);
+        }
+        refs.insert(refs.end(), it->second.begin(), it->second.end());
+    }
+
+    // Pieces long enough to look for inside module texts, longest first.
+    std::vector<std::string> shareablePieces() const {
+        auto pieces = shareable_;
+        std::stable_sort(pieces.begin(), pieces.end(),
+                         [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
+        return pieces;
+    }
+
+  private:
+    static constexpr std::size_t kMinSharedPiece = 32;
+    std::ostringstream& out_;
+    std::map<std::string, std::vector<std::string>> names_;
+    std::vector<std::string> shareable_;
+    std::size_t count_ = 0;
+};
+
+// Emits named constexpr arrays, sharing one array among identical contents (line tables
+// and reflection repeat across variants).
+class ArrayEmitter {
+  public:
+    explicit ArrayEmitter(std::ostringstream& out) : out_(out) {}
+
+    // Returns the expression to use for a span of `type` built from `items`.
+    std::string array(const std::string& type, const std::string& name, const std::vector<std::string>& items,
+                      bool oneLine = true) {
+        if (items.empty()) return "std::span<const " + type + ">{}";
+        std::string body;
+        for (const auto& i : items) body += (oneLine ? " " : "\n    ") + i + ",";
+        std::string key = type + '\0' + body;
+        if (auto it = seen_.find(key); it != seen_.end()) return it->second;
+        out_ << "constexpr " << type << " " << name << "[] = {" << body << (oneLine ? " " : "\n") << "};\n";
+        seen_.emplace(key, name);
+        return name;
+    }
+
+    // A span of string_views holding pool references, twelve a line.
+    std::string references(const std::string& name, const std::vector<std::string>& refs) {
+        if (refs.empty()) return "std::span<const std::string_view>{}";
+        std::string body;
+        for (std::size_t i = 0; i < refs.size(); ++i) body += (i % 12 == 0 ? "\n    " : " ") + refs[i] + ",";
+        std::string key = std::string("refs") + '\0' + body;
+        if (auto it = seen_.find(key); it != seen_.end()) return it->second;
+        out_ << "constexpr std::string_view " << name << "[] = {" << body << "\n};\n";
+        seen_.emplace(key, name);
+        return name;
+    }
+
+  private:
+    std::ostringstream& out_;
+    std::map<std::string, std::string> seen_;
+};
+
+// A flattened stage split into pieces that recur across stages and variants: each
+// `#line` directive on its own, and the text between directives (a stretch of one file).
+std::vector<std::string> stagePieces(const std::string& text) {
+    std::vector<std::string> pieces;
+    std::string body;
+    std::size_t pos = 0;
+    while (pos < text.size()) {
+        auto end = text.find('\n', pos);
+        end = end == std::string::npos ? text.size() : end + 1;
+        std::string_view line(text.data() + pos, end - pos);
+        if (line.starts_with("#line ")) {
+            if (!body.empty()) pieces.push_back(std::move(body));
+            body.clear();
+            pieces.emplace_back(line);
+        } else {
+            body.append(line);
+        }
+        pos = end;
+    }
+    if (!body.empty()) pieces.push_back(std::move(body));
+    return pieces;
+}
+
+// A module's own text as pool references: stretches equal to a piece already in the
+// pool (the same text inside flattened stages) are shared; the rest (its blanked
+// #include lines, mostly) become pieces of their own.
+std::vector<std::string> moduleRefs(const std::string& text, TextPool& pool,
+                                    const std::vector<std::string>& shareable) {
+    std::vector<std::string> refs;
+    std::string own;
+    std::size_t pos = 0;
+    while (pos < text.size()) {
+        const std::string* match = nullptr;
+        for (const auto& piece : shareable)
+            if (text.compare(pos, piece.size(), piece) == 0) {
+                match = &piece;
+                break;
+            }
+        if (match) {
+            pool.reference(own, refs);
+            own.clear();
+            pool.reference(*match, refs);
+            pos += match->size();
+            continue;
+        }
+        auto end = text.find('\n', pos);
+        end = end == std::string::npos ? text.size() : end + 1;
+        own.append(text, pos, end - pos);
+        pos = end;
+    }
+    pool.reference(own, refs);
+    return refs;
+}
+
+class DataWriter {
+  public:
+    explicit DataWriter(const CatalogData& c) : c_(c), pool_(poolOut_), arrays_(tablesOut_) {}
+
+    std::string write(const std::string& headerFileName) {
+        auto shaders = writeShaders();
+        auto modules = writeModules();
+        std::vector<std::string> attributes, uniforms;
+        for (const auto& a : c_.contract.attributes)
+            attributes.push_back("{" + quotedLiteral(a.name) + ", " + hexLiteral(glTypeOf(a.type)) + ", " +
+                                 std::to_string(a.location) + "}");
+        for (const auto& u : c_.contract.uniforms)
+            uniforms.push_back("{" + quotedLiteral(u.name) + ", " + hexLiteral(glTypeOf(u.type)) + ", " +
+                               std::to_string(std::max(1, u.array)) + "}");
+        tablesOut_ << "// ---- binding contract\n";
+        auto contractAttributes = arrays_.array("prism::catalog::Attribute", "contract_attributes", attributes, false);
+        auto contractUniforms = arrays_.array("prism::catalog::Uniform", "contract_uniforms", uniforms, false);
+
+        std::ostringstream out;
+        out << "// Generated by prism-shaderc " << PRISM_VERSION << ". Do not edit: edit the GLSL sources instead.\n"
+            << "// Inputs fingerprint: " << c_.fingerprint << "\n"
+            << "// The data of " << headerFileName << ": each text piece once (pool), stages as lists of pieces.\n"
+            << "// Layout and use: docs/shaderc.md; types: <prism/catalog/shader_catalog.hpp>.\n"
+            << "#include \"" << headerFileName << "\"\n\n"
+            << "#include <span>\n\n"
+            << "namespace " << c_.nameSpace << " {\nnamespace {\n\n"
+            << "// ---- text pool\n"
+            << poolOut_.str() << "\n"
+            << tablesOut_.str() << "\n}  // namespace\n\n"
+            << "constinit const prism::catalog::Catalog kCatalog{" << shaders << ", " << modules << ", "
+            << contractAttributes << ", " << contractUniforms << ", " << quotedLiteral(c_.versionDirective) << "};\n"
+            << "\n}  // namespace " << c_.nameSpace << "\n";
+        if (!c_.sourcesBlock.empty()) out << "\n" << c_.sourcesBlock;
+        return out.str();
+    }
+
+  private:
+    std::string writeVariant(const CatalogShader& s, std::size_t index) {
+        const auto& v = s.variants[index];
+        const std::string prefix = cppIdentifier(s.name) + "_v" + std::to_string(index);
+        tablesOut_ << "// ---- shader " << s.name << ", variant " << v.name << "\n";
+        std::vector<std::string> stages;
+        for (const auto& st : v.stages) {
+            const std::string stageId = prefix + "_" + std::string(catalog::stageName(st.stage));
+            std::vector<std::string> refs;
+            for (const auto& piece : stagePieces(st.text)) pool_.reference(piece, refs);
+            auto chunks = arrays_.references(stageId + "_chunks", refs);
+            std::vector<std::string> files;
+            for (std::size_t n = 0; n < st.files.size(); ++n)
+                files.push_back("{" + std::to_string(n) + ", " + quotedLiteral(st.files[n]) + "}");
+            auto fileArray = arrays_.array("prism::catalog::SourceFile", stageId + "_files", files);
+            stages.push_back("{prism::catalog::Stage::" + std::string(stageEnum(st.stage)) + ", " + chunks + ", " +
+                             fileArray + "}");
+        }
+        auto stageArray = arrays_.array("prism::catalog::StageSource", prefix + "_stages", stages, false);
+        std::vector<std::string> defines, attributes, uniforms;
+        for (const auto& [n, val] : v.defines) defines.push_back("{" + quotedLiteral(n) + ", " + quotedLiteral(val) + "}");
+        for (const auto& a : v.reflection.attributes)
+            attributes.push_back("{" + quotedLiteral(a.name) + ", " + hexLiteral(a.glType) + ", " +
+                                 std::to_string(a.location) + "}");
+        for (const auto& u : v.reflection.uniforms)
+            uniforms.push_back("{" + quotedLiteral(u.name) + ", " + hexLiteral(u.glType) + ", " +
+                               std::to_string(u.arraySize) + "}");
+        auto defineArray = arrays_.array("prism::catalog::Define", prefix + "_defines", defines);
+        auto attributeArray = arrays_.array("prism::catalog::Attribute", prefix + "_attributes", attributes);
+        auto uniformArray = arrays_.array("prism::catalog::Uniform", prefix + "_uniforms", uniforms);
+        return "{" + quotedLiteral(v.name) + ", " + defineArray + ", " + stageArray + ", " + attributeArray + ", " +
+               uniformArray + "}";
+    }
+
+    std::string writeShaders() {
+        std::vector<std::string> entries;
+        for (const auto& s : c_.shaders) {
+            const std::string id = cppIdentifier(s.name);
+            std::vector<std::string> variants;
+            for (std::size_t i = 0; i < s.variants.size(); ++i) variants.push_back(writeVariant(s, i));
+            std::vector<std::string> axes;
+            for (std::size_t a = 0; a < s.axes.size(); ++a) {
+                std::vector<std::string> values;
+                for (const auto& val : s.axes[a].values) values.push_back(quotedLiteral(val));
+                auto valueArray =
+                    arrays_.array("std::string_view", id + "_axis" + std::to_string(a) + "_values", values);
+                axes.push_back("{" + quotedLiteral(s.axes[a].name) + ", " + valueArray + "}");
+            }
+            std::vector<std::string> modules;
+            for (auto m : s.modules) modules.push_back(std::to_string(m));
+            auto axisArray = arrays_.array("prism::catalog::VariantAxis", id + "_axes", axes);
+            auto variantArray = arrays_.array("prism::catalog::Variant", id + "_variants", variants, false);
+            auto moduleArray = arrays_.array("std::uint32_t", id + "_modules", modules);
+            tablesOut_ << "\n";
+            entries.push_back("{" + quotedLiteral(s.name) + ", " + axisArray + ", " + variantArray + ", " +
+                              moduleArray + "}");
+        }
+        return arrays_.array("prism::catalog::Shader", "shaders", entries, false);
+    }
+
+    std::string writeModules() {
+        const auto shareable = pool_.shareablePieces();
+        std::vector<std::string> entries;
+        for (const auto& m : c_.modules) {
+            const std::string id = cppIdentifier(m.identifier);
+            tablesOut_ << "// ---- module " << m.identifier << " (" << m.path << ")\n";
+            auto refs = moduleRefs(m.text, pool_, shareable);
+            auto chunks = arrays_.references("module_" + id + "_chunks", refs);
+            std::vector<std::string> deps;
+            for (auto d : m.dependencies) deps.push_back(std::to_string(d));
+            auto depArray = arrays_.array("std::uint32_t", "module_" + id + "_dependencies", deps);
+            entries.push_back("{" + quotedLiteral(m.identifier) + ", " + quotedLiteral(m.path) + ", " +
+                              quotedLiteral(m.description) + ", " + chunks + ", " + depArray + "}");
+        }
+        tablesOut_ << "\n";
+        return arrays_.array("prism::catalog::Module", "modules", entries, false);
+    }
+
+    const CatalogData& c_;
+    std::ostringstream poolOut_, tablesOut_;
+    TextPool pool_;
+    ArrayEmitter arrays_;
+};
+
+constexpr std::string_view kHeaderHashLine = "// ---- header hash: ";
+
+std::string textHash(const std::string& text) {  // FNV-1a, 64 bits
+    std::uint64_t h = 1469598103934665603ull;
+    for (unsigned char c : text) {
+        h ^= c;
+        h *= 1099511628211ull;
+    }
+    char buf[17];
+    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+    return buf;
+}
+
+}  // namespace
+
+std::string writeData(const CatalogData& catalog, const std::string& headerFileName, const std::string& headerText) {
+    // The hash goes last but for the sources record, so the no-op's read of the tail sees it.
+    auto text = DataWriter(catalog).write(headerFileName);
+    const auto record = catalog.sourcesBlock.empty() ? text.size() : text.rfind(catalog.sourcesBlock);
+    return text.insert(record, std::string(kHeaderHashLine) + textHash(headerText) + "\n");
+}
+
+bool headerMatchesData(const std::string& headerText, const std::string& dataText) {
+    const auto pos = dataText.rfind(kHeaderHashLine);
+    if (pos == std::string::npos || headerText.empty()) return false;
+    return dataText.compare(pos + kHeaderHashLine.size(), 17, textHash(headerText) + "\n") == 0;
+}
+
+}  // namespace prism::shaderc

@@ -1,0 +1,23 @@
+// How file paths appear in the generated files and in their no-op record: never absolute
+// and never dependent on where the checkout or an installed module directory lies.
+//
+//   shownPath("/w/proj/shaders/a.vert", o)        -> "shaders/a.vert"   (inside --base-dir)
+//   shownPath("/opt/prism/modules/lights.glsl", o) -> "lights.glsl"     (under -I /opt/prism/modules)
+#pragma once
+
+#include <string>
+
+#include "args.hpp"
+
+namespace prism::shaderc {
+
+// Relative to --base-dir when `path` lies inside it, else relative to the first -I
+// directory that contains it, else relative to --base-dir (with "..").
+std::string shownPath(const std::string& path, const Options& options);
+
+// The no-op record's name for `path`: relative to --base-dir when inside it, else
+// "@I<k>/<path under the k-th -I directory>"; recordedToPath() reverses it.
+std::string recordedName(const std::string& path, const Options& options);
+std::string recordedToPath(const std::string& name, const Options& options);
+
+}  // namespace prism::shaderc
