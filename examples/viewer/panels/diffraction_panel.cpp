@@ -1,0 +1,51 @@
+// Diffraction panel (open scene with a "diffraction" object): per object its height field,
+// evaluation path, wavelength step and number of Taylor terms N (or the tolerance that
+// picks N); Stam diffraction thesis §3.
+#include <imgui.h>
+
+#include <string>
+
+#include "panels.hpp"
+
+namespace prism::viewer {
+
+void drawDiffractionPanel(ViewerState& state) {
+    if (!ImGui::CollapsingHeader("Diffraction")) return;
+    bool any = false;
+    if (state.scene.open)
+        for (std::size_t i = 0; i < state.scene.scene.objects.size(); ++i) {
+            auto& object = state.scene.scene.objects[i];
+            if (!object.diffraction) continue;
+            any = true;
+            auto& d = *object.diffraction;
+            ImGui::PushID(static_cast<int>(i));
+            ImGui::Text("object %zu: %s height field", i, d.heightFieldType.c_str());
+            bool changed = false;
+            const char paths[] = {'a', 'b', 'c'};
+            for (char p : paths) {
+                const std::string label = std::string("path ") + p;
+                if (ImGui::RadioButton(label.c_str(), d.path == p)) d.path = p, changed = true;
+                if (p != 'c') ImGui::SameLine();
+            }
+            changed |= ImGui::SliderInt("wavelength step (nm)", &d.wavelengthStepNm, 1, 20);
+            bool fixedTerms = d.terms.has_value();
+            if (ImGui::Checkbox("fixed N", &fixedTerms)) {
+                d.terms = fixedTerms ? std::optional<int>(8) : std::nullopt;
+                changed = true;
+            }
+            if (d.terms) {
+                changed |= ImGui::SliderInt("N (terms)", &*d.terms, 1, 40);
+            } else {
+                float tolerance = static_cast<float>(d.tolerance);
+                if (ImGui::SliderFloat("tolerance", &tolerance, 1e-5f, 1e-1f, "%.0e", ImGuiSliderFlags_Logarithmic)) {
+                    d.tolerance = tolerance;
+                    changed = true;
+                }
+            }
+            if (changed) state.scene.dirty = true;
+            ImGui::PopID();
+        }
+    if (!any) ImGui::TextDisabled("open a diffraction scene (diffraction_*.json)");
+}
+
+}  // namespace prism::viewer

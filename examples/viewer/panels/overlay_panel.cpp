@@ -1,0 +1,29 @@
+// The overlay at the top right of the view: frame time (GPU via GL_TIME_ELAPSED, or CPU),
+// the program in use with its variant, and the exact-sphere error toggle and readout.
+#include <imgui.h>
+
+#include "panels.hpp"
+
+namespace prism::viewer {
+
+void drawOverlay(ViewerState& state, float viewLeft) {
+    const ImGuiIO& io = ImGui::GetIO();
+    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - 8.0f, 8.0f), ImGuiCond_Always, ImVec2(1.0f, 0.0f));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(io.DisplaySize.x - viewLeft - 16.0f, 400.0f));
+    ImGui::SetNextWindowBgAlpha(0.6f);
+    ImGui::Begin("Overlay", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
+    const auto& r = state.readouts;
+    ImGui::Text("%.2f ms per frame (%s)", r.frameMs, r.gpuTimed ? "GPU, GL_TIME_ELAPSED" : "CPU");
+    ImGui::PushTextWrapPos(io.DisplaySize.x - viewLeft - 24.0f);
+    ImGui::TextWrapped("program: %s", r.program.c_str());
+    if (!state.scene.open) {
+        ImGui::Checkbox("error vs exact sphere", &state.readouts.referenceOn);
+        if (state.readouts.referenceOn) ImGui::TextWrapped("%s", r.referenceText.c_str());
+    }
+    ImGui::PopTextWrapPos();
+    ImGui::End();
+}
+
+}  // namespace prism::viewer

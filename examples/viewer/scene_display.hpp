@@ -1,0 +1,33 @@
+// The scene view: a scene (docs/scenes.md) drawn by prism::scene::SceneRenderer with
+// everything it asks for (rain, water, fog billboards, diffraction, blue-noise
+// sampling). A frame is rendered again only when a panel changed the scene or the window
+// size changed; otherwise the last image is blitted.
+//
+//     SceneDisplay display(catalog);
+//     display.draw(state.scene, 0, width, height);
+//     display.programLabel();  // "phong DIRECTIONAL_LIGHTS=1,... + rain (1 program)"
+#pragma once
+
+#include <string>
+
+#include "image_blit.hpp"
+#include "prism/scene/scene_renderer.hpp"
+#include "viewer_state.hpp"
+
+namespace prism::viewer {
+
+class SceneDisplay {
+  public:
+    explicit SceneDisplay(const catalog::Catalog& catalog) : renderer_(catalog) {}
+    // Renders when needed, then blits; returns true when a new frame was rendered.
+    bool draw(SceneView& view, int left, int width, int height);
+    std::string programLabel() const;
+    const scene::SceneRenderer& renderer() const { return renderer_; }
+
+  private:
+    scene::SceneRenderer renderer_;
+    ImageBlit blit_;
+    int width_ = 0, height_ = 0;
+};
+
+}  // namespace prism::viewer
