@@ -77,9 +77,12 @@ std::string ReferenceCheck::measure(render::ProgramCache& cache, const render::R
     const image::Image8 frame = fb.readImage8();
     gl::Framebuffer::bindDefault();
     const bench::Metrics m = bench::compareWithReference(frame, cache_->reference.image);
-    char text[160];
-    std::snprintf(text, sizeof text, "vs exact sphere: mean %.2f max %d (8-bit units, %dx%d)", m.union_.mean,
-                  m.union_.max, kReferenceSize, kReferenceSize);
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "vs exact sphere (%dx%d): mean %.2f max %d in 8-bit units; inside both: max %d; "
+                  "silhouette: %zu px differ",
+                  kReferenceSize, kReferenceSize, m.union_.mean, m.union_.max, m.interior.max,
+                  m.renderOnly + m.referenceOnly);
     return text;
 }
 

@@ -32,8 +32,6 @@ std::string SceneDisplay::programLabel() const {
     std::string label;
     for (const auto& v : renderer_.lastFrame().variants)
         if (seen.insert(v).second) label += (label.empty() ? "" : " + ") + v;
-    if (renderer_.rainProgramsBuilt() > 0)
-        label += " + rain (" + std::to_string(renderer_.rainProgramsBuilt()) + " programs)";
     return label.empty() ? "(no raster draw)" : label;
 }
 

@@ -5,7 +5,7 @@
 //
 //     SceneDisplay display(catalog);
 //     display.draw(state.scene, 0, width, height);
-//     display.programLabel();  // "phong DIRECTIONAL_LIGHTS=1,... + rain (1 program)"
+//     display.programLabel();  // "phong DIRECTIONAL_LIGHTS=1,... + rain gs-quads (41933 particles)"
 #pragma once
 
 #include <string>

@@ -17,6 +17,7 @@ ViewerScript ViewerScript::load(const std::string& path) {
     for (int line = 1; std::getline(in, text); ++line) {
         const auto hash = text.find('#');
         if (hash != std::string::npos) text.erase(hash);
+        text.erase(text.find_last_not_of(" \t\r") + 1);
         std::istringstream words(text);
         ScriptEvent e;
         e.line = line;
