@@ -261,8 +261,10 @@ int main(int argc, char** argv) {
             std::string program;
             if (state.scene.open) {
                 if (sceneDisplay.draw(state.scene, left, viewWidth, h)) {
-                    program = sceneDisplay.programLabel();
-                    std::cout << "viewer: scene " << state.scene.file << " rendered"
+                    program = sceneDisplay.programLabel(state.scene);
+                    state.readouts.sceneRenderMs = sceneDisplay.lastRenderMs();
+                    std::cout << "viewer: scene " << state.scene.file << " rendered in "
+                              << static_cast<long>(state.readouts.sceneRenderMs) << " ms"
                               << (state.scene.scene.rain ? ", rain " + state.scene.scene.rain->intensityClass : "")
                               << std::endl;
                 } else {

@@ -1,6 +1,7 @@
 // Render-on-change scene display (scene_display.hpp).
 #include "scene_display.hpp"
 
+#include <chrono>
 #include <set>
 
 #include "prism/gl/gl.hpp"
@@ -16,7 +17,9 @@ bool SceneDisplay::draw(SceneView& view, int left, int width, int height) {
     if (view.dirty || width != width_ || height != height_) {
         view.scene.width = width;
         view.scene.height = height;
+        const auto start = std::chrono::steady_clock::now();
         blit_.upload(renderer_.render(view.scene));
+        lastRenderMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         width_ = width;
         height_ = height;
         view.dirty = false;
@@ -27,12 +30,19 @@ bool SceneDisplay::draw(SceneView& view, int left, int width, int height) {
     return rendered;
 }
 
-std::string SceneDisplay::programLabel() const {
+std::string SceneDisplay::programLabel(const SceneView& view) const {
     std::set<std::string> seen;
     std::string label;
     for (const auto& v : renderer_.lastFrame().variants)
         if (seen.insert(v).second) label += (label.empty() ? "" : " + ") + v;
-    return label.empty() ? "(no raster draw)" : label;
+    if (const auto& st = view.scene.stochastic) {
+        static const char* const kSamplers[] = {"white", "blue-noise", "sorted", "stack"};
+        const auto kind = static_cast<std::size_t>(st->sampler);
+        label += (label.empty() ? "" : " + ") + std::string("soft shadows on the CPU: ") +
+                 (kind < 4 ? kSamplers[kind] : "?") + " sampler, " + std::to_string(st->spp) + " spp x " +
+                 std::to_string(st->frames) + " frames";
+    }
+    return label.empty() ? "(no draw)" : label;
 }
 
 }  // namespace prism::viewer

@@ -5,7 +5,7 @@
 //
 //     SceneDisplay display(catalog);
 //     display.draw(state.scene, 0, width, height);
-//     display.programLabel();  // "phong DIRECTIONAL_LIGHTS=1,... + rain gs-quads (41933 particles)"
+//     display.programLabel(state.scene);  // "phong DIRECTIONAL_LIGHTS=1,... + rain gs-quads (41933 particles)"
 #pragma once
 
 #include <string>
@@ -21,13 +21,15 @@ class SceneDisplay {
     explicit SceneDisplay(const catalog::Catalog& catalog) : renderer_(catalog) {}
     // Renders when needed, then blits; returns true when a new frame was rendered.
     bool draw(SceneView& view, int left, int width, int height);
-    std::string programLabel() const;
+    double lastRenderMs() const { return lastRenderMs_; }
+    std::string programLabel(const SceneView& view) const;
     const scene::SceneRenderer& renderer() const { return renderer_; }
 
   private:
     scene::SceneRenderer renderer_;
     ImageBlit blit_;
     int width_ = 0, height_ = 0;
+    double lastRenderMs_ = 0.0;
 };
 
 }  // namespace prism::viewer

@@ -39,6 +39,7 @@ struct Readouts {
     bool gpuTimed = false;     // frameMs from GL_TIME_ELAPSED (else CPU wall time)
     bool referenceOn = false;  // the exact-sphere toggle
     std::string referenceText; // "mean 1.23 max 17 (8-bit units)" or why there is none
+    double sceneRenderMs = 0.0;  // the last full render of the open scene (CPU wall time)
 };
 
 struct ViewerState {
@@ -47,6 +48,8 @@ struct ViewerState {
     Readouts readouts;
     bool meshDirty = true;
     bool panels = true;
+    std::string panelsView;       // the view the panels were last opened for
+    bool panelsRelayout = false;  // this frame: the view changed, open the panels that apply
 };
 
 }  // namespace prism::viewer

@@ -7,7 +7,7 @@
 namespace prism::viewer {
 
 void drawBlueNoisePanel(ViewerState& state) {
-    if (!ImGui::CollapsingHeader("Blue noise")) return;
+    if (!panelHeader("Blue noise", state, state.scene.open && state.scene.scene.stochastic.has_value())) return;
     if (!state.scene.open || !state.scene.scene.stochastic) {
         ImGui::TextDisabled("open a sampling scene (soft_shadows.json)");
         return;

@@ -23,7 +23,7 @@ bool isBoolean(const catalog::VariantAxis& axis) {
 }  // namespace
 
 void drawCataloguePanel(ViewerState& state, const catalog::Catalog& catalog, std::size_t programsCached) {
-    if (!ImGui::CollapsingHeader("Catalogue", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (!panelHeader("Catalogue", state, !state.scene.open)) return;
     auto& c = state.catalogue;
     if (state.scene.open) ImGui::TextDisabled("(close the scene to see the catalogue view)");
     if (ImGui::BeginCombo("shader", c.shader.c_str())) {

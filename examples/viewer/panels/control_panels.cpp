@@ -1,6 +1,8 @@
 // The controls column: one ImGui window at the left edge holding every panel.
 #include <imgui.h>
 
+#include <string>
+
 #include "panels.hpp"
 
 namespace prism::viewer {
@@ -10,8 +12,16 @@ std::string& panelError() {
     return error;
 }
 
+bool panelHeader(const char* label, const ViewerState& state, bool appliesToView) {
+    if (state.panelsRelayout) ImGui::SetNextItemOpen(appliesToView, ImGuiCond_Always);
+    return ImGui::CollapsingHeader(label);
+}
+
 void drawControlPanels(ViewerState& state, const catalog::Catalog& catalog,
                        const std::vector<std::string>& sceneFiles, std::size_t programsCached) {
+    const std::string view = state.scene.open ? state.scene.file : "catalogue";
+    state.panelsRelayout = view != state.panelsView;
+    state.panelsView = view;
     const ImGuiIO& io = ImGui::GetIO();
     ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(kPanelWidth, io.DisplaySize.y), ImGuiCond_Always);

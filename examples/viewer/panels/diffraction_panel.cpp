@@ -9,8 +9,17 @@
 
 namespace prism::viewer {
 
+namespace {
+bool hasDiffraction(const ViewerState& state) {
+    if (state.scene.open)
+        for (const auto& object : state.scene.scene.objects)
+            if (object.diffraction) return true;
+    return false;
+}
+}  // namespace
+
 void drawDiffractionPanel(ViewerState& state) {
-    if (!ImGui::CollapsingHeader("Diffraction")) return;
+    if (!panelHeader("Diffraction", state, hasDiffraction(state))) return;
     bool any = false;
     if (state.scene.open)
         for (std::size_t i = 0; i < state.scene.scene.objects.size(); ++i) {

@@ -26,7 +26,7 @@ glm::vec3 directionOf(float azimuth, float elevation) {
 }  // namespace
 
 void drawMaterialPanel(ViewerState& state) {
-    if (!ImGui::CollapsingHeader("Material and lights", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (!panelHeader("Material and lights", state, !state.scene.open)) return;
     auto& c = state.catalogue;
     ImGui::ColorEdit3("colour", &c.material.color.r, ImGuiColorEditFlags_NoInputs);
     ImGui::SliderFloat("shininess", &c.material.shininess, 1.0f, 256.0f, "%.0f", ImGuiSliderFlags_Logarithmic);

@@ -16,6 +16,7 @@ void drawOverlay(ViewerState& state, float viewLeft) {
                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
     const auto& r = state.readouts;
     ImGui::Text("%.2f ms per frame (%s)", r.frameMs, r.gpuTimed ? "GPU, GL_TIME_ELAPSED" : "CPU");
+    if (state.scene.open) ImGui::Text("last scene render: %.0f ms (on a parameter change)", r.sceneRenderMs);
     ImGui::PushTextWrapPos(io.DisplaySize.x - viewLeft - 24.0f);
     ImGui::TextWrapped("program: %s", r.program.c_str());
     if (!state.scene.open) {

@@ -29,6 +29,11 @@ void drawDiffractionPanel(ViewerState& state);
 void drawBlueNoisePanel(ViewerState& state);
 void drawOverlay(ViewerState& state, float viewLeft);
 
+// A collapsing header for one panel. Each time the view changes (a scene opened or
+// closed) the panels that apply to the new view open and the others close; in between the
+// user's clicks decide.
+bool panelHeader(const char* label, const ViewerState& state, bool appliesToView);
+
 // The message of the last action a panel could not apply (shown in red), or empty.
 std::string& panelError();
 

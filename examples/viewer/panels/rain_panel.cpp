@@ -10,7 +10,7 @@
 namespace prism::viewer {
 
 void drawRainPanel(ViewerState& state) {
-    if (!ImGui::CollapsingHeader("Rain")) return;
+    if (!panelHeader("Rain", state, state.scene.open && state.scene.scene.rain.has_value())) return;
     if (!state.scene.open) {
         ImGui::TextDisabled("open a scene (rain.json) to add rain");
         return;

@@ -8,7 +8,7 @@
 namespace prism::viewer {
 
 void drawWaterPanel(ViewerState& state) {
-    if (!ImGui::CollapsingHeader("Water")) return;
+    if (!panelHeader("Water", state, state.scene.open && state.scene.scene.water.has_value())) return;
     if (!state.scene.open || !state.scene.scene.water) {
         ImGui::TextDisabled("open a scene with water (water.json)");
         return;
