@@ -2,6 +2,8 @@
 // the program in use with its variant, and the exact-sphere error toggle and readout.
 #include <imgui.h>
 
+#include <algorithm>
+
 #include "panels.hpp"
 
 namespace prism::viewer {
@@ -15,9 +17,10 @@ void drawOverlay(ViewerState& state, float viewLeft) {
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
     const auto& r = state.readouts;
-    ImGui::Text("%.2f ms per frame (%s)", r.frameMs, r.gpuTimed ? "GPU, GL_TIME_ELAPSED" : "CPU");
+    ImGui::Text("%.2f ms per frame (%s)", r.frameMs, r.gpuTimed ? "GPU, GL_TIME_ELAPSED" : "CPU clock");
     if (state.scene.open) ImGui::Text("last scene render: %.0f ms (on a parameter change)", r.sceneRenderMs);
-    ImGui::PushTextWrapPos(io.DisplaySize.x - viewLeft - 24.0f);
+    const float wrap = std::min(380.0f, io.DisplaySize.x - viewLeft - 32.0f);  // keep the view visible
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + wrap);
     ImGui::TextWrapped("program: %s", r.program.c_str());
     if (!state.scene.open) {
         ImGui::Checkbox("error vs exact sphere", &state.readouts.referenceOn);
