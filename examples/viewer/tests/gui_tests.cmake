@@ -6,7 +6,7 @@ set(_work ${CMAKE_CURRENT_BINARY_DIR}/gui-tests)
 # No display needed: --help/--version print and exit 0, usage errors exit 2.
 add_test(NAME example.viewer_cli COMMAND bash ${_gui}/gui_test.sh cli $<TARGET_FILE:viewer> ${_work}/cli)
 add_test(NAME example.viewer_rejects_unknown_option
-         COMMAND bash -c "\"$0\" --frmaes 5 2>&1 | grep -q 'viewer: error: .*--frmaes' && test \${PIPESTATUS[0]} -eq 2"
+         COMMAND bash -c "out=\$(\"$0\" --frmaes 5 2>&1); test \$? -eq 2 && grep -q 'viewer: error: .*--frmaes' <<<\"\$out\""
                  $<TARGET_FILE:viewer>)
 set_tests_properties(example.viewer_cli example.viewer_rejects_unknown_option PROPERTIES LABELS gui TIMEOUT 60)
 if(PRISM_XVFB_RUN)
