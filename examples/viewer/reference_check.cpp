@@ -1,15 +1,15 @@
-// The exact-sphere error readout (reference_check.hpp), reusing the tradeoff bench's
-// reference renderer and metrics (bench/tradeoffs/sphere_reference.cpp, image_metrics.cpp).
+// The exact-sphere error readout (reference_check.hpp), with the reference renderer and
+// metrics of prism_reference that the tradeoff bench uses too.
 #include "reference_check.hpp"
 
 #include <array>
 #include <cstdio>
 #include <optional>
 
-#include "image_metrics.hpp"
 #include "prism/gl/framebuffer.hpp"
 #include "prism/gl/gl.hpp"
-#include "sphere_reference.hpp"
+#include "prism/reference/image_metrics.hpp"
+#include "prism/reference/sphere_reference.hpp"
 
 namespace prism::viewer {
 
@@ -44,7 +44,7 @@ std::string referenceUnavailable(const render::RenderJob& job, const std::string
 
 struct ReferenceCheck::Cache {
     std::string key;
-    bench::SphereReference reference;
+    reference::SphereReference reference;
     std::optional<gl::Framebuffer> target;
 };
 
@@ -59,13 +59,13 @@ std::string ReferenceCheck::measure(render::ProgramCache& cache, const render::R
     const bool withSpecular = !diffuseOnly(job.shader);
     const std::string key = keyOf(job, withSpecular);
     if (key != cache_->key) {
-        bench::SphereScene scene;
+        reference::SphereScene scene;
         scene.camera = job.camera;
         scene.lights = job.lights;
         scene.material = job.material;
         scene.width = scene.height = kReferenceSize;
         scene.background = glm::dvec3(job.background.r, job.background.g, job.background.b);
-        cache_->reference = bench::renderSphereReference(scene, withSpecular);
+        cache_->reference = reference::renderSphereReference(scene, withSpecular);
         cache_->key = key;
         ++referencesRendered_;
     }
@@ -76,7 +76,7 @@ std::string ReferenceCheck::measure(render::ProgramCache& cache, const render::R
     render::drawJob(cache, job, mesh);
     const image::Image8 frame = fb.readImage8();
     gl::Framebuffer::bindDefault();
-    const bench::Metrics m = bench::compareWithReference(frame, cache_->reference.image);
+    const reference::Metrics m = reference::compareWithReference(frame, cache_->reference.image);
     char text[200];
     std::snprintf(text, sizeof text,
                   "vs exact sphere (%dx%d): mean %.2f max %d in 8-bit units; inside both: max %d; "

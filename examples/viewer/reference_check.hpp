@@ -1,7 +1,7 @@
-// The live accuracy readout of the catalogue view: the exact sphere (bench/tradeoffs'
-// double-precision CPU reference, sphere_reference.hpp) rendered ONCE per camera, lights
-// and material, and the view's current shader, variant and mesh rendered off-screen at the
-// same size and compared with it (image_metrics.hpp): mean and max channel error in
+// The live accuracy readout of the catalogue view: the exact sphere (the double-precision
+// CPU reference of prism/reference/sphere_reference.hpp, as in docs/tradeoffs.md) rendered
+// ONCE per camera, lights and material, and the view's current shader, variant and mesh
+// rendered off-screen at the same size and compared with it (prism/reference/image_metrics.hpp): mean and max channel error in
 // 8-bit units over the pixels either covers. Only for the classic shaders (flat, smooth,
 // gouraud, phong without BLINN) on the sphere and icosphere meshes, which the reference models.
 //
