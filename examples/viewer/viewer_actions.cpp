@@ -128,6 +128,26 @@ void setParameter(ViewerState& state, const std::string& name, const std::string
         auto& s = openSceneOf(state, name);
         if (!s.rain) throw std::invalid_argument(name + " needs rain (set rain.enabled 1)");
         (name == "rain.wind.x" ? s.rain->wind.x : s.rain->wind.z) = static_cast<float>(number(name, value));
+    } else if (name == "rain.technique" || name == "rain.lodRings") {
+        auto& s = openSceneOf(state, name);
+        if (!s.rain) throw std::invalid_argument(name + " needs rain (set rain.enabled 1)");
+        if (name == "rain.lodRings") {
+            const double n = number(name, value);
+            if (n < 1 || n > 16) throw std::invalid_argument("rain.lodRings wants 1..16");
+            s.rain->lodRings = static_cast<int>(n);
+        } else {
+            const std::string t = value == "gs" ? "gs-quads" : value == "instanced" ? "instanced-quads"
+                                  : value == "points" ? "point-sprites" : value;
+            if (t != "gs-quads" && t != "instanced-quads" && t != "point-sprites")
+                throw std::invalid_argument("rain.technique wants gs-quads, instanced-quads or point-sprites");
+            s.rain->technique = t;
+        }
+    } else if (name == "water.backend") {
+        auto& s = openSceneOf(state, name);
+        if (!s.water) throw std::invalid_argument(name + " needs a scene with water");
+        if (value != "fastest" && value != "cpu" && value != "gpu")
+            throw std::invalid_argument("water.backend wants fastest, cpu or gpu");
+        s.water->backend = value;
     } else if (name == "water.running") {
         openSceneOf(state, name);
         state.scene.waterRunning = flag(name, value);

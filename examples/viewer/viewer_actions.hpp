@@ -23,8 +23,9 @@ void closeScene(ViewerState& state);                                  // back to
 // Named parameters, as --script's `set NAME VALUE` and the panels use them:
 //   mesh NAME, subdivision N, lights.directional N, material.shininess X, material.specular X,
 //   fog.density X (0: no fog), reference 0|1,
-//   rain.enabled 0|1, rain.intensity CLASS, rain.wind.x X, rain.wind.z X,
-//   water.running 0|1, water.seconds X, fog.billboards X (0: none),
+//   rain.enabled 0|1, rain.intensity CLASS, rain.wind.x X, rain.wind.z X, rain.lodRings N,
+//   rain.technique gs|instanced|points, water.running 0|1, water.seconds X,
+//   water.backend fastest|cpu|gpu, fog.billboards X (0: none),
 //   bluenoise.sampler white|bluenoise|sorted, bluenoise.spp N, bluenoise.frames N
 void setParameter(ViewerState& state, const std::string& name, const std::string& value);
 

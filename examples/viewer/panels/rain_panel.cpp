@@ -1,4 +1,5 @@
-// Rain panel (open scene): on or off, intensity class (RainCL Table 2), wind.
+// Rain panel (open scene): on or off, intensity class (RainCL Table 2), wind, level-of-detail
+// rings and their density falloff, and the streak technique (geometry shader, instanced, points).
 #include <imgui.h>
 
 #include <string>
@@ -30,7 +31,14 @@ void drawRainPanel(ViewerState& state) {
     if (s.rain->rateMillimetresPerHour) ImGui::Text("rate %.1f mm/h (from the scene)", *s.rain->rateMillimetresPerHour);
     bool changed = ImGui::SliderFloat("wind x (m/s)", &s.rain->wind.x, -15.0f, 15.0f);
     changed |= ImGui::SliderFloat("wind z (m/s)", &s.rain->wind.z, -15.0f, 15.0f);
+    changed |= ImGui::SliderInt("LOD rings", &s.rain->lodRings, 1, 16);
+    changed |= ImGui::SliderFloat("ring falloff", &s.rain->lodFalloff, 0.05f, 1.0f);
     if (changed) state.scene.dirty = true;
+    if (ImGui::BeginCombo("technique", s.rain->technique.c_str())) {
+        for (const char* t : {"gs-quads", "instanced-quads", "point-sprites"})
+            if (ImGui::Selectable(t, s.rain->technique == t)) setParameter(state, "rain.technique", t);
+        ImGui::EndCombo();
+    }
 }
 
 }  // namespace prism::viewer

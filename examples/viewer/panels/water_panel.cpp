@@ -1,5 +1,5 @@
 // Water panel (open scene with water): simulation running or paused, step, reset, and the
-// rain coupling (rain-fed from the scene's rain, or a fixed rate).
+// rain coupling (rain-fed from the scene's rain, or a fixed rate), and the CPU or GPU step.
 #include <imgui.h>
 
 #include "../viewer_actions.hpp"
@@ -42,7 +42,12 @@ void drawWaterPanel(ViewerState& state) {
         w.soilMillimetresPerHour = soil;
         view.dirty = true;
     }
-    ImGui::TextDisabled("step: CPU or compute, whichever measured faster");
+    if (ImGui::BeginCombo("step on", w.backend.c_str())) {
+        for (const char* b : {"fastest", "cpu", "gpu"})
+            if (ImGui::Selectable(b, w.backend == b)) setParameter(state, "water.backend", b);
+        ImGui::EndCombo();
+    }
+    if (w.backend == "fastest") ImGui::TextDisabled("fastest: CPU or compute, as measured on this renderer");
 }
 
 }  // namespace prism::viewer
