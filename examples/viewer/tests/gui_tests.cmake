@@ -1,8 +1,15 @@
-# The viewer's gui tier (CTest label `gui`): the real window under xvfb-run on Mesa
+# The viewer's tests. Its gui tier (CTest label `gui`): the real window under xvfb-run on Mesa
 # llvmpipe. scripts/run-tests.sh runs every label, this one included.
 find_program(PRISM_XVFB_RUN xvfb-run)
 set(_gui ${CMAKE_CURRENT_SOURCE_DIR}/tests)
 set(_work ${CMAKE_CURRENT_BINARY_DIR}/gui-tests)
+# The catalogue panel's variant logic (label unit: no window, no context).
+find_package(GTest REQUIRED)
+add_executable(viewer_variant_choice_tests ${_gui}/test_variant_choice.cpp ${CMAKE_CURRENT_SOURCE_DIR}/variant_choice.cpp)
+target_include_directories(viewer_variant_choice_tests PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
+target_link_libraries(viewer_variant_choice_tests PRIVATE prism_render GTest::gtest_main)
+add_test(NAME example.viewer_variant_choice COMMAND viewer_variant_choice_tests)
+set_tests_properties(example.viewer_variant_choice PROPERTIES LABELS unit)
 # No display needed: --help/--version print and exit 0, usage errors exit 2.
 add_test(NAME example.viewer_cli COMMAND bash ${_gui}/gui_test.sh cli $<TARGET_FILE:viewer> ${_work}/cli)
 add_test(NAME example.viewer_rejects_unknown_option
