@@ -29,6 +29,7 @@
 #include "prism/render/shader_watcher.hpp"
 #include "prism/shaders.hpp"
 #include "reference_check.hpp"
+#include "sampling_reference.hpp"
 #include "scene_display.hpp"
 #include "viewer_actions.hpp"
 #include "viewer_options.hpp"
@@ -196,6 +197,7 @@ int main(int argc, char** argv) {
         CatalogueRenderer catalogueView(cache, kCatalog);
         SceneDisplay sceneDisplay(kCatalog);
         ReferenceCheck reference;
+        SamplingReference samplingReference;
         FrameTimer timer;
         const std::vector<std::string> sceneFiles = exampleScenes();
         std::unique_ptr<prism::render::ShaderWatcher> watcher;
@@ -210,7 +212,7 @@ int main(int argc, char** argv) {
         std::cout << "viewer: frame time from " << (timer.gpuTimed() ? "GL_TIME_ELAPSED queries" : "the CPU clock")
                   << std::endl;
         bool screenshotWritten = false;
-        std::string referenceSignature;
+        std::string referenceSignature, lastViewKey = "(none)";
         int w = 0, h = 0;
         auto writeScreenshot = [&]() {
             prism::image::writePng(args->screenshot, readBackBuffer(w, h));
@@ -259,8 +261,9 @@ int main(int argc, char** argv) {
             glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
             timer.begin();
             std::string program;
+            bool sceneRendered = false;
             if (state.scene.open) {
-                if (sceneDisplay.draw(state.scene, left, viewWidth, h)) {
+                if ((sceneRendered = sceneDisplay.draw(state.scene, left, viewWidth, h))) {
                     program = sceneDisplay.programLabel(state.scene);
                     state.readouts.sceneRenderMs = sceneDisplay.lastRenderMs();
                     std::cout << "viewer: scene " << state.scene.file << " rendered in "
@@ -276,9 +279,23 @@ int main(int argc, char** argv) {
             timer.end();
             state.readouts.frameMs = timer.lastMs();
             state.readouts.gpuTimed = timer.gpuTimed();
-            if (program != state.readouts.program) std::cout << "viewer: program " << program << std::endl;
+            const bool programChanged = program != state.readouts.program;
+            if (programChanged) std::cout << "viewer: program " << program << std::endl;
             state.readouts.program = program;
+            const std::string viewKey = state.scene.open ? state.scene.file : std::string();
+            if (viewKey != lastViewKey) {  // a readout belongs to the view it was measured in
+                state.readouts.referenceText.clear();
+                referenceSignature.clear();
+                lastViewKey = viewKey;
+            }
 
+            const bool sampling = state.scene.open && state.scene.scene.stochastic.has_value();
+            if (state.readouts.referenceOn && sampling && (programChanged || sceneRendered || state.readouts.referenceText.empty())) {
+                const std::string text = samplingReference.measure(*state.scene.scene.stochastic);
+                if (text != state.readouts.referenceText) std::cout << "viewer: reference " << text << std::endl;
+                state.readouts.referenceText = text;
+            }
+            if (!state.readouts.referenceOn) state.readouts.referenceText.clear();
             if (state.readouts.referenceOn && !state.scene.open) {
                 const auto job = catalogueView.job(state, viewWidth, h);
                 std::string why = referenceUnavailable(job, state.catalogue.mesh, job.variant);
@@ -319,7 +336,8 @@ int main(int argc, char** argv) {
         if (!args->screenshot.empty() && !screenshotWritten) writeScreenshot();  // stopped between two frames
         std::cout << "viewer: last frame " << state.readouts.frameMs << " ms ("
                   << (state.readouts.gpuTimed ? "GPU" : "CPU") << "), " << cache.size() << " programs cached, "
-                  << reference.referencesRendered() << " exact-sphere references rendered\n";
+                  << reference.referencesRendered() << " exact-sphere references rendered, "
+                  << samplingReference.referencesRendered() << " sampling references rendered\n";
     } catch (const std::exception& e) {
         std::cerr << "viewer: error: " << e.what() << "\n";
         return 1;

@@ -1,5 +1,6 @@
 // The overlay at the top right of the view: frame time (GPU via GL_TIME_ELAPSED, or CPU),
-// the program in use with its variant, and the exact-sphere error toggle and readout.
+// the program in use with its variant, and the error toggle and readout (exact sphere for
+// the catalogue view, the high-sample reference for a sampling scene).
 #include <imgui.h>
 
 #include <algorithm>
@@ -22,8 +23,10 @@ void drawOverlay(ViewerState& state, float viewLeft) {
     const float wrap = std::min(380.0f, io.DisplaySize.x - viewLeft - 32.0f);  // keep the view visible
     ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + wrap);
     ImGui::TextWrapped("program: %s", r.program.c_str());
-    if (!state.scene.open) {
-        ImGui::Checkbox("error vs exact sphere", &state.readouts.referenceOn);
+    const bool sampling = state.scene.open && state.scene.scene.stochastic.has_value();
+    if (!state.scene.open || sampling) {
+        ImGui::Checkbox(sampling ? "error vs 1024-sample reference" : "error vs exact sphere",
+                        &state.readouts.referenceOn);
         if (state.readouts.referenceOn) ImGui::TextWrapped("%s", r.referenceText.c_str());
     }
     ImGui::PopTextWrapPos();

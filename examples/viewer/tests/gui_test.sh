@@ -6,6 +6,7 @@
 #   gui_test.sh panels VIEWER WORK         the controls column, its panels and the overlay
 #   gui_test.sh script VIEWER WORK         switch_systems.script: shader, scene, rain intensity
 #   gui_test.sh reference VIEWER WORK      the exact-sphere readout: phong beats flat
+#   gui_test.sh sampling VIEWER WORK       the soft-shadow readout: blue noise and spp pay off
 set -u
 mode=$1 viewer=$2 work=${3:-}
 here=$(cd "$(dirname "$0")" && pwd)
@@ -64,5 +65,21 @@ reference)
         "$phong" "$flat" || fail "phong's mean error $phong is not below 0.5 and a third of flat's $flat"
     grep -q 'no reference for mesh torus' "$work/reference.log" || fail "the torus got an exact-sphere readout"
     echo "gui_test reference: OK (mean error phong $phong, flat $flat 8-bit units)" ;;
+sampling)
+    run sampling --script "$here/sampling.script" || fail "viewer exited $?"
+    log=$work/sampling.log
+    rms() { awk -v n="script line $1:" 'index($0, n) { on = 1; next } /script line/ { on = 0 } on' "$log" | grep -o 'RMS [0-9.]*, blurred RMS [0-9.]*' | head -1; }
+    white=$(rms 5) blue=$(rms 7) blue16=$(rms 9)  # the lines of sampling.script
+    [ -n "$white" ] && [ -n "$blue" ] && [ -n "$blue16" ] || fail "missing readouts: '$white' '$blue' '$blue16'"
+    python3 - "$white" "$blue" "$blue16" <<'PY' || fail "the readouts do not show the samplers' trade"
+import re, sys
+white, blue, blue16 = ([float(v) for v in re.findall(r"[0-9]+[.][0-9]+", a)] for a in sys.argv[1:4])
+print(f"white 1 spp {white}, blue noise 1 spp {blue}, blue noise 16 spp {blue16} (RMS, blurred RMS)")
+# Blue noise moves the error to high frequencies: blurred, it is well below white noise's.
+# 16 spp cut the plain RMS by about 4 (sqrt 16) or more.
+sys.exit(0 if blue[1] * 1.5 < white[1] and blue16[0] * 4 < blue[0] else 1)
+PY
+    grep -q ', 1 sampling references rendered' "$log" || fail "the reference was not rendered exactly once"
+    echo "gui_test sampling: OK" ;;
 *) fail "unknown mode" ;;
 esac

@@ -18,12 +18,12 @@ add_test(NAME example.viewer_rejects_unknown_option
 set_tests_properties(example.viewer_cli example.viewer_rejects_unknown_option PROPERTIES LABELS gui TIMEOUT 60)
 if(PRISM_XVFB_RUN)
   add_test(NAME example.viewer_smoke COMMAND ${PRISM_XVFB_RUN} -a $<TARGET_FILE:viewer> --frames 5)
-  foreach(check lit panels script reference)
+  foreach(check lit panels script reference sampling)
     add_test(NAME example.viewer_${check}
              COMMAND bash ${_gui}/gui_test.sh ${check} $<TARGET_FILE:viewer> ${_work}/${check})
   endforeach()
   set_tests_properties(example.viewer_smoke example.viewer_lit example.viewer_panels example.viewer_script
-                       example.viewer_reference PROPERTIES LABELS gui TIMEOUT 120)
+                       example.viewer_reference example.viewer_sampling PROPERTIES LABELS gui TIMEOUT 120)
 endif()
 find_program(PRISM_XVFB Xvfb)
 if(PRISM_XVFB)
