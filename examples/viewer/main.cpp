@@ -263,7 +263,14 @@ int main(int argc, char** argv) {
             std::string program;
             bool sceneRendered = false;
             if (state.scene.open) {
-                if ((sceneRendered = sceneDisplay.draw(state.scene, left, viewWidth, h))) {
+                const std::string errorBefore = sceneDisplay.error();
+                sceneRendered = sceneDisplay.draw(state.scene, left, viewWidth, h);
+                if (sceneDisplay.error() != errorBefore) {
+                    if (!sceneDisplay.error().empty())
+                        std::cerr << "viewer: error: " << state.scene.file << ": " << sceneDisplay.error() << std::endl;
+                    panelError() = sceneDisplay.error();
+                }
+                if (sceneRendered) {
                     program = sceneDisplay.programLabel(state.scene);
                     state.readouts.sceneRenderMs = sceneDisplay.lastRenderMs();
                     std::cout << "viewer: scene " << state.scene.file << " rendered in "

@@ -2,6 +2,7 @@
 #include "scene_display.hpp"
 
 #include <chrono>
+#include <exception>
 #include <set>
 
 #include "prism/gl/gl.hpp"
@@ -17,13 +18,19 @@ bool SceneDisplay::draw(SceneView& view, int left, int width, int height) {
     if (view.dirty || width != width_ || height != height_) {
         view.scene.width = width;
         view.scene.height = height;
-        const auto start = std::chrono::steady_clock::now();
-        blit_.upload(renderer_.render(view.scene));
-        lastRenderMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         width_ = width;
         height_ = height;
         view.dirty = false;
-        rendered = true;
+        const auto start = std::chrono::steady_clock::now();
+        try {
+            blit_.upload(renderer_.render(view.scene));
+            error_.clear();
+            rendered = true;
+        } catch (const std::exception& e) {  // settings the systems reject: keep the last frame
+            error_ = e.what();
+            view.waterRunning = false;
+        }
+        lastRenderMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     blit_.draw(left, width, height);

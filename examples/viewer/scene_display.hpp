@@ -22,6 +22,8 @@ class SceneDisplay {
     // Renders when needed, then blits; returns true when a new frame was rendered.
     bool draw(SceneView& view, int left, int width, int height);
     double lastRenderMs() const { return lastRenderMs_; }
+    // Why the last render failed (the previous frame stays on screen), or empty.
+    const std::string& error() const { return error_; }
     std::string programLabel(const SceneView& view) const;
     const scene::SceneRenderer& renderer() const { return renderer_; }
 
@@ -30,6 +32,7 @@ class SceneDisplay {
     ImageBlit blit_;
     int width_ = 0, height_ = 0;
     double lastRenderMs_ = 0.0;
+    std::string error_;
 };
 
 }  // namespace prism::viewer

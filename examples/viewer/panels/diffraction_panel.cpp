@@ -36,7 +36,15 @@ void drawDiffractionPanel(ViewerState& state) {
                 if (ImGui::RadioButton(label.c_str(), d.path == p)) d.path = p, changed = true;
                 if (p != 'c') ImGui::SameLine();
             }
-            changed |= ImGui::SliderInt("wavelength step (nm)", &d.wavelengthStepNm, 1, 20);
+            const std::string step = std::to_string(d.wavelengthStepNm) + " nm";
+            if (ImGui::BeginCombo("wavelength step", step.c_str())) {
+                for (int s : {1, 2, 5, 10, 20})  // the steps the colour tables support (colour.hpp)
+                    if (ImGui::Selectable((std::to_string(s) + " nm").c_str(), s == d.wavelengthStepNm)) {
+                        d.wavelengthStepNm = s;
+                        changed = true;
+                    }
+                ImGui::EndCombo();
+            }
             bool fixedTerms = d.terms.has_value();
             if (ImGui::Checkbox("fixed N", &fixedTerms)) {
                 d.terms = fixedTerms ? std::optional<int>(8) : std::nullopt;

@@ -53,6 +53,8 @@ script)
     drizzle=$(grep -o 'rain gs-quads ([0-9]* particles)' "$log" | sed -n 2p | tr -dc 0-9)
     [ -n "$heavy" ] && [ -n "$drizzle" ] || fail "the rain scene's program line never named two rain draws"
     [ "$drizzle" -lt "$heavy" ] || fail "drizzle draws $drizzle particles, heavy rain $heavy"
+    grep -q '^viewer: error: .*rain: wind strength must be a finite number' "$log" ||
+        fail "the rejected wind was not reported"
     sed -n '/script line [0-9]*: scene none/,$p' "$log" | grep -q '^viewer: program phong BLINN=1,' ||
         fail "closing the scene did not bring back the catalogue program"
     echo "gui_test script: OK (heavy rain $heavy particles, drizzle $drizzle)" ;;
