@@ -23,7 +23,9 @@ if(PRISM_XVFB_RUN)
              COMMAND bash ${_gui}/gui_test.sh ${check} $<TARGET_FILE:viewer> ${_work}/${check})
   endforeach()
   set_tests_properties(example.viewer_smoke example.viewer_lit example.viewer_panels example.viewer_script
-                       example.viewer_reference example.viewer_sampling PROPERTIES LABELS gui TIMEOUT 120)
+                       example.viewer_reference example.viewer_sampling PROPERTIES LABELS gui TIMEOUT 120
+                       # xvfb-run -a picks a free display by its lock file: two starting at once can collide.
+                       RESOURCE_LOCK xvfb_run)
 endif()
 find_program(PRISM_XVFB Xvfb)
 if(PRISM_XVFB)
