@@ -1,6 +1,6 @@
 // Diffraction panel (open scene with a "diffraction" object): per object its height field,
-// evaluation path, wavelength step and number of Taylor terms N (or the tolerance that
-// picks N); Stam diffraction thesis §3.
+// evaluation path, wavelength step, table size and number of Taylor terms N (or the
+// tolerance that picks N); Stam diffraction thesis §3.
 #include <imgui.h>
 
 #include <string>
@@ -10,16 +10,15 @@
 namespace prism::viewer {
 
 namespace {
-bool hasDiffraction(const ViewerState& state) {
-    if (state.scene.open)
-        for (const auto& object : state.scene.scene.objects)
-            if (object.diffraction) return true;
+bool hasDiffraction(const scene::Scene& scene) {
+    for (const auto& object : scene.objects)
+        if (object.diffraction) return true;
     return false;
 }
 }  // namespace
 
 void drawDiffractionPanel(ViewerState& state) {
-    if (!panelHeader("Diffraction", state, hasDiffraction(state))) return;
+    if (!panelHeader("Diffraction", state, state.scene.open && hasDiffraction(state.scene.scene))) return;
     bool any = false;
     if (state.scene.open)
         for (std::size_t i = 0; i < state.scene.scene.objects.size(); ++i) {
@@ -41,6 +40,15 @@ void drawDiffractionPanel(ViewerState& state) {
                 for (int s : {1, 2, 5, 10, 20})  // the steps the colour tables support (colour.hpp)
                     if (ImGui::Selectable((std::to_string(s) + " nm").c_str(), s == d.wavelengthStepNm)) {
                         d.wavelengthStepNm = s;
+                        changed = true;
+                    }
+                ImGui::EndCombo();
+            }
+            const std::string table = std::to_string(d.tableSize) + "^2";
+            if (ImGui::BeginCombo("tables", table.c_str())) {
+                for (int s : {128, 256, 512, 1024})
+                    if (ImGui::Selectable((std::to_string(s) + "^2").c_str(), s == d.tableSize)) {
+                        d.tableSize = s;
                         changed = true;
                     }
                 ImGui::EndCombo();
