@@ -87,17 +87,23 @@ void setParameter(ViewerState& state, const std::string& name, const std::string
         c.subdivision = static_cast<unsigned>(n);
         state.meshDirty = true;
     } else if (name == "lights.directional") {
-        const auto n = static_cast<std::size_t>(number(name, value));
+        const double count = number(name, value);
+        if (count < 0 || count > 8) throw std::invalid_argument("lights.directional wants 0..8");
+        const auto n = static_cast<std::size_t>(count);
+        auto& directional = state.scene.open ? openSceneOf(state, name).lights.directional : c.lights.directional;
         const auto defaults = render::defaultLights().directional;
-        while (c.lights.directional.size() > n) c.lights.directional.pop_back();
-        while (c.lights.directional.size() < n)
-            c.lights.directional.push_back(c.lights.directional.size() < defaults.size()
-                                               ? defaults[c.lights.directional.size()]
-                                               : view::DirectionalLight{});
-    } else if (name == "material.shininess") {
-        c.material.shininess = static_cast<float>(number(name, value));
-    } else if (name == "material.specular") {
-        c.material.specular = static_cast<float>(number(name, value));
+        while (directional.size() > n) directional.pop_back();
+        while (directional.size() < n)
+            directional.push_back(directional.size() < defaults.size() ? defaults[directional.size()]
+                                                                       : view::DirectionalLight{});
+    } else if (name == "material.shininess" || name == "material.specular") {
+        view::Material* m = &c.material;
+        if (state.scene.open) {
+            auto& objects = openSceneOf(state, name).objects;
+            if (objects.empty()) throw std::invalid_argument(name + " needs a scene object");
+            m = &objects.front().material;
+        }
+        (name == "material.shininess" ? m->shininess : m->specular) = static_cast<float>(number(name, value));
     } else if (name == "fog.density") {
         const double d = number(name, value);
         if (d <= 0) {

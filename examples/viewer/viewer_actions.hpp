@@ -21,7 +21,8 @@ void openScene(ViewerState& state, const std::string& path);          // throws 
 void closeScene(ViewerState& state);                                  // back to the catalogue view
 
 // Named parameters, as --script's `set NAME VALUE` and the panels use them:
-//   mesh NAME, subdivision N, lights.directional N, material.shininess X, material.specular X,
+//   mesh NAME, subdivision N, lights.directional N, material.shininess X, material.specular X
+//   (of the open scene's lights and first object when a scene is open),
 //   fog.density X (0: no fog), reference 0|1,
 //   rain.enabled 0|1, rain.intensity CLASS, rain.wind.x X, rain.wind.z X, rain.lodRings N,
 //   rain.technique gs|instanced|points, water.running 0|1, water.seconds X,
