@@ -31,6 +31,7 @@
 #include "reference_check.hpp"
 #include "sampling_reference.hpp"
 #include "scene_display.hpp"
+#include "variant_choice.hpp"
 #include "viewer_actions.hpp"
 #include "viewer_options.hpp"
 #include "viewer_script.hpp"
@@ -132,6 +133,12 @@ std::string applyEvent(ViewerState& state, GLFWwindow* window, const ViewerScrip
     else if (e.command == "variant") {
         const auto eq = e.argument.find('=');
         if (eq == std::string::npos) throw std::invalid_argument("variant wants AXIS=VALUE");
+        auto picks = state.catalogue.picks;
+        setAxis(picks, e.argument.substr(0, eq), e.argument.substr(eq + 1));
+        const auto& c = state.catalogue;
+        const std::string why = whyNotAVariant(*prism::catalog::findShader(kCatalog, c.shader),
+                                               prism::render::featuresOf(c.lights, c.fog.has_value()), picks);
+        if (!why.empty()) throw std::invalid_argument(why);
         pickAxis(state, e.argument.substr(0, eq), e.argument.substr(eq + 1));
     } else if (e.command == "scene") {
         if (e.argument == "none") closeScene(state);
@@ -166,6 +173,10 @@ int main(int argc, char** argv) {
             const auto eq = v.find('=');
             pickAxis(state, v.substr(0, eq), v.substr(eq + 1));
         }
+        const auto& c = state.catalogue;
+        const std::string why = whyNotAVariant(*prism::catalog::findShader(kCatalog, c.shader),
+                                               prism::render::featuresOf(c.lights, c.fog.has_value()), c.picks);
+        if (!why.empty()) throw std::invalid_argument("--variant: " + why);
         setParameter(state, "mesh", args->mesh);
         setParameter(state, "subdivision", std::to_string(args->subdivision));
         if (std::find(std::begin(kMeshes), std::end(kMeshes), args->mesh) == std::end(kMeshes))

@@ -37,6 +37,32 @@ void setAxis(render::VariantValues& values, std::string_view axis, std::string_v
     values.emplace_back(std::string(axis), std::string(value));
 }
 
+std::string whyNotAVariant(const catalog::Shader& shader, const render::FeatureSet& features,
+                           const render::VariantValues& picks) {
+    for (const auto& [axis, value] : picks) {
+        const catalog::VariantAxis* found = nullptr;
+        for (const auto& a : shader.axes)
+            if (a.name == axis) found = &a;
+        std::string known;
+        if (!found) {
+            for (const auto& a : shader.axes) known += (known.empty() ? "" : ", ") + std::string(a.name);
+            return std::string(shader.name) + " has no variant axis '" + axis + "' (its axes: " +
+                   (known.empty() ? "none" : known) + ")";
+        }
+        bool valid = false;
+        for (const auto& v : found->values) {
+            valid = valid || v == value;
+            known += (known.empty() ? "" : ", ") + std::string(v);
+        }
+        if (!valid) return axis + "=" + value + " is not a value of " + std::string(shader.name) + "'s axis " + axis +
+                           " (values: " + known + ")";
+    }
+    if (!catalog::findVariant(shader, render::variantFor(shader, features, picks)))
+        return std::string(shader.name) + " has no generated variant " +
+               variantLabel(render::variantFor(shader, features, picks));
+    return {};
+}
+
 std::string variantLabel(const render::VariantValues& values) {
     std::string out;
     for (const auto& [n, v] : values) out += (out.empty() ? "" : ",") + n + "=" + v;

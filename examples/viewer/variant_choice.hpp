@@ -29,4 +29,10 @@ void setAxis(render::VariantValues& values, std::string_view axis, std::string_v
 
 std::string variantLabel(const render::VariantValues& values);
 
+// Why `picks` name no generated variant of `shader` with these features (an axis it lacks,
+// a value the axis lacks, or a combination the catalogue lacks), or empty when they do.
+// The command line and scripts reject such picks instead of falling back silently.
+std::string whyNotAVariant(const catalog::Shader& shader, const render::FeatureSet& features,
+                           const render::VariantValues& picks);
+
 }  // namespace prism::viewer

@@ -28,14 +28,14 @@ cli)
     out=$(env -u DISPLAY "$viewer" --version) || fail "--version exited $?"
     grep -q '^viewer (Prism) [0-9]' <<<"$out" || fail "--version printed '$out'"
     for bad in "--frames -1" "--subdivision 9" "--scene /nonexistent.json" "--variant BLINN" "--shader nosuch" \
-               "--mesh nosuch" "extra"; do
+               "--mesh nosuch" "extra" "--variant BLINN=7" "--shader gouraud --variant BLINN=1"; do
         # shellcheck disable=SC2086
         env -u DISPLAY "$viewer" $bad >/dev/null 2>"$work/err.txt"
         status=$?
         [ "$status" -eq 2 ] || fail "'$bad' exited $status, not 2 (usage error)"
         grep -q '^viewer: error: ' "$work/err.txt" || fail "'$bad' printed no 'viewer: error:' line"
     done
-    echo "gui_test cli: OK (--help, --version without DISPLAY; 7 usage errors exit 2)" ;;
+    echo "gui_test cli: OK (--help, --version without DISPLAY; 9 usage errors exit 2)" ;;
 lit)
     run lit --frames 3 --no-panels --width 400 --height 400 --screenshot "$work/lit.png" || fail "viewer exited $?"
     # Thresholds: the lit default measures luminance ~78 and ~5000 colours; the unlit

@@ -62,4 +62,16 @@ TEST(VariantChoice, PicksForAxesTheShaderLacksAreIgnored) {
               "BLINN=0,DIRECTIONAL_LIGHTS=1");
 }
 
+TEST(VariantChoice, PicksThatNameNoVariantAreExplained) {
+    using prism::viewer::whyNotAVariant;
+    const FeatureSet twoLights{.directionalLights = 2};
+    EXPECT_EQ(whyNotAVariant(kShader, twoLights, {{"BLINN", "0"}}), "");
+    EXPECT_EQ(whyNotAVariant(kShader, twoLights, {{"WET", "1"}}),
+              "test has no variant axis 'WET' (its axes: BLINN, DIRECTIONAL_LIGHTS)");
+    EXPECT_EQ(whyNotAVariant(kShader, twoLights, {{"BLINN", "7"}}),
+              "BLINN=7 is not a value of test's axis BLINN (values: 0, 1)");
+    EXPECT_EQ(whyNotAVariant(kShader, twoLights, {{"BLINN", "1"}}),
+              "test has no generated variant BLINN=1,DIRECTIONAL_LIGHTS=2");
+}
+
 }  // namespace
