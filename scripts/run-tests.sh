@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Sets up a fresh Debian 12 machine (idempotent), builds everything and runs every test
-# tier (unit, GL, rendering, integration) with CTest, then the sanitizer and fuzz tiers
+# tier (unit, GL, rendering, integration, gui: the viewer under xvfb-run) with CTest, then the sanitizer and fuzz tiers
 # (docs/reliability.md). This is what .ci/run calls.
 # Benchmarks are not tests: they are built and run on their own (see docs/).
 set -euo pipefail
