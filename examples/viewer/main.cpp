@@ -33,6 +33,7 @@
 #include "scene_display.hpp"
 #include "variant_choice.hpp"
 #include "viewer_actions.hpp"
+#include "viewer_input.hpp"
 #include "viewer_options.hpp"
 #include "viewer_script.hpp"
 
@@ -67,85 +68,6 @@ prism::image::Image8 readBackBuffer(int width, int height) {
                          image.data.begin() + static_cast<std::ptrdiff_t>((height - 1 - y) * row));
     for (std::size_t i = 3; i < image.data.size(); i += 4) image.data[i] = 255;  // the window is opaque
     return image;
-}
-
-// A key as the keyboard or a script's `key NAME` presses it.
-void pressKey(ViewerState& s, GLFWwindow* window, int key) {
-    auto& c = s.catalogue;
-    switch (key) {
-        case GLFW_KEY_ESCAPE:
-            glfwSetWindowShouldClose(window, GLFW_TRUE);
-            break;
-        case GLFW_KEY_LEFT:
-            c.yaw -= 0.1f;
-            break;
-        case GLFW_KEY_RIGHT:
-            c.yaw += 0.1f;
-            break;
-        case GLFW_KEY_UP:
-            c.pitch -= 0.1f;
-            break;
-        case GLFW_KEY_DOWN:
-            c.pitch += 0.1f;
-            break;
-        case GLFW_KEY_S:
-            nextShader(s, kCatalog);
-            break;
-        case GLFW_KEY_M:
-            nextMesh(s);
-            break;
-        case GLFW_KEY_EQUAL:
-        case GLFW_KEY_KP_ADD:
-            if (c.subdivision < 6) setParameter(s, "subdivision", std::to_string(c.subdivision + 1));
-            break;
-        case GLFW_KEY_MINUS:
-        case GLFW_KEY_KP_SUBTRACT:
-            if (c.subdivision > 0) setParameter(s, "subdivision", std::to_string(c.subdivision - 1));
-            break;
-        default:
-            break;
-    }
-}
-
-int keyNamed(const std::string& name) {
-    if (name.size() == 1 && name[0] >= 'A' && name[0] <= 'Z') return GLFW_KEY_A + (name[0] - 'A');
-    if (name == "plus") return GLFW_KEY_EQUAL;
-    if (name == "minus") return GLFW_KEY_MINUS;
-    if (name == "left") return GLFW_KEY_LEFT;
-    if (name == "right") return GLFW_KEY_RIGHT;
-    if (name == "up") return GLFW_KEY_UP;
-    if (name == "down") return GLFW_KEY_DOWN;
-    if (name == "escape") return GLFW_KEY_ESCAPE;
-    throw std::invalid_argument("unknown key '" + name + "' (A-Z, plus, minus, left, right, up, down, escape)");
-}
-
-void onKey(GLFWwindow* window, int key, int, int action, int) {
-    if (action == GLFW_RELEASE || ImGuiLayer::wantsKeyboard()) return;
-    pressKey(*static_cast<ViewerState*>(glfwGetWindowUserPointer(window)), window, key);
-}
-
-// Applies one script event; the `expect` text is returned for the check after the frame.
-std::string applyEvent(ViewerState& state, GLFWwindow* window, const ViewerScript& script, const ScriptEvent& e) {
-    std::cout << "viewer: script line " << e.line << ": " << e.command << " " << e.argument
-              << (e.value.empty() ? "" : " " + e.value) << std::endl;
-    if (e.command == "key") pressKey(state, window, keyNamed(e.argument));
-    else if (e.command == "shader") selectShader(state, kCatalog, e.argument);
-    else if (e.command == "variant") {
-        const auto eq = e.argument.find('=');
-        if (eq == std::string::npos) throw std::invalid_argument("variant wants AXIS=VALUE");
-        auto picks = state.catalogue.picks;
-        setAxis(picks, e.argument.substr(0, eq), e.argument.substr(eq + 1));
-        const auto& c = state.catalogue;
-        const std::string why = whyNotAVariant(*prism::catalog::findShader(kCatalog, c.shader),
-                                               prism::render::featuresOf(c.lights, c.fog.has_value()), picks);
-        if (!why.empty()) throw std::invalid_argument(why);
-        pickAxis(state, e.argument.substr(0, eq), e.argument.substr(eq + 1));
-    } else if (e.command == "scene") {
-        if (e.argument == "none") closeScene(state);
-        else openScene(state, script.resolve(e.argument));
-    } else if (e.command == "set") setParameter(state, e.argument, e.value);
-    else if (e.command == "expect") return e.argument;
-    return {};
 }
 
 std::vector<std::string> exampleScenes() {
@@ -199,8 +121,7 @@ int main(int argc, char** argv) {
         options.vsync = maxFrames == 0 && !script;
         auto context = prism::gl::createContext(prism::gl::Backend::Glfw, options);
         auto* window = static_cast<GLFWwindow*>(context->nativeWindow());
-        glfwSetWindowUserPointer(window, &state);
-        glfwSetKeyCallback(window, onKey);
+        installKeyHandler(window, state, kCatalog);
         std::optional<ImGuiLayer> ui;
         if (state.panels) ui.emplace(window);  // after our key callback: ImGui chains to it
 
@@ -253,7 +174,7 @@ int main(int argc, char** argv) {
                 const bool wasLast = script->finished();
                 if (const auto event = script->next()) {
                     try {
-                        expected = applyEvent(state, window, *script, *event);
+                        expected = applyEvent(state, kCatalog, window, *script, *event);
                         expectLine = event->line;
                     } catch (const std::exception& e) {
                         std::cerr << script->path() << ":" << event->line << ":1: error: " << e.what() << "\n";
