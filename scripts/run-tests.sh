@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Sets up a fresh Debian 12 machine (idempotent), builds everything and runs every test
-# tier (unit, GL, rendering, integration, and browser: the gallery report in headless
-# Chromium, tests/report) with CTest (no -L filter: every label runs), then the sanitizer and fuzz tiers
+# tier (unit, GL, rendering, integration, browser: the gallery report in headless Chromium,
+# tests/report; gui: the viewer under xvfb-run) with CTest (no -L filter: every label runs),
+# then the sanitizer and fuzz tiers
 # (docs/reliability.md). This is what .ci/run calls.
 # Benchmarks are not tests: they are built here (so they cannot rot) and run on their own
 # (see docs/).

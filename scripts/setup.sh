@@ -6,7 +6,7 @@ set -euo pipefail
 PACKAGES=(
   build-essential cmake ninja-build pkg-config python3
   glslang-dev glslang-tools
-  libglfw3-dev libglm-dev
+  libglfw3-dev libglm-dev libimgui-dev
   libosmesa6-dev libegl1-mesa-dev libgl1-mesa-dri libgles-dev
   libpng-dev python3-glad
   libkissfft-dev colord-data

@@ -2,7 +2,7 @@
 // an icosphere (subdivision levels --min-level..--max-level) with flat, smooth, gouraud
 // and phong on the GL context (llvmpipe here), times full frames, and measures the
 // error of every image against the EXACT sphere lit per pixel on the CPU in double
-// precision (sphere_reference.hpp). Prints a Markdown report (table, Pareto front,
+// precision (prism/reference/sphere_reference.hpp). Prints a Markdown report (table, Pareto front,
 // error budgets, Gouraud vs Phong per level, reference validation) and writes
 // OUT/tradeoffs.csv and OUT/tradeoffs.svg.
 //
@@ -44,7 +44,7 @@
 #include <thread>
 #include <vector>
 
-#include "image_metrics.hpp"
+#include "prism/reference/image_metrics.hpp"
 #include "prism/image/contact_sheet.hpp"
 #include "prism/gl/framebuffer.hpp"
 #include "prism/gl/gl.hpp"
@@ -54,13 +54,14 @@
 #include "prism/image/png_io.hpp"
 #include "prism/render/shader_meshes.hpp"
 #include "prism/shaders.hpp"
-#include "sphere_reference.hpp"
+#include "prism/reference/sphere_reference.hpp"
 #include "tradeoff_report.hpp"
 
 namespace {
 
 using namespace prism;
 using namespace prism::bench;
+using namespace prism::reference;
 using namespace prism::render;
 using namespace prism::image;
 using namespace prism::view;

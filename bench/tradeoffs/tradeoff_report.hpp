@@ -16,9 +16,12 @@
 #include <string>
 #include <vector>
 
-#include "image_metrics.hpp"
+#include "prism/reference/image_metrics.hpp"
 
 namespace prism::bench {
+
+using reference::ErrorStats;
+using reference::Metrics;
 
 struct Row {
     std::string shader;

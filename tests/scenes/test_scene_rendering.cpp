@@ -163,6 +163,27 @@ TEST(SceneRendering, RainSceneRunsTheRainSystemOverTheObjects) {
     EXPECT_GT(cmp.pixelsOver, 100u) << "the streaks must show";
 }
 
+// The viewer's rain panel: technique and level-of-detail rings reach the rain system.
+TEST(SceneRendering, RainTechniqueAndRingsApply) {
+    prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
+    auto scene = exampleScene("rain");
+    scene.width = 96;
+    scene.height = 64;
+    renderer.render(scene);
+    const std::string fourRings = renderer.lastFrame().variants.back();
+    scene.rain->technique = "point-sprites";
+    scene.rain->lodRings = 1;
+    renderer.render(scene);
+    const std::string oneRing = renderer.lastFrame().variants.back();
+    EXPECT_EQ(oneRing.rfind("rain point-sprites (", 0), 0u) << oneRing;
+    auto particles = [](const std::string& s) { return std::stoul(s.substr(s.find('(') + 1)); };
+    // One ring is full density out to the cylinder's edge; four fall off by 0.5 per ring
+    // (rain_params.hpp's V_LOD), so one ring holds more drops.
+    EXPECT_GT(particles(oneRing), particles(fourRings));
+    scene.rain->technique = "splines";
+    EXPECT_THROW(renderer.render(scene), std::invalid_argument);
+}
+
 TEST(SceneRendering, RainSettingsMapToRainParameters) {
     prism::scene::RainSettings s;
     s.intensityClass = "cloudburst";

@@ -44,6 +44,8 @@ rain::RainParams rainParamsFor(const RainSettings& settings) {
     p.height = settings.cylinderHeight;
     p.below = std::min(p.below, p.height);
     if (settings.particleBudget) p.budget = *settings.particleBudget;
+    p.lodRings = settings.lodRings;
+    p.lodFalloff = settings.lodFalloff;
     rain::validate(p);
     return p;
 }
@@ -102,6 +104,11 @@ void SceneRenderer::drawRain(const Scene& scene) {
     else
         in.lights.lamp.color = glm::vec3(0.0f);
     in.fog = scene.fog ? &*scene.fog : nullptr;
+    const auto technique = rain::parseTechnique(scene.rain->technique);
+    if (!technique)
+        throw rain::RainParameterError("rain technique '" + scene.rain->technique +
+                                       "' is unknown; use gs-quads, instanced-quads or point-sprites");
+    in.technique = *technique;
     system.draw(in);
     lastFrame_.variants.push_back("rain " + std::string(rain::techniqueName(in.technique)) + " (" +
                                   std::to_string(system.particleCount()) + " particles)");
@@ -146,7 +153,10 @@ void SceneRenderer::drawWater(const Scene& scene) {
     }
     d.lights = scene.lights;
     d.fog = scene.fog;
-    d.backend = water::SimulationBackend::Fastest;  // both steps give the same water
+    if (w.backend == "fastest") d.backend = water::SimulationBackend::Fastest;  // both steps give the same water
+    else if (w.backend == "cpu") d.backend = water::SimulationBackend::Cpu;
+    else if (w.backend == "gpu") d.backend = water::SimulationBackend::Gpu;
+    else throw std::invalid_argument("water backend '" + w.backend + "' is unknown; use fastest, cpu or gpu");
     d.sky.cloudCover = w.cloudCover;
     water::WaterScene waterScene(std::move(d));
     ++waterSystemsCreated_;

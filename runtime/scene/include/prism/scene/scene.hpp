@@ -57,6 +57,12 @@ struct RainSettings {
     float cylinderRadius = 20.0f;
     float cylinderHeight = 20.0f;
     std::optional<unsigned> particleBudget;
+    // Set in code (the viewer's rain panel), not read from JSON: the level-of-detail rings
+    // and their density falloff (prism/rain/rain_params.hpp), and the streak technique,
+    // "gs-quads", "instanced-quads" or "point-sprites" (prism/rain/rain_system.hpp).
+    int lodRings = 4;
+    float lodFalloff = 0.5f;
+    std::string technique = "gs-quads";
 };
 
 // Water as a scene asks for it (docs/water.md): a procedural terrain of gridSize^2
@@ -71,6 +77,9 @@ struct WaterSettings {
     unsigned seed = 1;                         // of the procedural terrain
     float relief = 3.0f;                       // m between the lowest and highest hills
     float cloudCover = 0.6f;                   // of the procedural sky: 0 clear (bright) .. 1 overcast
+    // Set in code (the viewer's water panel), not read from JSON: the water step, "fastest"
+    // (measured once per renderer, prism/water/backend_choice.hpp), "cpu" or "gpu".
+    std::string backend = "fastest";
 };
 
 // A Monte Carlo effect as a scene asks for it (docs/scenes.md, docs/bluenoise.md): soft

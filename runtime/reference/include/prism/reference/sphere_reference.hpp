@@ -1,12 +1,17 @@
-// The ground truth of prism_bench_tradeoffs: the EXACT sphere lit per pixel on the CPU
-// in double precision, with the formula of modules/lighting.glsl, so a rendered
+// The ground truth of the speed/accuracy measurements (prism_bench_tradeoffs,
+// docs/tradeoffs.md, and the viewer's error readout): the EXACT sphere lit per pixel on
+// the CPU in double precision, with the formula of modules/lighting.glsl, so a rendered
 // icosphere can be compared with what the mesh only approximates.
 //
-//     prism::bench::SphereScene scene{.camera = prism::render::defaultCamera(), .lights = prism::render::defaultLights(),
-//                                     .material = material, .width = 512, .height = 512};
-//     prism::bench::SphereReference full = prism::bench::renderSphereReference(scene, true);
-//     prism::bench::SphereReference diffuse = prism::bench::renderSphereReference(scene, false);
-//     full.image;        // RGBA8, row 0 on top; alpha 255 where the ray hits, 0 on background
+// Usage (snippet: examples/snippets/reference_sphere_reference.cpp):
+//
+//     #include "prism/reference/sphere_reference.hpp"
+//     prism::reference::SphereScene scene;  // unit sphere at the origin, view::Camera's default eye on +Z
+//     scene.lights.directional.push_back({.direction = {0, 0, -1}, .color = {1, 1, 1}});  // head-on
+//     scene.width = scene.height = 65;
+//     prism::reference::SphereReference exact = prism::reference::renderSphereReference(scene, true);
+//     // exact.image: RGBA8, row 0 on top, alpha 255 where the ray hits the sphere, 0 elsewhere
+//     // exact.radiance: the unclamped colour per pixel, in double
 //
 // Method, per pixel (x, y) of a width x height image (row 0 = top):
 //  * The ray starts at the eye and goes through the pixel CENTRE, where the rasteriser
@@ -43,7 +48,7 @@
 #include "prism/image/image.hpp"
 #include "prism/view/lighting.hpp"
 
-namespace prism::bench {
+namespace prism::reference {
 
 struct SphereScene {
     view::Camera camera;
@@ -74,4 +79,4 @@ SphereReference renderSphereReference(const SphereScene& scene, bool withSpecula
 // A UNORM8 channel as the framebuffer stores `value`: clamp to [0, 1], round to nearest.
 std::uint8_t toUnorm8(double value);
 
-}  // namespace prism::bench
+}  // namespace prism::reference

@@ -77,14 +77,14 @@ for _ in $(seq 100); do [ -s "$work/display" ] && break; sleep 0.1; done
 
 overlay_red="110 16 16"  # error_overlay.cpp's strip colour
 
-# 1. flat (the first shader shown) includes material.glsl; line 6 is new and broken.
+# 1. phong (the first shader shown) includes material.glsl; line 6 is new and broken.
 start_viewer recover
 printf 'vec3 broken = ;\n' >>"$material"
 wait_for 'material\.glsl:6:[0-9]+: error: ' 30
 wait_for '^viewer: overlay shows: modules/material\.glsl:6:' 5
 grep -q '^viewer: reloaded' "$log" && fail "a broken edit was swapped in"
 cp "$work/material.orig" "$material"
-wait_for '^viewer: reloaded flat' 30
+wait_for '^viewer: reloaded phong' 30
 wait_for '^viewer: overlay cleared' 5
 stop_viewer
 pixel=$(top_left_pixel "$work/recover.png") || fail "cannot read $work/recover.png"

@@ -1,6 +1,6 @@
-// The exact-sphere reference image of prism_bench_tradeoffs (see sphere_reference.hpp):
+// The exact-sphere reference image (see prism/reference/sphere_reference.hpp):
 // ray casting against the analytic sphere and modules/lighting.glsl in double.
-#include "sphere_reference.hpp"
+#include "prism/reference/sphere_reference.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -11,7 +11,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace prism::bench {
+namespace prism::reference {
 namespace {
 
 constexpr double kEpsilon = 1e-20;  // PRISM_EPSILON of modules/math_utils.glsl
@@ -127,4 +127,4 @@ SphereReference renderSphereReference(const SphereScene& scene, bool withSpecula
     return out;
 }
 
-}  // namespace prism::bench
+}  // namespace prism::reference

@@ -1,5 +1,5 @@
 // Error metrics of a render against the sphere reference (see image_metrics.hpp).
-#include "image_metrics.hpp"
+#include "prism/reference/image_metrics.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
-namespace prism::bench {
+namespace prism::reference {
 namespace {
 
 struct Accumulator {
@@ -93,4 +93,4 @@ Metrics compareWithReference(const image::Image8& render, const image::Image8& r
     return m;
 }
 
-}  // namespace prism::bench
+}  // namespace prism::reference

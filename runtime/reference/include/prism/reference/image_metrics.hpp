@@ -1,11 +1,12 @@
-// Error metrics of prism_bench_tradeoffs: a rendered RGBA8 image against the exact-sphere
-// reference (sphere_reference.hpp), in 8-bit units.
+// Error metrics of a rendered RGBA8 image against the exact-sphere reference
+// (prism/reference/sphere_reference.hpp), in 8-bit units (prism_bench_tradeoffs, the viewer).
 //
-//     prism::bench::Metrics m = prism::bench::compareWithReference(render, reference.image);
-//     m.union_.mean;      // mean |render - reference| over R, G, B of pixels covered by either
-//     m.interior.max;     // largest channel difference where both cover the pixel
-//     m.renderOnly + m.referenceOnly;   // silhouette mismatch: covered by exactly one
-//     m.highlightError;   // pixels between the two highlight centroids
+// Usage (snippet: examples/snippets/reference_image_metrics.cpp):
+//
+//     #include "prism/reference/image_metrics.hpp"
+//     prism::reference::Metrics m = prism::reference::compareWithReference(render, reference);
+//     // m.union_.mean, m.union_.max: |render - reference| over R, G, B of pixels either covers
+//     // m.interior.max: where both cover; m.renderOnly + m.referenceOnly: silhouette mismatch
 //
 // Coverage is read from alpha: the bench clears to alpha 0 and every lit shader writes
 // alpha 1, and the reference sets alpha 255 where its ray hits. Colour differences use
@@ -26,7 +27,7 @@
 
 #include "prism/image/image.hpp"
 
-namespace prism::bench {
+namespace prism::reference {
 
 inline constexpr double kHighlightBand = 8.0;
 
@@ -61,4 +62,4 @@ bool highlightCentroid(const image::Image8& image, glm::dvec2& centroid);
 // Both images must have the same size (std::invalid_argument otherwise).
 Metrics compareWithReference(const image::Image8& render, const image::Image8& reference);
 
-}  // namespace prism::bench
+}  // namespace prism::reference

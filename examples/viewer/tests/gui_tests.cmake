@@ -1,0 +1,37 @@
+# The viewer's tests. Its gui tier (CTest label `gui`): the real window under xvfb-run on Mesa
+# llvmpipe. scripts/run-tests.sh runs every label, this one included.
+find_program(PRISM_XVFB_RUN xvfb-run)
+set(_gui ${CMAKE_CURRENT_SOURCE_DIR}/tests)
+set(_work ${CMAKE_CURRENT_BINARY_DIR}/gui-tests)
+# The catalogue panel's variant logic (label unit: no window, no context).
+find_package(GTest REQUIRED)
+add_executable(viewer_variant_choice_tests ${_gui}/test_variant_choice.cpp ${CMAKE_CURRENT_SOURCE_DIR}/variant_choice.cpp)
+target_include_directories(viewer_variant_choice_tests PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
+target_link_libraries(viewer_variant_choice_tests PRIVATE prism_render GTest::gtest_main)
+add_test(NAME example.viewer_variant_choice COMMAND viewer_variant_choice_tests)
+set_tests_properties(example.viewer_variant_choice PROPERTIES LABELS unit)
+# No display needed: --help/--version print and exit 0, usage errors exit 2.
+add_test(NAME example.viewer_cli COMMAND bash ${_gui}/gui_test.sh cli $<TARGET_FILE:viewer> ${_work}/cli)
+add_test(NAME example.viewer_rejects_unknown_option
+         COMMAND bash -c "out=\$(\"$0\" --frmaes 5 2>&1); test \$? -eq 2 && grep -q 'viewer: error: .*--frmaes' <<<\"\$out\""
+                 $<TARGET_FILE:viewer>)
+set_tests_properties(example.viewer_cli example.viewer_rejects_unknown_option PROPERTIES LABELS gui TIMEOUT 60)
+if(PRISM_XVFB_RUN)
+  add_test(NAME example.viewer_smoke COMMAND ${PRISM_XVFB_RUN} -a $<TARGET_FILE:viewer> --frames 5)
+  foreach(check lit panels script reference sampling)
+    add_test(NAME example.viewer_${check}
+             COMMAND bash ${_gui}/gui_test.sh ${check} $<TARGET_FILE:viewer> ${_work}/${check})
+  endforeach()
+  set_tests_properties(example.viewer_smoke example.viewer_lit example.viewer_panels example.viewer_script
+                       example.viewer_reference example.viewer_sampling PROPERTIES LABELS gui TIMEOUT 120
+                       # xvfb-run -a picks a free display by its lock file: two starting at once can collide.
+                       RESOURCE_LOCK xvfb_run)
+endif()
+find_program(PRISM_XVFB Xvfb)
+if(PRISM_XVFB)
+  # --watch end to end: a broken module edit in a temp copy of the sources is printed and
+  # shown in the overlay while the last good program draws; undoing it reloads.
+  add_test(NAME example.viewer_watch
+    COMMAND bash ${_gui}/watch_smoke.sh $<TARGET_FILE:viewer> ${PROJECT_SOURCE_DIR} ${_work}/watch)
+  set_tests_properties(example.viewer_watch PROPERTIES LABELS gui TIMEOUT 180 ENVIRONMENT "LP_NUM_THREADS=2")
+endif()
