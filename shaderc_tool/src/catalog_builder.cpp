@@ -174,6 +174,8 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
             auto r = resolveStage(st.path, base, reader);
             sink.reportAll(r.diagnostics);
             ok = ok && r.ok;
+            for (const auto& f : r.stage.files)  // used even when the stage fails: no "no stage includes" warning
+                if (f.number > 0 && includedCanonical.insert(f.canonical).second) includedPath[f.canonical] = f.path;
             pragmas.insert(pragmas.end(), r.stage.variantPragmas.begin(), r.stage.variantPragmas.end());
             stagePaths.push_back(st.path);
         }

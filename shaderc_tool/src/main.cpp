@@ -112,7 +112,6 @@ int main(int argc, char** argv) {
         std::cerr << "prism-shaderc: " << sink.errorCount() << " error(s); nothing written\n";
         return kExitShaderErrors;
     }
-    if (o.checkOnly) return kExitOk;
     if (int rc = writeOutputs(o, catalog); rc != kExitOk) return rc;
     return writeBuildSystemFiles(o, catalog.filesRead);
 }
