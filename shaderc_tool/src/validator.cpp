@@ -1,14 +1,17 @@
 // glslang compilation, linking and message mapping for one program variant.
 #include "validator.hpp"
 
+#include <prism/catalog/line_directive.hpp>
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <regex>
 #include <sstream>
 
+#include "did_you_mean.hpp"
 #include "interface_check.hpp"
 #include "stage_interface.hpp"
 
@@ -59,13 +62,13 @@ class SourceLines {
         std::string line;
         std::uint32_t source = 0;
         int next = 1;
-        const int lineOffset = stage.versionNumber >= 330 ? 0 : 1;
+        const auto version = catalog::glslVersionOf(stage.versionDirective);
         bool first = true;
         while (std::getline(in, line)) {
             if (!line.empty() && line.back() == '\r') line.pop_back();
             unsigned n = 0, s = 0;
             if (std::sscanf(line.c_str(), " #line %u %u", &n, &s) == 2) {
-                next = static_cast<int>(n) + lineOffset;
+                next = catalog::lineAfterDirective(static_cast<int>(n), version);
                 source = s;
                 first = false;
                 continue;
@@ -101,6 +104,18 @@ class SourceLines {
   private:
     std::map<std::pair<std::uint32_t, int>, std::string> lines_;
 };
+
+// The column glslang's message points at: the token it names on that line, else
+// (glslang gives no column, e.g. for a syntax error) the line's first non-blank one.
+int columnOf(const std::string* lineText, const std::string& tok) {
+    if (!lineText) return 0;
+    if (!tok.empty())
+        if (const auto pos = findWord(*lineText, tok); pos != std::string_view::npos) return static_cast<int>(pos) + 1;
+    if (!tok.empty())
+        if (const auto pos = lineText->find(tok); pos != std::string::npos) return static_cast<int>(pos) + 1;
+    const auto first = lineText->find_first_not_of(" \t");
+    return first == std::string::npos ? 0 : static_cast<int>(first) + 1;
+}
 
 struct StageMaps {
     const StageToValidate* stage;
@@ -142,14 +157,18 @@ std::vector<Diagnostic> mapInfoLog(const std::string& log, const StageMaps& maps
         while (!message.empty() && message.back() == ' ') message.pop_back();
         if (message.find("compilation terminated") != std::string::npos) continue;
         int column = 0;
+        std::string tok;
         std::smatch t;
         if (std::regex_match(message, t, token)) {
-            std::string tok = t[1];
-            message = tok.empty() ? std::string(t[2]) : "'" + tok + "': " + std::string(t[2]);
-            if (const auto* text = maps.lines.find(source, lineNo); text && !tok.empty()) {
-                auto pos = text->find(tok);
-                if (pos != std::string::npos) column = static_cast<int>(pos) + 1;
-            }
+            tok = t[1];
+            std::string rest = t[2];
+            rest.erase(0, rest.find_first_not_of(' '));  // glslang writes "'' :  syntax error"
+            message = tok.empty() ? rest : "'" + tok + "': " + rest;
+        }
+        column = columnOf(maps.lines.find(source, lineNo), tok);
+        if (!tok.empty() && message.ends_with("no matching overloaded function found")) {
+            auto functions = functionNamesIn(maps.stage->resolved.text);
+            if (!std::binary_search(functions.begin(), functions.end(), tok)) message += didYouMean(tok, functions);
         }
         Diagnostic d = makeError(pathOf(*maps.stage, source), lineNo, column, message);
         d.severity = m[1] == "ERROR" ? Severity::Error : Severity::Warning;
