@@ -96,6 +96,7 @@ ArgsResult parseArgs(int argc, char** argv) {
     app.add_option("--base-dir", o.baseDir, "paths embedded in the header are made relative to this directory");
     app.add_option("--errfmt", errfmt, "diagnostic format")->check(CLI::IsMember({"gcc", "msvc"}));
     app.add_option("-j", o.jobs, "parallel jobs (default: all cores)")->check(CLI::NonNegativeNumber);
+    app.add_flag("--stats", o.printStats, "print how many programs were validated, shared or found in the cache");
     app.add_option("--cache-dir", o.cacheDir,
                    "validation results cache (content-addressed); default: next to --stamp, none without "
                    "--stamp; 'none' disables it");

@@ -11,6 +11,7 @@
 #include "include_resolver.hpp"
 #include "module_naming.hpp"
 #include "validator.hpp"
+#include "variant_resolution.hpp"
 #include "variants.hpp"
 
 namespace prism::shaderc {
@@ -188,13 +189,14 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
 
         CatalogShader cs{shader.name, axes.axes, {}, {}};
         std::vector<std::vector<ResolvedStage>> resolvedVariants;
-        for (const auto& choice : choices.choices) {
-            ResolveOptions vo = base;
-            vo.defines.insert(vo.defines.end(), choice.defines.begin(), choice.defines.end());
+        auto resolvedAll = resolveVariants(stagePaths, base, choices.choices, reader, o.jobs);  // on -j threads
+        for (std::size_t vi = 0; vi < choices.choices.size(); ++vi) {
+            const auto& choice = choices.choices[vi];
             CatalogVariant cv{choice.name, choice.defines, {}, {}};
             std::vector<ResolvedStage> stages;
-            for (const auto& st : shader.stages) {
-                auto r = resolveStage(st.path, vo, reader);
+            for (std::size_t si = 0; si < shader.stages.size(); ++si) {
+                const auto& st = shader.stages[si];
+                auto r = std::move(resolvedAll[vi][si]);
                 sink.reportAll(r.diagnostics);
                 ok = ok && r.ok;
                 CatalogStage cst{st.stage, r.stage.text, {}};

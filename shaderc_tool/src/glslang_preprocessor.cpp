@@ -2,6 +2,8 @@
 // glslang_preprocessor.hpp).
 #include "glslang_preprocessor.hpp"
 
+#include "content_hash.hpp"
+
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 
@@ -375,6 +377,7 @@ PreprocessRun preprocessWithGlslang(const std::string& path, const ResolveOption
     const bool ok = shader.preprocess(GetDefaultResources(), version.number, profileOf(version), true, false,
                                       EShMsgDefault, &output, includer);
     if (!ok) addGlslangErrors(shader.getInfoLog(), includer, run);
+    run.tokenSignature = tokenSignature(output);
     run.ok = std::none_of(run.diagnostics.begin(), run.diagnostics.end(),
                           [](const Diagnostic& d) { return d.severity == Severity::Error; });
     return run;

@@ -18,7 +18,8 @@
 #include "shader_inputs.hpp"
 #include "source_fingerprint.hpp"
 #include "source_reader.hpp"
-#include "validator.hpp"
+#include "validation_scheduler.hpp"
+#include "validation_settings.hpp"
 
 using namespace prism::shaderc;
 
@@ -102,9 +103,9 @@ int main(int argc, char** argv) {
         return writeBuildSystemFiles(o, catalog.filesRead);
     }
     if (sink.errorCount() == 0) {
-        initializeValidator();
-        validateCatalog(catalog, contract.contract, o.jobs, sink);
-        finalizeValidator();
+        const auto stats =
+            validateCatalogScheduled(catalog, contract.contract, o.jobs, ValidationCache(validationCacheDir(o)), sink);
+        if (o.printStats) printValidationStats(std::cerr, stats);
     }
 
     sink.print(std::cerr, o.errorFormat);

@@ -1,0 +1,36 @@
+// Stage 3 of prism-shaderc, scheduled: validates every variant of the catalogue with
+// as little glslang work as the results allow.
+//   1. Each program gets a content key (validation_cache.hpp) from its stages' token
+//      signatures; programs with the same token stream are validated once.
+//   2. Keys found in the cache (--cache-dir) are not validated at all.
+//   3. The rest run on `jobs` threads (glslang is initialised once per process and is
+//      thread-safe per TShader/TProgram), and their results are stored.
+// A shared result is reused only when it has no diagnostics; a program whose result
+// has some is validated with its own text, so every message keeps its own lines.
+//
+//   auto stats = validateCatalogScheduled(catalog, contract, jobs, ValidationCache(dir), sink);
+#pragma once
+
+#include <cstddef>
+
+#include "catalog_builder.hpp"
+#include "validation_cache.hpp"
+
+namespace prism::shaderc {
+
+struct ValidationStats {
+    std::size_t programs = 0;   // variants in the catalogue
+    std::size_t distinct = 0;   // distinct token keys among them
+    std::size_t fromCache = 0;  // distinct keys answered by the cache
+    std::size_t validated = 0;  // glslang validations run (distinct keys + programs re-run for their own lines)
+};
+
+// Fills in every variant's reflection and reports diagnostics, as validateCatalog does.
+ValidationStats validateCatalogScheduled(ResolvedCatalog& catalog, const Contract& contract, int jobs,
+                                         const ValidationCache& cache, DiagnosticSink& sink);
+
+// The content key of one variant's program (exposed for tests).
+ProgramKey programKey(const ResolvedCatalog& catalog, const Contract& contract, std::size_t shader,
+                      std::size_t variant);
+
+}  // namespace prism::shaderc
