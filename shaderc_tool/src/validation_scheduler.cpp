@@ -91,13 +91,40 @@ ValidationStats validateCatalogScheduled(ResolvedCatalog& rc, const Contract& co
         else toValidate.push_back(g);
     }
     if (!toValidate.empty()) initializeValidator();
+    // Each distinct stage (kind, #version, token stream) of those programs is parsed
+    // once, then shared by the programs using it.
+    std::vector<std::vector<StageToValidate>> stageLists(toValidate.size());
+    std::map<std::string, std::size_t> stageIndex;
+    std::vector<const StageToValidate*> distinctStages;
+    std::vector<std::vector<std::size_t>> stageRefs(toValidate.size());
+    for (std::size_t i = 0; i < toValidate.size(); ++i) {
+        const Program& p = programs[representatives[toValidate[i]]];
+        stageLists[i] = stagesOf(rc, p.shader, p.variant);
+    }
+    for (std::size_t i = 0; i < toValidate.size(); ++i)
+        for (const auto& st : stageLists[i]) {
+            const std::string key = std::to_string(static_cast<int>(st.stage)) + " " + st.resolved.versionDirective +
+                                    " " + st.resolved.tokenSignature;
+            auto [it, fresh] = stageIndex.try_emplace(key, distinctStages.size());
+            if (fresh) distinctStages.push_back(&st);
+            stageRefs[i].push_back(it->second);
+        }
+    std::vector<std::shared_ptr<CompiledStage>> compiled(distinctStages.size());
+    runPool(distinctStages.size(), jobs, [&](std::size_t k) { compiled[k] = compileStage(*distinctStages[k]); });
     runPool(toValidate.size(), jobs, [&](std::size_t i) {
         const std::size_t g = toValidate[i];
         const Program& p = programs[representatives[g]];
-        groupResults[g] = validateProgram(stagesOf(rc, p.shader, p.variant), contract);
+        std::vector<std::shared_ptr<CompiledStage>> mine;
+        for (auto k : stageRefs[i]) mine.push_back(compiled[k]);
+        groupResults[g] = validateCompiledProgram(stageLists[i], mine, contract);
+        // Messages must speak of this program's own text, and a failed link leaves state
+        // in shared stages: any message means a private run.
+        if (!groupResults[g]->diagnostics.empty()) groupResults[g] = validateProgram(stageLists[i], contract);
         cache.store(p.key, *groupResults[g]);
     });
     stats.validated = toValidate.size();
+    stats.stagesCompiled = distinctStages.size();
+    compiled.clear();  // glslang objects go before glslang's FinalizeProcess
 
     // A group result with diagnostics speaks of its representative's lines: the other
     // members (other texts) are validated on their own (rare: only when there are problems).

@@ -16,7 +16,8 @@ std::string validationCacheDir(const Options& o) {
 
 void printValidationStats(std::ostream& out, const ValidationStats& s) {
     out << "prism-shaderc: validated " << s.validated << " of " << s.programs << " programs ("
-        << s.programs - s.distinct << " shared a token stream, " << s.fromCache << " from the cache)\n";
+        << s.programs - s.distinct << " shared a token stream, " << s.fromCache << " from the cache; "
+        << s.stagesCompiled << " stages parsed)\n";
 }
 
 }  // namespace prism::shaderc

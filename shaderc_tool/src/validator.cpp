@@ -3,11 +3,13 @@
 
 #include <prism/catalog/line_directive.hpp>
 #include <glslang/Public/ResourceLimits.h>
+#include <glslang/Include/PoolAlloc.h>
 #include <glslang/Public/ShaderLang.h>
 
 #include <algorithm>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <regex>
 #include <sstream>
 
@@ -205,40 +207,77 @@ void finalizeValidator() {
     glslang::FinalizeProcess();
 }
 
+struct CompiledStage {
+    std::unique_ptr<glslang::TShader> shader;  // null when the stage could not be compiled
+    bool ok = false;
+    std::vector<Diagnostic> diagnostics;
+    std::mutex mutex;  // held while a program links or reads the shader
+};
+
+std::shared_ptr<CompiledStage> compileStage(const StageToValidate& s) {
+    auto compiled = std::make_shared<CompiledStage>();
+    const StageMaps maps{&s, SourceLines(s.resolved)};
+    if (s.stage == catalog::Stage::Compute && s.resolved.versionNumber < 430) {
+        compiled->diagnostics.push_back(makeError(s.path, 1, 1,
+                                                  "compute shaders need GLSL 430 or newer, this stage is " +
+                                                      std::to_string(s.resolved.versionNumber) +
+                                                      "; add `#version 430 core` or pass --glsl-version 430"));
+        return compiled;
+    }
+    auto shader = std::make_unique<glslang::TShader>(glslangStage(s.stage));
+    const char* text = s.resolved.text.c_str();
+    shader->setStrings(&text, 1);
+    compiled->ok = shader->parse(GetDefaultResources(), s.resolved.versionNumber,
+                                 profileOf(s.resolved.versionDirective), false, false, EShMsgDefault);
+    compiled->diagnostics = mapInfoLog(shader->getInfoLog(), maps);
+    if (!compiled->ok) {
+        bool hasError = false;
+        for (const auto& d : compiled->diagnostics) hasError = hasError || d.severity == Severity::Error;
+        if (!hasError) compiled->diagnostics.push_back(makeError(s.path, 0, 0, "glslang rejected this stage"));
+    }
+    compiled->shader = std::move(shader);
+    return compiled;
+}
+
+bool compiledCleanly(const CompiledStage& stage) {
+    return stage.ok && stage.diagnostics.empty();
+}
+
 ValidatedVariant validateProgram(const std::vector<StageToValidate>& stages, const Contract& contract) {
+    std::vector<std::shared_ptr<CompiledStage>> compiled;
+    for (const auto& s : stages) compiled.push_back(compileStage(s));
+    return validateCompiledProgram(stages, compiled, contract);
+}
+
+ValidatedVariant validateCompiledProgram(const std::vector<StageToValidate>& stages,
+                                         const std::vector<std::shared_ptr<CompiledStage>>& compiledStages,
+                                         const Contract& contract) {
     ValidatedVariant result;
-    std::vector<std::unique_ptr<glslang::TShader>> shaders;
     std::vector<StageMaps> maps;
     maps.reserve(stages.size());
     bool compiled = true;
-
-    for (const auto& s : stages) {
-        maps.push_back({&s, SourceLines(s.resolved)});
-        if (s.stage == catalog::Stage::Compute && s.resolved.versionNumber < 430) {
-            result.diagnostics.push_back(makeError(s.path, 1, 1,
-                                                   "compute shaders need GLSL 430 or newer, this stage is " +
-                                                       std::to_string(s.resolved.versionNumber) +
-                                                       "; add `#version 430 core` or pass --glsl-version 430"));
-            compiled = false;
-            shaders.push_back(nullptr);
-            continue;
-        }
-        auto shader = std::make_unique<glslang::TShader>(glslangStage(s.stage));
-        const char* text = s.resolved.text.c_str();
-        shader->setStrings(&text, 1);
-        const bool ok = shader->parse(GetDefaultResources(), s.resolved.versionNumber,
-                                      profileOf(s.resolved.versionDirective), false, false, EShMsgDefault);
-        auto mapped = mapInfoLog(shader->getInfoLog(), maps.back());
-        result.diagnostics.insert(result.diagnostics.end(), mapped.begin(), mapped.end());
-        if (!ok) {
-            compiled = false;
-            bool hasError = false;
-            for (const auto& d : mapped) hasError = hasError || d.severity == Severity::Error;
-            if (!hasError) result.diagnostics.push_back(makeError(s.path, 0, 0, "glslang rejected this stage"));
-        }
-        shaders.push_back(std::move(shader));
+    for (std::size_t i = 0; i < stages.size(); ++i) {
+        maps.push_back({&stages[i], SourceLines(stages[i].resolved)});
+        const auto& c = *compiledStages[i];
+        result.diagnostics.insert(result.diagnostics.end(), c.diagnostics.begin(), c.diagnostics.end());
+        compiled = compiled && c.ok;
     }
     if (!compiled) return result;
+
+    // Stages may be shared with programs on other threads: hold each one's lock, in
+    // address order (no deadlock), while their glslang objects are read and linked.
+    std::vector<CompiledStage*> order;
+    for (const auto& c : compiledStages)
+        if (std::find(order.begin(), order.end(), c.get()) == order.end()) order.push_back(c.get());
+    std::sort(order.begin(), order.end());
+    std::vector<std::unique_lock<std::mutex>> locks;
+    for (auto* c : order) locks.emplace_back(c->mutex);
+    std::vector<glslang::TShader*> shaders;
+    for (const auto& c : compiledStages) shaders.push_back(c->shader.get());
+    // glslang allocates from a per-thread pool that parse() and link() point at their
+    // own; a stage parsed on another thread leaves this thread's pointing anywhere.
+    glslang::TPoolAllocator pool;
+    glslang::SetThreadPoolAllocator(&pool);
 
     SourceLocator locate;
     locate.path = [&](std::size_t stage, std::uint32_t number) { return pathOf(stages[stage], number); };
@@ -256,7 +295,7 @@ ValidatedVariant validateProgram(const std::vector<StageToValidate>& stages, con
     if (!io.empty() || !bound.empty()) return result;
 
     glslang::TProgram program;
-    for (auto& sh : shaders) program.addShader(sh.get());
+    for (auto* sh : shaders) program.addShader(sh);
     if (!program.link(EShMsgDefault)) {
         std::istringstream log(program.getInfoLog());
         std::string line;

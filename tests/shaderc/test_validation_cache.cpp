@@ -20,7 +20,7 @@ namespace {
 
 // "validated V of N programs (S shared a token stream, C from the cache)" -> {V, N, S, C}.
 std::array<int, 4> statsOf(const std::string& output) {
-    static const std::regex line(R"(validated (\d+) of (\d+) programs \((\d+) shared a token stream, (\d+) from the cache\))");
+    static const std::regex line(R"(validated (\d+) of (\d+) programs \((\d+) shared a token stream, (\d+) from the cache;)");
     std::smatch m;
     if (!std::regex_search(output, m, line)) return {-1, -1, -1, -1};
     return {std::stoi(m[1]), std::stoi(m[2]), std::stoi(m[3]), std::stoi(m[4])};
