@@ -15,12 +15,14 @@ interleaved (one round runs each case once), timed as whole processes:
        stage including it has a new token stream), cache warm from before the edit
   (rn) re-check after a comment-only edit of modules/lighting.glsl, cache warm
 
-Prints a Markdown table with medians and the ratio (g)/case next to its target.
+Prints a Markdown table with medians of wall-clock and CPU (user + sys) time and the
+ratio (g)/case next to its target (the target is on wall-clock time).
 
   python3 scripts/bench_shaderc_check.py --shaderc build/shaderc_tool/prism-shaderc --runs 7
 """
 import argparse
 import os
+import resource
 import shutil
 import statistics
 import subprocess
@@ -31,10 +33,16 @@ import time
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
+CPU = [0.0]  # CPU seconds (user + sys) of the last run()'s process
+
+
 def run(cmd, cwd=None):
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
     proc = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     elapsed = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    CPU[0] = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
     return proc.returncode, proc.stdout, elapsed
 
 
@@ -108,6 +116,7 @@ def main():
             ("(rn) re-check after a comment-only edit of lighting.glsl", lambda: recheck("comment"), 10.0),
         ]
         times = {name: [] for name, _, _ in cases}
+        cpu = {name: [] for name, _, _ in cases}
         for name, fn, _ in cases:  # warm-up round
             fn()
         for _ in range(args.runs):
@@ -116,6 +125,7 @@ def main():
                 if rc != 0:
                     sys.exit(f"{name} failed:\n{out[-2000:]}")
                 times[name].append(elapsed)
+                cpu[name].append(CPU[0])
                 for line in out.splitlines():
                     if line.startswith("prism-shaderc: validated"):
                         stats[name] = line[len("prism-shaderc: "):]
@@ -125,16 +135,19 @@ def main():
               f"{args.runs} interleaved runs per case after a warm-up; nproc = {os.cpu_count()}, "
               f"load average {load[0]:.2f}.")
         print()
-        print("| case | median ms | min ms | (g) / case | target | met | prism-shaderc --stats |")
-        print("|---|---:|---:|---:|---:|---|---|")
+        print("| case | median ms | min ms | (g) / case | target | met | CPU ms (median) | (g) / case, CPU | "
+              "prism-shaderc --stats |")
+        print("|---|---:|---:|---:|---:|---|---:|---:|---|")
+        ref_cpu = statistics.median(cpu[cases[0][0]])
         ref = statistics.median(times[cases[0][0]])
         for name, _, target in cases:
             med = statistics.median(times[name])
             ratio = ref / med
             met = "" if target is None else ("yes" if ratio >= target else "**no**")
             tgt = "" if target is None else f"≥ {target:g}×"
+            med_cpu = statistics.median(cpu[name])
             print(f"| {name} | {med * 1000:.1f} | {min(times[name]) * 1000:.1f} | {ratio:.2f}× | {tgt} | {met} | "
-                  f"{stats.get(name, '')} |")
+                  f"{med_cpu * 1000:.1f} | {ref_cpu / med_cpu:.2f}× | {stats.get(name, '')} |")
     finally:
         if args.keep:
             print(f"\nscratch directory kept: {work}")
