@@ -2,7 +2,7 @@
 // interface and contract checks, reflection), kept in the build tree so that a check
 // after an edit validates only the programs whose token streams changed.
 //
-// - Key: the program's token key (tool version, contract, each stage's kind, #version
+// - Key: the program's token key (tool build and glslang version, contract, each stage's kind, #version
 //   and token signature) and its text key (also the exact texts, line tables and
 //   paths). A result without diagnostics is reused on the token key alone (comments
 //   or line layout cannot change it); one with diagnostics only on the text key too,

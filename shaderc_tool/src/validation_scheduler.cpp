@@ -4,9 +4,12 @@
 
 #include <algorithm>
 #include <atomic>
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <thread>
+
+#include <glslang/Public/ShaderLang.h>
 
 #include "content_hash.hpp"
 
@@ -35,11 +38,30 @@ std::vector<StageToValidate> stagesOf(const ResolvedCatalog& rc, std::size_t s, 
     return stages;
 }
 
+// What makes two builds of the tool validate alike: its version, glslang's, and this
+// executable's size and time (a rebuilt tool never trusts an older build's results).
+std::string toolIdentity() {
+    static const std::string identity = [] {
+        const auto v = glslang::GetVersion();
+        std::string id = std::string(PRISM_VERSION) + " glslang " + std::to_string(v.major) + "." +
+                         std::to_string(v.minor) + "." + std::to_string(v.patch);
+        std::error_code ec;
+        const auto exe = std::filesystem::canonical("/proc/self/exe", ec);
+        if (!ec) {
+            const auto size = std::filesystem::file_size(exe, ec);
+            const auto time = std::filesystem::last_write_time(exe, ec).time_since_epoch().count();
+            if (!ec) id += " " + std::to_string(size) + " " + std::to_string(time);
+        }
+        return id;
+    }();
+    return identity;
+}
+
 }  // namespace
 
 ProgramKey programKey(const ResolvedCatalog& rc, const Contract& contract, std::size_t s, std::size_t v) {
     ContentHash tokens;
-    tokens.add("prism-shaderc validation").add(PRISM_VERSION);
+    tokens.add("prism-shaderc validation").add(toolIdentity());
     for (const auto& a : contract.attributes) tokens.add(a.name).add(a.type).add(std::to_string(a.location));
     tokens.add("uniforms");
     for (const auto& u : contract.uniforms) tokens.add(u.name).add(u.type).add(std::to_string(u.array));

@@ -5,6 +5,7 @@
 // The counts come from `--stats`.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <regex>
@@ -157,4 +158,24 @@ TEST(ValidationSchedule, ConcurrentWritersAndTornEntriesLeaveAValidCache) {
     auto torn = runShaderc("--check --stats --cache-dir build/cache -I m s", dir.str());
     ASSERT_EQ(torn.exitCode, 0) << torn.output;
     EXPECT_EQ(statsOf(torn.output), (std::array<int, 4>{8, 8, 0, 0})) << torn.output;
+}
+
+// Results of another build of the tool (here: a copy of the executable, another file
+// time) are not trusted: the cache key names the tool's build.
+TEST(ValidationSchedule, AnotherBuildOfTheToolDoesNotReuseResults) {
+    ScratchDir dir("sched-build");
+    writeTwoShaders(dir);
+    const std::string args = "--check --stats --cache-dir build/cache -I m s";
+    ASSERT_EQ(runShaderc(args, dir.str()).exitCode, 0);
+    fs::create_directories(dir.path() / "bin");
+    fs::copy_file(PRISM_SHADERC_EXE, dir.path() / "bin/prism-shaderc");
+    fs::last_write_time(dir.path() / "bin/prism-shaderc",
+                        fs::last_write_time(PRISM_SHADERC_EXE) + std::chrono::seconds(10));
+    const std::string copy = (dir.path() / "bin/prism-shaderc").string();
+    std::string cmd = "cd '" + dir.str() + "' && '" + copy + "' " + args + " > copy.log 2>&1";
+    ASSERT_EQ(std::system(cmd.c_str()), 0);
+    const std::string log = prism::test::readFile(dir.path() / "copy.log");
+    EXPECT_EQ(statsOf(log), (std::array<int, 4>{2, 2, 0, 0})) << log;
+    auto same = runShaderc(args, dir.str());  // the original build still finds its own
+    EXPECT_EQ(statsOf(same.output), (std::array<int, 4>{0, 2, 0, 2})) << same.output;
 }
