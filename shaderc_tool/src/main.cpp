@@ -103,8 +103,8 @@ int main(int argc, char** argv) {
         return writeBuildSystemFiles(o, catalog.filesRead);
     }
     if (sink.errorCount() == 0) {
-        const auto stats =
-            validateCatalogScheduled(catalog, contract.contract, o.jobs, ValidationCache(validationCacheDir(o)), sink);
+        ValidationCache cache(validationCacheDir(o), catalogueCacheKey(o));
+        const auto stats = validateCatalogScheduled(catalog, contract.contract, o.jobs, cache, sink);
         if (o.printStats) printValidationStats(std::cerr, stats);
     }
 

@@ -1,4 +1,5 @@
-// Validation results on disk, content-addressed (see validation_cache.hpp).
+// Validation results on disk, content-addressed, one pack per catalogue (see
+// validation_cache.hpp).
 #include "validation_cache.hpp"
 
 #include <unistd.h>
@@ -6,7 +7,6 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <thread>
 
 #include <nlohmann/json.hpp>
 
@@ -16,7 +16,7 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-constexpr int kFormat = 1;  // bump when the entry layout changes
+constexpr int kFormat = 2;  // bump when the pack layout changes
 
 json toJson(const Diagnostic& d) {
     json sites = json::array();
@@ -39,66 +39,90 @@ Diagnostic diagnosticFrom(const json& j) {
     return d;
 }
 
-}  // namespace
-
-ValidationCache::ValidationCache(std::string dir) : dir_(std::move(dir)) {}
-
-std::string ValidationCache::entryPath(const std::string& tokenKey) const {
-    return (fs::path(dir_) / tokenKey.substr(0, 2) / (tokenKey + ".json")).string();
+json toJson(const std::string& text, const ValidatedVariant& v) {
+    json attributes = json::array(), uniforms = json::array(), diagnostics = json::array();
+    for (const auto& a : v.reflection.attributes) attributes.push_back({a.name, a.glType, a.location});
+    for (const auto& u : v.reflection.uniforms) uniforms.push_back({u.name, u.glType, u.arraySize});
+    for (const auto& d : v.diagnostics) diagnostics.push_back(toJson(d));
+    return {{"text", text},          {"ok", v.ok},           {"attributes", attributes},
+            {"uniforms", uniforms}, {"diagnostics", diagnostics}};
 }
 
-std::optional<ValidatedVariant> ValidationCache::find(const ProgramKey& key) const {
-    if (!enabled()) return std::nullopt;
-    std::ifstream in(entryPath(key.tokens), std::ios::binary);
-    if (!in) return std::nullopt;
+ValidatedVariant resultFrom(const json& j) {
+    ValidatedVariant v;
+    v.ok = j.at("ok").get<bool>();
+    for (const auto& d : j.at("diagnostics")) v.diagnostics.push_back(diagnosticFrom(d));
+    for (const auto& a : j.at("attributes"))
+        v.reflection.attributes.push_back({a.at(0).get<std::string>(), a.at(1).get<std::uint32_t>(), a.at(2).get<int>()});
+    for (const auto& u : j.at("uniforms"))
+        v.reflection.uniforms.push_back({u.at(0).get<std::string>(), u.at(1).get<std::uint32_t>(), u.at(2).get<int>()});
+    return v;
+}
+
+}  // namespace
+
+ValidationCache::ValidationCache(std::string dir, const std::string& catalogueKey) {
+    if (dir.empty()) return;
+    path_ = (fs::path(dir) / (catalogueKey + ".json")).string();
+    std::ifstream in(path_, std::ios::binary);
+    if (!in) return;
     std::ostringstream text;
     text << in.rdbuf();
     try {
         const json j = json::parse(text.str());
-        if (j.at("format").get<int>() != kFormat || j.at("tokens").get<std::string>() != key.tokens)
-            return std::nullopt;
-        ValidatedVariant v;
-        v.ok = j.at("ok").get<bool>();
-        for (const auto& d : j.at("diagnostics")) v.diagnostics.push_back(diagnosticFrom(d));
-        // Diagnostics carry lines and paths: only the same texts may reuse them.
-        if (!v.diagnostics.empty() && j.at("text").get<std::string>() != key.text) return std::nullopt;
-        for (const auto& a : j.at("attributes"))
-            v.reflection.attributes.push_back(
-                {a.at(0).get<std::string>(), a.at(1).get<std::uint32_t>(), a.at(2).get<int>()});
-        for (const auto& u : j.at("uniforms"))
-            v.reflection.uniforms.push_back(
-                {u.at(0).get<std::string>(), u.at(1).get<std::uint32_t>(), u.at(2).get<int>()});
-        return v;
+        if (j.at("format").get<int>() != kFormat) return;
+        for (const auto& [key, entry] : j.at("entries").items())
+            entries_[key] = {entry.at("text").get<std::string>(), resultFrom(entry)};
     } catch (const json::exception&) {
-        return std::nullopt;  // torn by hand, or another format: validate again
+        entries_.clear();  // torn by hand, or another format: validate again
     }
 }
 
-void ValidationCache::store(const ProgramKey& key, const ValidatedVariant& result) const {
+std::optional<ValidatedVariant> ValidationCache::find(const ProgramKey& key) const {
+    std::lock_guard lock(mutex_);
+    const auto it = entries_.find(key.tokens);
+    if (it == entries_.end()) return std::nullopt;
+    // Diagnostics carry lines and paths: only the same texts may reuse them.
+    if (!it->second.result.diagnostics.empty() && it->second.text != key.text) return std::nullopt;
+    used_.insert(key.tokens);
+    return it->second.result;
+}
+
+void ValidationCache::store(const ProgramKey& key, const ValidatedVariant& result) {
     if (!enabled()) return;
-    json attributes = json::array(), uniforms = json::array(), diagnostics = json::array();
-    for (const auto& a : result.reflection.attributes) attributes.push_back({a.name, a.glType, a.location});
-    for (const auto& u : result.reflection.uniforms) uniforms.push_back({u.name, u.glType, u.arraySize});
-    for (const auto& d : result.diagnostics) diagnostics.push_back(toJson(d));
-    const json j = {{"format", kFormat},         {"tokens", key.tokens},   {"text", key.text},
-                    {"ok", result.ok},           {"attributes", attributes}, {"uniforms", uniforms},
-                    {"diagnostics", diagnostics}};
-    const fs::path target = entryPath(key.tokens);
+    std::lock_guard lock(mutex_);
+    entries_[key.tokens] = {key.text, result};
+    used_.insert(key.tokens);
+    dirty_ = true;
+}
+
+void ValidationCache::flush() {
+    std::lock_guard lock(mutex_);
+    if (!enabled() || !dirty_) return;
+    json entries = json::object();
+    for (const auto& key : used_) entries[key] = toJson(entries_[key].text, entries_[key].result);
+    // Older entries stay too (an undone edit, another build of the tool), up to a bound,
+    // so the pack cannot grow without limit.
+    const std::size_t bound = 4 * used_.size() + 64;
+    for (const auto& [key, entry] : entries_)
+        if (entries.size() < bound && !used_.contains(key)) entries[key] = toJson(entry.text, entry.result);
+    const json pack = {{"format", kFormat}, {"entries", entries}};
+    const fs::path target = path_;
     std::error_code ec;
     fs::create_directories(target.parent_path(), ec);
     if (ec) return;  // a cache that cannot be written only costs time
-    const fs::path temp = target.string() + ".tmp-" + std::to_string(::getpid()) + "-" +
-                          std::to_string(std::hash<std::thread::id>{}(std::this_thread::get_id()) & 0xffffff);
+    const fs::path temp = target.string() + ".tmp-" + std::to_string(::getpid());
     {
         std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        out << j.dump();
+        out << pack.dump();
         if (!out) {
             fs::remove(temp, ec);
             return;
         }
     }
-    fs::rename(temp, target, ec);  // atomic: readers see the old entry or the new one
+    fs::rename(temp, target, ec);  // atomic: readers see the old pack or the new one
     if (ec) fs::remove(temp, ec);
+    dirty_ = false;
 }
 
 }  // namespace prism::shaderc

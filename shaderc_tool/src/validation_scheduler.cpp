@@ -86,7 +86,7 @@ ProgramKey programKey(const ResolvedCatalog& rc, const Contract& contract, std::
 }
 
 ValidationStats validateCatalogScheduled(ResolvedCatalog& rc, const Contract& contract, int jobs,
-                                         const ValidationCache& cache, DiagnosticSink& sink) {
+                                         ValidationCache& cache, DiagnosticSink& sink) {
     struct Program {
         std::size_t shader, variant;
         ProgramKey key;
@@ -170,6 +170,7 @@ ValidationStats validateCatalogScheduled(ResolvedCatalog& rc, const Contract& co
     });
     stats.validated += ownRuns.size();
     if (!toValidate.empty() || !ownRuns.empty()) finalizeValidator();
+    cache.flush();
 
     for (std::size_t i = 0; i < programs.size(); ++i) {
         const Program& p = programs[i];

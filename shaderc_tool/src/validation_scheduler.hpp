@@ -10,7 +10,8 @@
 // A shared result is reused only when it has no diagnostics; a program whose result
 // has some is validated with its own text, so every message keeps its own lines.
 //
-//   auto stats = validateCatalogScheduled(catalog, contract, jobs, ValidationCache(dir), sink);
+//   ValidationCache cache(validationCacheDir(options), catalogueCacheKey(options));
+//   auto stats = validateCatalogScheduled(catalog, contract, jobs, cache, sink);
 #pragma once
 
 #include <cstddef>
@@ -30,7 +31,7 @@ struct ValidationStats {
 
 // Fills in every variant's reflection and reports diagnostics, as validateCatalog does.
 ValidationStats validateCatalogScheduled(ResolvedCatalog& catalog, const Contract& contract, int jobs,
-                                         const ValidationCache& cache, DiagnosticSink& sink);
+                                         ValidationCache& cache, DiagnosticSink& sink);
 
 // The content key of one variant's program (exposed for tests).
 ProgramKey programKey(const ResolvedCatalog& catalog, const Contract& contract, std::size_t shader,

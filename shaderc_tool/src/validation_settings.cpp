@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <ostream>
 
+#include "content_hash.hpp"
+
 namespace prism::shaderc {
 
 std::string validationCacheDir(const Options& o) {
@@ -12,6 +14,18 @@ std::string validationCacheDir(const Options& o) {
     if (o.stamp.empty()) return {};
     const auto parent = std::filesystem::path(o.stamp).parent_path();
     return (parent.empty() ? std::filesystem::path("prism-shaderc-cache") : parent / "prism-shaderc-cache").string();
+}
+
+std::string catalogueCacheKey(const Options& o) {
+    ContentHash h;
+    h.add("catalogue");
+    for (const auto& list : {o.inputs, o.includeDirs, o.contracts, o.variantFilters}) {
+        h.add(std::to_string(list.size()));
+        for (const auto& item : list) h.add(item);
+    }
+    for (const auto& [name, value] : o.defines) h.add(name).add(value);
+    h.add(std::to_string(o.glslVersion)).add(o.glslProfile).add(o.baseDir);
+    return h.hex();
 }
 
 void printValidationStats(std::ostream& out, const ValidationStats& s) {

@@ -3,7 +3,7 @@
 // build-system output, so in the build tree; never the source tree); without --stamp
 // and --cache-dir there is no cache.
 //
-//   ValidationCache cache(validationCacheDir(options));
+//   ValidationCache cache(validationCacheDir(options), catalogueCacheKey(options));
 #pragma once
 
 #include <iosfwd>
@@ -15,6 +15,12 @@
 namespace prism::shaderc {
 
 std::string validationCacheDir(const Options& options);
+
+// Names the catalogue's pack in the cache directory: a hash of the options that choose
+// its programs (inputs, -I, -D, --contract, --variant, --glsl-version, --base-dir), so a
+// `--check` and the build's `-o` run of one catalogue share it, and catalogues sharing
+// a directory do not overwrite each other's.
+std::string catalogueCacheKey(const Options& options);
 
 // "prism-shaderc: validated 12 of 152 programs (140 shared a token stream, 0 from the cache)".
 void printValidationStats(std::ostream& out, const ValidationStats& stats);

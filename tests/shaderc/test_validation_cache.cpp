@@ -73,10 +73,17 @@ TEST(ValidationSchedule, CacheAnswersARecheckAndAnEditRevalidatesOnlyItsPrograms
     auto first = runShaderc(args, dir.str());
     ASSERT_EQ(first.exitCode, 0) << first.output;
     EXPECT_EQ(statsOf(first.output), (std::array<int, 4>{2, 2, 0, 0})) << first.output;
-    EXPECT_EQ(filesUnder(dir.path() / "build/cache", ".json"), 2u);
+    EXPECT_EQ(filesUnder(dir.path() / "build/cache", ".json"), 1u);  // one pack for the catalogue
 
     auto again = runShaderc(args, dir.str());
     EXPECT_EQ(statsOf(again.output), (std::array<int, 4>{0, 2, 0, 2})) << again.output;
+
+    // Another catalogue sharing the directory keeps its own pack.
+    dir.write("t/c.vert", "#version 330 core\nvoid main() { gl_Position = vec4(1.0); }\n");
+    dir.write("t/c.frag", "#version 330 core\nout vec4 o;\nvoid main() { o = vec4(1.0); }\n");
+    auto other = runShaderc("--check --stats --cache-dir build/cache t", dir.str());
+    EXPECT_EQ(statsOf(other.output), (std::array<int, 4>{1, 1, 0, 0})) << other.output;
+    EXPECT_EQ(statsOf(runShaderc(args, dir.str()).output), (std::array<int, 4>{0, 2, 0, 2}));
 
     // A code edit of one.glsl: only shader a is validated again.
     dir.write("m/one.glsl", "// Provides: one().\nfloat one() { return 1.0 + 0.0; }\n");
@@ -121,7 +128,7 @@ TEST(ValidationSchedule, DefaultCacheLivesNextToTheStampNeverInTheWorkingDirecto
 
     auto stamped = runShaderc("--check --stats --stamp build/shaders.stamp -I m s", dir.str());
     ASSERT_EQ(stamped.exitCode, 0) << stamped.output;
-    EXPECT_EQ(filesUnder(dir.path() / "build/prism-shaderc-cache", ".json"), 2u);
+    EXPECT_EQ(filesUnder(dir.path() / "build/prism-shaderc-cache", ".json"), 1u);
     auto restamped = runShaderc("--check --stats --stamp build/shaders.stamp -I m s", dir.str());
     EXPECT_EQ(statsOf(restamped.output)[3], 2) << restamped.output;
 
