@@ -18,7 +18,8 @@ interleaved (one round runs each case once), timed as whole processes:
 Prints a Markdown table with medians of wall-clock and CPU (user + sys) time and the
 ratio (g)/case next to its target (the target is on wall-clock time).
 
-  python3 scripts/bench_shaderc_check.py --shaderc build/shaderc_tool/prism-shaderc --runs 7
+  python3 scripts/bench_shaderc_check.py --shaderc build/shaderc_tool/prism-shaderc --runs 7 \
+      [--baseline OLD/prism-shaderc]
 """
 import argparse
 import os
@@ -52,6 +53,8 @@ def main():
     ap.add_argument("--glslang", default=shutil.which("glslangValidator") or "glslangValidator")
     ap.add_argument("--runs", type=int, default=7)
     ap.add_argument("--keep", action="store_true", help="keep the scratch directory")
+    ap.add_argument("--baseline", help="another prism-shaderc (e.g. built from an older commit) to time as "
+                    "(b): `--check -j 2` without the cache flags")
     args = ap.parse_args()
 
     work = tempfile.mkdtemp(prefix="prism-bench-check-")
@@ -115,6 +118,9 @@ def main():
             ("(rc) re-check after a code edit of lighting.glsl", lambda: recheck("code"), 10.0),
             ("(rn) re-check after a comment-only edit of lighting.glsl", lambda: recheck("comment"), 10.0),
         ]
+        if args.baseline:
+            cases.insert(1, ("(b) baseline prism-shaderc --check -j 2 (--baseline)",
+                             lambda: run([args.baseline, "--check", "-j", "2"] + common, work), None))
         times = {name: [] for name, _, _ in cases}
         cpu = {name: [] for name, _, _ in cases}
         for name, fn, _ in cases:  # warm-up round

@@ -216,7 +216,6 @@ struct CompiledStage {
 
 std::shared_ptr<CompiledStage> compileStage(const StageToValidate& s) {
     auto compiled = std::make_shared<CompiledStage>();
-    const StageMaps maps{&s, SourceLines(s.resolved)};
     if (s.stage == catalog::Stage::Compute && s.resolved.versionNumber < 430) {
         compiled->diagnostics.push_back(makeError(s.path, 1, 1,
                                                   "compute shaders need GLSL 430 or newer, this stage is " +
@@ -229,7 +228,10 @@ std::shared_ptr<CompiledStage> compileStage(const StageToValidate& s) {
     shader->setStrings(&text, 1);
     compiled->ok = shader->parse(GetDefaultResources(), s.resolved.versionNumber,
                                  profileOf(s.resolved.versionDirective), false, false, EShMsgDefault);
-    compiled->diagnostics = mapInfoLog(shader->getInfoLog(), maps);
+    if (const char* log = shader->getInfoLog(); log && *log) {  // the line texts only when there is a message
+        const StageMaps maps{&s, SourceLines(s.resolved)};
+        compiled->diagnostics = mapInfoLog(log, maps);
+    }
     if (!compiled->ok) {
         bool hasError = false;
         for (const auto& d : compiled->diagnostics) hasError = hasError || d.severity == Severity::Error;
@@ -253,11 +255,8 @@ ValidatedVariant validateCompiledProgram(const std::vector<StageToValidate>& sta
                                          const std::vector<std::shared_ptr<CompiledStage>>& compiledStages,
                                          const Contract& contract) {
     ValidatedVariant result;
-    std::vector<StageMaps> maps;
-    maps.reserve(stages.size());
     bool compiled = true;
     for (std::size_t i = 0; i < stages.size(); ++i) {
-        maps.push_back({&stages[i], SourceLines(stages[i].resolved)});
         const auto& c = *compiledStages[i];
         result.diagnostics.insert(result.diagnostics.end(), c.diagnostics.begin(), c.diagnostics.end());
         compiled = compiled && c.ok;
@@ -285,10 +284,17 @@ ValidatedVariant validateCompiledProgram(const std::vector<StageToValidate>& sta
     std::vector<StageInterface> interfaces;
     for (std::size_t i = 0; i < stages.size(); ++i) {
         interfaces.push_back(extractStageInterface(stages[i].stage, *shaders[i]));
-        for (auto& v : interfaces.back().variables) maps[i].lines.locateDeclaration(v);
     }
     auto io = checkStageInterfaces(interfaces, locate);
     auto bound = checkContract(contract, interfaces, locate);
+    if (!io.empty() || !bound.empty()) {  // messages: find the declarations' lines, then check again
+        for (std::size_t i = 0; i < stages.size(); ++i) {
+            const SourceLines lines(stages[i].resolved);
+            for (auto& v : interfaces[i].variables) lines.locateDeclaration(v);
+        }
+        io = checkStageInterfaces(interfaces, locate);
+        bound = checkContract(contract, interfaces, locate);
+    }
     result.diagnostics.insert(result.diagnostics.end(), io.begin(), io.end());
     result.diagnostics.insert(result.diagnostics.end(), bound.begin(), bound.end());
     // glslang's own link check would only repeat these, with less detail.
