@@ -68,3 +68,16 @@ TEST(VariantSharing, AMacroMetOnlyUnderAnotherAxisStillCounts) {
     EXPECT_NE(both.find("#define B 1"), std::string::npos) << both;
     EXPECT_NE(readFile(dir.path() / "out/a.B-1_A-0.frag").find("#define B 1"), std::string::npos);
 }
+
+// `##` can build a macro's name from pieces: a file that pastes tokens is never
+// trusted to be free of an axis (here the pasted MYAXIS changes the token stream, so
+// the two variants must not share one).
+TEST(VariantSharing, TokenPastingDisablesSharing) {
+    ScratchDir dir("variant-sharing-paste");
+    dir.write("s/a.vert", "#version 330 core\n#pragma prism variant MYAXIS\nvoid main() { gl_Position = vec4(0.0); }\n");
+    dir.write("s/a.frag", "#version 330 core\n#define CAT(x, y) x##y\nout vec4 o;\n"
+                          "void main() { o = vec4(float(CAT(MY, AXIS))); }\n");
+    auto run = runShaderc("--check --stats --emit-glsl out --cache-dir none s", dir.str());
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("validated 2 of 2 programs (0 shared a token stream"), std::string::npos) << run.output;
+}
