@@ -105,6 +105,7 @@ int main(int argc, char** argv) {
     if (sink.errorCount() == 0) {
         ValidationCache cache(validationCacheDir(o), catalogueCacheKey(o));
         const auto stats = validateCatalogScheduled(catalog, contract.contract, o.jobs, cache, sink);
+        if (o.printStats) printResolutionStats(std::cerr, catalog);
         if (o.printStats) printValidationStats(std::cerr, stats);
     }
 

@@ -28,6 +28,18 @@ std::string catalogueCacheKey(const Options& o) {
     return h.hex();
 }
 
+void printResolutionStats(std::ostream& out, const ResolvedCatalog& catalog) {
+    std::size_t stages = 0, shared = 0;
+    for (const auto& shader : catalog.resolved)
+        for (const auto& variant : shader)
+            for (const auto& stage : variant) {
+                ++stages;
+                shared += stage.shared;
+            }
+    out << "prism-shaderc: resolved " << stages - shared << " of " << stages << " stages with glslang (" << shared
+        << " shared another variant's run)\n";
+}
+
 void printValidationStats(std::ostream& out, const ValidationStats& s) {
     out << "prism-shaderc: validated " << s.validated << " of " << s.programs << " programs ("
         << s.programs - s.distinct << " shared a token stream, " << s.fromCache << " from the cache; "

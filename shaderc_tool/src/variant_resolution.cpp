@@ -66,6 +66,7 @@ ResolveResult withDefines(const ResolveResult& from, const ResolveOptions& fromO
     std::string head = r.stage.text.substr(0, r.stage.text.find('\n') + 1);  // the #version line
     for (const auto& [name, value] : options.defines) head += "#define " + name + (value.empty() ? "" : " " + value) + "\n";
     r.stage.text = head + r.stage.text.substr(end);
+    r.stage.shared = true;
     return r;
 }
 

@@ -67,6 +67,12 @@ TEST(VariantSharing, AMacroMetOnlyUnderAnotherAxisStillCounts) {
     EXPECT_EQ(onlyA.find("float bPart()"), std::string::npos) << onlyA;
     EXPECT_NE(both.find("#define B 1"), std::string::npos) << both;
     EXPECT_NE(readFile(dir.path() / "out/a.B-1_A-0.frag").find("#define B 1"), std::string::npos);
+    // The vertex stage meets only B: A=1 shares A=0's run (2 of 4 vertex variants), and so
+    // does the fragment stage's B=1 with B=0 when A=0 (1 of 4).
+    auto stats = runShaderc("--check --stats --cache-dir none s", dir.str());
+    EXPECT_NE(stats.output.find("resolved 5 of 8 stages with glslang (3 shared another variant's run)"),
+              std::string::npos)
+        << stats.output;
 }
 
 // `##` can build a macro's name from pieces: a file that pastes tokens is never
