@@ -98,6 +98,8 @@ std::shared_ptr<const FileAnalysis> analysisOf(const std::string& text) {
     analysis->guard = includeGuardOf(analysis->lines);
     analysis->glslangText = textForGlslang(analysis->lines);
     std::lock_guard lock(mutex);
+    // Bounded: the runtime's hot reload runs these stages in a long-lived process.
+    if (known.size() >= 4096) known.clear();
     return known.try_emplace(text, std::move(analysis)).first->second;
 }
 
