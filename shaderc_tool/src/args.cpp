@@ -41,6 +41,28 @@ std::string joinCommandLine(int argc, char** argv, const std::string& baseDir) {
     return out;
 }
 
+// A usage error: printed on stderr, exit status 2.
+ArgsResult usageError(const std::string& message) {
+    std::cerr << "prism-shaderc: error: " << message << "\n";
+    return {std::nullopt, 2};
+}
+
+// Flag combinations where a flag would be ignored are refused, naming both flags;
+// "" when the combination does what it says.
+std::string conflictOf(const Options& o, const CLI::App& app) {
+    if (o.checkOnly && !o.output.empty())
+        return "--check writes no header, but -o " + o.output +
+               " asks for one; drop --check (a run with -o validates too) or drop -o";
+    if (!o.depfile.empty() && o.stamp.empty() && o.output.empty())
+        return "--depfile " + o.depfile + " needs a target to name: give --stamp <file> or -o <header>";
+    if (app.count("--namespace") > 0 && o.output.empty())
+        return "--namespace only names the generated header's namespace, and no header is written: give -o "
+               "<header> or drop --namespace";
+    if (!o.checkOnly && o.output.empty() && o.emitGlslDir.empty())
+        return "nothing to write: give -o <header>, --emit-glsl <dir> or --check";
+    return {};
+}
+
 }  // namespace
 
 ArgsResult parseArgs(int argc, char** argv) {
@@ -50,17 +72,22 @@ ArgsResult parseArgs(int argc, char** argv) {
     CLI::App app{"prism-shaderc: resolve #includes, validate GLSL with glslang and embed it in a C++ header",
                  "prism-shaderc"};
     app.set_version_flag("--version", std::string("prism-shaderc ") + PRISM_VERSION);
-    app.add_option("inputs", o.inputs, "shader stage files (.vert .geom .frag .comp) or directories")->required();
+    // Unknown options are collected (not an error inside CLI11, whose required-positional
+    // check would otherwise speak first) and named below.
+    app.allow_extras();
+    app.add_option("inputs", o.inputs, "shader stage files (.vert .geom .frag .comp) or directories");
     app.add_option("-I", o.includeDirs, "module search directory (repeatable, searched in order)")
         ->allow_extra_args(false);
     app.add_option("-o", o.output, "generated C++ header");
-    app.add_option("--depfile", o.depfile, "Make-style depfile listing every file read");
+    app.add_option("--depfile", o.depfile, "Make-style depfile listing every file read (target: --stamp, else -o)");
     app.add_option("--stamp", o.stamp, "file touched on every successful run (build-system output)");
-    app.add_option("--emit-glsl", o.emitGlslDir, "also write each flattened stage as DIR/<shader>[.<variant>].<stage>");
-    app.add_flag("--check", o.checkOnly, "validate only, write nothing");
+    app.add_option("--emit-glsl", o.emitGlslDir,
+                   "also write each flattened stage as DIR/<shader>[.<variant>].<stage> (with --check too)");
+    app.add_flag("--check", o.checkOnly, "validate only: no header (--emit-glsl, --depfile, --stamp still written)");
     app.add_option("-D", defines, "define a macro for every stage: NAME[=VALUE]")->allow_extra_args(false);
     app.add_option("--glsl-version", o.glslVersion, "default #version when a shader has none")->capture_default_str();
-    app.add_option("--namespace", o.nameSpace, "C++ namespace of the generated code")->capture_default_str();
+    app.add_option("--namespace", o.nameSpace, "C++ namespace of the generated code (needs -o)")
+        ->capture_default_str();
     app.add_option("--contract", o.contracts, "binding contract JSON (attributes and uniforms the runtime provides)")
         ->allow_extra_args(false);
     app.add_option("--variant", o.variantFilters,
@@ -69,6 +96,10 @@ ArgsResult parseArgs(int argc, char** argv) {
     app.add_option("--base-dir", o.baseDir, "paths embedded in the header are made relative to this directory");
     app.add_option("--errfmt", errfmt, "diagnostic format")->check(CLI::IsMember({"gcc", "msvc"}));
     app.add_option("-j", o.jobs, "parallel jobs (default: all cores)")->check(CLI::NonNegativeNumber);
+    app.add_flag("--stats", o.printStats, "print how many programs were validated, shared or found in the cache");
+    app.add_option("--cache-dir", o.cacheDir,
+                   "validation results cache (content-addressed); default: next to --stamp, none without "
+                   "--stamp; 'none' disables it");
 
     try {
         app.parse(argc, argv);
@@ -76,23 +107,22 @@ ArgsResult parseArgs(int argc, char** argv) {
         int code = app.exit(e);
         return {std::nullopt, e.get_exit_code() == 0 ? 0 : (code == 0 ? 0 : 2)};
     }
+    for (const auto& extra : app.remaining())
+        if (extra.size() > 1 && extra[0] == '-')
+            return usageError("unknown option '" + extra + "'; see prism-shaderc --help");
+    if (!app.remaining().empty()) o.inputs.insert(o.inputs.end(), app.remaining().begin(), app.remaining().end());
+    if (o.inputs.empty()) return usageError("no shader inputs: give shader files or directories (see --help)");
     for (const auto& d : defines) {
         auto nv = splitDefine(d);
-        if (!isIdentifier(nv.first)) {
-            std::cerr << "prism-shaderc: error: -D " << d << ": '" << nv.first
-                      << "' is not a macro name; use -D NAME or -D NAME=VALUE\n";
-            return {std::nullopt, 2};
-        }
+        if (!isIdentifier(nv.first))
+            return usageError("-D " + d + ": '" + nv.first + "' is not a macro name; use -D NAME or -D NAME=VALUE");
         o.defines.push_back(nv);
     }
     o.errorFormat = errfmt == "msvc" ? ErrorFormat::Msvc : ErrorFormat::Gcc;
     if (o.jobs == 0) o.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     if (o.glslVersion >= 150 && o.glslVersion < 300) o.glslProfile = "core";
     if (o.glslVersion < 150) o.glslProfile.clear();
-    if (!o.checkOnly && o.output.empty() && o.emitGlslDir.empty()) {
-        std::cerr << "prism-shaderc: error: nothing to write: give -o <header>, --emit-glsl <dir> or --check\n";
-        return {std::nullopt, 2};
-    }
+    if (auto conflict = conflictOf(o, app); !conflict.empty()) return usageError(conflict);
     if (o.baseDir.empty()) o.baseDir = std::filesystem::current_path().string();
     o.baseDir = std::filesystem::absolute(o.baseDir).lexically_normal().string();
     o.commandLine = joinCommandLine(argc, argv, o.baseDir);

@@ -21,12 +21,14 @@ struct Options {
     std::string stamp;                                         // --stamp: touched on every successful run
     std::string emitGlslDir;                                   // --emit-glsl
     std::string baseDir;                                       // --base-dir: embedded paths are relative to it
+    std::string cacheDir;  // --cache-dir: validation results cache ("" = default, "none" = off)
     std::string nameSpace = "prism::shaders";
     int glslVersion = 330;
     std::string glslProfile = "core";
     ErrorFormat errorFormat = ErrorFormat::Gcc;
     int jobs = 0;  // 0 = hardware concurrency
-    bool checkOnly = false;
+    bool printStats = false;  // --stats: how many programs were validated, shared, or found in the cache
+    bool checkOnly = false;  // --check: no header; --emit-glsl, --depfile, --stamp are still written
     std::string commandLine;  // for the banner
 };
 

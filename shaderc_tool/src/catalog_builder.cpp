@@ -12,6 +12,7 @@
 #include "module_naming.hpp"
 #include "shown_path.hpp"
 #include "validator.hpp"
+#include "variant_resolution.hpp"
 #include "variants.hpp"
 
 namespace prism::shaderc {
@@ -175,6 +176,8 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
             auto r = resolveStage(st.path, base, reader);
             sink.reportAll(r.diagnostics);
             ok = ok && r.ok;
+            for (const auto& f : r.stage.files)  // used even when the stage fails: no "no stage includes" warning
+                if (f.number > 0 && includedCanonical.insert(f.canonical).second) includedPath[f.canonical] = f.path;
             pragmas.insert(pragmas.end(), r.stage.variantPragmas.begin(), r.stage.variantPragmas.end());
             stagePaths.push_back(st.path);
         }
@@ -187,13 +190,14 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
 
         CatalogShader cs{shader.name, axes.axes, {}, {}};
         std::vector<std::vector<ResolvedStage>> resolvedVariants;
-        for (const auto& choice : choices.choices) {
-            ResolveOptions vo = base;
-            vo.defines.insert(vo.defines.end(), choice.defines.begin(), choice.defines.end());
+        auto resolvedAll = resolveVariants(stagePaths, base, choices.choices, reader, o.jobs);  // on -j threads
+        for (std::size_t vi = 0; vi < choices.choices.size(); ++vi) {
+            const auto& choice = choices.choices[vi];
             CatalogVariant cv{choice.name, choice.defines, {}, {}};
             std::vector<ResolvedStage> stages;
-            for (const auto& st : shader.stages) {
-                auto r = resolveStage(st.path, vo, reader);
+            for (std::size_t si = 0; si < shader.stages.size(); ++si) {
+                const auto& st = shader.stages[si];
+                auto r = std::move(resolvedAll[vi][si]);
                 sink.reportAll(r.diagnostics);
                 ok = ok && r.ok;
                 CatalogStage cst{st.stage, r.stage.text, {}};

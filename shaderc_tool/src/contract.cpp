@@ -2,6 +2,8 @@
 #include "prism/io/json_nesting.hpp"
 #include "contract.hpp"
 
+#include "did_you_mean.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -137,22 +139,6 @@ void loadOne(const std::string& path, const std::string& text, Contract& c, std:
                 c.uniforms.push_back(std::move(uni));
             }
     }
-}
-
-// Levenshtein distance, for "did you mean" hints.
-std::size_t editDistance(const std::string& a, const std::string& b) {
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        std::size_t diag = row[0];
-        row[0] = i;
-        for (std::size_t j = 1; j <= b.size(); ++j) {
-            std::size_t up = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
-            diag = up;
-        }
-    }
-    return row[b.size()];
 }
 
 template <class T>

@@ -2,6 +2,12 @@
 // glslang_preprocessor.hpp).
 #include "glslang_preprocessor.hpp"
 
+#include "content_hash.hpp"
+
+#include <memory>
+#include <mutex>
+#include <unordered_map>
+
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 
@@ -67,6 +73,34 @@ std::string textForGlslang(const std::vector<LogicalLine>& lines) {
         out += line.endsInComment ? " /*\n" : "\n";  // the comment goes on below
     }
     return out;
+}
+
+// What a file's text alone decides (its logical lines, include guard, the text glslang
+// reads, whether its conditionals balance), computed once per distinct text: the same
+// modules enter every variant of every stage.
+struct FileAnalysis {
+    std::vector<LogicalLine> lines;
+    std::string guard;
+    std::string glslangText;
+    bool balanced = true;
+};
+
+std::shared_ptr<const FileAnalysis> analysisOf(const std::string& text) {
+    static std::mutex mutex;
+    static std::unordered_map<std::string, std::shared_ptr<const FileAnalysis>> known;
+    {
+        std::lock_guard lock(mutex);
+        if (auto it = known.find(text); it != known.end()) return it->second;
+    }
+    auto analysis = std::make_shared<FileAnalysis>();
+    analysis->lines = splitLogicalLines(text);
+    analysis->balanced = checkConditionalStructure("", analysis->lines).empty();
+    analysis->guard = includeGuardOf(analysis->lines);
+    analysis->glslangText = textForGlslang(analysis->lines);
+    std::lock_guard lock(mutex);
+    // Bounded: the runtime's hot reload runs these stages in a long-lived process.
+    if (known.size() >= 4096) known.clear();
+    return known.try_emplace(text, std::move(analysis)).first->second;
 }
 
 std::string describeChain(const std::vector<std::string>& files) {
@@ -137,8 +171,10 @@ class RecordingIncluder final : public glslang::TShader::Includer {
         file.display = display;
         file.canonical = canonical;
         file.chain = std::move(chain);
-        file.lines = splitLogicalLines(text);
-        auto limitErrors = checkConditionalStructure(display, file.lines);
+        const auto analysis = analysisOf(text);
+        file.lines = analysis->lines;
+        auto limitErrors =
+            analysis->balanced ? std::vector<Diagnostic>{} : checkConditionalStructure(display, file.lines);
         for (auto& e : checkPreprocessorLimits(display, file.lines, macroSizes_)) limitErrors.push_back(std::move(e));
         for (auto& e : limitErrors) {
             e.includedFrom = file.chain;
@@ -146,9 +182,9 @@ class RecordingIncluder final : public glslang::TShader::Includer {
             run_.diagnostics.push_back(std::move(e));
         }
         FileFlags& flags = flags_[canonical];
-        if (!flags.entered) flags.guard = includeGuardOf(file.lines);
+        if (!flags.entered) flags.guard = analysis->guard;
         flags.entered = true;
-        texts_.push_back(limitErrors.empty() ? textForGlslang(file.lines) : std::string());
+        texts_.push_back(limitErrors.empty() ? analysis->glslangText : std::string());
         stack_.push_back(file.number);
         run_.files.push_back(std::move(file));
         return run_.files.back();
@@ -375,6 +411,7 @@ PreprocessRun preprocessWithGlslang(const std::string& path, const ResolveOption
     const bool ok = shader.preprocess(GetDefaultResources(), version.number, profileOf(version), true, false,
                                       EShMsgDefault, &output, includer);
     if (!ok) addGlslangErrors(shader.getInfoLog(), includer, run);
+    run.tokenSignature = tokenSignature(output);
     run.ok = std::none_of(run.diagnostics.begin(), run.diagnostics.end(),
                           [](const Diagnostic& d) { return d.severity == Severity::Error; });
     return run;

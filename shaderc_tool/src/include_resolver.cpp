@@ -3,6 +3,8 @@
 // scans modules for the catalogue (see include_resolver.hpp for the rules).
 #include "include_resolver.hpp"
 
+#include <prism/catalog/line_directive.hpp>
+
 #include <algorithm>
 #include <array>
 #include <regex>
@@ -245,17 +247,16 @@ class Flattener {
         body_.insert(body_.end(), lines.begin(), lines.end());
     }
 
-    // Line 1 the version, then the -D defines, then the body. Since GLSL 3.30 (and in
-    // GLSL ES) the line after `#line N` is line N; before 3.30 it is line N + 1.
+    // Line 1 the version, then the -D defines, then the body; `#line` numbers follow
+    // prism/catalog/line_directive.hpp (N or N + 1 by version).
     std::string render(const GlslVersion& version) const {
-        const bool lineDirectiveNamesNextLine = version.isEs() || version.number >= 330;
+        const catalog::GlslVersionTag tag{version.number, version.isEs()};
         std::string text = version.directive() + "\n";
         for (const auto& [name, value] : options_.defines)
             text += "#define " + name + (value.empty() ? "" : " " + value) + "\n";
         for (const auto& piece : body_) {
             if (const auto* marker = std::get_if<LineMarker>(&piece)) {
-                const int number = lineDirectiveNamesNextLine ? marker->nextLine : marker->nextLine - 1;
-                text += "#line " + std::to_string(number) + " " + std::to_string(marker->source) + "\n";
+                text += catalog::lineDirective(marker->nextLine, marker->source, tag) + "\n";
             } else {
                 text += std::get<std::string>(piece) + "\n";
             }
@@ -452,6 +453,7 @@ ResolveResult resolveStage(const std::string& stagePath, const ResolveOptions& o
     }
     result.diagnostics.insert(result.diagnostics.end(), run.diagnostics.begin(), run.diagnostics.end());
     flattener->finish(result);
+    result.stage.tokenSignature = run.tokenSignature;
     for (const auto& file : run.files) {
         result.stage.files.push_back({file.number, file.display, file.canonical, file.chain});
         result.stage.filesRead.push_back(file.display);

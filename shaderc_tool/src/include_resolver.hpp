@@ -44,6 +44,8 @@ struct ResolvedStage {
     std::vector<ResolvedFile> files;  // index == source number
     std::vector<VariantPragma> variantPragmas;
     std::vector<std::string> filesRead;  // display paths of every file read, in order
+    std::string tokenSignature;          // what the compiler sees (content_hash.hpp): the validation cache key
+    bool shared = false;                 // copied from another variant's run (variant_resolution.hpp)
 };
 
 struct ResolveResult {

@@ -19,7 +19,8 @@
 #include "shader_inputs.hpp"
 #include "source_fingerprint.hpp"
 #include "source_reader.hpp"
-#include "validator.hpp"
+#include "validation_scheduler.hpp"
+#include "validation_settings.hpp"
 
 using namespace prism::shaderc;
 
@@ -139,9 +140,10 @@ int main(int argc, char** argv) {
         return writeBuildSystemFiles(o, catalog.filesRead);
     }
     if (sink.errorCount() == 0) {
-        initializeValidator();
-        validateCatalog(catalog, contract.contract, o.jobs, sink);
-        finalizeValidator();
+        ValidationCache cache(validationCacheDir(o), catalogueCacheKey(o));
+        const auto stats = validateCatalogScheduled(catalog, contract.contract, o.jobs, cache, sink);
+        if (o.printStats) printResolutionStats(std::cerr, catalog);
+        if (o.printStats) printValidationStats(std::cerr, stats);
     }
 
     sink.print(std::cerr, o.errorFormat);
@@ -149,7 +151,6 @@ int main(int argc, char** argv) {
         std::cerr << "prism-shaderc: " << sink.errorCount() << " error(s); nothing written\n";
         return kExitShaderErrors;
     }
-    if (o.checkOnly) return kExitOk;
     if (int rc = writeOutputs(o, catalog); rc != kExitOk) return rc;
     return writeBuildSystemFiles(o, catalog.filesRead);
 }

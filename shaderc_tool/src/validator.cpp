@@ -1,14 +1,19 @@
 // glslang compilation, linking and message mapping for one program variant.
 #include "validator.hpp"
 
+#include <prism/catalog/line_directive.hpp>
 #include <glslang/Public/ResourceLimits.h>
+#include <glslang/Include/PoolAlloc.h>
 #include <glslang/Public/ShaderLang.h>
 
+#include <algorithm>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <regex>
 #include <sstream>
 
+#include "did_you_mean.hpp"
 #include "interface_check.hpp"
 #include "stage_interface.hpp"
 
@@ -59,13 +64,13 @@ class SourceLines {
         std::string line;
         std::uint32_t source = 0;
         int next = 1;
-        const int lineOffset = stage.versionNumber >= 330 ? 0 : 1;
+        const auto version = catalog::glslVersionOf(stage.versionDirective);
         bool first = true;
         while (std::getline(in, line)) {
             if (!line.empty() && line.back() == '\r') line.pop_back();
             unsigned n = 0, s = 0;
             if (std::sscanf(line.c_str(), " #line %u %u", &n, &s) == 2) {
-                next = static_cast<int>(n) + lineOffset;
+                next = catalog::lineAfterDirective(static_cast<int>(n), version);
                 source = s;
                 first = false;
                 continue;
@@ -101,6 +106,18 @@ class SourceLines {
   private:
     std::map<std::pair<std::uint32_t, int>, std::string> lines_;
 };
+
+// The column glslang's message points at: the token it names on that line, else
+// (glslang gives no column, e.g. for a syntax error) the line's first non-blank one.
+int columnOf(const std::string* lineText, const std::string& tok) {
+    if (!lineText) return 0;
+    if (!tok.empty())
+        if (const auto pos = findWord(*lineText, tok); pos != std::string_view::npos) return static_cast<int>(pos) + 1;
+    if (!tok.empty())
+        if (const auto pos = lineText->find(tok); pos != std::string::npos) return static_cast<int>(pos) + 1;
+    const auto first = lineText->find_first_not_of(" \t");
+    return first == std::string::npos ? 0 : static_cast<int>(first) + 1;
+}
 
 struct StageMaps {
     const StageToValidate* stage;
@@ -142,14 +159,18 @@ std::vector<Diagnostic> mapInfoLog(const std::string& log, const StageMaps& maps
         while (!message.empty() && message.back() == ' ') message.pop_back();
         if (message.find("compilation terminated") != std::string::npos) continue;
         int column = 0;
+        std::string tok;
         std::smatch t;
         if (std::regex_match(message, t, token)) {
-            std::string tok = t[1];
-            message = tok.empty() ? std::string(t[2]) : "'" + tok + "': " + std::string(t[2]);
-            if (const auto* text = maps.lines.find(source, lineNo); text && !tok.empty()) {
-                auto pos = text->find(tok);
-                if (pos != std::string::npos) column = static_cast<int>(pos) + 1;
-            }
+            tok = t[1];
+            std::string rest = t[2];
+            rest.erase(0, rest.find_first_not_of(' '));  // glslang writes "'' :  syntax error"
+            message = tok.empty() ? rest : "'" + tok + "': " + rest;
+        }
+        column = columnOf(maps.lines.find(source, lineNo), tok);
+        if (!tok.empty() && message.ends_with("no matching overloaded function found")) {
+            auto functions = functionNamesIn(maps.stage->resolved.text);
+            if (!std::binary_search(functions.begin(), functions.end(), tok)) message += didYouMean(tok, functions);
         }
         Diagnostic d = makeError(pathOf(*maps.stage, source), lineNo, column, message);
         d.severity = m[1] == "ERROR" ? Severity::Error : Severity::Warning;
@@ -186,40 +207,76 @@ void finalizeValidator() {
     glslang::FinalizeProcess();
 }
 
-ValidatedVariant validateProgram(const std::vector<StageToValidate>& stages, const Contract& contract) {
-    ValidatedVariant result;
-    std::vector<std::unique_ptr<glslang::TShader>> shaders;
-    std::vector<StageMaps> maps;
-    maps.reserve(stages.size());
-    bool compiled = true;
+struct CompiledStage {
+    std::unique_ptr<glslang::TShader> shader;  // null when the stage could not be compiled
+    bool ok = false;
+    std::vector<Diagnostic> diagnostics;
+    std::mutex mutex;  // held while a program links or reads the shader
+};
 
-    for (const auto& s : stages) {
-        maps.push_back({&s, SourceLines(s.resolved)});
-        if (s.stage == catalog::Stage::Compute && s.resolved.versionNumber < 430) {
-            result.diagnostics.push_back(makeError(s.path, 1, 1,
-                                                   "compute shaders need GLSL 430 or newer, this stage is " +
-                                                       std::to_string(s.resolved.versionNumber) +
-                                                       "; add `#version 430 core` or pass --glsl-version 430"));
-            compiled = false;
-            shaders.push_back(nullptr);
-            continue;
-        }
-        auto shader = std::make_unique<glslang::TShader>(glslangStage(s.stage));
-        const char* text = s.resolved.text.c_str();
-        shader->setStrings(&text, 1);
-        const bool ok = shader->parse(GetDefaultResources(), s.resolved.versionNumber,
-                                      profileOf(s.resolved.versionDirective), false, false, EShMsgDefault);
-        auto mapped = mapInfoLog(shader->getInfoLog(), maps.back());
-        result.diagnostics.insert(result.diagnostics.end(), mapped.begin(), mapped.end());
-        if (!ok) {
-            compiled = false;
-            bool hasError = false;
-            for (const auto& d : mapped) hasError = hasError || d.severity == Severity::Error;
-            if (!hasError) result.diagnostics.push_back(makeError(s.path, 0, 0, "glslang rejected this stage"));
-        }
-        shaders.push_back(std::move(shader));
+std::shared_ptr<CompiledStage> compileStage(const StageToValidate& s) {
+    auto compiled = std::make_shared<CompiledStage>();
+    if (s.stage == catalog::Stage::Compute && s.resolved.versionNumber < 430) {
+        compiled->diagnostics.push_back(makeError(s.path, 1, 1,
+                                                  "compute shaders need GLSL 430 or newer, this stage is " +
+                                                      std::to_string(s.resolved.versionNumber) +
+                                                      "; add `#version 430 core` or pass --glsl-version 430"));
+        return compiled;
+    }
+    auto shader = std::make_unique<glslang::TShader>(glslangStage(s.stage));
+    const char* text = s.resolved.text.c_str();
+    shader->setStrings(&text, 1);
+    compiled->ok = shader->parse(GetDefaultResources(), s.resolved.versionNumber,
+                                 profileOf(s.resolved.versionDirective), false, false, EShMsgDefault);
+    if (const char* log = shader->getInfoLog(); log && *log) {  // the line texts only when there is a message
+        const StageMaps maps{&s, SourceLines(s.resolved)};
+        compiled->diagnostics = mapInfoLog(log, maps);
+    }
+    if (!compiled->ok) {
+        bool hasError = false;
+        for (const auto& d : compiled->diagnostics) hasError = hasError || d.severity == Severity::Error;
+        if (!hasError) compiled->diagnostics.push_back(makeError(s.path, 0, 0, "glslang rejected this stage"));
+    }
+    compiled->shader = std::move(shader);
+    return compiled;
+}
+
+bool compiledCleanly(const CompiledStage& stage) {
+    return stage.ok && stage.diagnostics.empty();
+}
+
+ValidatedVariant validateProgram(const std::vector<StageToValidate>& stages, const Contract& contract) {
+    std::vector<std::shared_ptr<CompiledStage>> compiled;
+    for (const auto& s : stages) compiled.push_back(compileStage(s));
+    return validateCompiledProgram(stages, compiled, contract);
+}
+
+ValidatedVariant validateCompiledProgram(const std::vector<StageToValidate>& stages,
+                                         const std::vector<std::shared_ptr<CompiledStage>>& compiledStages,
+                                         const Contract& contract) {
+    ValidatedVariant result;
+    bool compiled = true;
+    for (std::size_t i = 0; i < stages.size(); ++i) {
+        const auto& c = *compiledStages[i];
+        result.diagnostics.insert(result.diagnostics.end(), c.diagnostics.begin(), c.diagnostics.end());
+        compiled = compiled && c.ok;
     }
     if (!compiled) return result;
+
+    // Stages may be shared with programs on other threads: hold each one's lock, in
+    // address order (no deadlock), while their glslang objects are read and linked.
+    std::vector<CompiledStage*> order;
+    for (const auto& c : compiledStages)
+        if (std::find(order.begin(), order.end(), c.get()) == order.end()) order.push_back(c.get());
+    std::sort(order.begin(), order.end());
+    std::vector<std::unique_lock<std::mutex>> locks;
+    for (auto* c : order) locks.emplace_back(c->mutex);
+    std::vector<glslang::TShader*> shaders;
+    for (const auto& c : compiledStages) shaders.push_back(c->shader.get());
+    // glslang allocates from a per-thread pool that parse() and link() point at their
+    // own; a stage parsed on another thread leaves this thread's pointing anywhere.
+    glslang::TPoolAllocator pool;
+    glslang::SetThreadPoolAllocator(&pool);
 
     SourceLocator locate;
     locate.path = [&](std::size_t stage, std::uint32_t number) { return pathOf(stages[stage], number); };
@@ -227,17 +284,24 @@ ValidatedVariant validateProgram(const std::vector<StageToValidate>& stages, con
     std::vector<StageInterface> interfaces;
     for (std::size_t i = 0; i < stages.size(); ++i) {
         interfaces.push_back(extractStageInterface(stages[i].stage, *shaders[i]));
-        for (auto& v : interfaces.back().variables) maps[i].lines.locateDeclaration(v);
     }
     auto io = checkStageInterfaces(interfaces, locate);
     auto bound = checkContract(contract, interfaces, locate);
+    if (!io.empty() || !bound.empty()) {  // messages: find the declarations' lines, then check again
+        for (std::size_t i = 0; i < stages.size(); ++i) {
+            const SourceLines lines(stages[i].resolved);
+            for (auto& v : interfaces[i].variables) lines.locateDeclaration(v);
+        }
+        io = checkStageInterfaces(interfaces, locate);
+        bound = checkContract(contract, interfaces, locate);
+    }
     result.diagnostics.insert(result.diagnostics.end(), io.begin(), io.end());
     result.diagnostics.insert(result.diagnostics.end(), bound.begin(), bound.end());
     // glslang's own link check would only repeat these, with less detail.
     if (!io.empty() || !bound.empty()) return result;
 
     glslang::TProgram program;
-    for (auto& sh : shaders) program.addShader(sh.get());
+    for (auto* sh : shaders) program.addShader(sh);
     if (!program.link(EShMsgDefault)) {
         std::istringstream log(program.getInfoLog());
         std::string line;

@@ -3,6 +3,7 @@
 // glslang message back to the module's own file:line (with its "included from" chain).
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -33,5 +34,20 @@ void finalizeValidator();
 
 // Thread-safe: each call uses its own glslang objects.
 ValidatedVariant validateProgram(const std::vector<StageToValidate>& stages, const Contract& contract);
+
+// One stage parsed by glslang, shareable by the programs whose stage has the same
+// token stream (validation_scheduler.hpp). Its diagnostics speak of the text it was
+// compiled from.
+struct CompiledStage;
+std::shared_ptr<CompiledStage> compileStage(const StageToValidate& stage);  // thread-safe
+bool compiledCleanly(const CompiledStage& stage);                          // parsed without any message
+
+// validateProgram with the stages compiled before, possibly shared with other programs
+// (each stage's lock is held while it is linked and read). glslang's link keeps state
+// in a shared stage, so a caller re-validates a program whose result has diagnostics
+// with validateProgram, on private stages.
+ValidatedVariant validateCompiledProgram(const std::vector<StageToValidate>& stages,
+                                         const std::vector<std::shared_ptr<CompiledStage>>& compiled,
+                                         const Contract& contract);
 
 }  // namespace prism::shaderc

@@ -106,6 +106,22 @@ TEST(ComposeLayout, OneVersionLineLineDirectivesAndFilesTable) {
     EXPECT_EQ(text.files[4].path, "modules/top.glsl");
 }
 
+// The `#line` rule is prism/catalog/line_directive.hpp's: GLSL ES (any version) and GLSL
+// 3.30+ name the next line N, older GLSL N + 1, so every file still starts at its line 1.
+TEST(ComposeLayout, LineDirectivesFollowTheVersionsRule) {
+    const ComposeStage stage{cat::Stage::Fragment, {0}, kFragmentSource, "app/custom.frag"};
+    cat::Catalog es = kCatalog;
+    es.versionDirective = "#version 300 es";
+    const auto esText = prism::gl::composeStage(es, stage);
+    EXPECT_EQ(esText.source.rfind("#version 300 es\n#line 1 1\n// base\n", 0), 0u) << esText.source;
+    EXPECT_NE(esText.source.find("#line 1 0\n"), std::string::npos) << esText.source;
+    cat::Catalog old = kCatalog;
+    old.versionDirective = "#version 150";
+    const auto oldText = prism::gl::composeStage(old, stage);
+    EXPECT_EQ(oldText.source.rfind("#version 150\n#line 0 1\n// base\n", 0), 0u) << oldText.source;
+    EXPECT_NE(oldText.source.find("#line 0 0\n"), std::string::npos) << oldText.source;
+}
+
 TEST(ComposeLayout, UserVersionLineIsBlankedAndIncludeRefused) {
     const ComposeStage withVersion{cat::Stage::Fragment, {}, "#version 450\nvoid f() {}\n", "u.frag"};
     const auto text = prism::gl::composeStage(kCatalog, withVersion);

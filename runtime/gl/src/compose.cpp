@@ -3,6 +3,8 @@
 
 #include <cctype>
 
+#include <prism/catalog/line_directive.hpp>
+
 #include "compose_check.hpp"
 
 namespace prism::gl {
@@ -12,15 +14,6 @@ constexpr std::string_view kDefaultVersion = "#version 330 core";
 
 std::string_view versionDirectiveOf(const catalog::Catalog& c) {
     return c.versionDirective.empty() ? kDefaultVersion : c.versionDirective;
-}
-
-// The number in "#version 330 core"; 0 when it cannot be read.
-int versionNumber(std::string_view directive) {
-    std::size_t p = directive.find_first_of("0123456789");
-    int v = 0;
-    while (p < directive.size() && std::isdigit(static_cast<unsigned char>(directive[p])))
-        v = v * 10 + (directive[p++] - '0');
-    return v;
 }
 
 const catalog::Module& moduleAt(const catalog::Catalog& c, std::uint32_t id) {
@@ -98,9 +91,8 @@ StageText composeStage(const catalog::Catalog& catalog, const ComposeStage& stag
     text.stage = stage.stage;
     const std::string userName =
         stage.sourceName.empty() ? "<composed " + std::string(catalog::stageName(stage.stage)) + ">" : stage.sourceName;
-    // GLSL 3.30+: `#line L N` numbers the next line L; before 3.30 it numbers it L + 1.
-    const int firstLine = versionNumber(versionDirectiveOf(catalog)) >= 330 ? 1 : 0;
-    const std::string lineOne = "#line " + std::to_string(firstLine) + " ";
+    // Each file starts at its line 1 (the `#line` rule: prism/catalog/line_directive.hpp).
+    const auto version = catalog::glslVersionOf(versionDirectiveOf(catalog));
 
     std::string& src = text.source;
     src.append(versionDirectiveOf(catalog));
@@ -119,14 +111,14 @@ StageText composeStage(const catalog::Catalog& catalog, const ComposeStage& stag
     std::uint32_t number = 1;
     for (std::uint32_t id : moduleOrder(catalog, stage.modules)) {
         const catalog::Module& m = catalog.modules[id];
-        src += lineOne + std::to_string(number) + '\n';
+        src += catalog::lineDirective(1, number, version) + '\n';
         std::string body = catalog::joinChunks(m.chunks);
         if (!body.empty() && body.back() != '\n') body += '\n';
         src += body;
         text.files.push_back({number, m.path.empty() ? std::string(m.name) : std::string(m.path)});
         ++number;
     }
-    src += lineOne + "0\n";
+    src += catalog::lineDirective(1, 0, version) + '\n';
     src += userText(stage.source, userName);
     return text;
 }

@@ -1,0 +1,108 @@
+// "Did you mean" hints: edit distance, function names of a stage, include candidates
+// (see did_you_mean.hpp).
+#include "did_you_mean.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <regex>
+#include <set>
+
+#include "include_search.hpp"
+
+namespace prism::shaderc {
+
+std::size_t editDistance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diag = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t up = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            diag = up;
+        }
+    }
+    return row[b.size()];
+}
+
+std::string closestName(std::string_view name, const std::vector<std::string>& candidates) {
+    const std::size_t limit = std::min<std::size_t>(1 + name.size() / 3, name.size() > 0 ? name.size() - 1 : 0);
+    std::string best;
+    std::size_t bestDistance = limit + 1;
+    for (const auto& c : candidates) {
+        if (c == name) continue;
+        const std::size_t d = editDistance(name, c);
+        if (d < bestDistance || (d == bestDistance && !best.empty() && c < best)) {
+            bestDistance = d;
+            best = c;
+        }
+    }
+    return best;
+}
+
+std::string didYouMean(std::string_view name, const std::vector<std::string>& candidates) {
+    const std::string best = closestName(name, candidates);
+    return best.empty() ? std::string() : " (did you mean '" + best + "'?)";
+}
+
+namespace {
+
+// The text with comments replaced by spaces (line breaks kept).
+std::string withoutComments(std::string_view text) {
+    std::string out(text);
+    for (std::size_t i = 0; i + 1 < out.size(); ++i) {
+        if (out[i] == '/' && out[i + 1] == '/') {
+            while (i < out.size() && out[i] != '\n') out[i++] = ' ';
+        } else if (out[i] == '/' && out[i + 1] == '*') {
+            out[i] = out[i + 1] = ' ';
+            for (i += 2; i < out.size() && !(out[i] == '*' && i + 1 < out.size() && out[i + 1] == '/'); ++i)
+                if (out[i] != '\n') out[i] = ' ';
+            if (i + 1 < out.size()) out[i] = out[i + 1] = ' ';
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+std::vector<std::string> functionNamesIn(std::string_view glsl) {
+    static const std::regex function(
+        R"(^[ \t]*(?:(?:highp|mediump|lowp|precise|invariant)[ \t]+)*[A-Za-z_]\w*(?:[ \t]*\[[^\]]*\])?[ \t]+([A-Za-z_]\w*)[ \t]*\()");
+    static const std::set<std::string> notTypes = {"return", "else", "if", "while", "for", "switch", "case", "do"};
+    std::set<std::string> names;
+    const std::string text = withoutComments(glsl);
+    std::size_t start = 0;
+    while (start < text.size()) {
+        std::size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        const std::string line = text.substr(start, end - start);
+        std::smatch m;
+        if (std::regex_search(line, m, function)) {
+            const std::string first = line.substr(line.find_first_not_of(" \t"));
+            const std::string typeWord = first.substr(0, first.find_first_of(" \t["));
+            if (!notTypes.contains(typeWord)) names.insert(m[1]);
+        }
+        start = end + 1;
+    }
+    return {names.begin(), names.end()};
+}
+
+std::vector<std::string> includeCandidates(const IncludeTarget& target, const std::vector<SearchDir>& dirs) {
+    namespace fs = std::filesystem;
+    const std::string name = target.name;
+    const auto slash = name.rfind('/');
+    const std::string folder = slash == std::string::npos ? std::string() : name.substr(0, slash + 1);
+    std::set<std::string> found;
+    for (const auto& dir : dirs) {
+        std::string relative = folder;
+        while (!relative.empty() && relative.front() == '/') relative.erase(0, 1);  // "/lib/x": below the dir
+        const fs::path where = fs::path(dir.path.empty() ? "." : dir.path) / relative;
+        std::error_code ec;
+        for (auto it = fs::directory_iterator(where, ec); !ec && it != fs::directory_iterator(); it.increment(ec))
+            if (it->is_regular_file(ec)) found.insert(folder + it->path().filename().string());
+    }
+    return {found.begin(), found.end()};
+}
+
+}  // namespace prism::shaderc

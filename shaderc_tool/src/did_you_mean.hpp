@@ -1,0 +1,38 @@
+// "Did you mean" hints for prism-shaderc's diagnostics: the closest known name by edit
+// distance, the functions a resolved stage defines (for glslang's "no matching
+// overloaded function found") and the files an #include could have meant (for
+// "cannot find include").
+//
+//   didYouMean("lightng", {"lighting", "fog"})  // " (did you mean 'lighting'?)"
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace prism::shaderc {
+
+struct SearchDir;
+struct IncludeTarget;
+
+// Levenshtein distance.
+std::size_t editDistance(std::string_view a, std::string_view b);
+
+// The candidate closest to `name` (edit distance at most 1 + size / 3, and less than
+// `name`'s size), never `name` itself; "" when none is close.
+std::string closestName(std::string_view name, const std::vector<std::string>& candidates);
+
+// " (did you mean 'x'?)" with the closest candidate, or "".
+std::string didYouMean(std::string_view name, const std::vector<std::string>& candidates);
+
+// Names of the functions defined or declared at global scope in GLSL text (a return
+// type, a name and a parameter list at the start of a line, outside comments).
+std::vector<std::string> functionNamesIn(std::string_view glsl);
+
+// The paths an #include of `target` could have meant: files next to where each
+// searched folder would have had it ("a/utl.glsl" -> the files of each dir/a/), as
+// the include would spell them.
+std::vector<std::string> includeCandidates(const IncludeTarget& target, const std::vector<SearchDir>& dirs);
+
+}  // namespace prism::shaderc

@@ -1,0 +1,195 @@
+// Deduplicated, cached, multi-threaded validation of a catalogue (see
+// validation_scheduler.hpp).
+#include "validation_scheduler.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <thread>
+
+#include <glslang/Public/ShaderLang.h>
+
+#include "content_hash.hpp"
+
+namespace prism::shaderc {
+namespace {
+
+// Runs job(i) for i in [0, count) on up to `jobs` threads (this one included).
+void runPool(std::size_t count, int jobs, const std::function<void(std::size_t)>& job) {
+    std::atomic<std::size_t> next{0};
+    auto worker = [&] {
+        for (std::size_t i; (i = next.fetch_add(1)) < count;) job(i);
+    };
+    const std::size_t threads = std::clamp<std::size_t>(static_cast<std::size_t>(std::max(jobs, 1)), 1,
+                                                        std::max<std::size_t>(1, count));
+    std::vector<std::thread> pool;
+    for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
+    worker();
+    for (auto& th : pool) th.join();
+}
+
+std::vector<StageToValidate> stagesOf(const ResolvedCatalog& rc, std::size_t s, std::size_t v) {
+    std::vector<StageToValidate> stages;
+    const auto& resolved = rc.resolved[s][v];
+    for (std::size_t st = 0; st < resolved.size(); ++st)
+        stages.push_back({rc.data.shaders[s].variants[v].stages[st].stage, rc.stagePaths[s][st], resolved[st]});
+    return stages;
+}
+
+// What makes two builds of the tool validate alike: its version, glslang's, and this
+// executable's size and time (a rebuilt tool never trusts an older build's results).
+std::string toolIdentity() {
+    static const std::string identity = [] {
+        const auto v = glslang::GetVersion();
+        std::string id = std::string(PRISM_VERSION) + " glslang " + std::to_string(v.major) + "." +
+                         std::to_string(v.minor) + "." + std::to_string(v.patch);
+        std::error_code ec;
+        const auto exe = std::filesystem::canonical("/proc/self/exe", ec);
+        if (!ec) {
+            const auto size = std::filesystem::file_size(exe, ec);
+            const auto time = std::filesystem::last_write_time(exe, ec).time_since_epoch().count();
+            if (!ec) id += " " + std::to_string(size) + " " + std::to_string(time);
+        }
+        return id;
+    }();
+    return identity;
+}
+
+}  // namespace
+
+ProgramKey programKey(const ResolvedCatalog& rc, const Contract& contract, std::size_t s, std::size_t v) {
+    ContentHash tokens;
+    tokens.add("prism-shaderc validation").add(toolIdentity());
+    for (const auto& a : contract.attributes) tokens.add(a.name).add(a.type).add(std::to_string(a.location));
+    tokens.add("uniforms");
+    for (const auto& u : contract.uniforms) tokens.add(u.name).add(u.type).add(std::to_string(u.array));
+    const auto& resolved = rc.resolved[s][v];
+    const auto& variant = rc.data.shaders[s].variants[v];
+    for (std::size_t st = 0; st < resolved.size(); ++st) {
+        tokens.add(std::to_string(static_cast<int>(variant.stages[st].stage)))
+            .add(resolved[st].versionDirective)
+            .add(resolved[st].tokenSignature);
+    }
+    ContentHash text;
+    text.add(tokens.hex());
+    for (const auto& f : contract.files) text.add(f);
+    for (std::size_t st = 0; st < resolved.size(); ++st) {
+        text.add(rc.stagePaths[s][st]).add(resolved[st].text);
+        for (const auto& file : resolved[st].files) {
+            text.add(file.path);
+            for (const auto& site : file.chain) text.add(site.file).add(std::to_string(site.line));
+        }
+    }
+    return {tokens.hex(), text.hex()};
+}
+
+ValidationStats validateCatalogScheduled(ResolvedCatalog& rc, const Contract& contract, int jobs,
+                                         ValidationCache& cache, DiagnosticSink& sink) {
+    struct Program {
+        std::size_t shader, variant;
+        ProgramKey key;
+    };
+    std::vector<Program> programs;
+    for (std::size_t s = 0; s < rc.data.shaders.size(); ++s)
+        for (std::size_t v = 0; v < rc.data.shaders[s].variants.size(); ++v)
+            programs.push_back({s, v, programKey(rc, contract, s, v)});
+
+    // One representative per token key, in catalogue order.
+    std::map<std::string, std::size_t> groupOf;
+    std::vector<std::size_t> representatives;
+    for (std::size_t i = 0; i < programs.size(); ++i)
+        if (groupOf.try_emplace(programs[i].key.tokens, representatives.size()).second) representatives.push_back(i);
+
+    ValidationStats stats;
+    stats.programs = programs.size();
+    stats.distinct = representatives.size();
+    std::vector<std::optional<ValidatedVariant>> groupResults(representatives.size());
+    std::vector<std::size_t> toValidate;
+    for (std::size_t g = 0; g < representatives.size(); ++g) {
+        groupResults[g] = cache.find(programs[representatives[g]].key);
+        if (groupResults[g]) ++stats.fromCache;
+        else toValidate.push_back(g);
+    }
+    if (!toValidate.empty()) initializeValidator();
+    // Each distinct stage (kind, #version, token stream) of those programs is parsed
+    // once, then shared by the programs using it.
+    std::vector<std::vector<StageToValidate>> stageLists(toValidate.size());
+    std::map<std::string, std::size_t> stageIndex;
+    std::vector<const StageToValidate*> distinctStages;
+    std::vector<std::vector<std::size_t>> stageRefs(toValidate.size());
+    for (std::size_t i = 0; i < toValidate.size(); ++i) {
+        const Program& p = programs[representatives[toValidate[i]]];
+        stageLists[i] = stagesOf(rc, p.shader, p.variant);
+    }
+    for (std::size_t i = 0; i < toValidate.size(); ++i)
+        for (const auto& st : stageLists[i]) {
+            const std::string key = std::to_string(static_cast<int>(st.stage)) + " " + st.resolved.versionDirective +
+                                    " " + st.resolved.tokenSignature;
+            auto [it, fresh] = stageIndex.try_emplace(key, distinctStages.size());
+            if (fresh) distinctStages.push_back(&st);
+            stageRefs[i].push_back(it->second);
+        }
+    std::vector<std::shared_ptr<CompiledStage>> compiled(distinctStages.size());
+    runPool(distinctStages.size(), jobs, [&](std::size_t k) { compiled[k] = compileStage(*distinctStages[k]); });
+    runPool(toValidate.size(), jobs, [&](std::size_t i) {
+        const std::size_t g = toValidate[i];
+        const Program& p = programs[representatives[g]];
+        std::vector<std::shared_ptr<CompiledStage>> mine;
+        for (auto k : stageRefs[i]) mine.push_back(compiled[k]);
+        groupResults[g] = validateCompiledProgram(stageLists[i], mine, contract);
+        // Messages must speak of this program's own text, and a failed link leaves state
+        // in shared stages: any message means a private run.
+        if (!groupResults[g]->diagnostics.empty()) groupResults[g] = validateProgram(stageLists[i], contract);
+        cache.store(p.key, *groupResults[g]);
+    });
+    stats.validated = toValidate.size();
+    stats.stagesCompiled = distinctStages.size();
+    compiled.clear();  // glslang objects go before glslang's FinalizeProcess
+
+    // A group result with diagnostics speaks of its representative's lines: the other
+    // members (other texts) are validated on their own (rare: only when there are problems).
+    std::vector<std::optional<ValidatedVariant>> results(programs.size());
+    std::vector<std::size_t> ownRuns;
+    for (std::size_t i = 0; i < programs.size(); ++i) {
+        const std::size_t g = groupOf[programs[i].key.tokens];
+        const Program& rep = programs[representatives[g]];
+        if (groupResults[g]->diagnostics.empty() || rep.key.text == programs[i].key.text) {
+            results[i] = groupResults[g];
+        } else if (auto hit = cache.find(programs[i].key)) {
+            results[i] = std::move(hit);
+        } else {
+            ownRuns.push_back(i);
+        }
+    }
+    if (!ownRuns.empty() && toValidate.empty()) initializeValidator();
+    runPool(ownRuns.size(), jobs, [&](std::size_t k) {
+        const Program& p = programs[ownRuns[k]];
+        results[ownRuns[k]] = validateProgram(stagesOf(rc, p.shader, p.variant), contract);
+    });
+    stats.validated += ownRuns.size();
+    if (!toValidate.empty() || !ownRuns.empty()) finalizeValidator();
+    cache.flush();
+
+    for (std::size_t i = 0; i < programs.size(); ++i) {
+        const Program& p = programs[i];
+        auto& shader = rc.data.shaders[p.shader];
+        auto& variant = shader.variants[p.variant];
+        for (auto d : results[i]->diagnostics) {
+            if (shader.variants.size() > 1 && d.severity == Severity::Error)
+                d.notes.push_back({Severity::Note,
+                                   "",
+                                   0,
+                                   0,
+                                   "in variant " + variant.name + " of shader '" + shader.name + "'",
+                                   {},
+                                   {}});
+            sink.report(std::move(d));
+        }
+        variant.reflection = std::move(results[i]->reflection);
+    }
+    return stats;
+}
+
+}  // namespace prism::shaderc

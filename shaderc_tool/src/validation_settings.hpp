@@ -1,0 +1,31 @@
+// Where the validation cache lives and how its counts are printed: --cache-dir DIR,
+// "none" for no cache, else by default `prism-shaderc-cache/` next to --stamp (a
+// build-system output, so in the build tree; never the source tree); without --stamp
+// and --cache-dir there is no cache.
+//
+//   ValidationCache cache(validationCacheDir(options), catalogueCacheKey(options));
+#pragma once
+
+#include <iosfwd>
+#include <string>
+
+#include "args.hpp"
+#include "validation_scheduler.hpp"
+
+namespace prism::shaderc {
+
+std::string validationCacheDir(const Options& options);
+
+// Names the catalogue's pack in the cache directory: a hash of the options that choose
+// its programs (inputs, -I, -D, --contract, --variant, --glsl-version, --base-dir), so a
+// `--check` and the build's `-o` run of one catalogue share it, and catalogues sharing
+// a directory do not overwrite each other's.
+std::string catalogueCacheKey(const Options& options);
+
+// "prism-shaderc: resolved 120 of 304 stages with glslang (184 shared another variant's run)".
+void printResolutionStats(std::ostream& out, const ResolvedCatalog& catalog);
+
+// "prism-shaderc: validated 12 of 152 programs (140 shared a token stream, 0 from the cache)".
+void printValidationStats(std::ostream& out, const ValidationStats& stats);
+
+}  // namespace prism::shaderc

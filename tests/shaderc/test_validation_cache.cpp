@@ -1,0 +1,237 @@
+// Validation scheduling of prism-shaderc (issue 10 item 7): programs with the same
+// token stream are validated once; a content-addressed cache in the build tree answers
+// a re-check, and an edit re-validates only the programs whose token stream changed;
+// cached diagnostics keep their own lines; concurrent writers leave a valid cache.
+// The counts come from `--stats`.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <regex>
+#include <string>
+
+#include "tool_runner.hpp"
+
+namespace fs = std::filesystem;
+using prism::test::runShaderc;
+using prism::test::ScratchDir;
+
+namespace {
+
+// "validated V of N programs (S shared a token stream, C from the cache)" -> {V, N, S, C}.
+std::array<int, 4> statsOf(const std::string& output) {
+    static const std::regex line(R"(validated (\d+) of (\d+) programs \((\d+) shared a token stream, (\d+) from the cache;)");
+    std::smatch m;
+    if (!std::regex_search(output, m, line)) return {-1, -1, -1, -1};
+    return {std::stoi(m[1]), std::stoi(m[2]), std::stoi(m[3]), std::stoi(m[4])};
+}
+
+// Shaders a and b, each including its own module.
+void writeTwoShaders(const ScratchDir& dir) {
+    dir.write("m/one.glsl", "// Provides: one().\nfloat one() { return 1.0; }\n");
+    dir.write("m/two.glsl", "// Provides: two().\nfloat two() { return 2.0; }\n");
+    for (std::string s : {"a", "b"}) {
+        dir.write("s/" + s + ".vert", "#version 330 core\nvoid main() { gl_Position = vec4(0.0); }\n");
+        dir.write("s/" + s + ".frag", "#version 330 core\n#include \"" + std::string(s == "a" ? "one" : "two") +
+                                          ".glsl\"\nout vec4 o;\nvoid main() { o = vec4(" +
+                                          (s == "a" ? "one" : "two") + "()); }\n");
+    }
+}
+
+std::size_t filesUnder(const fs::path& dir, const std::string& containing) {
+    std::size_t n = 0;
+    std::error_code ec;
+    if (!fs::exists(dir)) return 0;
+    for (const auto& e : fs::recursive_directory_iterator(dir, ec))
+        if (e.is_regular_file() && e.path().filename().string().find(containing) != std::string::npos) ++n;
+    return n;
+}
+
+}  // namespace
+
+TEST(ValidationSchedule, SameTokenStreamIsValidatedOnce) {
+    ScratchDir dir("sched-dedupe");
+    // UNUSED is an axis no line tests: both variants are one token stream.
+    dir.write("s/a.vert", "#version 330 core\nvoid main() { gl_Position = vec4(0.0); }\n");
+    dir.write("s/a.frag", "#version 330 core\n#pragma prism variant UNUSED\nout vec4 o;\nvoid main() { o = vec4(1.0); }\n");
+    auto run = runShaderc("--check --stats s", dir.str());
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_EQ(statsOf(run.output), (std::array<int, 4>{1, 2, 1, 0})) << run.output;
+    // An axis a line tests makes two token streams.
+    dir.write("s/a.frag", "#version 330 core\n#pragma prism variant USED\nout vec4 o;\n"
+                          "void main() { o = vec4(USED == 1 ? 1.0 : 0.5); }\n");
+    auto used = runShaderc("--check --stats s", dir.str());
+    ASSERT_EQ(used.exitCode, 0) << used.output;
+    EXPECT_EQ(statsOf(used.output), (std::array<int, 4>{2, 2, 0, 0})) << used.output;
+}
+
+TEST(ValidationSchedule, CacheAnswersARecheckAndAnEditRevalidatesOnlyItsPrograms) {
+    ScratchDir dir("sched-cache");
+    writeTwoShaders(dir);
+    const std::string args = "--check --stats --cache-dir build/cache -I m s";
+    auto first = runShaderc(args, dir.str());
+    ASSERT_EQ(first.exitCode, 0) << first.output;
+    EXPECT_EQ(statsOf(first.output), (std::array<int, 4>{2, 2, 0, 0})) << first.output;
+    EXPECT_EQ(filesUnder(dir.path() / "build/cache", ".json"), 1u);  // one pack for the catalogue
+
+    auto again = runShaderc(args, dir.str());
+    EXPECT_EQ(statsOf(again.output), (std::array<int, 4>{0, 2, 0, 2})) << again.output;
+
+    // Another catalogue sharing the directory keeps its own pack.
+    dir.write("t/c.vert", "#version 330 core\nvoid main() { gl_Position = vec4(1.0); }\n");
+    dir.write("t/c.frag", "#version 330 core\nout vec4 o;\nvoid main() { o = vec4(1.0); }\n");
+    auto other = runShaderc("--check --stats --cache-dir build/cache t", dir.str());
+    EXPECT_EQ(statsOf(other.output), (std::array<int, 4>{1, 1, 0, 0})) << other.output;
+    EXPECT_EQ(statsOf(runShaderc(args, dir.str()).output), (std::array<int, 4>{0, 2, 0, 2}));
+
+    // A code edit of one.glsl: only shader a is validated again.
+    dir.write("m/one.glsl", "// Provides: one().\nfloat one() { return 1.0 + 0.0; }\n");
+    auto edited = runShaderc(args, dir.str());
+    ASSERT_EQ(edited.exitCode, 0) << edited.output;
+    EXPECT_EQ(statsOf(edited.output), (std::array<int, 4>{1, 2, 0, 1})) << edited.output;
+
+    // A comment-only edit of two.glsl changes no token: nothing is validated.
+    dir.write("m/two.glsl", "// Provides: two().\n// (a note)\nfloat two() { return 2.0; } // two\n");
+    auto comment = runShaderc(args, dir.str());
+    ASSERT_EQ(comment.exitCode, 0) << comment.output;
+    EXPECT_EQ(statsOf(comment.output), (std::array<int, 4>{0, 2, 0, 2})) << comment.output;
+}
+
+TEST(ValidationSchedule, CachedDiagnosticsComeBackWithTheirOwnLines) {
+    ScratchDir dir("sched-diag");
+    writeTwoShaders(dir);
+    dir.write("m/one.glsl", "// Provides: one(), broken.\nfloat one() {\n    return missingValue;\n}\n");
+    const std::string args = "--check --stats --cache-dir build/cache -I m s";
+    auto first = runShaderc(args, dir.str());
+    EXPECT_EQ(first.exitCode, 1) << first.output;
+    EXPECT_NE(first.output.find("m/one.glsl:3:12: error: 'missingValue'"), std::string::npos) << first.output;
+    auto again = runShaderc(args, dir.str());
+    EXPECT_EQ(again.exitCode, 1) << again.output;
+    EXPECT_NE(again.output.find("m/one.glsl:3:12: error: 'missingValue'"), std::string::npos) << again.output;
+    EXPECT_EQ(statsOf(again.output)[3], 2) << again.output;  // both from the cache
+
+    // Same tokens, lines moved down by a comment: the message must move with them.
+    dir.write("m/one.glsl", "// Provides: one(), broken.\n// moved\nfloat one() {\n    return missingValue;\n}\n");
+    auto moved = runShaderc(args, dir.str());
+    EXPECT_EQ(moved.exitCode, 1) << moved.output;
+    EXPECT_NE(moved.output.find("m/one.glsl:4:12: error: 'missingValue'"), std::string::npos) << moved.output;
+    EXPECT_EQ(moved.output.find("m/one.glsl:3:12"), std::string::npos) << moved.output;
+}
+
+TEST(ValidationSchedule, DefaultCacheLivesNextToTheStampNeverInTheWorkingDirectory) {
+    ScratchDir dir("sched-where");
+    writeTwoShaders(dir);
+    auto plain = runShaderc("--check --stats -I m s", dir.str());
+    ASSERT_EQ(plain.exitCode, 0) << plain.output;
+    EXPECT_EQ(filesUnder(dir.path(), ".json"), 0u) << "a plain --check wrote a cache into the working directory";
+
+    auto stamped = runShaderc("--check --stats --stamp build/shaders.stamp -I m s", dir.str());
+    ASSERT_EQ(stamped.exitCode, 0) << stamped.output;
+    EXPECT_EQ(filesUnder(dir.path() / "build/prism-shaderc-cache", ".json"), 1u);
+    auto restamped = runShaderc("--check --stats --stamp build/shaders.stamp -I m s", dir.str());
+    EXPECT_EQ(statsOf(restamped.output)[3], 2) << restamped.output;
+
+    auto off = runShaderc("--check --stats --cache-dir none --stamp other/shaders.stamp -I m s", dir.str());
+    ASSERT_EQ(off.exitCode, 0) << off.output;
+    EXPECT_FALSE(fs::exists(dir.path() / "other/prism-shaderc-cache"));
+}
+
+TEST(ValidationSchedule, ConcurrentWritersAndTornEntriesLeaveAValidCache) {
+    ScratchDir dir("sched-concurrent");
+    writeTwoShaders(dir);
+    for (int shader = 0; shader < 6; ++shader)  // more programs to race on
+        for (std::string stage : {"vert", "frag"})
+            dir.write("s/c" + std::to_string(shader) + "." + stage,
+                      stage == "vert" ? "#version 330 core\nvoid main() { gl_Position = vec4(" +
+                                            std::to_string(shader) + ".0); }\n"
+                                      : "#version 330 core\nout vec4 o;\nvoid main() { o = vec4(" +
+                                            std::to_string(shader) + ".0); }\n");
+    const std::string exe = PRISM_SHADERC_EXE;
+    std::string parallel = "cd '" + dir.str() + "' && (";
+    for (int i = 0; i < 4; ++i)
+        parallel += "'" + exe + "' --check --stats -j 2 --cache-dir build/cache -I m s > run" + std::to_string(i) +
+                    ".log 2>&1 & ";
+    parallel += "wait)";
+    ASSERT_EQ(std::system(parallel.c_str()), 0);
+    for (int i = 0; i < 4; ++i) {
+        const std::string log = prism::test::readFile(dir.path() / ("run" + std::to_string(i) + ".log"));
+        EXPECT_EQ(statsOf(log)[1], 8) << "run " << i << ": " << log;  // it ran, on this catalogue
+        EXPECT_EQ(log.find("error"), std::string::npos) << "run " << i << ": " << log;
+    }
+    EXPECT_EQ(filesUnder(dir.path() / "build/cache", ".tmp-"), 0u);
+    auto after = runShaderc("--check --stats --cache-dir build/cache -I m s", dir.str());
+    EXPECT_EQ(statsOf(after.output), (std::array<int, 4>{0, 8, 0, 8})) << after.output;
+
+    // A torn or foreign entry is a miss, never a wrong answer.
+    for (const auto& e : fs::recursive_directory_iterator(dir.path() / "build/cache"))
+        if (e.is_regular_file()) prism::test::writeFile(e.path(), "{\"format\": 1, \"tokens\": ");
+    auto torn = runShaderc("--check --stats --cache-dir build/cache -I m s", dir.str());
+    ASSERT_EQ(torn.exitCode, 0) << torn.output;
+    EXPECT_EQ(statsOf(torn.output), (std::array<int, 4>{8, 8, 0, 0})) << torn.output;
+}
+
+// Results of another build of the tool (here: a copy of the executable, another file
+// time) are not trusted: the cache key names the tool's build.
+TEST(ValidationSchedule, AnotherBuildOfTheToolDoesNotReuseResults) {
+    ScratchDir dir("sched-build");
+    writeTwoShaders(dir);
+    const std::string args = "--check --stats --cache-dir build/cache -I m s";
+    ASSERT_EQ(runShaderc(args, dir.str()).exitCode, 0);
+    fs::create_directories(dir.path() / "bin");
+    fs::copy_file(PRISM_SHADERC_EXE, dir.path() / "bin/prism-shaderc");
+    fs::last_write_time(dir.path() / "bin/prism-shaderc",
+                        fs::last_write_time(PRISM_SHADERC_EXE) + std::chrono::seconds(10));
+    const std::string copy = (dir.path() / "bin/prism-shaderc").string();
+    std::string cmd = "cd '" + dir.str() + "' && '" + copy + "' " + args + " > copy.log 2>&1";
+    ASSERT_EQ(std::system(cmd.c_str()), 0);
+    const std::string log = prism::test::readFile(dir.path() / "copy.log");
+    EXPECT_EQ(statsOf(log), (std::array<int, 4>{2, 2, 0, 0})) << log;
+    auto same = runShaderc(args, dir.str());  // the original build still finds its own
+    EXPECT_EQ(statsOf(same.output), (std::array<int, 4>{0, 2, 0, 2})) << same.output;
+}
+
+// Reflection served by shared stages and by the cache gives the same header bytes as a
+// cold run (the project catalogue, light counts pinned).
+TEST(ValidationSchedule, HeaderFromTheCacheIsByteIdenticalToACold) {
+    ScratchDir dir("sched-header");
+    const std::string source = PRISM_SOURCE_DIR;
+    const std::string args = "-o h.hpp --stats --cache-dir " + dir.str() + "/cache --base-dir " + source +
+                             " --variant '*:DIRECTIONAL_LIGHTS=2,POINT_LIGHTS=1' -I " + source +
+                             "/modules --contract " + source + "/modules/contract.json " + source + "/shader_sources";
+    fs::create_directories(dir.path() / "cold");
+    fs::create_directories(dir.path() / "warm");
+    auto cold = runShaderc(args, (dir.path() / "cold").string());
+    ASSERT_EQ(cold.exitCode, 0) << cold.output;
+    EXPECT_EQ(statsOf(cold.output)[3], 0) << cold.output;
+    auto warm = runShaderc(args, (dir.path() / "warm").string());
+    ASSERT_EQ(warm.exitCode, 0) << warm.output;
+    EXPECT_EQ(statsOf(warm.output)[0], 0) << warm.output;  // nothing validated: all from the cache
+    const std::string a = prism::test::readFile(dir.path() / "cold/h.hpp");
+    EXPECT_GT(a.size(), 1000u);
+    EXPECT_TRUE(a == prism::test::readFile(dir.path() / "warm/h.hpp"));
+    auto uncached = runShaderc("-o h2.hpp --cache-dir none --base-dir " + source +
+                                   " --variant '*:DIRECTIONAL_LIGHTS=2,POINT_LIGHTS=1' -I " + source +
+                                   "/modules --contract " + source + "/modules/contract.json " + source +
+                                   "/shader_sources",
+                               (dir.path() / "cold").string());
+    ASSERT_EQ(uncached.exitCode, 0) << uncached.output;
+    // Only the lines naming the command line (and fingerprints of it) may differ from a
+    // run without the cache.
+    auto body = [](const std::string& header) {
+        std::string kept;
+        std::size_t start = 0;
+        while (start < header.size()) {
+            std::size_t end = header.find('\n', start);
+            if (end == std::string::npos) end = header.size();
+            const std::string line = header.substr(start, end - start);
+            if (line.find("fingerprint") == std::string::npos && line.rfind("// Command:", 0) != 0 &&
+                line.find("sources read") == std::string::npos)
+                kept += line + "\n";
+            start = end + 1;
+        }
+        return kept;
+    };
+    EXPECT_TRUE(body(a) == body(prism::test::readFile(dir.path() / "cold/h2.hpp")));
+}
