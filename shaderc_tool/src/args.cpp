@@ -24,23 +24,6 @@ bool isIdentifier(const std::string& s) {
     return true;
 }
 
-// The command line for the banner, with absolute paths made relative to the base
-// directory and without -j, so the header is the same on every machine.
-std::string joinCommandLine(int argc, char** argv, const std::string& baseDir) {
-    std::string out = "prism-shaderc";
-    for (int i = 1; i < argc; ++i) {
-        std::string arg = argv[i];
-        if (arg == "-j" && i + 1 < argc) {  // the job count never changes the output
-            ++i;
-            continue;
-        }
-        if (arg.rfind("-j", 0) == 0) continue;
-        out += ' ';
-        out += !arg.empty() && arg[0] == '/' ? embeddedPath(arg, baseDir) : arg;
-    }
-    return out;
-}
-
 // A usage error: printed on stderr, exit status 2.
 ArgsResult usageError(const std::string& message) {
     std::cerr << "prism-shaderc: error: " << message << "\n";
@@ -125,7 +108,6 @@ ArgsResult parseArgs(int argc, char** argv) {
     if (auto conflict = conflictOf(o, app); !conflict.empty()) return usageError(conflict);
     if (o.baseDir.empty()) o.baseDir = std::filesystem::current_path().string();
     o.baseDir = std::filesystem::absolute(o.baseDir).lexically_normal().string();
-    o.commandLine = joinCommandLine(argc, argv, o.baseDir);
     return {std::move(o), 0};
 }
 

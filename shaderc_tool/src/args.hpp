@@ -29,7 +29,6 @@ struct Options {
     int jobs = 0;  // 0 = hardware concurrency
     bool printStats = false;  // --stats: how many programs were validated, shared, or found in the cache
     bool checkOnly = false;  // --check: no header; --emit-glsl, --depfile, --stamp are still written
-    std::string commandLine;  // for the banner
 };
 
 struct ArgsResult {

@@ -253,50 +253,6 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
     return rc;
 }
 
-void validateCatalog(ResolvedCatalog& rc, const Contract& contract, int jobs, DiagnosticSink& sink) {
-    struct Task {
-        std::size_t shader, variant;
-    };
-    std::vector<Task> tasks;
-    for (std::size_t s = 0; s < rc.data.shaders.size(); ++s)
-        for (std::size_t v = 0; v < rc.data.shaders[s].variants.size(); ++v) tasks.push_back({s, v});
-    std::vector<ValidatedVariant> results(tasks.size());
-    std::atomic<std::size_t> next{0};
-    auto worker = [&] {
-        for (std::size_t i; (i = next.fetch_add(1)) < tasks.size();) {
-            const auto& t = tasks[i];
-            std::vector<StageToValidate> stages;
-            const auto& resolvedStages = rc.resolved[t.shader][t.variant];
-            for (std::size_t st = 0; st < resolvedStages.size(); ++st)
-                stages.push_back({rc.data.shaders[t.shader].variants[t.variant].stages[st].stage,
-                                  rc.stagePaths[t.shader][st], resolvedStages[st]});
-            results[i] = validateProgram(stages, contract);
-        }
-    };
-    const std::size_t threads =
-        std::clamp<std::size_t>(static_cast<std::size_t>(jobs), 1, std::max<std::size_t>(1, tasks.size()));
-    std::vector<std::thread> pool;
-    for (std::size_t i = 1; i < threads; ++i) pool.emplace_back(worker);
-    worker();
-    for (auto& th : pool) th.join();
-
-    for (std::size_t i = 0; i < tasks.size(); ++i) {
-        auto& variant = rc.data.shaders[tasks[i].shader].variants[tasks[i].variant];
-        for (auto& d : results[i].diagnostics) {
-            if (rc.data.shaders[tasks[i].shader].variants.size() > 1 && d.severity == Severity::Error)
-                d.notes.push_back(
-                    {Severity::Note,
-                     "",
-                     0,
-                     0,
-                     "in variant " + variant.name + " of shader '" + rc.data.shaders[tasks[i].shader].name + "'",
-                     {},
-                     {}});
-            sink.report(std::move(d));
-        }
-        variant.reflection = std::move(results[i].reflection);
-    }
-}
 
 std::string fingerprint(const ResolvedCatalog& rc) {
     // FNV-1a over the resolved texts, paths and everything else the generated files print.

@@ -26,9 +26,6 @@ struct ResolvedCatalog {
 ResolvedCatalog resolveCatalog(const Options& options, const std::vector<ShaderInput>& shaders,
                                const Contract& contract, const SourceReader& reader, DiagnosticSink& sink);
 
-// Runs glslang on every variant and fills in the reflection tables.
-void validateCatalog(ResolvedCatalog& catalog, const Contract& contract, int jobs, DiagnosticSink& sink);
-
 // A stable fingerprint of everything that determines the header's content.
 std::string fingerprint(const ResolvedCatalog& catalog);
 
