@@ -25,6 +25,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -38,6 +39,8 @@
 #include "prism/gl/gl_context.hpp"
 #include "prism/image/contact_sheet.hpp"
 #include "prism/image/png_io.hpp"
+#include "prism/rain/fog_system.hpp"
+#include "prism/rain/rain_programs.hpp"
 #include "prism/water/gpu_water_simulation.hpp"
 #include "prism/water/rain_rates.hpp"
 #include "prism/water/water_scene.hpp"
@@ -57,6 +60,7 @@ struct Options {
     double dt = 1.0;
     bool gpu = false;
     float fog = 0.0f;
+    float fogBillboards = 0.0f;  // > 0 (with --fog): soft fog billboards of that strength
     int width = 800, height = 600;
     std::string out = "water-out";
     bool window = false;
@@ -77,6 +81,8 @@ std::string misplacedFlag(const CLI::App& app, const Options& o) {
     if (given("--heightmap") && given("--grid")) return "--grid makes a procedural terrain; it does not apply to --heightmap";
     if (!given("--heightmap") && given("--height-scale")) return "--height-scale needs --heightmap";
     if (!given("--permeability") && given("--permeability-max")) return "--permeability-max needs --permeability";
+    if (given("--fog-billboards") && !(o.fog > 0.0f) && !o.window)
+        return "--fog-billboards needs --fog (the billboards are drifting patches of the distance fog)";
     return "";
 }
 
@@ -165,12 +171,61 @@ void checkOptions(const Options& o) {
     }
 }
 
+// Soft fog billboards over the water scene (RainCL's fog sprites, as JSON scenes with
+// "fog": {"billboards": S} draw them): drifting noise patches between 0.5 and 4 m above the
+// lowest ground, faded out where they meet the terrain. Built only when asked for.
+class FogBillboardLayer {
+  public:
+    FogBillboardLayer(const WaterScene& scene, const prism::view::Fog& distanceFog, float strength,
+                      const glm::vec3& eye) {
+        fog_.distance = distanceFog;
+        fog_.billboards.strength = strength;
+        fog_.billboards.color = distanceFog.color;
+        const HeightField& t = scene.terrain();
+        fog_.billboards.groundHeight = *std::min_element(t.heights.begin(), t.heights.end());
+        fog_.billboards.minHeight = fog_.billboards.groundHeight + 0.5f;
+        fog_.billboards.maxHeight = fog_.billboards.groundHeight + 4.0f;
+        system_ = std::make_unique<prism::rain::FogSystem>(programs_, fog_, eye);
+    }
+    // Draws into the bound framebuffer, over the water scene drawn there with its depth.
+    void draw(const prism::view::Camera& camera, int width, int height, float dt, float timeSeconds) {
+        system_->update(dt, camera.eye, glm::vec3(0.0f));
+        system_->draw(camera, static_cast<float>(width) / static_cast<float>(std::max(height, 1)), &fog_.distance,
+                      timeSeconds);
+    }
+
+  private:
+    prism::rain::RainPrograms programs_;
+    prism::rain::SceneFog fog_;
+    std::unique_ptr<prism::rain::FogSystem> system_;
+};
+
+// The scene, and the billboards when there are any, as one image.
+prism::image::Image8 renderView(WaterSceneRenderer& renderer, FogBillboardLayer* billboards,
+                                const prism::view::Camera& camera, int width, int height) {
+    if (!billboards) return renderer.renderImage(camera, width, height);
+    prism::gl::Framebuffer fb(width, height);
+    fb.bind();
+    renderer.draw(camera, width, height);
+    fb.bind();
+    billboards->draw(camera, width, height, 1.0f / 60.0f, 0.0f);
+    prism::image::Image8 image = fb.readImage8();
+    prism::gl::Framebuffer::bindDefault();
+    return image;
+}
+
+std::unique_ptr<FogBillboardLayer> billboardsFor(const Options& o, const WaterScene& scene, const glm::vec3& eye) {
+    if (!(o.fogBillboards > 0.0f) || !scene.description().fog) return nullptr;
+    return std::make_unique<FogBillboardLayer>(scene, *scene.description().fog, o.fogBillboards, eye);
+}
+
 // --sequence N: the overview after every steps/N steps (N frames), each render timed, and
 // a one-row strip sequence.png.
 int runSequence(const Options& o) {
     auto context = prism::gl::createContext({.majorVersion = o.gpu ? 4 : 3, .minorVersion = 3});
     WaterScene scene(describe(o));
     WaterSceneRenderer renderer(scene);
+    auto billboards = billboardsFor(o, scene, overviewCamera(scene.terrain()).eye);
     const std::filesystem::path out = o.out;
     std::filesystem::create_directories(out);
     const int stepsPerFrame = std::max(1, o.steps / o.sequence);
@@ -181,7 +236,7 @@ int runSequence(const Options& o) {
         const MassLedger ledger = scene.water()->simulation().ledger();
         if (!std::isfinite(ledger.stored)) throw std::runtime_error("the water state is not finite; no more frames");
         const auto t0 = std::chrono::steady_clock::now();
-        frames.push_back(renderer.renderImage(overviewCamera(scene.terrain()), o.width, o.height));
+        frames.push_back(renderView(renderer, billboards.get(), overviewCamera(scene.terrain()), o.width, o.height));
         char name[32], label[48];
         std::snprintf(name, sizeof name, "frame_%02d.png", i);
         std::snprintf(label, sizeof label, "t=%.0f s", (i + 1) * stepsPerFrame * o.dt);
@@ -215,10 +270,13 @@ int runOffscreen(const Options& o) {
     if (!std::isfinite(ledger.stored) || !std::isfinite(ledger.relativeError()))
         throw std::runtime_error("the water state is not finite; no images written");
     WaterSceneRenderer renderer(scene);
+    auto billboards = billboardsFor(o, scene, overviewCamera(scene.terrain()).eye);
     const std::filesystem::path out = o.out;
     std::filesystem::create_directories(out);
-    prism::image::writePng(out / "overview.png", renderer.renderImage(overviewCamera(scene.terrain()), o.width, o.height));
-    prism::image::writePng(out / "ground.png", renderer.renderImage(groundCamera(scene.terrain()), o.width, o.height));
+    prism::image::writePng(out / "overview.png",
+                           renderView(renderer, billboards.get(), overviewCamera(scene.terrain()), o.width, o.height));
+    prism::image::writePng(out / "ground.png",
+                           renderView(renderer, billboards.get(), groundCamera(scene.terrain()), o.width, o.height));
     prism::image::writePng(out / "depth.png", depthMap(scene));
     std::cout << "water: wrote " << (out / "overview.png").string() << ", ground.png and depth.png\n";
     return 0;
@@ -295,6 +353,7 @@ int runWindow(const Options& o) {
     d.fog = fog;
     auto scene = std::make_unique<WaterScene>(std::move(d));
     auto renderer = std::make_unique<WaterSceneRenderer>(*scene);
+    auto billboards = billboardsFor(o, *scene, overviewCamera(scene->terrain()).eye);
     const HeightField& t = scene->terrain();
     const float extent = std::max(t.sizeX(), t.sizeZ());
     double smoothedMs = 0.0;
@@ -325,6 +384,11 @@ int runWindow(const Options& o) {
                    r * std::cos(state.pitch) * std::cos(state.yaw)};
         prism::gl::Framebuffer::bindDefault();
         renderer->draw(cam, std::max(w, 1), std::max(h, 1));
+        if (billboards && scene->description().fog) {  // F turns the fog, billboards included, off
+            prism::gl::Framebuffer::bindDefault();
+            billboards->draw(cam, std::max(w, 1), std::max(h, 1), static_cast<float>(wall),
+                             static_cast<float>(std::chrono::duration<double>(now.time_since_epoch()).count()));
+        }
         glFinish();
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - now).count();
         smoothedMs = frame == 0 ? ms : 0.9 * smoothedMs + 0.1 * ms;
@@ -363,6 +427,8 @@ int main(int argc, char** argv) {
     app.add_option("--dt", o.dt, "seconds per step (split into stable substeps)")->check(CLI::NonNegativeNumber);
     app.add_flag("--gpu", o.gpu, "run the step as compute shaders (GL 4.3)");
     app.add_option("--fog", o.fog, "fog density per metre (0: no fog)")->check(CLI::NonNegativeNumber);
+    app.add_option("--fog-billboards", o.fogBillboards, "soft fog billboards of this strength in (0, 1] (needs --fog)")
+        ->check(CLI::Range(0.0f, 1.0f));
     app.add_option("--width", o.width, "image width")->check(CLI::Range(1, 8192));
     app.add_option("--height", o.height, "image height")->check(CLI::Range(1, 8192));
     app.add_option("--out", o.out, "output directory");
