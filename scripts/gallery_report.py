@@ -47,7 +47,7 @@ TABLES = [
      "pareto_full = 1 marks the rows on the front."),
     ("docs/bluenoise/bluenoise_tradeoff.csv", ["sampler", "spp", "frames", "ms_per_frame", "rms"],
      "Per sampler: cost per frame and the RMS error left after so many frames at so many samples."),
-    ("shaderc_bench.csv", ["case", "label", "stage_files", "median_wall_ms", "speedup_a_over_case"],
+    ("docs/shaderc_bench.csv", ["case", "label", "stage_files", "median_wall_ms", "speedup_a_over_case"],
      "Shader validation wall time per tool setup; the last column is the speed-up over one "
      "glslangValidator process per stage file."),
 ]
