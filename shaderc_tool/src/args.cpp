@@ -36,6 +36,9 @@ std::string conflictOf(const Options& o, const CLI::App& app) {
     if (o.checkOnly && !o.output.empty())
         return "--check writes no header, but -o " + o.output +
                " asks for one; drop --check (a run with -o validates too) or drop -o";
+    if (o.revalidate && !o.checkOnly)
+        return "--revalidate only changes --check (a run with -o validates what its inputs need); add --check or "
+               "drop --revalidate";
     if (!o.depfile.empty() && o.stamp.empty() && o.output.empty())
         return "--depfile " + o.depfile + " needs a target to name: give --stamp <file> or -o <header>";
     if (app.count("--namespace") > 0 && o.output.empty())
@@ -80,6 +83,8 @@ ArgsResult parseArgs(int argc, char** argv) {
     app.add_option("--errfmt", errfmt, "diagnostic format")->check(CLI::IsMember({"gcc", "msvc"}));
     app.add_option("-j", o.jobs, "parallel jobs (default: all cores)")->check(CLI::NonNegativeNumber);
     app.add_flag("--stats", o.printStats, "print how many programs were validated, shared or found in the cache");
+    app.add_flag("--revalidate", o.revalidate,
+                 "with --check: resolve and validate even when no code changed since the last clean check");
     app.add_option("--cache-dir", o.cacheDir,
                    "validation results cache (content-addressed); default: next to --stamp, none without "
                    "--stamp; 'none' disables it");

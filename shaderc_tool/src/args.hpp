@@ -29,6 +29,7 @@ struct Options {
     int jobs = 0;  // 0 = hardware concurrency
     bool printStats = false;  // --stats: how many programs were validated, shared, or found in the cache
     bool checkOnly = false;  // --check: no header; --emit-glsl, --depfile, --stamp are still written
+    bool revalidate = false;  // --revalidate: no clean-check shortcut (clean_check.hpp)
 };
 
 struct ArgsResult {

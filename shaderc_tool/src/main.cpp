@@ -1,5 +1,6 @@
 // prism-shaderc: the build-time GLSL toolchain. main() only sequences the stages:
-//   args -> no-op check on the recorded sources -> shader inputs -> contract
+//   args -> no-op check on the recorded sources (--check: on the last clean check's code
+//   signatures) -> shader inputs -> contract
 //   -> include resolution + variants -> validation
 //   (glslang, interface and contract checks, reflection) -> header + data file, GLSL, depfile.
 // Exit status: 0 success, 1 shader errors, 2 usage or I/O errors.
@@ -10,6 +11,7 @@
 
 #include "args.hpp"
 #include "catalog_builder.hpp"
+#include "clean_check.hpp"
 #include "contract.hpp"
 #include "depfile.hpp"
 #include "diagnostics.hpp"
@@ -121,6 +123,11 @@ int main(int argc, char** argv) {
                 return writeBuildSystemFiles(o, *files);
             }
 
+    if (auto files = unchangedSinceCleanCheck(o, disk)) {
+        if (o.printStats) std::cerr << "prism-shaderc: no code changed since the last clean check; nothing validated\n";
+        return writeBuildSystemFiles(o, *files);
+    }
+
     auto inputs = collectShaderInputs(o.inputs);
     sink.reportAll(inputs.diagnostics);
     auto contract = loadContracts(o.contracts, disk);
@@ -147,6 +154,10 @@ int main(int argc, char** argv) {
     }
 
     sink.print(std::cerr, o.errorFormat);
+    if (sink.diagnostics().empty())
+        recordCleanCheck(o, catalog.filesRead, disk);
+    else
+        forgetCleanCheck(o);
     if (sink.errorCount() > 0) {
         std::cerr << "prism-shaderc: " << sink.errorCount() << " error(s); nothing written\n";
         return kExitShaderErrors;

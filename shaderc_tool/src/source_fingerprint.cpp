@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "code_signature.hpp"
 #include "shown_path.hpp"
 
 namespace prism::shaderc {
@@ -55,9 +56,11 @@ bool isStage(const fs::path& p) {
     return e == ".vert" || e == ".geom" || e == ".frag" || e == ".comp";
 }
 
-std::string fingerprintOf(const Options& o, const std::vector<std::string>& embedded, const SourceReader& reader) {
+std::string fingerprintOf(const Options& o, const std::vector<std::string>& embedded, const SourceReader& reader,
+                          ContentKey key) {
     Fnv1a h;
     h.mix(PRISM_VERSION);
+    if (key == ContentKey::Code) h.mix("code signatures");  // never equal to a text record
     // Only the options that change the generated files, with paths as embedded (never
     // --depfile, --stamp, --emit-glsl, -j or the error format).
     const auto shown = [&](const std::string& dir) { return recordedName(dir, o); };
@@ -72,7 +75,12 @@ std::string fingerprintOf(const Options& o, const std::vector<std::string>& embe
     for (const auto& file : embedded) {
         h.mix(file);
         const auto text = reader.read(recordedToPath(file, o));
-        h.mix(text ? *text : std::string("\0missing", 8));
+        if (!text)
+            h.mix(std::string("\0missing", 8));
+        else if (key == ContentKey::Code && hasCodeSignature(file))
+            h.mix(codeSignature(*text));
+        else
+            h.mix(*text);
     }
     // Folders as embedded (relative to --base-dir), so that the same tree checked out at
     // another absolute path gives the same fingerprint and byte-identical outputs.
@@ -85,12 +93,13 @@ std::string fingerprintOf(const Options& o, const std::vector<std::string>& embe
 
 }  // namespace
 
-SourcesRecord recordSources(const Options& o, const std::vector<std::string>& filesRead, const SourceReader& reader) {
+SourcesRecord recordSources(const Options& o, const std::vector<std::string>& filesRead, const SourceReader& reader,
+                            ContentKey key) {
     std::set<std::string> unique;
     for (const auto& f : filesRead) unique.insert(recordedName(f, o));
     SourcesRecord record;
     record.files.assign(unique.begin(), unique.end());
-    record.fingerprint = fingerprintOf(o, record.files, reader);
+    record.fingerprint = fingerprintOf(o, record.files, reader, key);
     return record;
 }
 
@@ -101,7 +110,7 @@ std::string sourcesBlock(const SourcesRecord& record) {
 }
 
 std::optional<std::vector<std::string>> unchangedSources(const Options& o, const std::string& header,
-                                                         const SourceReader& reader) {
+                                                         const SourceReader& reader, ContentKey key) {
     const auto start = header.rfind(kBlockStart);
     if (start == std::string::npos) return std::nullopt;
     std::istringstream in(header.substr(start + kBlockStart.size()));
@@ -111,7 +120,8 @@ std::optional<std::vector<std::string>> unchangedSources(const Options& o, const
         if (!line.starts_with(kFilePrefix)) return std::nullopt;
         recorded.files.push_back(line.substr(kFilePrefix.size()));
     }
-    if (recorded.files.empty() || fingerprintOf(o, recorded.files, reader) != recorded.fingerprint) return std::nullopt;
+    if (recorded.files.empty() || fingerprintOf(o, recorded.files, reader, key) != recorded.fingerprint)
+        return std::nullopt;
     std::vector<std::string> paths;
     for (const auto& f : recorded.files) paths.push_back(recordedToPath(f, o));
     return paths;

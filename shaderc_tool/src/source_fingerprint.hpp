@@ -17,6 +17,11 @@
 
 namespace prism::shaderc {
 
+// What the fingerprint takes of each recorded file: its whole text (the outputs embed
+// it), or its code signature (code_signature.hpp: what glslang's tokens depend on; the
+// clean-check shortcut, clean_check.hpp).
+enum class ContentKey { Text, Code };
+
 struct SourcesRecord {
     std::string fingerprint;
     std::vector<std::string> files;  // as embedded: relative to --base-dir where possible
@@ -24,7 +29,7 @@ struct SourcesRecord {
 
 // The record of a run that read `filesRead` (paths as read).
 SourcesRecord recordSources(const Options& options, const std::vector<std::string>& filesRead,
-                            const SourceReader& reader);
+                            const SourceReader& reader, ContentKey key = ContentKey::Text);
 
 // The data file's closing comment block holding `record`.
 std::string sourcesBlock(const SourcesRecord& record);
@@ -32,6 +37,7 @@ std::string sourcesBlock(const SourcesRecord& record);
 // The files (paths to read them by) when `dataText` records sources whose fingerprint
 // is still the same; nullopt when anything differs or there is no record.
 std::optional<std::vector<std::string>> unchangedSources(const Options& options, const std::string& dataText,
-                                                         const SourceReader& reader);
+                                                         const SourceReader& reader,
+                                                         ContentKey key = ContentKey::Text);
 
 }  // namespace prism::shaderc

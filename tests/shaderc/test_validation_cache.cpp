@@ -56,13 +56,13 @@ TEST(ValidationSchedule, SameTokenStreamIsValidatedOnce) {
     // UNUSED is an axis no line tests: both variants are one token stream.
     dir.write("s/a.vert", "#version 330 core\nvoid main() { gl_Position = vec4(0.0); }\n");
     dir.write("s/a.frag", "#version 330 core\n#pragma prism variant UNUSED\nout vec4 o;\nvoid main() { o = vec4(1.0); }\n");
-    auto run = runShaderc("--check --stats s", dir.str());
+    auto run = runShaderc("--check --revalidate --stats s", dir.str());
     ASSERT_EQ(run.exitCode, 0) << run.output;
     EXPECT_EQ(statsOf(run.output), (std::array<int, 4>{1, 2, 1, 0})) << run.output;
     // An axis a line tests makes two token streams.
     dir.write("s/a.frag", "#version 330 core\n#pragma prism variant USED\nout vec4 o;\n"
                           "void main() { o = vec4(USED == 1 ? 1.0 : 0.5); }\n");
-    auto used = runShaderc("--check --stats s", dir.str());
+    auto used = runShaderc("--check --revalidate --stats s", dir.str());
     ASSERT_EQ(used.exitCode, 0) << used.output;
     EXPECT_EQ(statsOf(used.output), (std::array<int, 4>{2, 2, 0, 0})) << used.output;
 }
@@ -70,7 +70,7 @@ TEST(ValidationSchedule, SameTokenStreamIsValidatedOnce) {
 TEST(ValidationSchedule, CacheAnswersARecheckAndAnEditRevalidatesOnlyItsPrograms) {
     ScratchDir dir("sched-cache");
     writeTwoShaders(dir);
-    const std::string args = "--check --stats --cache-dir build/cache -I m s";
+    const std::string args = "--check --revalidate --stats --cache-dir build/cache -I m s";
     auto first = runShaderc(args, dir.str());
     ASSERT_EQ(first.exitCode, 0) << first.output;
     EXPECT_EQ(statsOf(first.output), (std::array<int, 4>{2, 2, 0, 0})) << first.output;
@@ -82,7 +82,7 @@ TEST(ValidationSchedule, CacheAnswersARecheckAndAnEditRevalidatesOnlyItsPrograms
     // Another catalogue sharing the directory keeps its own pack.
     dir.write("t/c.vert", "#version 330 core\nvoid main() { gl_Position = vec4(1.0); }\n");
     dir.write("t/c.frag", "#version 330 core\nout vec4 o;\nvoid main() { o = vec4(1.0); }\n");
-    auto other = runShaderc("--check --stats --cache-dir build/cache t", dir.str());
+    auto other = runShaderc("--check --revalidate --stats --cache-dir build/cache t", dir.str());
     EXPECT_EQ(statsOf(other.output), (std::array<int, 4>{1, 1, 0, 0})) << other.output;
     EXPECT_EQ(statsOf(runShaderc(args, dir.str()).output), (std::array<int, 4>{0, 2, 0, 2}));
 
@@ -103,7 +103,7 @@ TEST(ValidationSchedule, CachedDiagnosticsComeBackWithTheirOwnLines) {
     ScratchDir dir("sched-diag");
     writeTwoShaders(dir);
     dir.write("m/one.glsl", "// Provides: one(), broken.\nfloat one() {\n    return missingValue;\n}\n");
-    const std::string args = "--check --stats --cache-dir build/cache -I m s";
+    const std::string args = "--check --revalidate --stats --cache-dir build/cache -I m s";
     auto first = runShaderc(args, dir.str());
     EXPECT_EQ(first.exitCode, 1) << first.output;
     EXPECT_NE(first.output.find("m/one.glsl:3:12: error: 'missingValue'"), std::string::npos) << first.output;
@@ -123,17 +123,17 @@ TEST(ValidationSchedule, CachedDiagnosticsComeBackWithTheirOwnLines) {
 TEST(ValidationSchedule, DefaultCacheLivesNextToTheStampNeverInTheWorkingDirectory) {
     ScratchDir dir("sched-where");
     writeTwoShaders(dir);
-    auto plain = runShaderc("--check --stats -I m s", dir.str());
+    auto plain = runShaderc("--check --revalidate --stats -I m s", dir.str());
     ASSERT_EQ(plain.exitCode, 0) << plain.output;
     EXPECT_EQ(filesUnder(dir.path(), ".json"), 0u) << "a plain --check wrote a cache into the working directory";
 
-    auto stamped = runShaderc("--check --stats --stamp build/shaders.stamp -I m s", dir.str());
+    auto stamped = runShaderc("--check --revalidate --stats --stamp build/shaders.stamp -I m s", dir.str());
     ASSERT_EQ(stamped.exitCode, 0) << stamped.output;
     EXPECT_EQ(filesUnder(dir.path() / "build/prism-shaderc-cache", ".json"), 1u);
-    auto restamped = runShaderc("--check --stats --stamp build/shaders.stamp -I m s", dir.str());
+    auto restamped = runShaderc("--check --revalidate --stats --stamp build/shaders.stamp -I m s", dir.str());
     EXPECT_EQ(statsOf(restamped.output)[3], 2) << restamped.output;
 
-    auto off = runShaderc("--check --stats --cache-dir none --stamp other/shaders.stamp -I m s", dir.str());
+    auto off = runShaderc("--check --revalidate --stats --cache-dir none --stamp other/shaders.stamp -I m s", dir.str());
     ASSERT_EQ(off.exitCode, 0) << off.output;
     EXPECT_FALSE(fs::exists(dir.path() / "other/prism-shaderc-cache"));
 }
@@ -151,7 +151,7 @@ TEST(ValidationSchedule, ConcurrentWritersAndTornEntriesLeaveAValidCache) {
     const std::string exe = PRISM_SHADERC_EXE;
     std::string parallel = "cd '" + dir.str() + "' && (";
     for (int i = 0; i < 4; ++i)
-        parallel += "'" + exe + "' --check --stats -j 2 --cache-dir build/cache -I m s > run" + std::to_string(i) +
+        parallel += "'" + exe + "' --check --revalidate --stats -j 2 --cache-dir build/cache -I m s > run" + std::to_string(i) +
                     ".log 2>&1 & ";
     parallel += "wait)";
     ASSERT_EQ(std::system(parallel.c_str()), 0);
@@ -161,13 +161,13 @@ TEST(ValidationSchedule, ConcurrentWritersAndTornEntriesLeaveAValidCache) {
         EXPECT_EQ(log.find("error"), std::string::npos) << "run " << i << ": " << log;
     }
     EXPECT_EQ(filesUnder(dir.path() / "build/cache", ".tmp-"), 0u);
-    auto after = runShaderc("--check --stats --cache-dir build/cache -I m s", dir.str());
+    auto after = runShaderc("--check --revalidate --stats --cache-dir build/cache -I m s", dir.str());
     EXPECT_EQ(statsOf(after.output), (std::array<int, 4>{0, 8, 0, 8})) << after.output;
 
     // A torn or foreign entry is a miss, never a wrong answer.
     for (const auto& e : fs::recursive_directory_iterator(dir.path() / "build/cache"))
         if (e.is_regular_file()) prism::test::writeFile(e.path(), "{\"format\": 1, \"tokens\": ");
-    auto torn = runShaderc("--check --stats --cache-dir build/cache -I m s", dir.str());
+    auto torn = runShaderc("--check --revalidate --stats --cache-dir build/cache -I m s", dir.str());
     ASSERT_EQ(torn.exitCode, 0) << torn.output;
     EXPECT_EQ(statsOf(torn.output), (std::array<int, 4>{8, 8, 0, 0})) << torn.output;
 }
@@ -177,7 +177,7 @@ TEST(ValidationSchedule, ConcurrentWritersAndTornEntriesLeaveAValidCache) {
 TEST(ValidationSchedule, AnotherBuildOfTheToolDoesNotReuseResults) {
     ScratchDir dir("sched-build");
     writeTwoShaders(dir);
-    const std::string args = "--check --stats --cache-dir build/cache -I m s";
+    const std::string args = "--check --revalidate --stats --cache-dir build/cache -I m s";
     ASSERT_EQ(runShaderc(args, dir.str()).exitCode, 0);
     fs::create_directories(dir.path() / "bin");
     fs::copy_file(PRISM_SHADERC_EXE, dir.path() / "bin/prism-shaderc");
