@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <vector>
 
-#include "prism/gl/gl.hpp"
 #include "prism/image/contact_sheet.hpp"
 
 namespace prism::viewer {
@@ -58,31 +57,11 @@ void ErrorOverlay::setText(std::string text) {
 
 void ErrorOverlay::draw(int framebufferWidth, int framebufferHeight) {
     if (text_.empty() || framebufferWidth <= 0 || framebufferHeight <= 0) return;
-    if (!texture_) {
-        texture_ = gl::Texture::create();
-        framebuffer_ = gl::FramebufferObject::create();
-    }
     if (uploadedWidth_ != framebufferWidth) {
-        const auto strip = overlayImage(text_, framebufferWidth);
-        glBindTexture(GL_TEXTURE_2D, texture_.id());
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, strip.width, strip.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-                     strip.data.data());
-        glBindTexture(GL_TEXTURE_2D, 0);
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_.id());
-        glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture_.id(), 0);
+        strip_.upload(overlayImage(text_, framebufferWidth));
         uploadedWidth_ = framebufferWidth;
-        stripHeight_ = strip.height;
     }
-    // Image row 0 is the top: blit with the destination's y flipped, onto the window's top.
-    const int h = std::min(stripHeight_, framebufferHeight);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_.id());
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    glBlitFramebuffer(0, 0, uploadedWidth_, h, 0, framebufferHeight, uploadedWidth_, framebufferHeight - h,
-                      GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    strip_.drawUnscaled(0, 0, framebufferHeight);  // onto the window's top
 }
 
 }  // namespace prism::viewer

@@ -1,6 +1,6 @@
 // The viewer's error overlay: a strip at the top of the window with the first line(s) of
-// a diagnostic, drawn with prism::image's bitmap font into a texture and blitted onto the
-// default framebuffer (no shader involved, so it shows even when every program is broken).
+// a diagnostic, drawn with prism::image's bitmap font into an image and blitted onto the
+// default framebuffer (ImageBlit) (no shader involved, so it shows even when every program is broken).
 //
 //     ErrorOverlay overlay;
 //     overlay.setText("modules/lights.glsl:12:5: error: 'foo' : undeclared identifier");
@@ -10,7 +10,7 @@
 
 #include <string>
 
-#include "prism/gl/handles.hpp"
+#include "image_blit.hpp"
 #include "prism/image/image.hpp"
 
 namespace prism::viewer {
@@ -27,10 +27,8 @@ class ErrorOverlay {
 
   private:
     std::string text_;
-    int uploadedWidth_ = -1;
-    int stripHeight_ = 0;
-    gl::Texture texture_;
-    gl::FramebufferObject framebuffer_;
+    int uploadedWidth_ = -1;  // the strip is laid out for this window width
+    ImageBlit strip_;
 };
 
 }  // namespace prism::viewer

@@ -1,6 +1,8 @@
 // Texture upload and blit of a CPU image onto the window (image_blit.hpp).
 #include "image_blit.hpp"
 
+#include <algorithm>
+
 #include "prism/gl/gl.hpp"
 
 namespace prism::viewer {
@@ -31,6 +33,17 @@ void ImageBlit::draw(int left, int width, int height) const {
     // Image row 0 is the top, GL's row 0 the bottom: flip y in the destination.
     glBlitFramebuffer(0, 0, width_, height_, left, height, left + width, 0, GL_COLOR_BUFFER_BIT,
                       GL_LINEAR);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void ImageBlit::drawUnscaled(int left, int top, int windowHeight) const {
+    const int rows = std::min(height_, windowHeight - top);
+    if (empty() || rows <= 0) return;
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_.id());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    // Texture row r is image row r (the top); window row 0 is the bottom.
+    glBlitFramebuffer(0, 0, width_, rows, left, windowHeight - top, left + width_, windowHeight - top - rows,
+                      GL_COLOR_BUFFER_BIT, GL_NEAREST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

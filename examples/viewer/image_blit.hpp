@@ -5,6 +5,7 @@
 //     ImageBlit blit;
 //     blit.upload(image);
 //     blit.draw(0, framebufferWidth, framebufferHeight);  // scaled to that rectangle
+//     blit.drawUnscaled(0, 0, framebufferHeight);        // or pixel for pixel at the top left
 #pragma once
 
 #include "prism/gl/handles.hpp"
@@ -16,6 +17,9 @@ class ImageBlit {
   public:
     void upload(const image::Image8& image);
     void draw(int left, int width, int height) const;  // onto that rectangle of the window
+    // Pixel for pixel, the image's top-left corner `top` rows below the window's top and
+    // `left` columns right of its left side; rows below the window's bottom are cut.
+    void drawUnscaled(int left, int top, int windowHeight) const;
     bool empty() const { return width_ == 0; }
 
   private:

@@ -14,6 +14,7 @@
 #include "prism/gl/framebuffer.hpp"
 #include "prism/gl/gl.hpp"
 #include "prism/gl/gl_context.hpp"
+#include "diffraction_gl_support.hpp"
 #include "prism/render/gpu_mesh.hpp"
 #include "prism/geometry/procedural_meshes.hpp"
 #include "prism/shaders.hpp"
@@ -24,25 +25,11 @@ namespace {
 
 constexpr int kSize = 65;  // odd: the centre pixel's centre is the view axis
 
-const StamBrdf& grating() {
-    static const StamBrdf brdf(sinusoidGrating({.periodNm = 2500.0, .amplitudeNm = 60.0, .periods = 8}),
-                               {.tolerance = 1e-5, .window = GaussianWindow{1000.0, 4.0}});
-    return brdf;
-}
-
-class DiffractionMaterialGl : public ::testing::Test {
+class DiffractionMaterialGl : public test::GlSuite {
   protected:
-    static void SetUpTestSuite() {
-        try {
-            context_ = prism::gl::createContext();
-        } catch (const std::exception& e) {
-            error_ = e.what();
-        }
-    }
-    static void TearDownTestSuite() { context_.reset(); }
     void SetUp() override {
-        ASSERT_NE(context_, nullptr) << "no GL context: " << error_;
-        context_->makeCurrent();
+        test::GlSuite::SetUp();
+        if (HasFatalFailure()) return;
         camera_.eye = {0.0f, 1.0f, 1.2f};  // looks at the origin, on the plate (y = 0, normal +y)
         camera_.target = {0.0f, 0.0f, 0.0f};
         material_.color = {0.5f, 0.6f, 0.7f, 1.0f};
@@ -72,18 +59,14 @@ class DiffractionMaterialGl : public ::testing::Test {
         return {d.z, d.x, d.y};
     }
 
-    static std::unique_ptr<prism::gl::Context> context_;
-    static std::string error_;
     prism::view::Camera camera_;
     prism::view::Material material_;
 };
-std::unique_ptr<prism::gl::Context> DiffractionMaterialGl::context_;
-std::string DiffractionMaterialGl::error_;
 
 }  // namespace
 
 TEST_F(DiffractionMaterialGl, CentrePixelMatchesTheCpuForBothPaths) {
-    const SpectralTables spectral = buildSpectralTables(grating(), {.size = 128, .wavelengthStepNm = 10});
+    const SpectralTables spectral = buildSpectralTables(test::testGrating(), {.size = 128, .wavelengthStepNm = 10});
     const IntegratedTables integrated = buildIntegratedTables(spectral);
     prism::view::Lights lights;
     lights.ambient = glm::vec3(0.05f);
@@ -110,7 +93,7 @@ TEST_F(DiffractionMaterialGl, CentrePixelMatchesTheCpuForBothPaths) {
 }
 
 TEST_F(DiffractionMaterialGl, DirectionalLightsAddUpAndAmbientRemains) {
-    const SpectralTables spectral = buildSpectralTables(grating(), {.size = 64, .wavelengthStepNm = 20});
+    const SpectralTables spectral = buildSpectralTables(test::testGrating(), {.size = 64, .wavelengthStepNm = 20});
     const DiffractionTextures textures(buildIntegratedTables(spectral));
     prism::view::Lights none, first, second, both;
     for (prism::view::Lights* l : {&none, &first, &second, &both}) l->ambient = glm::vec3(0.05f);

@@ -13,6 +13,7 @@
 #include "prism/gl/framebuffer.hpp"
 #include "prism/gl/gl.hpp"
 #include "prism/gl/gl_context.hpp"
+#include "diffraction_gl_support.hpp"
 
 using namespace prism::diffraction;
 
@@ -21,27 +22,8 @@ namespace {
 constexpr double kStartDeg = -80.0, kStepDeg = 0.5;
 constexpr int kColumns = 321;  // -80 .. 80 deg
 
-const StamBrdf& grating() {
-    static const StamBrdf brdf(sinusoidGrating({.periodNm = 2500.0, .amplitudeNm = 60.0, .periods = 8}),
-                               {.tolerance = 1e-5, .window = GaussianWindow{1000.0, 4.0}});
-    return brdf;
-}
-
-class DiffractionGl : public ::testing::Test {
+class DiffractionGl : public test::GlSuite {
   protected:
-    static void SetUpTestSuite() {
-        try {
-            context_ = prism::gl::createContext();
-        } catch (const std::exception& e) {
-            error_ = e.what();
-        }
-    }
-    static void TearDownTestSuite() { context_.reset(); }
-    void SetUp() override {
-        ASSERT_NE(context_, nullptr) << "no GL context: " << error_;
-        context_->makeCurrent();
-    }
-
     // Renders the strip for light incidence `incidenceDeg` and returns relative Linf vs `cpu`.
     template <typename Cpu>
     static double stripError(const DiffractionTextures& textures, double incidenceDeg, Cpu cpu) {
@@ -75,16 +57,12 @@ class DiffractionGl : public ::testing::Test {
         return maxError / maxValue;
     }
 
-    static std::unique_ptr<prism::gl::Context> context_;
-    static std::string error_;
 };
-std::unique_ptr<prism::gl::Context> DiffractionGl::context_;
-std::string DiffractionGl::error_;
 
 }  // namespace
 
 TEST_F(DiffractionGl, PerWavelengthPathMatchesCpu) {
-    const SpectralTables tables = buildSpectralTables(grating(), {.size = 128, .wavelengthStepNm = 10});
+    const SpectralTables tables = buildSpectralTables(test::testGrating(), {.size = 128, .wavelengthStepNm = 10});
     const DiffractionTextures textures(tables);
     for (double incidence : {0.0, 30.0, 75.0}) {
         const double error =
@@ -95,7 +73,7 @@ TEST_F(DiffractionGl, PerWavelengthPathMatchesCpu) {
 }
 
 TEST_F(DiffractionGl, IntegratedPathMatchesCpu) {
-    const SpectralTables spectral = buildSpectralTables(grating(), {.size = 128, .wavelengthStepNm = 10});
+    const SpectralTables spectral = buildSpectralTables(test::testGrating(), {.size = 128, .wavelengthStepNm = 10});
     const IntegratedTables tables = buildIntegratedTables(spectral);
     const DiffractionTextures textures(tables);
     for (double incidence : {0.0, 30.0, 75.0}) {
@@ -107,7 +85,7 @@ TEST_F(DiffractionGl, IntegratedPathMatchesCpu) {
 }
 
 TEST_F(DiffractionGl, OnlyTheChosenPathIsUploaded) {
-    const SpectralTables spectral = buildSpectralTables(grating(), {.size = 32, .wavelengthStepNm = 20});
+    const SpectralTables spectral = buildSpectralTables(test::testGrating(), {.size = 32, .wavelengthStepNm = 20});
     const IntegratedTables integrated = buildIntegratedTables(spectral);
     const DiffractionTextures a(spectral), b(integrated);
     EXPECT_FALSE(a.integrated());
@@ -117,7 +95,7 @@ TEST_F(DiffractionGl, OnlyTheChosenPathIsUploaded) {
 }
 
 TEST_F(DiffractionGl, VolumePathMatchesCpu) {
-    const SpectralTables spectral = buildSpectralTables(grating(), {.size = 128, .wavelengthStepNm = 10});
+    const SpectralTables spectral = buildSpectralTables(test::testGrating(), {.size = 128, .wavelengthStepNm = 10});
     const VolumeTables tables = buildVolumeTables(buildIntegratedTables(spectral), 16);
     const DiffractionTextures textures(tables);
     for (double incidence : {0.0, 30.0, 75.0}) {

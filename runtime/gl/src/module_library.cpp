@@ -9,6 +9,7 @@
 
 #include "contract.hpp"
 #include "diagnostics.hpp"
+#include "did_you_mean.hpp"
 #include "include_resolver.hpp"
 #include "prism/gl/compose.hpp"
 #include "source_reader.hpp"
@@ -37,21 +38,6 @@ namespace {
         message += "\n" + lines.back();
     }
     throw CompositionError(message, lines);
-}
-
-std::size_t editDistance(std::string_view a, std::string_view b) {
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        std::size_t diagonal = row[0];
-        row[0] = i;
-        for (std::size_t j = 1; j <= b.size(); ++j) {
-            const std::size_t up = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-            diagonal = up;
-        }
-    }
-    return row[b.size()];
 }
 
 std::unique_ptr<ModuleLibrary::Storage> build(const std::vector<std::string>& moduleFiles,
@@ -139,7 +125,7 @@ std::uint32_t ModuleLibrary::id(std::string_view name) const {
         const std::string_view n = storage_->modules[i].name;
         if (n == name) return i;
         known += (known.empty() ? "" : ", ") + std::string(n);
-        if (const std::size_t d = editDistance(name, n); d < best) best = d, closest = n;
+        if (const std::size_t d = shaderc::editDistance(name, n); d < best) best = d, closest = n;
     }
     throw CompositionError("prism module library: no module named '" + std::string(name) + "'" +
                            (closest.empty() ? "" : " (did you mean '" + closest + "'?)") + "; the library has " +
