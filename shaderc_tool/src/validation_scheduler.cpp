@@ -12,23 +12,10 @@
 #include <glslang/Public/ShaderLang.h>
 
 #include "content_hash.hpp"
+#include "job_pool.hpp"
 
 namespace prism::shaderc {
 namespace {
-
-// Runs job(i) for i in [0, count) on up to `jobs` threads (this one included).
-void runPool(std::size_t count, int jobs, const std::function<void(std::size_t)>& job) {
-    std::atomic<std::size_t> next{0};
-    auto worker = [&] {
-        for (std::size_t i; (i = next.fetch_add(1)) < count;) job(i);
-    };
-    const std::size_t threads = std::clamp<std::size_t>(static_cast<std::size_t>(std::max(jobs, 1)), 1,
-                                                        std::max<std::size_t>(1, count));
-    std::vector<std::thread> pool;
-    for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
-    worker();
-    for (auto& th : pool) th.join();
-}
 
 std::vector<StageToValidate> stagesOf(const ResolvedCatalog& rc, std::size_t s, std::size_t v) {
     std::vector<StageToValidate> stages;
