@@ -64,15 +64,7 @@ class EnergyField {
         for (int dy = y0_; dy <= y1_; ++dy) {
             const int row = t * h_ + wrap(y + dy, h_);
             const std::size_t r = static_cast<std::size_t>(row);
-            // Adding raises energies: a row's lowest zero stays lowest unless it lies in the
-            // window (or was just turned on); removing lowers them, likewise for the highest one.
-            if (on) {
-                dirtyCluster_[r] = 1;
-                if (inWindow(rowVoid_[r], x)) dirtyVoid_[r] = 1;
-            } else {
-                dirtyVoid_[r] = 1;
-                if (inWindow(rowCluster_[r], x)) dirtyCluster_[r] = 1;
-            }
+            markDirty(r, x, on);
             double* line = energy_.data() + r * static_cast<std::size_t>(w_);
             for (int k = 0; k < kw_; ++k) line[cols_[static_cast<std::size_t>(k)]] += sign * kernel_[kernelIndex++];
         }
@@ -108,6 +100,8 @@ class EnergyField {
   private:
     static int wrap(int v, int n) { return ((v % n) + n) % n; }
 
+    // Adding raises energies: a row's lowest zero stays lowest unless it lies in the window
+    // (or was just turned on); removing lowers them, likewise for the highest one.
     void markDirty(std::size_t r, int x, bool on) {
         if (on) {
             dirtyCluster_[r] = 1;
