@@ -177,16 +177,11 @@ void checkOptions(const Options& o) {
 class FogBillboardLayer {
   public:
     FogBillboardLayer(const WaterScene& scene, const prism::view::Fog& distanceFog, float strength,
-                      const glm::vec3& eye) {
-        fog_.distance = distanceFog;
-        fog_.billboards.strength = strength;
-        fog_.billboards.color = distanceFog.color;
-        const HeightField& t = scene.terrain();
-        fog_.billboards.groundHeight = *std::min_element(t.heights.begin(), t.heights.end());
-        fog_.billboards.minHeight = fog_.billboards.groundHeight + 0.5f;
-        fog_.billboards.maxHeight = fog_.billboards.groundHeight + 4.0f;
-        system_ = std::make_unique<prism::rain::FogSystem>(programs_, fog_, eye);
-    }
+                      const glm::vec3& eye)
+        : fog_(prism::rain::fogOverGround(distanceFog, strength,
+                                          *std::min_element(scene.terrain().heights.begin(),
+                                                            scene.terrain().heights.end()))),
+          system_(std::make_unique<prism::rain::FogSystem>(programs_, fog_, eye)) {}
     // Draws into the bound framebuffer, over the water scene drawn there with its depth.
     void draw(const prism::view::Camera& camera, int width, int height, float dt, float timeSeconds) {
         system_->update(dt, camera.eye, glm::vec3(0.0f));

@@ -51,6 +51,17 @@ float valueNoise(float x, float y, float z, int period, int periodZ, std::uint32
 
 }  // namespace
 
+SceneFog fogOverGround(const view::Fog& distance, float strength, float groundHeight) {
+    SceneFog fog;
+    fog.distance = distance;
+    fog.billboards.strength = strength;
+    fog.billboards.color = distance.color;
+    fog.billboards.groundHeight = groundHeight;
+    fog.billboards.minHeight = groundHeight + 0.5f;
+    fog.billboards.maxHeight = groundHeight + 4.0f;
+    return fog;
+}
+
 void validate(const SceneFog& fog) {
     if (!(fog.distance.density >= 0.0f) || !std::isfinite(fog.distance.density))
         fail("density", fog.distance.density, "a finite number >= 0 per metre");

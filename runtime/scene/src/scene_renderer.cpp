@@ -115,18 +115,13 @@ void SceneRenderer::drawRain(const Scene& scene) {
 }
 
 void SceneRenderer::drawFogBillboards(const Scene& scene) {
-    rain::SceneFog fog;
-    fog.distance = *scene.fog;
-    fog.billboards.strength = *scene.fogBillboards;
-    fog.billboards.color = scene.fog->color;
     // With water, the billboards fade into the terrain's lowest ground.
-    fog.billboards.groundHeight = scene.fogGroundHeight;
+    float groundHeight = scene.fogGroundHeight;
     if (scene.water) {
         const water::HeightField t = sceneTerrain(*scene.water);
-        fog.billboards.groundHeight = *std::min_element(t.heights.begin(), t.heights.end());
+        groundHeight = *std::min_element(t.heights.begin(), t.heights.end());
     }
-    fog.billboards.minHeight = fog.billboards.groundHeight + 0.5f;
-    fog.billboards.maxHeight = fog.billboards.groundHeight + 4.0f;
+    const rain::SceneFog fog = rain::fogOverGround(*scene.fog, *scene.fogBillboards, groundHeight);
     if (!rainPrograms_) rainPrograms_ = std::make_unique<rain::RainPrograms>();
     rain::FogSystem system(*rainPrograms_, fog, scene.camera.eye);
     system.update(kRainStep, scene.camera.eye, glm::vec3(0.0f));

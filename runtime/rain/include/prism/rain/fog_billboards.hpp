@@ -50,6 +50,11 @@ struct SceneFog {
 // Throws rain::RainParameterError naming the bad field.
 void validate(const SceneFog& fog);
 
+// The fog over ground at world height `groundHeight` (a scene's or a terrain's lowest
+// point): the `distance` fog, and billboards of `strength` in its colour whose centres
+// float 0.5 to 4 m above the ground and which fade out where they meet it.
+SceneFog fogOverGround(const view::Fog& distance, float strength, float groundHeight);
+
 // Animated, tileable noise: `layers` time slices of periodic 3D fBm value noise, so
 // layer L-1 blends seamlessly into layer 0. R8, size x size x layers.
 struct FogNoiseArray {
