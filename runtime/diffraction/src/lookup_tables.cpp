@@ -87,10 +87,10 @@ SpectralTables buildSpectralTables(const StamBrdf& brdf, const TableOptions& opt
     const std::size_t layer = static_cast<std::size_t>(t.size) * t.size * 2;
     t.texels.resize(layer * (t.terms + 1));
     const double cell = 2.0 * t.frequencyExtent / t.size;
-    for (int n = 0; n <= t.terms; ++n) {
-        const double norm = std::pow(t.heightScaleNm, -n);
-        const Spectrum& spectrum = brdf.taylor().terms[n];
-        forEachRowBand(t.size, [&, n, norm](int firstRow, int lastRow) {
+    forEachRowBand(t.size, [&](int firstRow, int lastRow) {
+        for (int n = 0; n <= t.terms; ++n) {
+            const double norm = std::pow(t.heightScaleNm, -n);
+            const Spectrum& spectrum = brdf.taylor().terms[n];
             for (int j = firstRow; j < lastRow; ++j) {
                 for (int i = 0; i < t.size; ++i) {
                     const Complex h =
@@ -100,8 +100,8 @@ SpectralTables buildSpectralTables(const StamBrdf& brdf, const TableOptions& opt
                     texel[1] = static_cast<float>(h.imag());
                 }
             }
-        });
-    }
+        }
+    });
     return t;
 }
 
