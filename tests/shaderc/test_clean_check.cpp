@@ -47,6 +47,16 @@ TEST(CodeSignature, SeesEveryCodeChange) {
     EXPECT_NE(codeSignature("int l = __LINE__;\n"), codeSignature("\nint l = __LINE__;\n"));
 }
 
+TEST(CodeSignature, HostileTextsEndCleanly) {
+    EXPECT_EQ(codeSignature(""), "");
+    EXPECT_EQ(codeSignature("/* never closed\nfloat x;"), "") << "an open comment runs to the end";
+    EXPECT_EQ(codeSignature("#include \"open"), "#include \"open\n");
+    EXPECT_EQ(codeSignature("a\"b\nc"), "a\"b\nc\n") << "an open quote ends at the line end";
+    EXPECT_EQ(codeSignature(std::string("x\0y", 3)), std::string("x\0y\n", 4));
+    const std::string huge(1 << 22, ' ');
+    EXPECT_EQ(codeSignature(huge + "v" + huge), "v\n");
+}
+
 TEST(CleanCheck, ACommentEditEndsTheRecheckWithoutValidating) {
     ScratchDir dir("clean-check-comment");
     writeCatalogue(dir, "// Provides: one().\nfloat one() { return 1.0; }\n");
