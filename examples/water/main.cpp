@@ -159,6 +159,7 @@ void checkOptions(const Options& o) {
                   o.permeabilityMaxMmH >= 0.0 && o.permeabilityMaxMmH <= 1e6);
     requireFinite(o.dt, "--dt", "of seconds >= 0", o.dt >= 0.0);
     requireFinite(o.fog, "--fog", "per metre in [0, 100]", o.fog >= 0.0f && o.fog <= 100.0f);
+    requireFinite(o.fogBillboards, "--fog-billboards", "in [0, 1]", o.fogBillboards >= 0.0f && o.fogBillboards <= 1.0f);
     try {
         parseRainRateMmPerHour(o.rain);
     } catch (const std::invalid_argument& e) {
