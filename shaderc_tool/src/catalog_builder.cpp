@@ -3,12 +3,14 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <set>
 #include <thread>
 
 #include "include_resolver.hpp"
+#include "job_pool.hpp"
 #include "module_naming.hpp"
 #include "shown_path.hpp"
 #include "validator.hpp"
@@ -167,42 +169,86 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
     std::set<std::string> includedCanonical;
     std::map<std::string, std::string> includedPath;  // canonical -> display
 
-    for (const auto& shader : shaders) {
-        ResolveOptions base{o.includeDirs, o.defines, rc.data.versionDirective, o.baseDir};
-        std::vector<VariantPragma> pragmas;
+    // Every stage once with the base options (no variant defines), on -j threads: these
+    // runs find the variant axes, and variants share them where they can.
+    const ResolveOptions base{o.includeDirs, o.defines, rc.data.versionDirective, o.baseDir};
+    std::vector<std::pair<std::size_t, std::size_t>> allStages;  // (shader, stage)
+    for (std::size_t s = 0; s < shaders.size(); ++s)
+        for (std::size_t st = 0; st < shaders[s].stages.size(); ++st) allStages.emplace_back(s, st);
+    std::vector<std::vector<ResolveResult>> baseRuns(shaders.size());
+    for (std::size_t s = 0; s < shaders.size(); ++s) baseRuns[s].resize(shaders[s].stages.size());
+    runPool(allStages.size(), o.jobs, [&](std::size_t i) {
+        const auto [s, st] = allStages[i];
+        baseRuns[s][st] = resolveStage(shaders[s].stages[st].path, base, reader);
+    });
+    rc.preprocessorRuns = allStages.size();
+
+    // Each shader's axes and variant choices, from its base runs.
+    struct ShaderPlan {
+        std::vector<Diagnostic> diagnostics;  // reported in this order, before the variants'
         bool ok = true;
         std::vector<std::string> stagePaths;
-        for (const auto& st : shader.stages) {
-            auto r = resolveStage(st.path, base, reader);
-            sink.reportAll(r.diagnostics);
-            ok = ok && r.ok;
+        std::vector<Axis> axes;
+        std::vector<VariantChoice> choices;
+        std::vector<std::vector<ResolveResult>> resolved;  // [variant][stage]
+    };
+    std::vector<ShaderPlan> plans(shaders.size());
+    std::vector<std::size_t> toResolve;
+    for (std::size_t s = 0; s < shaders.size(); ++s) {
+        ShaderPlan& plan = plans[s];
+        std::vector<VariantPragma> pragmas;
+        for (const auto& r : baseRuns[s]) {
+            plan.diagnostics.insert(plan.diagnostics.end(), r.diagnostics.begin(), r.diagnostics.end());
+            plan.ok = plan.ok && r.ok;
             for (const auto& f : r.stage.files)  // used even when the stage fails: no "no stage includes" warning
                 if (f.number > 0 && includedCanonical.insert(f.canonical).second) includedPath[f.canonical] = f.path;
             pragmas.insert(pragmas.end(), r.stage.variantPragmas.begin(), r.stage.variantPragmas.end());
-            stagePaths.push_back(st.path);
+            plan.stagePaths.push_back(shaders[s].stages[plan.stagePaths.size()].path);
         }
-        if (!ok) continue;
+        if (!plan.ok) continue;
         auto axes = axesFromPragmas(pragmas);
-        sink.reportAll(axes.diagnostics);
-        auto choices = variantChoices(shader.name, axes.axes, filters.filters);
-        sink.reportAll(choices.diagnostics);
-        if (!axes.diagnostics.empty() || !choices.diagnostics.empty()) continue;
+        plan.diagnostics.insert(plan.diagnostics.end(), axes.diagnostics.begin(), axes.diagnostics.end());
+        auto choices = variantChoices(shaders[s].name, axes.axes, filters.filters);
+        plan.diagnostics.insert(plan.diagnostics.end(), choices.diagnostics.begin(), choices.diagnostics.end());
+        plan.ok = axes.diagnostics.empty() && choices.diagnostics.empty();
+        plan.axes = std::move(axes.axes);
+        plan.choices = std::move(choices.choices);
+        if (plan.ok) toResolve.push_back(s);
+    }
 
-        CatalogShader cs{shader.name, axes.axes, {}, {}};
+    // The shaders' variants, several shaders at once (each on -j / shaders threads).
+    const int innerJobs = std::max(1, o.jobs / std::max(1, static_cast<int>(toResolve.size())));
+    const bool share = !std::getenv("PRISM_SHADERC_NO_VARIANT_SHARING");
+    runPool(toResolve.size(), o.jobs, [&](std::size_t i) {
+        const std::size_t s = toResolve[i];
+        plans[s].resolved =
+            resolveVariants(plans[s].stagePaths, base, plans[s].choices, reader, innerJobs, baseRuns[s], share);
+    });
+
+    std::map<std::string, std::string> shownPaths;  // every variant names the same few files
+    for (std::size_t s = 0; s < shaders.size(); ++s) {
+        const auto& shader = shaders[s];
+        ShaderPlan& plan = plans[s];
+        sink.reportAll(plan.diagnostics);
+        if (!plan.ok) continue;
+        bool ok = true;
+        CatalogShader cs{shader.name, plan.axes, {}, {}};
         std::vector<std::vector<ResolvedStage>> resolvedVariants;
-        auto resolvedAll = resolveVariants(stagePaths, base, choices.choices, reader, o.jobs);  // on -j threads
-        for (std::size_t vi = 0; vi < choices.choices.size(); ++vi) {
-            const auto& choice = choices.choices[vi];
+        for (std::size_t vi = 0; vi < plan.choices.size(); ++vi) {
+            const auto& choice = plan.choices[vi];
             CatalogVariant cv{choice.name, choice.defines, {}, {}};
             std::vector<ResolvedStage> stages;
             for (std::size_t si = 0; si < shader.stages.size(); ++si) {
                 const auto& st = shader.stages[si];
-                auto r = std::move(resolvedAll[vi][si]);
+                auto r = std::move(plan.resolved[vi][si]);
+                rc.preprocessorRuns += !r.stage.shared;
                 sink.reportAll(r.diagnostics);
                 ok = ok && r.ok;
                 CatalogStage cst{st.stage, r.stage.text, {}};
                 for (const auto& f : r.stage.files) {
-                    cst.files.push_back(shownPath(f.path, o));
+                    auto shown = shownPaths.find(f.path);
+                    if (shown == shownPaths.end()) shown = shownPaths.emplace(f.path, shownPath(f.path, o)).first;
+                    cst.files.push_back(shown->second);
                     if (f.number > 0 && includedCanonical.insert(f.canonical).second)
                         includedPath[f.canonical] = f.path;
                 }
@@ -216,7 +262,7 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
         if (!ok) continue;
         rc.data.shaders.push_back(std::move(cs));
         rc.resolved.push_back(std::move(resolvedVariants));
-        rc.stagePaths.push_back(std::move(stagePaths));
+        rc.stagePaths.push_back(std::move(plan.stagePaths));
     }
 
     // A "*" filter must name axes that some shader declares, or it is a typo.

@@ -21,6 +21,7 @@ struct ResolvedCatalog {
     std::vector<std::string> filesRead;                             // for the depfile (display paths)
     std::vector<std::vector<std::vector<ResolvedStage>>> resolved;  // [shader][variant][stage]
     std::vector<std::vector<std::string>> stagePaths;               // [shader][stage]
+    std::size_t preprocessorRuns = 0;  // runs of glslang's preprocessor (variant_resolution.hpp)
 };
 
 ResolvedCatalog resolveCatalog(const Options& options, const std::vector<ShaderInput>& shaders,

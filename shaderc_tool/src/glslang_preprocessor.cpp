@@ -124,18 +124,19 @@ class RecordingIncluder final : public glslang::TShader::Includer {
         for (const auto& [name, value] : options.defines) macroSizes_.define(name, value);
     }
 
-    // Reads the top file; its glslang text, or nullopt after reporting why not.
-    std::optional<std::string> enterTop(const std::string& path) {
+    // Reads the top file; its glslang text (which glslang must read in place: a line over
+    // a limit found later is blanked there), or null after reporting why not.
+    const std::string* enterTop(const std::string& path) {
         const std::string display = joinPath("", path);
         const auto canonical = reader_.canonical(display);
         const auto text = canonical ? reader_.read(display) : std::nullopt;
         if (!text) {
             run_.diagnostics.push_back(makeError(display, 0, 0, canonical ? "cannot read the file" : "file not found"));
-            return std::nullopt;
+            return nullptr;
         }
         EnteredFile& top = enter(display, *canonical, {}, *text);
-        if (hasLimitErrors_) return std::nullopt;
-        return texts_[top.number];
+        if (hasLimitErrors_) return nullptr;
+        return &texts_[top.number];
     }
 
     IncludeResult* includeLocal(const char* name, const char* includer, size_t depth) override {
@@ -308,18 +309,58 @@ class RecordingIncluder final : public glslang::TShader::Includer {
         std::vector<IncludeSite> sites{{includer.display, line.firstLine}};
         sites.insert(sites.end(), includer.chain.begin(), includer.chain.end());
         hasLimitErrors_ = false;
+        openIncludeLine_[static_cast<std::uint32_t>(includerNumber)] = line.firstLine;
         const std::uint32_t child = enter(found->display, found->canonical, std::move(sites), *text).number;
         // `enter` grew run_.files: `includer` may dangle from here on.
         run_.files[static_cast<std::size_t>(includerNumber)].includes[line.firstLine] = child;
+        recheckOpenFiles();
         const std::string& childText = texts_[child];
         if (childText.empty()) return nothing();
         return new IncludeResult(std::to_string(child), childText.data(), childText.size(), nullptr);
+    }
+
+    // The lines of the open files below their open #include were checked before the file
+    // it names defined its macros: check them again with those (`M` defined in an include
+    // and used after it). A line over a limit is reported and blanked in glslang's text
+    // before glslang reads it.
+    void recheckOpenFiles() {
+        for (std::size_t i = 0; i + 1 < stack_.size(); ++i) {  // the last one is the file just entered
+            const std::uint32_t number = stack_[i];
+            const EnteredFile& file = run_.files[number];
+            const int after = openIncludeLine_[number];
+            std::vector<LogicalLine> rest;
+            for (const auto& line : file.lines)
+                if (line.firstLine > after) rest.push_back(line);
+            MacroSizeTable macros = macroSizes_;  // the rest's own #defines are counted again, in order
+            for (auto& e : checkPreprocessorLimits(file.display, rest, macros)) {
+                if (!limitLinesReported_.insert({number, e.line}).second) continue;
+                blankLine(texts_[number], e.line, lineAt(file, e.line)->physical.size());
+                e.includedFrom = file.chain;
+                run_.diagnostics.push_back(std::move(e));
+            }
+        }
+    }
+
+    // Spaces over the physical lines [first, first + count) of `text`, newlines kept.
+    static void blankLine(std::string& text, int first, std::size_t count) {
+        std::size_t at = 0;
+        for (int line = 1; line < first; ++line) {
+            const auto end = text.find('\n', at);
+            if (end == std::string::npos) return;
+            at = end + 1;
+        }
+        for (std::size_t seen = 0; at < text.size() && seen < count; ++at) {
+            if (text[at] == '\n') ++seen;
+            else text[at] = ' ';
+        }
     }
 
     const ResolveOptions& options_;
     const SourceReader& reader_;
     PreprocessRun& run_;
     MacroSizeTable macroSizes_;
+    std::map<std::uint32_t, int> openIncludeLine_;           // file -> line of its #include now open
+    std::set<std::pair<std::uint32_t, int>> limitLinesReported_;
     std::deque<std::string> texts_;   // glslang's text of each entered file (stable addresses)
     std::deque<std::string> probes_;  // guard probes
     std::vector<Diagnostic> pendingCycles_;
@@ -397,7 +438,7 @@ PreprocessRun preprocessWithGlslang(const std::string& path, const ResolveOption
     initializeGlslangOnce();
     PreprocessRun run;
     RecordingIncluder includer(options, reader, run);
-    const auto text = includer.enterTop(path);
+    const std::string* text = includer.enterTop(path);
     if (!text) return run;
 
     std::string preamble = "#extension GL_GOOGLE_include_directive : require\n";
@@ -411,7 +452,6 @@ PreprocessRun preprocessWithGlslang(const std::string& path, const ResolveOption
     const bool ok = shader.preprocess(GetDefaultResources(), version.number, profileOf(version), true, false,
                                       EShMsgDefault, &output, includer);
     if (!ok) addGlslangErrors(shader.getInfoLog(), includer, run);
-    run.tokenSignature = tokenSignature(output);
     run.ok = std::none_of(run.diagnostics.begin(), run.diagnostics.end(),
                           [](const Diagnostic& d) { return d.severity == Severity::Error; });
     return run;

@@ -65,7 +65,6 @@ struct EnteredFile {
 struct PreprocessRun {
     std::vector<EnteredFile> files;  // [0] = the top file; empty when it cannot be read
     std::vector<Diagnostic> diagnostics;
-    std::string tokenSignature;  // of glslang's preprocessed output (content_hash.hpp)
     bool ok = false;
 };
 

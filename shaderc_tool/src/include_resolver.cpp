@@ -453,7 +453,6 @@ ResolveResult resolveStage(const std::string& stagePath, const ResolveOptions& o
     }
     result.diagnostics.insert(result.diagnostics.end(), run.diagnostics.begin(), run.diagnostics.end());
     flattener->finish(result);
-    result.stage.tokenSignature = run.tokenSignature;
     for (const auto& file : run.files) {
         result.stage.files.push_back({file.number, file.display, file.canonical, file.chain});
         result.stage.filesRead.push_back(file.display);

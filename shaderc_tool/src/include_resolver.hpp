@@ -44,7 +44,7 @@ struct ResolvedStage {
     std::vector<ResolvedFile> files;  // index == source number
     std::vector<VariantPragma> variantPragmas;
     std::vector<std::string> filesRead;  // display paths of every file read, in order
-    std::string tokenSignature;          // what the compiler sees (content_hash.hpp): the validation cache key
+    std::string validationKey;           // what the compiler sees (validation_key.hpp), set by resolveVariants
     bool shared = false;                 // copied from another variant's run (variant_resolution.hpp)
 };
 

@@ -139,8 +139,10 @@ int main(int argc, char** argv) {
     }
 
     auto catalog = resolveCatalog(o, inputs.shaders, contract.contract, disk, sink);
-    catalog.data.sourcesBlock = sourcesBlock(recordSources(o, catalog.filesRead, disk));
-    catalog.data.fingerprint = fingerprint(catalog);
+    if (!o.checkOnly && !o.output.empty()) {  // what the data file records
+        catalog.data.sourcesBlock = sourcesBlock(recordSources(o, catalog.filesRead, disk));
+        catalog.data.fingerprint = fingerprint(catalog);
+    }
     if (sink.errorCount() == 0 && outputsAreCurrent(o, catalog.data.fingerprint)) {
         removeStaleOutputTemps(o);
         sink.print(std::cerr, o.errorFormat);

@@ -95,8 +95,9 @@ std::string fingerprintOf(const Options& o, const std::vector<std::string>& embe
 
 SourcesRecord recordSources(const Options& o, const std::vector<std::string>& filesRead, const SourceReader& reader,
                             ContentKey key) {
+    const std::set<std::string> named(filesRead.begin(), filesRead.end());  // each stage lists its files
     std::set<std::string> unique;
-    for (const auto& f : filesRead) unique.insert(recordedName(f, o));
+    for (const auto& f : named) unique.insert(recordedName(f, o));
     SourcesRecord record;
     record.files.assign(unique.begin(), unique.end());
     record.fingerprint = fingerprintOf(o, record.files, reader, key);

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <mutex>
 #include <thread>
 
 #include <glslang/Public/ShaderLang.h>
@@ -57,7 +58,7 @@ ProgramKey programKey(const ResolvedCatalog& rc, const Contract& contract, std::
     for (std::size_t st = 0; st < resolved.size(); ++st) {
         tokens.add(std::to_string(static_cast<int>(variant.stages[st].stage)))
             .add(resolved[st].versionDirective)
-            .add(resolved[st].tokenSignature);
+            .add(resolved[st].validationKey);
     }
     ContentHash text;
     text.add(tokens.hex());
@@ -80,8 +81,9 @@ ValidationStats validateCatalogScheduled(ResolvedCatalog& rc, const Contract& co
     };
     std::vector<Program> programs;
     for (std::size_t s = 0; s < rc.data.shaders.size(); ++s)
-        for (std::size_t v = 0; v < rc.data.shaders[s].variants.size(); ++v)
-            programs.push_back({s, v, programKey(rc, contract, s, v)});
+        for (std::size_t v = 0; v < rc.data.shaders[s].variants.size(); ++v) programs.push_back({s, v, {}});
+    runPool(programs.size(), jobs,
+            [&](std::size_t i) { programs[i].key = programKey(rc, contract, programs[i].shader, programs[i].variant); });
 
     // One representative per token key, in catalogue order.
     std::map<std::string, std::size_t> groupOf;
@@ -113,27 +115,40 @@ ValidationStats validateCatalogScheduled(ResolvedCatalog& rc, const Contract& co
     for (std::size_t i = 0; i < toValidate.size(); ++i)
         for (const auto& st : stageLists[i]) {
             const std::string key = std::to_string(static_cast<int>(st.stage)) + " " + st.resolved.versionDirective +
-                                    " " + st.resolved.tokenSignature;
+                                    " " + st.resolved.validationKey;
             auto [it, fresh] = stageIndex.try_emplace(key, distinctStages.size());
             if (fresh) distinctStages.push_back(&st);
             stageRefs[i].push_back(it->second);
         }
-    std::vector<std::shared_ptr<CompiledStage>> compiled(distinctStages.size());
-    runPool(distinctStages.size(), jobs, [&](std::size_t k) { compiled[k] = compileStage(*distinctStages[k]); });
+    // A stage is parsed by the first program that needs it and freed after the last one:
+    // glslang's trees of every stage at once cost more in fresh memory than the parses.
+    struct StageSlot {
+        std::once_flag parsed;
+        std::shared_ptr<CompiledStage> compiled;
+        std::atomic<std::size_t> users{0};
+    };
+    std::vector<StageSlot> slots(distinctStages.size());
+    for (const auto& refs : stageRefs)
+        for (auto k : refs) ++slots[k].users;
     runPool(toValidate.size(), jobs, [&](std::size_t i) {
         const std::size_t g = toValidate[i];
         const Program& p = programs[representatives[g]];
         std::vector<std::shared_ptr<CompiledStage>> mine;
-        for (auto k : stageRefs[i]) mine.push_back(compiled[k]);
+        for (auto k : stageRefs[i]) {
+            std::call_once(slots[k].parsed, [&] { slots[k].compiled = compileStage(*distinctStages[k]); });
+            mine.push_back(slots[k].compiled);
+        }
         groupResults[g] = validateCompiledProgram(stageLists[i], mine, contract);
         // Messages must speak of this program's own text, and a failed link leaves state
         // in shared stages: any message means a private run.
         if (!groupResults[g]->diagnostics.empty()) groupResults[g] = validateProgram(stageLists[i], contract);
         cache.store(p.key, *groupResults[g]);
+        mine.clear();
+        for (auto k : stageRefs[i])
+            if (--slots[k].users == 0) slots[k].compiled.reset();
     });
     stats.validated = toValidate.size();
     stats.stagesCompiled = distinctStages.size();
-    compiled.clear();  // glslang objects go before glslang's FinalizeProcess
 
     // A group result with diagnostics speaks of its representative's lines: the other
     // members (other texts) are validated on their own (rare: only when there are problems).

@@ -36,8 +36,8 @@ void printResolutionStats(std::ostream& out, const ResolvedCatalog& catalog) {
                 ++stages;
                 shared += stage.shared;
             }
-    out << "prism-shaderc: resolved " << stages - shared << " of " << stages << " stages with glslang (" << shared
-        << " shared another variant's run)\n";
+    out << "prism-shaderc: resolved " << stages << " stages with " << catalog.preprocessorRuns
+        << " runs of glslang's preprocessor (" << shared << " shared another run)\n";
 }
 
 void printValidationStats(std::ostream& out, const ValidationStats& s) {

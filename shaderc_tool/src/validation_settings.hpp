@@ -22,7 +22,7 @@ std::string validationCacheDir(const Options& options);
 // a directory do not overwrite each other's.
 std::string catalogueCacheKey(const Options& options);
 
-// "prism-shaderc: resolved 120 of 304 stages with glslang (184 shared another variant's run)".
+// "prism-shaderc: resolved 304 stages with 20 runs of glslang's preprocessor (294 shared another run)".
 void printResolutionStats(std::ostream& out, const ResolvedCatalog& catalog);
 
 // "prism-shaderc: validated 12 of 152 programs (140 shared a token stream, 0 from the cache)".

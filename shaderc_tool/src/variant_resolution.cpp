@@ -2,52 +2,70 @@
 // variant_resolution.hpp).
 #include "variant_resolution.hpp"
 
-#include <algorithm>
-#include <atomic>
 #include <cctype>
-#include <cstdlib>
-#include <functional>
+#include <deque>
 #include <map>
 #include <optional>
-#include <set>
-#include <thread>
 
 #include "job_pool.hpp"
+#include "structural_macros.hpp"
+#include "validation_key.hpp"
 
 namespace prism::shaderc {
 namespace {
 
-void addIdentifiers(std::string_view text, std::set<std::string>& out) {
-    for (std::size_t i = 0; i < text.size();) {
-        const unsigned char c = static_cast<unsigned char>(text[i]);
-        if (std::isalpha(c) || c == '_') {
-            std::size_t j = i + 1;
-            while (j < text.size() && (std::isalnum(static_cast<unsigned char>(text[j])) || text[j] == '_')) ++j;
-            out.emplace(text.substr(i, j - i));
-            i = j;
-        } else {
-            ++i;
+using Defines = std::vector<std::pair<std::string, std::string>>;
+
+// A run made for real, which variants may share.
+struct Representative {
+    const ResolveResult* result;
+    const ResolveOptions* options;
+    std::optional<StructuralMacros> structure;  // nullopt: nothing may share this run
+};
+
+std::optional<StructuralMacros> structureOf(const ResolveResult& r, const SourceReader& reader) {
+    if (!r.ok || !r.diagnostics.empty()) return std::nullopt;  // its messages might not be a variant's
+    std::vector<std::string> texts;
+    for (const auto& path : r.stage.filesRead) {
+        auto text = reader.read(path);
+        if (!text) return std::nullopt;
+        texts.push_back(std::move(*text));
+    }
+    return structuralMacros(std::vector<std::string_view>(texts.begin(), texts.end()));
+}
+
+const std::string* valueOf(const Defines& defines, const std::string& name) {
+    for (const auto& [n, v] : defines)
+        if (n == name) return &v;
+    return nullptr;
+}
+
+// A value that names a macro of the files read expands into it, which the preprocessor
+// limits (preprocessor_limits.hpp) checked for the representative's value only.
+bool namesAMacro(const std::string* value, const StructuralMacros& s) {
+    return value && !value->empty() && !std::isdigit(static_cast<unsigned char>(value->front())) &&
+           value->front() != '-' && s.defined.contains(*value);
+}
+
+// May a run with `options` take `rep`'s result? Only when every macro on which they
+// differ is structural in none of the files `rep` read.
+bool mayShare(const Representative& rep, const ResolveOptions& options) {
+    if (!rep.structure) return false;
+    const auto differs = [&](const Defines& a, const Defines& b) {
+        for (const auto& [name, value] : a) {
+            const std::string* other = valueOf(b, name);
+            if (other && *other == value) continue;
+            if (rep.structure->decisive.contains(name) || namesAMacro(&value, *rep.structure) ||
+                namesAMacro(other, *rep.structure))
+                return true;
         }
-    }
+        return false;
+    };
+    return !differs(options.defines, rep.options->defines) && !differs(rep.options->defines, options.defines);
 }
 
-// Every identifier the preprocessor could meet in a run that read `filesRead` with
-// `options` (the files' texts and the macros' values); nullopt when a file pastes
-// tokens (`##` can make a macro name that appears nowhere).
-std::optional<std::set<std::string>> identifiersSeen(const ResolvedStage& stage, const ResolveOptions& options,
-                                                     const SourceReader& reader) {
-    std::set<std::string> ids;
-    for (const auto& path : stage.filesRead) {
-        const auto text = reader.read(path);
-        if (!text || text->find("##") != std::string::npos) return std::nullopt;
-        addIdentifiers(*text, ids);
-    }
-    for (const auto& [name, value] : options.defines) addIdentifiers(value, ids);
-    return ids;
-}
-
-// `from`'s result for another variant whose defines differ only in macros the run
-// never met: the same files and decisions; only the #define block at the top differs.
+// `from`'s result for a run with `options`: the same files and decisions; only the
+// #define block at the top differs.
 ResolveResult withDefines(const ResolveResult& from, const ResolveOptions& fromOptions, const ResolveOptions& options) {
     ResolveResult r = from;
     std::size_t end = 0;
@@ -64,78 +82,86 @@ ResolveResult withDefines(const ResolveResult& from, const ResolveOptions& fromO
 std::vector<std::vector<ResolveResult>> resolveVariants(const std::vector<std::string>& stagePaths,
                                                         const ResolveOptions& base,
                                                         const std::vector<VariantChoice>& choices,
-                                                        const SourceReader& reader, int jobs) {
+                                                        const SourceReader& reader, int jobs,
+                                                        const std::vector<ResolveResult>& baseRuns, bool share) {
     const std::size_t variants = choices.size(), stages = stagePaths.size();
     std::vector<std::vector<ResolveResult>> results(variants, std::vector<ResolveResult>(stages));
     std::vector<ResolveOptions> options(variants, base);
     for (std::size_t v = 0; v < variants; ++v)
         options[v].defines.insert(options[v].defines.end(), choices[v].defines.begin(), choices[v].defines.end());
     std::vector<std::vector<char>> done(variants, std::vector<char>(stages, 0));
-    auto resolve = [&](std::size_t v, std::size_t st) {
-        results[v][st] = resolveStage(stagePaths[st], options[v], reader);
-        done[v][st] = 1;
-    };
-    const bool share = !std::getenv("PRISM_SHADERC_NO_VARIANT_SHARING") && variants > 1;
+    std::vector<std::vector<const Representative*>> origin(variants, std::vector<const Representative*>(stages));
+    std::vector<std::deque<Representative>> reps(stages);  // a deque: `origin` points into it
+    if (share && baseRuns.size() == stages)
+        for (std::size_t st = 0; st < stages; ++st)
+            reps[st].push_back({&baseRuns[st], &base, structureOf(baseRuns[st], reader)});
 
-    // 1. The first variant of every stage, for real.
-    runPool(stages, jobs, [&](std::size_t st) { resolve(0, st); });
-    if (!share) {
-        std::vector<std::pair<std::size_t, std::size_t>> rest;
-        for (std::size_t v = 1; v < variants; ++v)
-            for (std::size_t st = 0; st < stages; ++st) rest.emplace_back(v, st);
-        runPool(rest.size(), jobs, [&](std::size_t i) { resolve(rest[i].first, rest[i].second); });
-        return results;
-    }
-
-    // 2. Per stage, variants agreeing on the axes that run met form a group; each group's
-    //    first member is resolved for real.
-    std::vector<std::vector<std::size_t>> groupOf(stages, std::vector<std::size_t>(variants, 0));
-    std::vector<std::pair<std::size_t, std::size_t>> representatives;  // (variant, stage) to resolve
-    for (std::size_t st = 0; st < stages; ++st) {
-        const auto seen = results[0][st].diagnostics.empty()
-                              ? identifiersSeen(results[0][st].stage, options[0], reader)
-                              : std::nullopt;
-        std::map<std::vector<std::string>, std::size_t> firstWithKey;
-        for (std::size_t v = 0; v < variants; ++v) {
-            std::vector<std::string> key;
-            for (const auto& [name, value] : choices[v].defines)
-                key.push_back(!seen || seen->contains(name) ? value : std::string("\x01"));
-            const auto [it, fresh] = firstWithKey.try_emplace(key, v);
-            groupOf[st][v] = it->second;
-            if (fresh && v != 0) representatives.emplace_back(v, st);
-        }
-    }
-    runPool(representatives.size(), jobs,
-            [&](std::size_t i) { resolve(representatives[i].first, representatives[i].second); });
-
-    // 3. A member shares its representative's result when the macros in which they differ
-    //    appear nowhere in what the representative's run read; otherwise it runs itself.
-    std::vector<std::pair<std::size_t, std::size_t>> own;
-    for (std::size_t st = 0; st < stages; ++st) {
-        std::map<std::size_t, std::optional<std::set<std::string>>> seenOf;
-        for (std::size_t v = 0; v < variants; ++v) {
-            if (done[v][st]) continue;
-            const std::size_t rep = groupOf[st][v];
-            const ResolveResult& r = results[rep][st];
-            auto it = seenOf.find(rep);
-            if (it == seenOf.end())
-                it = seenOf.emplace(rep, r.diagnostics.empty() ? identifiersSeen(r.stage, options[rep], reader)
-                                                               : std::nullopt)
-                         .first;
-            bool shareable = it->second.has_value();
-            for (std::size_t a = 0; shareable && a < choices[v].defines.size(); ++a)
-                if (choices[v].defines[a].second != choices[rep].defines[a].second &&
-                    it->second->contains(choices[v].defines[a].first))
-                    shareable = false;
-            if (shareable) {
-                results[v][st] = withDefines(r, options[rep], options[v]);
-                done[v][st] = 1;
-            } else {
-                own.emplace_back(v, st);
+    // Rounds: share what can be shared; of the rest, resolve one variant per group of
+    // like structural values (every variant on its own in the last round), and repeat.
+    for (int round = 0;; ++round) {
+        std::vector<std::pair<std::size_t, std::size_t>> toRun;  // (variant, stage)
+        for (std::size_t st = 0; st < stages; ++st) {
+            std::map<std::vector<std::string>, bool> groupsTaken;
+            for (std::size_t v = 0; v < variants; ++v) {
+                if (done[v][st]) continue;
+                bool shared = false;
+                for (const auto& rep : reps[st]) {
+                    if (share && mayShare(rep, options[v])) {
+                        results[v][st] = withDefines(*rep.result, *rep.options, options[v]);
+                        origin[v][st] = &rep;
+                        done[v][st] = 1;
+                        shared = true;
+                        break;
+                    }
+                }
+                if (shared) continue;
+                // The group: the values of the macros that the first representative found
+                // structural; the first variant alone when there is no representative yet;
+                // each variant alone when the first has no structure, or from round 2 on.
+                std::vector<std::string> group;
+                if (share && reps[st].empty()) {
+                    group.push_back("first");
+                } else if (share && round < 2 && reps[st].front().structure) {
+                    for (const auto& [name, value] : choices[v].defines)
+                        group.push_back(reps[st].front().structure->decisive.contains(name) ? value : "\x01");
+                } else {
+                    group.push_back(std::to_string(v));
+                }
+                if (groupsTaken.try_emplace(group, true).second || !share) toRun.emplace_back(v, st);
             }
         }
+        if (toRun.empty()) break;
+        runPool(toRun.size(), jobs, [&](std::size_t i) {
+            const auto [v, st] = toRun[i];
+            results[v][st] = resolveStage(stagePaths[st], options[v], reader);
+            done[v][st] = 1;
+        });
+        for (const auto& [v, st] : toRun)
+            reps[st].push_back({&results[v][st], &options[v], share ? structureOf(results[v][st], reader) : std::nullopt});
     }
-    runPool(own.size(), jobs, [&](std::size_t i) { resolve(own[i].first, own[i].second); });
+
+    // Keys: a shared result has its representative's files and body, so the costly part
+    // (the body's signature, which define names the files meet) is worked out once per run.
+    std::vector<std::pair<std::size_t, std::size_t>> all;
+    for (std::size_t v = 0; v < variants; ++v)
+        for (std::size_t st = 0; st < stages; ++st) all.emplace_back(v, st);
+    std::map<const Representative*, ValidationKeyBasis> bases;
+    std::vector<const Representative*> needed;
+    for (const auto& [v, st] : all)
+        if (origin[v][st] && bases.try_emplace(origin[v][st]).second) needed.push_back(origin[v][st]);
+    std::vector<std::string> names;
+    if (variants > 0)
+        for (const auto& d : options[0].defines) names.push_back(d.first);
+    runPool(needed.size(), jobs, [&](std::size_t i) {
+        const Representative* rep = needed[i];
+        bases.at(rep) = validationKeyBasis(rep->result->stage, rep->options->defines.size(), names, reader);
+    });
+    runPool(all.size(), jobs, [&](std::size_t i) {
+        const auto [v, st] = all[i];
+        auto& stage = results[v][st].stage;
+        stage.validationKey = origin[v][st] ? validationKey(stage, options[v].defines, bases.at(origin[v][st]))
+                                            : validationKey(stage, options[v].defines, reader);
+    });
     return results;
 }
 

@@ -2,15 +2,19 @@
 // (include_resolver.hpp) on `jobs` threads (the readers cache files behind a mutex and
 // glslang's preprocessor is thread-safe per TShader).
 //
-// Variants share what cannot differ: glslang's preprocessing is a function of the texts
-// it reads and the macros' values, and a macro's value matters only where its name is
-// met. So a variant whose defines differ from an already resolved one only in macros
-// whose names appear in none of the files that run read (nor in any macro's value), with
-// no `##` token pasting in them, gets that result with its own #define lines: the same
-// files, include decisions and token stream. Any other variant runs glslang itself.
-// PRISM_SHADERC_NO_VARIANT_SHARING=1 turns sharing off (tests compare both).
+// Variants share what cannot differ: the flattened text is the files glslang enters and
+// the directives it reaches, and only structural macros (structural_macros.hpp) can
+// change those. So a variant whose defines differ from a run made for real only in
+// macros that are structural in none of the files that run read gets that result with
+// its own #define lines. The runs made with the base options (no variant defines), which
+// found the variant axes, are the first such runs; then one variant per group of like
+// structural values runs glslang; any variant still left runs it on its own.
+// With `share` false every variant runs glslang (the reference that tests and the
+// variant_sharing fuzzer compare with; prism-shaderc does so under
+// PRISM_SHADERC_NO_VARIANT_SHARING=1).
+// Last, each stage gets its validation key (validation_key.hpp).
 //
-//   auto results = resolveVariants(stagePaths, baseOptions, choices, reader, jobs);
+//   auto results = resolveVariants(stagePaths, baseOptions, choices, reader, jobs, baseRuns, true);
 //   // results[variant][stage], in the order of `choices` and `stagePaths`
 #pragma once
 
@@ -25,6 +29,7 @@ namespace prism::shaderc {
 std::vector<std::vector<ResolveResult>> resolveVariants(const std::vector<std::string>& stagePaths,
                                                         const ResolveOptions& base,
                                                         const std::vector<VariantChoice>& choices,
-                                                        const SourceReader& reader, int jobs);
+                                                        const SourceReader& reader, int jobs,
+                                                        const std::vector<ResolveResult>& baseRuns, bool share);
 
 }  // namespace prism::shaderc

@@ -71,6 +71,25 @@ TEST(PreprocessorLimits, DoublingMacroChainInCode) {
                          "the macros on this line expand to more than 1,000,000 tokens (limit)", 24);
 }
 
+// The chain is defined in an include and used after it, in the includer and in the file
+// that includes the includer: those lines were checked before the include was read, so
+// they are checked again once it is (and blanked before glslang reaches them).
+TEST(PreprocessorLimits, DoublingMacroChainDefinedInAnInclude) {
+    const auto start = std::chrono::steady_clock::now();
+    MemoryReader reader{{"main.frag", "#version 330 core\n#include \"mid.glsl\"\nfloat y = float(M22);\nvoid main() {}\n"},
+                        {"mid.glsl", "#include \"chain.glsl\"\nfloat x = float(M22);\n"},
+                        {"chain.glsl", doublingChain(22)}};
+    const auto result = resolveStage("main.frag", {}, reader);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_FALSE(result.ok);
+    EXPECT_LT(seconds, 1.0) << "the stated limit is a clear error within 1 s";
+    std::vector<std::string> places;
+    for (const auto& d : result.diagnostics)
+        if (d.message.find("expand to more than 1,000,000 tokens (limit)") != std::string::npos)
+            places.push_back(d.file + ":" + std::to_string(d.line));
+    EXPECT_EQ(places, (std::vector<std::string>{"main.frag:3", "mid.glsl:2"})) << messages(result);
+}
+
 TEST(PreprocessorLimits, NestedMacroCallsAreBounded) {
     std::string calls = "X";
     for (int i = 0; i < 300; ++i) calls = "TWICE(" + calls + ")";

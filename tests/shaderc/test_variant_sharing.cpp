@@ -67,10 +67,12 @@ TEST(VariantSharing, AMacroMetOnlyUnderAnotherAxisStillCounts) {
     EXPECT_EQ(onlyA.find("float bPart()"), std::string::npos) << onlyA;
     EXPECT_NE(both.find("#define B 1"), std::string::npos) << both;
     EXPECT_NE(readFile(dir.path() / "out/a.B-1_A-0.frag").find("#define B 1"), std::string::npos);
-    // The vertex stage meets only B: A=1 shares A=0's run (2 of 4 vertex variants), and so
-    // does the fragment stage's B=1 with B=0 when A=0 (1 of 4).
+    // One base run per stage finds the axes. Nothing in the vertex stage's files decides an
+    // include, so its 4 variants share its base run. The fragment stage runs once per value
+    // of A (A decides an include); B=1 with A=0 shares B=0's run (B decides nothing there),
+    // but B=1 with A=1 runs on its own (in a_on.glsl, B decides an include): 2 + 3 runs.
     auto stats = runShaderc("--check --stats --cache-dir none s", dir.str());
-    EXPECT_NE(stats.output.find("resolved 5 of 8 stages with glslang (3 shared another variant's run)"),
+    EXPECT_NE(stats.output.find("resolved 8 stages with 5 runs of glslang's preprocessor (5 shared another run)"),
               std::string::npos)
         << stats.output;
 }
@@ -86,4 +88,66 @@ TEST(VariantSharing, TokenPastingDisablesSharing) {
     auto run = runShaderc("--check --stats --emit-glsl out --cache-dir none s", dir.str());
     ASSERT_EQ(run.exitCode, 0) << run.output;
     EXPECT_NE(run.output.find("validated 2 of 2 programs (0 shared a token stream"), std::string::npos) << run.output;
+}
+
+// Sharing against every variant's own glslang run, on structures that decide includes
+// in roundabout ways: a condition that defines a macro another condition tests, #ifdef
+// of an axis, an axis only in code, an axis whose values name macros of the files, and
+// an include under an axis inside an include guard. The emitted GLSL must be
+// byte-identical, with fewer glslang runs.
+TEST(VariantSharing, RoundaboutStructuresMatchEveryVariantsOwnRun) {
+    ScratchDir dir("variant-sharing-roundabout");
+    dir.write("s/a.vert", "#version 330 core\n#pragma prism variant K ONE TWO\n#include \"m/values.glsl\"\n"
+                          "void main() { gl_Position = vec4(float(K)); }\n");
+    dir.write("s/a.frag", "#version 330 core\n#pragma prism variant Q 0 1 2\n#pragma prism variant CODE\n"
+                          "#pragma prism variant D\n#include \"m/chain.glsl\"\n#include \"m/guarded.glsl\"\n"
+                          "out vec4 o;\nvoid main() { o = vec4(chain() + guarded() + float(CODE)); }\n");
+    dir.write("s/m/values.glsl", "// Provides: the values of K.\n#define ONE 1\n#define TWO 2\n");
+    dir.write("s/m/chain.glsl", "// Provides: chain().\n#if Q == 1\n#define USE_X\n#endif\n#ifdef USE_X\n"
+                                "#include \"x.glsl\"\n#else\nfloat chain() { return 0.0; }\n#endif\n");
+    dir.write("s/m/x.glsl", "// Provides: the X chain.\nfloat chain() { return 1.0; }\n");
+    dir.write("s/m/guarded.glsl", "// Provides: guarded().\n#ifndef GUARDED\n#define GUARDED\n#if D\n"
+                                  "#include \"d.glsl\"\n#endif\nfloat guarded() {\n#if D\n  return d();\n#else\n"
+                                  "  return 0.0;\n#endif\n}\n#endif\n");
+    dir.write("s/m/d.glsl", "// Provides: d().\nfloat d() { return 2.0; }\n");
+    const std::string args = "--check --stats --cache-dir none s --emit-glsl ";
+    auto shared = runShaderc(args + "shared", dir.str());
+    ::setenv("PRISM_SHADERC_NO_VARIANT_SHARING", "1", 1);
+    auto own = runShaderc(args + "own", dir.str());
+    ::unsetenv("PRISM_SHADERC_NO_VARIANT_SHARING");
+    ASSERT_EQ(shared.exitCode, 0) << shared.output;
+    ASSERT_EQ(own.exitCode, 0) << own.output;
+    const std::string a = treeText(dir.path() / "shared"), b = treeText(dir.path() / "own");
+    EXPECT_TRUE(a == b) << "emitted GLSL differs with variant sharing:\n" << a << "\n----\n" << b;
+    EXPECT_NE(a.find("return 1.0;"), std::string::npos);  // Q=1 took x.glsl
+    EXPECT_NE(a.find("float d()"), std::string::npos);    // D=1 took d.glsl
+    // 2 axes x 3 x 2 x 2 = 24 variants, 48 stages; without sharing each runs (plus the two
+    // base runs). With it: the vertex stage runs for K's 2 values (they name macros), the
+    // fragment stage once per (Q is 1 or not, D): fewer runs.
+    EXPECT_NE(own.output.find("resolved 48 stages with 50 runs"), std::string::npos) << own.output;
+    EXPECT_EQ(shared.output.find("resolved 48 stages with 50 runs"), std::string::npos) << shared.output;
+}
+
+// The preprocessor limits (preprocessor_limits.hpp) are checked in each glslang run: a
+// variant whose axis value names a macro of the files expands that macro where the axis
+// is used, so it never shares a run checked with another value. Here E=HUGE names a
+// 4-million-token macro: the limit must stop it, with sharing as without.
+TEST(VariantSharing, AnAxisValueNamingAMacroIsCheckedInItsOwnRun) {
+    ScratchDir dir("variant-sharing-limits");
+    std::string chain = "// Provides: HUGE, 2^22 tokens.\n#define M0 1\n";
+    for (int i = 1; i <= 22; ++i)
+        chain += "#define M" + std::to_string(i) + " M" + std::to_string(i - 1) + " + M" + std::to_string(i - 1) + "\n";
+    chain += "#define SMALL 1\n#define HUGE M22\n";
+    dir.write("s/m/values.glsl", chain);
+    dir.write("s/a.vert", "#version 330 core\n#pragma prism variant E SMALL HUGE\n#include \"m/values.glsl\"\n"
+                          "void main() { gl_Position = vec4(float(E)); }\n");
+    dir.write("s/a.frag", "#version 330 core\nout vec4 o;\nvoid main() { o = vec4(1.0); }\n");
+    for (const bool share : {true, false}) {
+        if (!share) ::setenv("PRISM_SHADERC_NO_VARIANT_SHARING", "1", 1);
+        auto run = runShaderc("--check --cache-dir none s", dir.str());
+        ::unsetenv("PRISM_SHADERC_NO_VARIANT_SHARING");
+        EXPECT_EQ(run.exitCode, 1) << "sharing " << share << ":\n" << run.output;
+        EXPECT_NE(run.output.find("expand to more than 1,000,000 tokens"), std::string::npos)
+            << "sharing " << share << ":\n" << run.output;
+    }
 }
