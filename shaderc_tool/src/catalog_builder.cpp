@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -169,6 +170,10 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
     std::set<std::string> includedCanonical;
     std::map<std::string, std::string> includedPath;  // canonical -> display
 
+    const auto start = std::chrono::steady_clock::now();
+    if (o.printStats)
+        if (const auto version = parseVersionDirective(rc.data.versionDirective))
+            rc.builtInsMs = buildGlslangBuiltIns(*version);
     // Every stage once with the base options (no variant defines), on -j threads: these
     // runs find the variant axes, and variants share them where they can.
     const ResolveOptions base{o.includeDirs, o.defines, rc.data.versionDirective, o.baseDir};
@@ -296,6 +301,7 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
         rc.data.shaders[s].modules.assign(used.begin(), used.end());
     }
     rc.data.modules = std::move(modules.modules);
+    rc.resolveMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return rc;
 }
 

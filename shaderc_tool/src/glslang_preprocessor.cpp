@@ -12,6 +12,7 @@
 #include <glslang/Public/ShaderLang.h>
 
 #include <algorithm>
+#include <chrono>
 #include <deque>
 #include <memory>
 #include <regex>
@@ -431,6 +432,19 @@ std::string includeGuardOf(const std::vector<LogicalLine>& lines) {
         if (depth == 0) return {};  // something outside the guarded group
     }
     return {};
+}
+
+double buildGlslangBuiltIns(const GlslVersion& version) {
+    const auto start = std::chrono::steady_clock::now();
+    initializeGlslangOnce();
+    glslang::TShader shader(EShLangVertex);
+    const char* empty = "";
+    shader.setStrings(&empty, 1);
+    std::string output;
+    glslang::TShader::ForbidIncluder includer;
+    shader.preprocess(GetDefaultResources(), version.number, profileOf(version), true, false, EShMsgDefault, &output,
+                      includer);
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 PreprocessRun preprocessWithGlslang(const std::string& path, const ResolveOptions& options, const GlslVersion& version,

@@ -72,6 +72,11 @@ struct PreprocessRun {
 // `#if !defined(G)`, then `#define G`, ... `#endif` last); "" when there is none.
 std::string includeGuardOf(const std::vector<LogicalLine>& lines);
 
+// glslang builds its built-in symbol tables once per process and #version, in the first
+// run (every stage kind at once, behind a global lock). This runs it on an empty text,
+// so --stats can show that cost apart; returns the milliseconds it took.
+double buildGlslangBuiltIns(const GlslVersion& version);
+
 // `version` is the one glslang is told to use (the stage's #version lines are probes).
 PreprocessRun preprocessWithGlslang(const std::string& path, const ResolveOptions& options, const GlslVersion& version,
                                     const SourceReader& reader);

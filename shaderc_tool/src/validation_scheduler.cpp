@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -79,6 +80,7 @@ ValidationStats validateCatalogScheduled(ResolvedCatalog& rc, const Contract& co
         std::size_t shader, variant;
         ProgramKey key;
     };
+    const auto start = std::chrono::steady_clock::now();
     std::vector<Program> programs;
     for (std::size_t s = 0; s < rc.data.shaders.size(); ++s)
         for (std::size_t v = 0; v < rc.data.shaders[s].variants.size(); ++v) programs.push_back({s, v, {}});
@@ -173,6 +175,7 @@ ValidationStats validateCatalogScheduled(ResolvedCatalog& rc, const Contract& co
     stats.validated += ownRuns.size();
     if (!toValidate.empty() || !ownRuns.empty()) finalizeValidator();
     cache.flush();
+    stats.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
     for (std::size_t i = 0; i < programs.size(); ++i) {
         const Program& p = programs[i];

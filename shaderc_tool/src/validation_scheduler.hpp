@@ -27,6 +27,7 @@ struct ValidationStats {
     std::size_t fromCache = 0;  // distinct keys answered by the cache
     std::size_t validated = 0;  // glslang validations run (distinct keys + programs re-run for their own lines)
     std::size_t stagesCompiled = 0;  // distinct stages parsed for them (shared by programs)
+    double ms = 0;                   // wall clock
 };
 
 // Fills in every variant's reflection and reports diagnostics, as validateCatalog does.

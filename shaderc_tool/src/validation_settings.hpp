@@ -22,10 +22,12 @@ std::string validationCacheDir(const Options& options);
 // a directory do not overwrite each other's.
 std::string catalogueCacheKey(const Options& options);
 
-// "prism-shaderc: resolved 304 stages with 20 runs of glslang's preprocessor (294 shared another run)".
+// "prism-shaderc: resolved 304 stages with 20 runs of glslang's preprocessor (294 shared
+// another run) in 35.0 ms, 25.0 ms of it glslang's built-in tables" (wall clock).
 void printResolutionStats(std::ostream& out, const ResolvedCatalog& catalog);
 
-// "prism-shaderc: validated 12 of 152 programs (140 shared a token stream, 0 from the cache)".
+// "prism-shaderc: validated 12 of 152 programs (140 shared a token stream, 0 from the cache;
+// 13 stages parsed) in 9.0 ms".
 void printValidationStats(std::ostream& out, const ValidationStats& stats);
 
 }  // namespace prism::shaderc
