@@ -13,6 +13,9 @@ Measures, in one run:
     same with the light counts pinned, and a 192-stage synthetic catalogue (40 shaders,
     copies of the project's, pinned as prism_bench_shaderc's synthetic-40).
 
+Every command runs with CCACHE_DISABLE=1: the edits and reverts repeat the same texts, so
+a compiler cache in the build would answer their compiles from earlier runs.
+
 The module edit touches the source tree's modules/lighting.glsl; the original bytes are
 restored (also on error or Ctrl-C) and the build is brought back up to date. The other
 measurements work on copies in a temporary directory. Prints a Markdown table with the
@@ -41,7 +44,10 @@ PINNED = "*:DIRECTIONAL_LIGHTS=2,POINT_LIGHTS=1"
 
 def run(cmd, cwd=None):
     t0 = time.perf_counter()
-    p = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    # A compiler cache would answer a repeated edit's compiles from an earlier run (the
+    # edits and reverts repeat the same texts): every compile here is a real one.
+    env = dict(os.environ, CCACHE_DISABLE="1")
+    p = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env)
     wall = time.perf_counter() - t0
     if p.returncode != 0:
         sys.exit("bench_edit_loop: failed (%d): %s\n%s" % (p.returncode, " ".join(cmd), p.stdout[-3000:]))
