@@ -3,8 +3,8 @@
 // after an edit validates only the programs whose token streams changed.
 //
 // - Key: the program's token key (tool build and glslang version, contract, each
-//   stage's kind, #version and token signature) and its text key (also the exact
-//   texts, line tables and paths). A result without diagnostics is reused on the token
+//   stage's kind, #version and validation key, validation_key.hpp) and its text key
+//   (also the exact texts, line tables and paths). A result without diagnostics is reused on the token
 //   key alone (comments or line layout cannot change it); one with diagnostics only on
 //   the text key too, since its lines and paths must still be right.
 // - Storage: one pack per catalogue, `<dir>/<catalogue key>.json`, mapping token keys to

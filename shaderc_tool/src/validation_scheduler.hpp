@@ -1,12 +1,14 @@
 // Stage 3 of prism-shaderc, scheduled: validates every variant of the catalogue with
 // as little glslang work as the results allow.
-//   1. Each program gets a content key (validation_cache.hpp) from its stages' token
-//      signatures; programs with the same token stream are validated once.
+//   1. Each program gets a content key (validation_cache.hpp) from its stages'
+//      validation keys (validation_key.hpp); programs with the same token stream are
+//      validated once.
 //   2. Keys found in the cache (--cache-dir) are not validated at all.
 //   3. The rest run on `jobs` threads (glslang is initialised once per process and is
 //      thread-safe per TShader/TProgram): each distinct stage (kind, #version, token
-//      stream) is parsed once and shared by the programs using it, each program is
-//      linked and checked, and the results are stored.
+//      stream) is parsed by the first program that needs it, shared by the others and
+//      freed after the last, each program is linked and checked, and the results are
+//      stored.
 // A shared result is reused only when it has no diagnostics; a program whose result
 // has some is validated with its own text, so every message keeps its own lines.
 //
