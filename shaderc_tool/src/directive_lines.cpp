@@ -139,6 +139,20 @@ std::vector<std::string> blankedDirective(const LogicalLine& line) {
     return lines;
 }
 
+std::size_t findWord(std::string_view text, std::string_view word) {
+    for (auto pos = text.find(word); pos != std::string_view::npos; pos = text.find(word, pos + 1)) {
+        const bool startOk = pos == 0 || !isIdentifierChar(text[pos - 1]);
+        const bool endOk = pos + word.size() == text.size() || !isIdentifierChar(text[pos + word.size()]);
+        if (startOk && endOk) return pos;
+    }
+    return std::string_view::npos;
+}
+
+bool expandsNoMacros(const Directive& directive) {
+    const std::string& n = directive.name;
+    return n == "pragma" || n == "extension" || n == "version" || n == "error";
+}
+
 bool isIdentifier(std::string_view text) {
     return !text.empty() && isIdentifierStart(text.front()) && std::all_of(text.begin(), text.end(), isIdentifierChar);
 }

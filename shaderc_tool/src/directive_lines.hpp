@@ -39,6 +39,11 @@ std::optional<Directive> parseDirective(const LogicalLine& line);
 std::vector<std::string> blankedDirective(const LogicalLine& line);
 
 bool isIdentifier(std::string_view text);
+// Position of `word` in `text` as a whole identifier (not inside a longer one), or npos.
+std::size_t findWord(std::string_view text, std::string_view word);
+// Directives whose words glslang takes as written, never macro-expanded: #pragma,
+// #extension, #version and #error.
+bool expandsNoMacros(const Directive& directive);
 std::string_view trim(std::string_view text);
 std::vector<std::string> splitWhitespace(std::string_view text);
 

@@ -11,19 +11,6 @@
 namespace prism::shaderc {
 namespace {
 
-bool isIdentifierChar(char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
-}
-
-bool containsWord(std::string_view text, std::string_view word) {
-    for (auto pos = text.find(word); pos != std::string_view::npos; pos = text.find(word, pos + 1)) {
-        const bool startOk = pos == 0 || !isIdentifierChar(text[pos - 1]);
-        const bool endOk = pos + word.size() == text.size() || !isIdentifierChar(text[pos + word.size()]);
-        if (startOk && endOk) return true;
-    }
-    return false;
-}
-
 // `#line N` or `#line N S` with plain numbers, as the flattener writes them; any other
 // #line (a malformed one is an error) stays in the key.
 bool isLineMarker(std::string_view line) {
@@ -82,9 +69,7 @@ ValidationKeyBasis validationKeyBasis(const ResolvedStage& stage, std::size_t de
         std::string code;
         for (const auto& line : splitLogicalLines(*text)) {
             const auto directive = parseDirective(line);
-            if (directive && (directive->name == "pragma" || directive->name == "extension" ||
-                              directive->name == "version" || directive->name == "error"))
-                continue;  // words glslang never expands
+            if (directive && expandsNoMacros(*directive)) continue;
             code += line.code;
             code += '\n';
         }
@@ -92,7 +77,7 @@ ValidationKeyBasis validationKeyBasis(const ResolvedStage& stage, std::size_t de
     }
     for (const auto& name : names) {
         bool met = everyName;
-        for (std::size_t t = 0; !met && t < texts.size(); ++t) met = containsWord(texts[t], name);
+        for (std::size_t t = 0; !met && t < texts.size(); ++t) met = findWord(texts[t], name) != std::string_view::npos;
         if (met) basis.met.push_back(name);
     }
     return basis;
@@ -104,7 +89,7 @@ std::string validationKey(const ResolvedStage& stage, const DefineList& defines,
     const auto met = [&](const std::string& name) {
         if (std::find(basis.met.begin(), basis.met.end(), name) != basis.met.end()) return true;
         for (const auto& [other, value] : defines)  // a macro's value can name it
-            if (containsWord(value, name)) return true;
+            if (findWord(value, name) != std::string_view::npos) return true;
         return false;
     };
     for (const auto& [name, value] : defines)

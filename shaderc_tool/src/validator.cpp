@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "did_you_mean.hpp"
+#include "directive_lines.hpp"
 #include "interface_check.hpp"
 #include "stage_interface.hpp"
 
@@ -39,20 +40,6 @@ EProfile profileOf(const std::string& versionDirective) {
     if (versionDirective.find("compatibility") != std::string::npos) return ECompatibilityProfile;
     if (versionDirective.find("core") != std::string::npos) return ECoreProfile;
     return ENoProfile;
-}
-
-bool isIdentifierChar(char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
-}
-
-// Position of `word` in `text` as a whole identifier, or npos.
-std::size_t findWord(std::string_view text, std::string_view word) {
-    for (auto pos = text.find(word); pos != std::string_view::npos; pos = text.find(word, pos + 1)) {
-        const bool startOk = pos == 0 || !isIdentifierChar(text[pos - 1]);
-        const bool endOk = pos + word.size() == text.size() || !isIdentifierChar(text[pos + word.size()]);
-        if (startOk && endOk) return pos;
-    }
-    return std::string_view::npos;
 }
 
 // The text of every (source number, line) in a flattened stage, recovered from its
