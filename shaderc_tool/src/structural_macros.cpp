@@ -29,72 +29,77 @@ std::vector<std::string> identifiersIn(std::string_view text) {
     return ids;
 }
 
-bool isConditional(const std::string& name) {
-    return name == "if" || name == "ifdef" || name == "ifndef" || name == "elif" || name == "else" || name == "endif";
-}
+constexpr std::size_t kNoGroup = static_cast<std::size_t>(-1);
 
-// Directives whose words glslang takes as they are written, never macro-expanded: only
-// whether the line is reached can differ between runs.
-bool unexpanded(const std::string& name) {
-    return name == "pragma" || name == "extension" || name == "version" || name == "error";
-}
+// A conditional group: the identifiers of all its branches' conditions, and the group
+// around it. Directives refer to their innermost group, so nothing is copied per line.
+struct Group {
+    std::vector<std::string> conditions;
+    std::size_t parent = kNoGroup;
+    bool counted = false;  // its conditions (and its parents') are structural already
+};
 
 // One directive that matters to the fixpoint.
 struct DirectiveFacts {
     bool decisive = false;
-    std::string defines;                 // the macro a #define / #undef names, else ""
-    std::vector<std::string> own;        // identifiers of the line itself
-    std::vector<std::string> enclosing;  // identifiers of the conditions of the groups around it
+    std::string defines;           // the macro a #define / #undef names, else ""
+    std::vector<std::string> own;  // identifiers of the line that glslang may expand
+    std::size_t group = kNoGroup;  // the innermost group around it
+    bool counted = false;          // its words are in the set
 };
 
 }  // namespace
 
 std::optional<StructuralMacros> structuralMacros(const std::vector<std::string_view>& texts) {
     StructuralMacros result;
+    std::vector<Group> groups;
     std::vector<DirectiveFacts> facts;
     for (const auto text : texts) {
         if (text.find("##") != std::string_view::npos) return std::nullopt;
-        std::vector<std::vector<std::string>> groups;  // condition identifiers of each open group
+        std::size_t open = kNoGroup;  // innermost open group of this file
         for (const auto& line : splitLogicalLines(text)) {
             const auto directive = parseDirective(line);
             if (!directive || directive->name.empty()) continue;
             const std::string& name = directive->name;
             auto ids = identifiersIn(directive->argument);
             if (name == "if" || name == "ifdef" || name == "ifndef") {
-                groups.push_back(std::move(ids));
-                continue;
-            }
-            if (name == "elif" || name == "else") {
-                if (groups.empty()) return std::nullopt;
-                groups.back().insert(groups.back().end(), ids.begin(), ids.end());
-                continue;
-            }
-            if (name == "endif") {
-                if (groups.empty()) return std::nullopt;
-                groups.pop_back();
-                continue;
-            }
-            DirectiveFacts f;
-            if ((name == "define" || name == "undef") && !ids.empty()) {
-                f.defines = ids.front();
-                if (name == "define") result.defined.insert(ids.front());
-                f.own = std::move(ids);
+                groups.push_back({std::move(ids), open, false});
+                open = groups.size() - 1;
+            } else if (name == "elif" || name == "else") {
+                if (open == kNoGroup) return std::nullopt;
+                auto& conditions = groups[open].conditions;
+                conditions.insert(conditions.end(), ids.begin(), ids.end());
+            } else if (name == "endif") {
+                if (open == kNoGroup) return std::nullopt;
+                open = groups[open].parent;
             } else {
-                f.decisive = !isConditional(name);
-                const bool headerName = name == "include" && directive->argument.starts_with('<');
-                if (!unexpanded(name) && !headerName) f.own = std::move(ids);
+                DirectiveFacts f;
+                f.group = open;
+                if (name == "define" || name == "undef") {
+                    if (ids.empty()) continue;  // malformed: glslang reports it
+                    f.defines = ids.front();
+                    if (name == "define") result.defined.insert(ids.front());
+                    f.own = std::move(ids);
+                } else {
+                    f.decisive = true;
+                    const bool headerName = name == "include" && directive->argument.starts_with('<');
+                    if (!expandsNoMacros(*directive) && !headerName) f.own = std::move(ids);
+                }
+                facts.push_back(std::move(f));
             }
-            for (const auto& g : groups) f.enclosing.insert(f.enclosing.end(), g.begin(), g.end());
-            facts.push_back(std::move(f));
         }
-        if (!groups.empty()) return std::nullopt;
+        if (open != kNoGroup) return std::nullopt;
     }
     for (bool grew = true; grew;) {
         grew = false;
-        for (const auto& f : facts) {
-            if (!f.decisive && !result.decisive.contains(f.defines)) continue;
-            for (const auto* list : {&f.own, &f.enclosing})
-                for (const auto& id : *list) grew = result.decisive.insert(id).second || grew;
+        for (auto& f : facts) {
+            if (f.counted || (!f.decisive && !result.decisive.contains(f.defines))) continue;
+            f.counted = true;
+            for (const auto& id : f.own) grew = result.decisive.insert(id).second || grew;
+            for (std::size_t g = f.group; g != kNoGroup && !groups[g].counted; g = groups[g].parent) {
+                groups[g].counted = true;
+                for (const auto& id : groups[g].conditions) grew = result.decisive.insert(id).second || grew;
+            }
         }
     }
     return result;

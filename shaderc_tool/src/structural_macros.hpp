@@ -8,8 +8,9 @@
 // #if/#ifdef/#ifndef/#elif/#else/#endif/#define/#undef, and a lone '#') makes the
 // identifiers in the conditions of every group around it (all branches' conditions)
 // structural, and those of its own line unless glslang never expands them (#pragma,
-// #extension, #version, #error, and a "quoted" or <angled> #include name); a #define or #undef of a structural macro makes the
-// identifiers of its line and of the conditions around it structural. So in two runs
+// #extension, #version, #error, and a "quoted" or <angled> #include name); a #define
+// or #undef of a structural macro makes the identifiers of its line and of the
+// conditions around it structural. So in two runs
 // whose macros agree on the structural names, every decisive directive is reached or
 // skipped alike and every structural macro has the same value wherever it is read.
 //

@@ -66,5 +66,29 @@ TEST(StructuralMacros, PastingOrUnbalancedGroupsCannotBeTold) {
     EXPECT_FALSE(structuralMacros({"#if A\n", "#endif\n"}).has_value());
 }
 
+// Hostile shapes: nothing, 60 nested groups with 2,000 names in every condition around
+// 5,000 #defines, and an include at the bottom. Every directive refers to its groups
+// instead of copying their names (a copy per line would be 600 million strings here).
+TEST(StructuralMacros, HostileInputs) {
+    const auto empty = structuralMacros({""});
+    ASSERT_TRUE(empty.has_value());
+    EXPECT_TRUE(empty->decisive.empty());
+    EXPECT_TRUE(structuralMacros({}).has_value());
+
+    std::string deep;
+    for (int g = 0; g < 60; ++g) {
+        deep += "#if G" + std::to_string(g);
+        for (int n = 0; n < 2000; ++n) deep += " + N" + std::to_string(n);
+        deep += "\n";
+    }
+    for (int d = 0; d < 5000; ++d) deep += "#define D" + std::to_string(d) + " 1\n";
+    deep += "#include \"x.glsl\"\n";
+    for (int g = 0; g < 60; ++g) deep += "#endif\n";
+    const auto found = structuralMacros({deep});
+    ASSERT_TRUE(found.has_value());
+    EXPECT_EQ(found->decisive.size(), 60u + 2000u);  // G0..G59 and N0..N1999
+    EXPECT_EQ(found->defined.size(), 5000u);
+}
+
 }  // namespace
 }  // namespace prism::shaderc
