@@ -311,10 +311,11 @@ class RecordingIncluder final : public glslang::TShader::Includer {
         sites.insert(sites.end(), includer.chain.begin(), includer.chain.end());
         hasLimitErrors_ = false;
         openIncludeLine_[static_cast<std::uint32_t>(includerNumber)] = line.firstLine;
+        const std::size_t definitionsBefore = macroSizes_.definitionCount();
         const std::uint32_t child = enter(found->display, found->canonical, std::move(sites), *text).number;
         // `enter` grew run_.files: `includer` may dangle from here on.
         run_.files[static_cast<std::size_t>(includerNumber)].includes[line.firstLine] = child;
-        recheckOpenFiles();
+        if (macroSizes_.definitionCount() != definitionsBefore) recheckOpenFiles();
         const std::string& childText = texts_[child];
         if (childText.empty()) return nothing();
         return new IncludeResult(std::to_string(child), childText.data(), childText.size(), nullptr);
@@ -329,11 +330,10 @@ class RecordingIncluder final : public glslang::TShader::Includer {
             const std::uint32_t number = stack_[i];
             const EnteredFile& file = run_.files[number];
             const int after = openIncludeLine_[number];
-            std::vector<LogicalLine> rest;
-            for (const auto& line : file.lines)
-                if (line.firstLine > after) rest.push_back(line);
+            const auto rest = std::upper_bound(file.lines.begin(), file.lines.end(), after,
+                                               [](int n, const LogicalLine& line) { return n < line.firstLine; });
             MacroSizeTable macros = macroSizes_;  // the rest's own #defines are counted again, in order
-            for (auto& e : checkPreprocessorLimits(file.display, rest, macros)) {
+            for (auto& e : checkPreprocessorLimits(file.display, std::span(rest, file.lines.end()), macros)) {
                 if (!limitLinesReported_.insert({number, e.line}).second) continue;
                 blankLine(texts_[number], e.line, lineAt(file, e.line)->physical.size());
                 e.includedFrom = file.chain;

@@ -184,6 +184,7 @@ void MacroSizeTable::defineFromDirective(const std::string& argument) {
     }
     d.body = lex(body);
     definitions_[name].push_back(std::move(d));
+    ++definitionCount_;
     objectSizes_.clear();
 }
 
@@ -233,7 +234,7 @@ std::vector<Diagnostic> checkConditionalStructure(const std::string& file, const
     return problems;
 }
 
-std::vector<Diagnostic> checkPreprocessorLimits(const std::string& file, const std::vector<LogicalLine>& lines,
+std::vector<Diagnostic> checkPreprocessorLimits(const std::string& file, std::span<const LogicalLine> lines,
                                                 MacroSizeTable& macros, const PreprocessorLimits& limits) {
     std::vector<Diagnostic> problems;
     for (const LogicalLine& line : lines) {

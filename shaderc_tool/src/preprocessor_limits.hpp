@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <map>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -43,11 +44,13 @@ class MacroSizeTable {
     void defineFromDirective(const std::string& argument);
     void define(const std::string& name, const std::string& value);
     const std::vector<Definition>* find(const std::string& name) const;
+    std::size_t definitionCount() const { return definitionCount_; }  // every #define so far
     std::map<std::string, std::uint64_t>& objectSizeCache() const { return objectSizes_; }
 
   private:
     std::map<std::string, std::vector<Definition>> definitions_;
     mutable std::map<std::string, std::uint64_t> objectSizes_;  // cleared by every define
+    std::size_t definitionCount_ = 0;
 };
 
 // Each file's #if/#ifdef/#ifndef ... #endif must balance on its own (as in C): an
@@ -57,7 +60,7 @@ std::vector<Diagnostic> checkConditionalStructure(const std::string& file, const
 
 // Checks `lines` of `file` in order, adding its #defines to `macros` as it goes.
 // Returns one error per line over a limit.
-std::vector<Diagnostic> checkPreprocessorLimits(const std::string& file, const std::vector<LogicalLine>& lines,
+std::vector<Diagnostic> checkPreprocessorLimits(const std::string& file, std::span<const LogicalLine> lines,
                                                 MacroSizeTable& macros, const PreprocessorLimits& limits = {});
 
 }  // namespace prism::shaderc
