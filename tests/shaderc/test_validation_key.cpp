@@ -79,5 +79,18 @@ TEST(ValidationKey, BasisGivesTheSameKey) {
     EXPECT_EQ(validationKey(stageOf(kBody), kDefines, basis), validationKey(stageOf(kBody), kDefines, reader));
 }
 
+// Hostile stages: no text at all, fewer lines than defines, a file that cannot be read
+// (every define then counts), 1 MB of blanks.
+TEST(ValidationKey, HostileStages) {
+    const MemoryReader reader{{"a.frag", kFile}};
+    ResolvedStage empty;
+    empty.filesRead = {"missing.frag"};
+    EXPECT_EQ(validationKey(empty, kDefines, reader).size(), 32u);
+    EXPECT_NE(validationKey(empty, kDefines, reader), validationKey(empty, {{"FOG", "1"}, {"UNUSED", "3"}}, reader));
+    ResolvedStage shortText = stageOf("", {});
+    EXPECT_EQ(validationKey(shortText, kDefines, reader).size(), 32u);
+    EXPECT_EQ(keyOf(kBody + std::string(1 << 20, ' ') + "\n", kFile), keyOf(kBody, kFile));
+}
+
 }  // namespace
 }  // namespace prism::shaderc
