@@ -42,6 +42,16 @@ prism::scene::Scene exampleScene(const std::string& name) {
     return prism::scene::loadScene(std::string(PRISM_SCENES_DIR) + "/" + name + ".json");
 }
 
+// The example grating, small and cheap: `size`² pixels, `tableSize`² tables, `terms` terms.
+prism::scene::Scene smallGrating(int size, int tableSize, int terms) {
+    auto scene = exampleScene("diffraction_grating");
+    scene.width = scene.height = size;
+    auto& m = *scene.objects[0].diffraction;
+    m.tableSize = tableSize;
+    m.terms = terms;
+    return scene;
+}
+
 bool envFlag(const char* name) {
     const char* v = std::getenv(name);
     return v && *v && std::string(v) != "0";
@@ -236,11 +246,8 @@ TEST(SceneRendering, NoDiffractionMaterialNoDiffractionTablesOrProgram) {
 // N + 1 RG layers plus the wavelength row; the program is the variant of that path.
 TEST(SceneRendering, DiffractionObjectBuildsOnlyItsPathsTables) {
     prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
-    auto scene = exampleScene("diffraction_grating");
-    scene.width = scene.height = 64;
+    auto scene = smallGrating(64, 64, 4);
     auto& m = *scene.objects[0].diffraction;
-    m.tableSize = 64;
-    m.terms = 4;
     renderer.render(scene);
     EXPECT_EQ(renderer.diffractionTablesBuilt(), 1u);
     EXPECT_EQ(renderer.diffractionProgramsBuilt(), 1u);
@@ -265,11 +272,8 @@ TEST(SceneRendering, DiffractionObjectBuildsOnlyItsPathsTables) {
 // one seen before, builds nothing and draws the same image.
 TEST(SceneRendering, DiffractionTablesAreBuiltOncePerMaterial) {
     prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
-    auto scene = exampleScene("diffraction_grating");
-    scene.width = scene.height = 48;
+    auto scene = smallGrating(48, 32, 3);
     auto& m = *scene.objects[0].diffraction;
-    m.tableSize = 32;
-    m.terms = 3;
     const auto first = renderer.render(scene);
     EXPECT_EQ(renderer.render(scene).data, first.data);
     EXPECT_EQ(renderer.diffractionTablesBuilt(), 1u);
@@ -287,11 +291,7 @@ TEST(SceneRendering, DiffractionTablesAreBuiltOncePerMaterial) {
 // colour; without fog the FOG=0 program (no fog code).
 TEST(SceneRendering, DiffractionObjectsAreFoggedLikeTheRest) {
     prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
-    auto scene = exampleScene("diffraction_grating");
-    scene.width = scene.height = 48;
-    auto& m = *scene.objects[0].diffraction;
-    m.tableSize = 32;
-    m.terms = 3;
+    auto scene = smallGrating(48, 32, 3);
     const auto clear = renderer.render(scene);
     EXPECT_NE(renderer.lastFrame().variants[0].find("FOG=0"), std::string::npos) << renderer.lastFrame().variants[0];
     scene.fog = prism::view::Fog{.color = {1.0f, 0.0f, 1.0f}, .density = 5.0f};
