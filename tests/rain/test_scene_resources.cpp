@@ -110,7 +110,8 @@ TEST_F(RainSceneResources, RainWithoutFogHasNoFogVariant) {
         glBindBuffer(GL_COPY_READ_BUFFER, s.rain()->particleBuffer());
         glGetBufferParameteri64v(GL_COPY_READ_BUFFER, GL_BUFFER_SIZE, &size);
         glBindBuffer(GL_COPY_READ_BUFFER, 0);
-        EXPECT_EQ(static_cast<std::uint64_t>(size), std::uint64_t{s.rain()->capacity()} * RainSystem::kBytesPerParticle);
+        EXPECT_EQ(static_cast<std::uint64_t>(size),
+                  std::uint64_t{s.rain()->capacity()} * RainSystem::kBytesPerParticle);
     });
     // One particle buffer, one streak texture array, the particles' vertex array, one
     // seeding and one update.

@@ -1,4 +1,4 @@
-// Compute availability and linear dispatch (see prism/gl/compute.hpp).
+// Compute availability and counted dispatches (see prism/gl/compute.hpp).
 #include "prism/gl/compute.hpp"
 
 #include <atomic>

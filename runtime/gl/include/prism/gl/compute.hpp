@@ -14,8 +14,8 @@
 //     auto groups = prism::gl::computeGroups(100000, 256);  // {391, 1}
 //     // with a compute program in use and its buffers bound:
 //     std::uint64_t before = prism::gl::computeDispatches();
-//     prism::gl::dispatchInvocations(100000, 256);          // glDispatchCompute(391, 1, 1)
-//     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);       // barriers: the loader's own bits
+//     prism::gl::dispatchInvocations(100000, 256);                  // glDispatchCompute(391, 1, 1)
+//     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);               // barriers: the loader's own bits
 //     std::uint64_t ran = prism::gl::computeDispatches() - before;  // 1
 #pragma once
 

@@ -14,7 +14,7 @@
 //     float corners[] = {0.f, 0.f, 1.f, 0.f, 0.f, 1.f};
 //     auto vertices = prism::gl::Buffer::create(sizeof corners, GL_STATIC_DRAW, corners);  // with storage
 //     std::size_t bytes = vertices.bytes();                                                // 24
-//     auto live = prism::gl::objectCounts().live(prism::gl::ObjectKind::Buffer);  // >= 2
+//     auto live = prism::gl::objectCounts().live(prism::gl::ObjectKind::Buffer);           // >= 2
 //     // leaving the scope deletes all three names (glDeleteBuffers, glDeleteVertexArrays)
 //
 // A default-constructed handle owns nothing (id() == 0). Needs a current context when a
