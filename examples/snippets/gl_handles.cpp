@@ -1,4 +1,5 @@
 // The usage example of prism/gl/handles.hpp, compiled and run by tests/snippets.
+#include <cstddef>
 #include <cstdint>
 
 // [snippet]
@@ -14,10 +15,13 @@ static std::uint64_t example() {
     prism::gl::Buffer buffer = prism::gl::Buffer::create();   // glGenBuffers
     glBindBuffer(GL_ARRAY_BUFFER, buffer.id());
     prism::gl::VertexArray vao = prism::gl::VertexArray::create();
-    auto live = prism::gl::objectCounts().live(prism::gl::ObjectKind::Buffer);  // >= 1
-    // leaving the scope deletes both names (glDeleteBuffers, glDeleteVertexArrays)
+    float corners[] = {0.f, 0.f, 1.f, 0.f, 0.f, 1.f};
+    auto vertices = prism::gl::Buffer::create(sizeof corners, GL_STATIC_DRAW, corners);  // with storage
+    std::size_t bytes = vertices.bytes();                                                // 24
+    auto live = prism::gl::objectCounts().live(prism::gl::ObjectKind::Buffer);           // >= 2
+    // leaving the scope deletes all three names (glDeleteBuffers, glDeleteVertexArrays)
     // [/snippet]
-    return live;
+    return bytes == sizeof(float) * 6 ? live : 0;
 }
 
 int main() {

@@ -1,5 +1,11 @@
 // GL object ownership (prism/gl/handles.hpp): every object a Framebuffer or Program makes
-// is counted while alive and deleted with its owner, including after moves and failures.
+// is counted while alive and deleted with its owner, including after moves and failures;
+// a buffer given storage at creation holds that data and knows its size.
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <string>
+
 #include "gl_test_support.hpp"
 #include "prism/gl/framebuffer.hpp"
 #include "prism/gl/handles.hpp"
@@ -42,6 +48,45 @@ TEST_F(Handles, CreateCountsAndScopeEndDeletes) {
         b = prism::gl::Buffer::create();
     }
     EXPECT_EQ(live(ObjectKind::Buffer), buffersBefore);
+}
+
+TEST_F(Handles, BufferWithStorageHoldsItsDataAndSize) {
+    const std::array<std::uint32_t, 4> data = {7, 11, 13, 17};
+    const auto buffersBefore = live(ObjectKind::Buffer);
+    {
+        prism::gl::Buffer a = prism::gl::Buffer::create(sizeof data, GL_STATIC_DRAW, data.data());
+        EXPECT_EQ(a.bytes(), sizeof data);
+        std::array<std::uint32_t, 4> read{};
+        GLint64 size = 0;
+        glBindBuffer(GL_COPY_READ_BUFFER, a.id());
+        glGetBufferParameteri64v(GL_COPY_READ_BUFFER, GL_BUFFER_SIZE, &size);
+        glGetBufferSubData(GL_COPY_READ_BUFFER, 0, sizeof read, read.data());
+        glBindBuffer(GL_COPY_READ_BUFFER, 0);
+        EXPECT_EQ(size, static_cast<GLint64>(sizeof data));
+        EXPECT_EQ(read, data);
+        prism::gl::Buffer b = std::move(a);  // the size moves with the name
+        EXPECT_EQ(a.bytes(), 0u);
+        EXPECT_EQ(b.bytes(), sizeof data);
+        a = prism::gl::Buffer::create(64, GL_DYNAMIC_DRAW);
+        b = std::move(a);
+        EXPECT_EQ(b.bytes(), 64u);
+        EXPECT_EQ(a.bytes(), 0u);
+        EXPECT_EQ(live(ObjectKind::Buffer), buffersBefore + 1) << "the buffer replaced by a move was not deleted";
+        EXPECT_EQ(prism::gl::Buffer::create().bytes(), 0u) << "a bare name has no storage yet";
+    }
+    EXPECT_EQ(live(ObjectKind::Buffer), buffersBefore);
+}
+
+TEST_F(Handles, ABufferGLCannotAllocateIsAnErrorNamingItsSize) {
+    const auto buffersBefore = live(ObjectKind::Buffer);
+    const std::size_t huge = std::numeric_limits<std::size_t>::max();  // a negative GLsizeiptr
+    try {
+        (void)prism::gl::Buffer::create(huge, GL_DYNAMIC_DRAW);
+        FAIL() << "no error for a buffer of " << huge << " bytes";
+    } catch (const prism::gl::GlError& e) {
+        EXPECT_NE(std::string(e.what()).find(std::to_string(huge) + " bytes"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(live(ObjectKind::Buffer), buffersBefore) << "the failed buffer's name leaked";
 }
 
 TEST_F(Handles, FramebufferAndProgramOwnTheirObjects) {

@@ -8,8 +8,10 @@
 #include <iostream>
 #include <limits>
 
+#include "prism/gl/compute.hpp"
 #include "prism/gl/framebuffer.hpp"
 #include "prism/gl/gl.hpp"
+#include "prism/gl/handles.hpp"
 #include "prism/rain/rain_system.hpp"
 #include "rain_gl_support.hpp"
 #include "rain_test_checks.hpp"
@@ -22,18 +24,19 @@ class GpuRainExtremes : public RainGlTest {};
 TEST_F(GpuRainExtremes, ZeroParticlesAllocateNothing) {
     RainParams p;
     p.intensity = 0.0f;
-    const auto before = glObjectCounts();
+    gl::Framebuffer fb(32, 32);
+    const auto before = gl::objectCounts();
+    const auto dispatchesBefore = gl::computeDispatches();
     RainSystem rain(programs(), p, glm::vec3(0.0f));
     rain.update(1.0f / 60.0f, glm::vec3(10.0f));
-    gl::Framebuffer fb(32, 32);
     fb.clear({0.f, 0.f, 0.f, 1.f});
     rain.draw(RainDrawInputs{});
     EXPECT_EQ(rain.particleCount(), 0u);
     EXPECT_TRUE(rain.readParticles().empty());
-    const auto after = glObjectCounts();
-    EXPECT_EQ(after.buffersCreated, before.buffersCreated);
-    EXPECT_EQ(after.computeDispatches, before.computeDispatches);
-    EXPECT_EQ(after.texturesCreated, before.texturesCreated);
+    const auto after = gl::objectCounts();
+    for (auto kind : {gl::ObjectKind::Buffer, gl::ObjectKind::Texture, gl::ObjectKind::VertexArray})
+        EXPECT_EQ(after.created(kind), before.created(kind)) << "object kind " << static_cast<int>(kind);
+    EXPECT_EQ(gl::computeDispatches(), dispatchesBefore);
     // Rain starts when the intensity rises.
     rain.setIntensity(rainClassInfo(RainClass::Light).intensity);
     EXPECT_GT(rain.particleCount(), 0u);

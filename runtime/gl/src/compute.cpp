@@ -1,11 +1,17 @@
-// Compute availability and linear dispatch (see prism/gl/compute.hpp).
+// Compute availability and counted dispatches (see prism/gl/compute.hpp).
 #include "prism/gl/compute.hpp"
 
+#include <atomic>
 #include <string>
 
 #include "prism/gl/gl.hpp"
 
 namespace prism::gl {
+namespace {
+
+std::atomic<std::uint64_t> g_dispatches{0};
+
+}  // namespace
 
 int currentContextVersion() {
     GLint major = 0, minor = 0;
@@ -40,8 +46,17 @@ std::array<std::uint32_t, 2> computeGroups(std::uint32_t count, std::uint32_t gr
 
 void dispatchInvocations(std::uint32_t count, std::uint32_t groupSize) {
     const auto groups = computeGroups(count, groupSize);
-    if (groups[0] == 0) return;
-    glDispatchCompute(groups[0], groups[1], 1);
+    dispatchGroups(groups[0], groups[1]);
+}
+
+void dispatchGroups(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
+    if (x == 0 || y == 0 || z == 0) return;
+    glDispatchCompute(x, y, z);
+    ++g_dispatches;
+}
+
+std::uint64_t computeDispatches() {
+    return g_dispatches.load();
 }
 
 }  // namespace prism::gl

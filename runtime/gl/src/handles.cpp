@@ -48,6 +48,16 @@ unsigned detail::createObject(ObjectKind kind, unsigned shaderType) {
     return id;
 }
 
+Buffer Buffer::create(std::size_t bytes, unsigned usage, const void* data) {
+    Buffer buffer(detail::createObject(ObjectKind::Buffer, 0), bytes);
+    // The copy-write target: binding it disturbs no vertex, index or storage binding.
+    glBindBuffer(GL_COPY_WRITE_BUFFER, buffer.id());
+    glBufferData(GL_COPY_WRITE_BUFFER, static_cast<GLsizeiptr>(bytes), data, usage);
+    glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+    throwIfGlError("allocating a GL buffer of " + std::to_string(bytes) + " bytes");
+    return buffer;
+}
+
 void detail::deleteObject(ObjectKind kind, unsigned id) noexcept {
     GLuint name = id;
     switch (kind) {

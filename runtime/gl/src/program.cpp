@@ -11,8 +11,6 @@
 namespace prism::gl {
 namespace {
 
-constexpr GLenum kComputeShader = 0x91B9;  // GL_COMPUTE_SHADER (GL 4.3)
-
 std::mutex gHandlerMutex;
 WarningHandler gDefaultHandler;
 
@@ -30,7 +28,7 @@ GLenum shaderType(catalog::Stage stage) {
         case catalog::Stage::Fragment:
             return GL_FRAGMENT_SHADER;
         case catalog::Stage::Compute:
-            return kComputeShader;
+            return GL_COMPUTE_SHADER;
     }
     return GL_VERTEX_SHADER;
 }

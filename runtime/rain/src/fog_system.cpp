@@ -5,6 +5,7 @@
 
 #include "prism/gl/gl.hpp"
 #include "prism/rain/rain_params.hpp"
+#include "texture_arrays.hpp"
 
 namespace prism::rain {
 namespace {
@@ -18,7 +19,9 @@ FogSystem::FogSystem(RainPrograms& programs, const SceneFog& fog, const glm::vec
       params_(fog.billboards),
       simulation_(fog.billboards, eye),
       noise_(generateFogNoise(64, 16, fog.billboards.seed)),
-      buffer_(static_cast<std::size_t>(fog.billboards.count) * sizeof(glm::vec4), simulation_.billboards().data()),
+      buffer_(gl::Buffer::create(static_cast<std::size_t>(fog.billboards.count) * sizeof(glm::vec4), GL_DYNAMIC_DRAW,
+                                 simulation_.billboards().data())),
+      vao_(gl::VertexArray::create()),
       noiseTexture_(uploadR8TextureArray(noise_.size, noise_.size, noise_.layers, noise_.texels.data(), true)) {
     glBindVertexArray(vao_.id());
     glBindBuffer(GL_ARRAY_BUFFER, buffer_.id());

@@ -9,11 +9,16 @@
 
 #include "prism/gl/gl.hpp"
 #include "prism/rain/streak_texture.hpp"
+#include "texture_arrays.hpp"
 
 namespace prism::rain {
 namespace {
 
 constexpr int kStreakTextureUnit = 0;
+constexpr std::uint32_t kComputeGroupSize = 256;  // local_size_x of rain_init.comp and rain_update.comp
+// The particles are written by compute and read as vertices, copied or read back.
+constexpr GLbitfield kParticleBarriers =
+    GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT;
 
 render::VariantValues fogVariant(const view::Fog* fog) {
     return {{"FOG", fog ? "1" : "0"}};
@@ -55,7 +60,8 @@ std::string_view techniqueShader(StreakTechnique t) {
 }
 
 RainSystem::RainSystem(RainPrograms& programs, const RainParams& params, const glm::vec3& eye)
-    : programs_(programs), gl43_(loadComputeFunctions()), params_(params) {
+    : programs_(programs), params_(params) {
+    gl::requireCompute("rain: the GPU particle update");
     validate(params_);
     validateEye(eye);
     rate_ = rainRateFor(params_.intensity);
@@ -75,9 +81,9 @@ void RainSystem::resize(std::uint32_t count) {
         // every frame; the old particles are copied, the new ones seeded.
         std::uint64_t wanted = capacity_ == 0 ? count : std::max<std::uint64_t>(count, capacity_ + capacity_ / 4);
         wanted = std::min<std::uint64_t>(wanted, kMaxParticles);
-        GlBuffer bigger(static_cast<std::size_t>(wanted) * sizeof(Particle));
+        gl::Buffer bigger = gl::Buffer::create(static_cast<std::size_t>(wanted) * sizeof(Particle), GL_DYNAMIC_DRAW);
         if (particles_ && count_ > 0) {
-            gl43_.barrier(kBarrierAll);
+            glMemoryBarrier(kParticleBarriers);
             glBindBuffer(GL_COPY_READ_BUFFER, particles_.id());
             glBindBuffer(GL_COPY_WRITE_BUFFER, bigger.id());
             glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0,
@@ -109,10 +115,10 @@ void RainSystem::seedRange(std::uint32_t first, std::uint32_t end) {
     init.set("u_firstParticle", first);
     init.set("u_particleCount", end);
     init.set("u_shearHeight", shearHeight_);
-    glBindBufferBase(kShaderStorageBuffer, 0, particles_.id());
-    gl43_.dispatch(end - first);
-    gl43_.barrier(kBarrierAll);
-    glBindBufferBase(kShaderStorageBuffer, 0, 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, particles_.id());
+    gl::dispatchInvocations(end - first, kComputeGroupSize);
+    glMemoryBarrier(kParticleBarriers);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
 }
 
 void RainSystem::update(float dt, const glm::vec3& eye) {
@@ -131,10 +137,10 @@ void RainSystem::update(float dt, const glm::vec3& eye) {
     update.set("u_fallSpeed", rate_.fallSpeed);
     update.set("u_particleCount", count_);
     update.set("u_shearHeight", shearHeight_);
-    glBindBufferBase(kShaderStorageBuffer, 0, particles_.id());
-    gl43_.dispatch(count_);
-    gl43_.barrier(kBarrierAll);
-    glBindBufferBase(kShaderStorageBuffer, 0, 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, particles_.id());
+    gl::dispatchInvocations(count_, kComputeGroupSize);
+    glMemoryBarrier(kParticleBarriers);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
 }
 
 void RainSystem::setIntensity(float intensity) {
@@ -157,7 +163,7 @@ void RainSystem::ensureStreakTexture() {
     streakTextureBytes_ = t.bytes();
 }
 
-void RainSystem::bindAttributes(GlVertexArray& vao, unsigned divisor) {
+void RainSystem::bindAttributes(const gl::VertexArray& vao, unsigned divisor) {
     const auto& c = programs_.catalog();
     glBindVertexArray(vao.id());
     glBindBuffer(GL_ARRAY_BUFFER, particles_.id());
@@ -180,10 +186,10 @@ void RainSystem::draw(const RainDrawInputs& in) {
     if (count_ == 0) return;
     ensureStreakTexture();
     const bool instanced = in.technique == StreakTechnique::Instanced;
-    std::optional<GlVertexArray>& vao = instanced ? instancedVao_ : pointsVao_;
+    gl::VertexArray& vao = instanced ? instancedVao_ : pointsVao_;
     if (!vao) {
-        vao.emplace();
-        bindAttributes(*vao, instanced ? 1u : 0u);
+        vao = gl::VertexArray::create();
+        bindAttributes(vao, instanced ? 1u : 0u);
     }
     gl::Program& p = programs_.get(techniqueShader(in.technique), fogVariant(in.fog));
     p.use();
@@ -211,14 +217,14 @@ void RainSystem::draw(const RainDrawInputs& in) {
         p.set("u_fogDensity", in.fog->density);
     }
     glActiveTexture(GL_TEXTURE0 + kStreakTextureUnit);
-    glBindTexture(GL_TEXTURE_2D_ARRAY, streakTexture_->id());
+    glBindTexture(GL_TEXTURE_2D_ARRAY, streakTexture_.id());
 
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_FALSE);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    glBindVertexArray(vao->id());
+    glBindVertexArray(vao.id());
     switch (in.technique) {
         case StreakTechnique::GeometryShader:
             glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count_));
@@ -242,7 +248,7 @@ void RainSystem::draw(const RainDrawInputs& in) {
 std::vector<Particle> RainSystem::readParticles() const {
     std::vector<Particle> out(count_);
     if (count_ == 0) return out;
-    gl43_.barrier(kBarrierAll);
+    glMemoryBarrier(kParticleBarriers);
     glBindBuffer(GL_COPY_READ_BUFFER, particles_.id());
     glGetBufferSubData(GL_COPY_READ_BUFFER, 0,
                        static_cast<GLsizeiptr>(count_) * static_cast<GLsizeiptr>(sizeof(Particle)), out.data());

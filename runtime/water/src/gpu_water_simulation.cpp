@@ -8,7 +8,8 @@
 
 #include <glm/vec2.hpp>
 
-#include "gl_compute.hpp"
+#include "prism/gl/compute.hpp"
+#include "prism/gl/gl.hpp"
 #include "prism/gl/handles.hpp"
 #include "prism/gl/program.hpp"
 #include "prism/water_shaders.hpp"
@@ -55,24 +56,19 @@ void setIfPresent(gl::Program& p, std::string_view name, const T& value) {
 }
 
 // A storage buffer owned by `owner` (prism::gl handles); returns its name.
-GLuint makeBuffer(std::vector<gl::Buffer>& owner, GLsizeiptr bytes, const void* data) {
-    const GLuint b = owner.emplace_back(gl::Buffer::create()).id();
-    glBindBuffer(detail::kShaderStorageBuffer, b);
-    glBufferData(detail::kShaderStorageBuffer, bytes, data, GL_DYNAMIC_COPY);
-    glBindBuffer(detail::kShaderStorageBuffer, 0);
-    return b;
+GLuint makeBuffer(std::vector<gl::Buffer>& owner, std::size_t bytes, const void* data) {
+    return owner.emplace_back(gl::Buffer::create(bytes, GL_DYNAMIC_COPY, data)).id();
 }
 
 void fillBuffer(GLuint buffer, GLsizeiptr bytes, const void* data) {
-    glBindBuffer(detail::kShaderStorageBuffer, buffer);
-    glBufferSubData(detail::kShaderStorageBuffer, 0, bytes, data);
-    glBindBuffer(detail::kShaderStorageBuffer, 0);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
+    glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, bytes, data);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
 }
 
 }  // namespace
 
 struct GpuWaterSimulation::Impl {
-    detail::ComputeFunctions fn;
     std::vector<gl::Program> programs;
     std::vector<gl::Buffer> ownedBuffers;  // owns every buffer below, which are its names
     GLuint terrain = 0, permeability = 0, water[2] = {0, 0}, velocity = 0, flow = 0, ledgerCells = 0, partials = 0,
@@ -82,31 +78,31 @@ struct GpuWaterSimulation::Impl {
 
     void dispatch(Pass pass, GLuint x, GLuint y) {
         programs[pass].use();
-        fn.dispatchCompute(x, y, 1);
-        fn.memoryBarrier(detail::kShaderStorageBarrier);
+        gl::dispatchGroups(x, y);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     }
 
     // A pass that reads the current water and writes the other buffer.
     void waterPass(Pass pass) {
-        glBindBufferBase(detail::kShaderStorageBuffer, kWaterIn, water[current]);
-        glBindBufferBase(detail::kShaderStorageBuffer, kWaterOut, water[1 - current]);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWaterIn, water[current]);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWaterOut, water[1 - current]);
         dispatch(pass, groupsX, groupsY);
         current = 1 - current;
     }
 
     void readPass(Pass pass) {
-        glBindBufferBase(detail::kShaderStorageBuffer, kWaterIn, water[current]);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWaterIn, water[current]);
         dispatch(pass, groupsX, groupsY);
     }
 };
 
 bool GpuWaterSimulation::isSupported() {
-    return detail::currentGlVersion() >= 43;
+    return gl::computeAvailable();
 }
 
 GpuWaterSimulation::GpuWaterSimulation(HeightField terrain, std::vector<float> permeability, WaterParams params)
     : WaterSimulation(std::move(terrain), std::move(permeability), params), impl_(std::make_unique<Impl>()) {
-    impl_->fn = detail::loadComputeFunctions();
+    gl::requireCompute("prism water: the GPU simulation (or use the CPU simulation)");
     for (ws::ShaderId id : kPassShaders) {
         const auto& shader = ws::shaderInfo(id);
         impl_->programs.emplace_back(shader.variants[0], ws::kCatalog.contractAttributes, std::string(shader.name));
@@ -115,7 +111,7 @@ GpuWaterSimulation::GpuWaterSimulation(HeightField terrain, std::vector<float> p
     impl_->groupsX = static_cast<GLuint>((width() + 15) / 16);
     impl_->groupsY = static_cast<GLuint>((height() + 15) / 16);
     impl_->partialCount = static_cast<GLuint>((n + 255) / 256);
-    const auto bytes = [](std::size_t count, std::size_t size) { return static_cast<GLsizeiptr>(count * size); };
+    const auto bytes = [](std::size_t count, std::size_t size) { return count * size; };
     impl_->terrain = makeBuffer(impl_->ownedBuffers, bytes(n, sizeof(float)), terrain_.heights.data());
     impl_->permeability = makeBuffer(impl_->ownedBuffers, bytes(n, sizeof(float)), permeability_.data());
     for (GLuint& w : impl_->water) w = makeBuffer(impl_->ownedBuffers, bytes(n, sizeof(glm::vec2)), nullptr);
@@ -182,7 +178,7 @@ void GpuWaterSimulation::runSubsteps(const StepConstants& k, long count) {
         if (p.hasUniform("u_smoothWeights")) p.set("u_smoothWeights", std::span<const float>(k.smoothWeights));
         setIfPresent(p, "u_partialCount", static_cast<int>(impl_->partialCount));
     }
-    const GLenum ssbo = detail::kShaderStorageBuffer;
+    const GLenum ssbo = GL_SHADER_STORAGE_BUFFER;
     glBindBufferBase(ssbo, kTerrain, impl_->terrain);
     glBindBufferBase(ssbo, kPermeability, impl_->permeability);
     glBindBufferBase(ssbo, kVelocity, impl_->velocity);
@@ -203,41 +199,41 @@ void GpuWaterSimulation::runSubsteps(const StepConstants& k, long count) {
 namespace {
 
 template <class T>
-std::vector<T> readBuffer(const detail::ComputeFunctions& fn, GLuint buffer, std::size_t count) {
-    fn.memoryBarrier(detail::kAllBarriers);
+std::vector<T> readBuffer(GLuint buffer, std::size_t count) {
+    glMemoryBarrier(GL_ALL_BARRIER_BITS);
     std::vector<T> out(count);
-    glBindBuffer(detail::kShaderStorageBuffer, buffer);
-    glGetBufferSubData(detail::kShaderStorageBuffer, 0, static_cast<GLsizeiptr>(count * sizeof(T)), out.data());
-    glBindBuffer(detail::kShaderStorageBuffer, 0);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(count * sizeof(T)), out.data());
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     return out;
 }
 
 }  // namespace
 
 std::vector<glm::vec2> GpuWaterSimulation::depthPairs() const {
-    return readBuffer<glm::vec2>(impl_->fn, impl_->water[impl_->current], cellCount());
+    return readBuffer<glm::vec2>(impl_->water[impl_->current], cellCount());
 }
 
 std::vector<glm::vec2> GpuWaterSimulation::edgeVelocities() const {
-    return readBuffer<glm::vec2>(impl_->fn, impl_->velocity, cellCount());
+    return readBuffer<glm::vec2>(impl_->velocity, cellCount());
 }
 
 void GpuWaterSimulation::lossTotals(double& infiltrated, double& lost) const {
     // Reduce the per-cell double accumulators: one partial per 256 cells, then the total.
-    const GLenum ssbo = detail::kShaderStorageBuffer;
+    const GLenum ssbo = GL_SHADER_STORAGE_BUFFER;
     glBindBufferBase(ssbo, kLedgerCells, impl_->ledgerCells);
     glBindBufferBase(ssbo, kLedgerPartials, impl_->partials);
     glBindBufferBase(ssbo, kLedgerTotals, impl_->totals);
     impl_->dispatch(kLedgerPartial, impl_->partialCount, 1);
     impl_->dispatch(kLedgerTotal, 1, 1);
     glUseProgram(0);
-    const std::vector<double> t = readBuffer<double>(impl_->fn, impl_->totals, 2);
+    const std::vector<double> t = readBuffer<double>(impl_->totals, 2);
     infiltrated = t[0];
     lost = t[1];
 }
 
 void GpuWaterSimulation::uploadDepthTexture(unsigned texture) const {
-    impl_->fn.memoryBarrier(detail::kAllBarriers);
+    glMemoryBarrier(GL_ALL_BARRIER_BITS);
     glBindBuffer(GL_PIXEL_UNPACK_BUFFER, impl_->water[impl_->current]);
     glBindTexture(GL_TEXTURE_2D, texture);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);

@@ -13,10 +13,10 @@
 
 #include <glm/vec3.hpp>
 
+#include "prism/gl/handles.hpp"
 #include "prism/view/camera.hpp"
 #include "prism/rain/rain_programs.hpp"
 #include "prism/rain/fog_billboards.hpp"
-#include "prism/rain/gl_resources.hpp"
 
 namespace prism::rain {
 
@@ -39,9 +39,9 @@ class FogSystem {
     FogBillboardParams params_;
     FogBillboardSimulation simulation_;
     FogNoiseArray noise_;
-    GlBuffer buffer_;
-    GlVertexArray vao_;
-    GlTexture noiseTexture_;
+    gl::Buffer buffer_;
+    gl::VertexArray vao_;
+    gl::Texture noiseTexture_;
 };
 
 }  // namespace prism::rain

@@ -4,7 +4,8 @@
 //   - no `rain`: no RainSystem, so no particle buffer, no compute update, no rain
 //     program and no streak texture;
 //   - no `fog`: only FOG=0 variants are built and used, no fog billboards, no noise.
-// programsInUse() and prism/rain/gl_resources.hpp's counters show it (tests/rain).
+// programsInUse() and the GL counters (prism::gl::objectCounts(), computeDispatches()) show it
+// (tests/rain).
 //
 // Usage (snippet: examples/snippets/rain_rain_scene.cpp):
 //

@@ -14,7 +14,7 @@
 //     std::vector<prism::rain::Particle> ps = rain.readParticles();   // tests
 //
 // Needs a current GL >= 4.3 context (compute shaders) for its whole life; throws
-// ComputeUnavailableError otherwise. Memory: 48 bytes per particle (the simulation
+// gl::ComputeUnavailableError otherwise. Memory: 48 bytes per particle (the simulation
 // buffer is also the vertex buffer of every technique) plus the 450-layer streak
 // texture array (460 KB).
 #pragma once
@@ -26,10 +26,10 @@
 #include <string_view>
 #include <vector>
 
+#include "prism/gl/compute.hpp"
+#include "prism/gl/handles.hpp"
 #include "prism/view/camera.hpp"
 #include "prism/rain/rain_programs.hpp"
-#include "prism/rain/compute.hpp"
-#include "prism/rain/gl_resources.hpp"
 #include "prism/rain/rain_params.hpp"
 #include "prism/rain/rain_simulation.hpp"
 #include "prism/view/lighting.hpp"
@@ -95,10 +95,9 @@ class RainSystem {
     void resize(std::uint32_t count);
     void seedRange(std::uint32_t first, std::uint32_t end);
     void ensureStreakTexture();
-    void bindAttributes(GlVertexArray& vao, unsigned divisor);
+    void bindAttributes(const gl::VertexArray& vao, unsigned divisor);
 
     RainPrograms& programs_;
-    ComputeFunctions gl43_;
     RainParams params_;
     RainRate rate_;
     glm::vec3 wind_{0.0f};
@@ -107,10 +106,10 @@ class RainSystem {
     std::uint32_t count_ = 0;
     std::uint32_t capacity_ = 0;
     std::uint64_t steps_ = 0;
-    GlBuffer particles_;
-    std::optional<GlVertexArray> pointsVao_;     // GS and point sprites: one vertex per particle
-    std::optional<GlVertexArray> instancedVao_;  // instanced quads: divisor 1
-    std::optional<GlTexture> streakTexture_;
+    gl::Buffer particles_;
+    gl::VertexArray pointsVao_;     // GS and point sprites: one vertex per particle
+    gl::VertexArray instancedVao_;  // instanced quads: divisor 1
+    gl::Texture streakTexture_;
     std::size_t streakTextureBytes_ = 0;
 };
 
