@@ -226,7 +226,11 @@ class CpuWaterSimulation final : public WaterSimulation {
     // Each pass works on rows [z0, z1); those that change the water write the *Out arrays.
     void rainAndInfiltration(const StepConstants& k, int z0, int z1);
     void tangentialFlowOut(const StepConstants& k, int z0, int z1);
+    void flowOutCell(const StepConstants& k, int x, int z);  // any cell, neighbours clamped
+    void flowOutInteriorRow(const StepConstants& k, int z);  // cells 1 .. W-2 of an inner row
     void tangentialFlowGather(int z0, int z1);
+    float gatherCell(int x, int z);  // any cell; returns the water it sent off the map
+    void gatherInteriorRow(int z);   // cells 1 .. W-2 of an inner row: nothing is lost
     void distributionVelocity(const StepConstants& k, int z0, int z1);
     void distributionApply(const StepConstants& k, int z0, int z1);
     void smoothing(const StepConstants& k, int z0, int z1);
