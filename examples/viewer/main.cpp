@@ -26,6 +26,7 @@
 #include "panels/panels.hpp"
 #include "prism/gl/gl_context.hpp"
 #include "prism/image/png_io.hpp"
+#include "prism/rain/rain_classes.hpp"
 #include "prism/render/shader_watcher.hpp"
 #include "prism/shaders.hpp"
 #include "reference_check.hpp"
@@ -207,7 +208,10 @@ int main(int argc, char** argv) {
                     state.readouts.sceneRenderMs = sceneDisplay.lastRenderMs();
                     std::cout << "viewer: scene " << state.scene.file << " rendered in "
                               << static_cast<long>(state.readouts.sceneRenderMs) << " ms"
-                              << (state.scene.scene.rain ? ", rain " + state.scene.scene.rain->intensityClass : "")
+                              << (state.scene.scene.rain
+                                      ? ", rain " + std::string(prism::rain::rainClassInfo(
+                                                        state.scene.scene.rain->intensityClass).name)
+                                      : "")
                               << std::endl;
                 } else {
                     program = state.readouts.program;

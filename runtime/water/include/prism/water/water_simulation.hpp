@@ -49,6 +49,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <cstddef>
 #include <span>
 #include <string_view>
@@ -57,6 +58,12 @@
 #include "prism/water/height_field.hpp"
 
 namespace prism::water {
+
+// Which implementation runs the step: the CPU reference, the compute shaders, or the faster
+// of the two on the current renderer, measured once (prism/water/backend_choice.hpp).
+enum class SimulationBackend { Cpu, Gpu, Fastest };
+std::string_view simulationBackendName(SimulationBackend backend);            // "cpu", "gpu", "fastest"
+std::optional<SimulationBackend> parseSimulationBackend(std::string_view name);  // one of those names
 
 enum class BorderMode {
     Open,    // tangential flow carries water off the map (the ledger's "lost through the border")
