@@ -13,6 +13,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libcli11-dev libfmt-dev nlohmann-json3-dev
   libtinyobjloader-dev libstb-dev
+  universal-ctags  # scripts/check_function_length.py (tests/architecture)
   xvfb xauth
   clang-14 libclang-rt-14-dev
   chromium fonts-dejavu-core  # the browser test tier (tests/report, label browser)

@@ -55,6 +55,23 @@ bool wantsFog(const GalleryEntry& e) {
     return false;
 }
 
+// One image of the sheet: the entry's shader and variant on a mesh, turned so that three
+// faces of the cube and the torus's hole show.
+prism::render::RenderJob galleryJob(const GalleryEntry& entry, const std::string& meshName, int size) {
+    prism::render::RenderJob job;
+    job.shader = entry.shader;
+    job.variant = entry.variant;
+    job.mesh = prism::render::meshForShader(entry.shader, prism::render::namedMesh(meshName, 3));
+    job.width = job.height = size;
+    job.world = glm::rotate(glm::mat4(1.0f), glm::radians(20.0f), glm::vec3(1, 0, 0)) *
+                glm::rotate(glm::mat4(1.0f), glm::radians(-30.0f), glm::vec3(0, 1, 0));
+    job.material.color = {0.85f, 0.42f, 0.25f, 1.0f};
+    job.material.shininess = 48.0f;
+    job.material.specular = 0.6f;
+    if (wantsFog(entry)) job.fog = prism::view::Fog{};
+    return job;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -90,19 +107,7 @@ int main(int argc, char** argv) {
         for (const auto& entry : entries) {
             for (const auto& meshName : meshes) {
                 const auto start = std::chrono::steady_clock::now();
-                prism::render::RenderJob job;
-                job.shader = entry.shader;
-                job.variant = entry.variant;
-                job.mesh = prism::render::meshForShader(entry.shader, prism::render::namedMesh(meshName, 3));
-                job.width = job.height = size;
-                // Turned so that three faces of the cube and the torus's hole show.
-                job.world = glm::rotate(glm::mat4(1.0f), glm::radians(20.0f), glm::vec3(1, 0, 0)) *
-                            glm::rotate(glm::mat4(1.0f), glm::radians(-30.0f), glm::vec3(0, 1, 0));
-                job.material.color = {0.85f, 0.42f, 0.25f, 1.0f};
-                job.material.shininess = 48.0f;
-                job.material.specular = 0.6f;
-                if (wantsFog(entry)) job.fog = prism::view::Fog{};
-                auto image = prism::render::renderImage8(cache, job);
+                auto image = prism::render::renderImage8(cache, galleryJob(entry, meshName, size));
                 const auto path = std::filesystem::path(outDir) / (entry.fileStem + "-" + meshName + ".png");
                 prism::image::writePng(path, image);
                 const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -68,21 +68,26 @@ std::optional<prism::gl::Backend> backendOf(const Arguments& a, bool& ok) {
     return backend;
 }
 
-int renderScene(const Arguments& a) {
+// Each stage below returns the exit code when the program must stop, nullopt to go on.
+using Stop = std::optional<int>;
+
+// The flags a scene render refuses or needs, before the file is read.
+Stop checkSceneFlags(const Arguments& a) {
     if (a.out.empty()) return badInput("give --out FILE.png");
     if (a.checkFinite) return badInput("--check-finite works with --shader, not with --scene");
     if (!a.shaderOnlyGiven.empty())
         return badInput(a.shaderOnlyGiven.front() + " describes a --shader render; a --scene file sets its own (docs/scenes.md)");
+    if (a.sizeGiven && !prism::apps::parseSize(a.size))
+        return badInput("--size " + a.size + ": expected WxH with 1 <= W, H <= 16384, e.g. 512x512");
+    return std::nullopt;
+}
+
+// The scene file with the command line's size; meshes are checked before any GL work.
+Stop loadScene(const Arguments& a, prism::scene::Scene& scene) {
     const auto size = prism::apps::parseSize(a.size);
-    if (a.sizeGiven && !size) return badInput("--size " + a.size + ": expected WxH with 1 <= W, H <= 16384, e.g. 512x512");
-    bool backendOk = true;
-    auto backend = backendOf(a, backendOk);
-    if (!backendOk) return badInput("--backend " + a.backend + ": expected egl or osmesa");
-    prism::scene::Scene scene;
     try {
         scene = prism::scene::loadScene(a.scene);
-        for (const auto& o : scene.objects)  // meshes are checked before any GL work
-            (void)prism::render::namedMesh(o.mesh, 0);
+        for (const auto& o : scene.objects) (void)prism::render::namedMesh(o.mesh, 0);
     } catch (const std::exception& e) {
         return badInput(e.what());
     }
@@ -90,47 +95,57 @@ int renderScene(const Arguments& a) {
         scene.width = size->first;
         scene.height = size->second;
     }
-    if (a.stochasticGiven()) {  // flags override the scene's settings, never silently ignored
-        if (!scene.stochastic)
-            return badInput(a.stochasticFlags() + ": " + a.scene +
-                            " has no \"stochastic\" effect (docs/scenes.md); these flags need one");
-        auto& st = *scene.stochastic;
-        if (a.sampler) {
-            const auto kind = prism::scene::parseStochasticSampler(*a.sampler);
-            if (!kind) return badInput("--sampler " + *a.sampler + ": expected white, bluenoise or sorted");
-            st.sampler = *kind;
-        }
-        if (a.spp) st.spp = *a.spp;
-        if (a.frame) {  // one frame: the scene's accumulation no longer applies
-            st.frame = *a.frame;
-            st.frames = 1;
-        }
-        if (a.frames) {  // the mean from frame 0
-            st.frames = *a.frames;
-            st.frame = 0;
-        }
-        if (st.sampler == prism::bluenoise::SamplerKind::Sorted && st.frame > static_cast<int>(prism::scene::kMaxSortedFrame))
-            return badInput("--frame " + std::to_string(st.frame) + ": the sorted sampler replays every frame before K; use K <= " +
-                            std::to_string(prism::scene::kMaxSortedFrame));
+    return std::nullopt;
+}
+
+// --spp, --sampler, --frame and --frames over the scene's "stochastic" settings, never silently ignored.
+Stop applyStochasticFlags(const Arguments& a, prism::scene::Scene& scene) {
+    if (!a.stochasticGiven()) return std::nullopt;
+    if (!scene.stochastic)
+        return badInput(a.stochasticFlags() + ": " + a.scene +
+                        " has no \"stochastic\" effect (docs/scenes.md); these flags need one");
+    auto& st = *scene.stochastic;
+    if (a.sampler) {
+        const auto kind = prism::scene::parseStochasticSampler(*a.sampler);
+        if (!kind) return badInput("--sampler " + *a.sampler + ": expected white, bluenoise or sorted");
+        st.sampler = *kind;
     }
-    if (scene.stochastic) {  // CPU only: no GL context
-        if (!a.backend.empty()) return badInput("--backend: " + a.scene + " is drawn on the CPU (a \"stochastic\" scene); it uses no GL backend");
-        try {
-            const auto& st = *scene.stochastic;
-            prism::image::writePng(a.out, prism::scene::renderStochastic(st, scene.width, scene.height));
-            std::cout << "prism-render: wrote " << a.out << " (soft shadows, "
-                      << prism::scene::stochasticSamplerName(st.sampler) << ", " << st.spp << " spp, "
-                      << (st.frames > 1 ? "mean of frames 0.." + std::to_string(st.frames - 1)
-                                        : "frame " + std::to_string(st.frame))
-                      << ")\n";
-        } catch (const std::invalid_argument& e) {
-            return badInput(e.what());
-        } catch (const std::exception& e) {
-            std::cerr << "prism-render: error: " << e.what() << "\n";
-            return kExitFailure;
-        }
-        return kExitOk;
+    if (a.spp) st.spp = *a.spp;
+    if (a.frame) {  // one frame: the scene's accumulation no longer applies
+        st.frame = *a.frame;
+        st.frames = 1;
     }
+    if (a.frames) {  // the mean from frame 0
+        st.frames = *a.frames;
+        st.frame = 0;
+    }
+    if (st.sampler == prism::bluenoise::SamplerKind::Sorted && st.frame > static_cast<int>(prism::scene::kMaxSortedFrame))
+        return badInput("--frame " + std::to_string(st.frame) + ": the sorted sampler replays every frame before K; use K <= " +
+                        std::to_string(prism::scene::kMaxSortedFrame));
+    return std::nullopt;
+}
+
+// A "stochastic" scene: on the CPU, no GL context.
+int writeStochasticScene(const Arguments& a, const prism::scene::Scene& scene) {
+    if (!a.backend.empty()) return badInput("--backend: " + a.scene + " is drawn on the CPU (a \"stochastic\" scene); it uses no GL backend");
+    try {
+        const auto& st = *scene.stochastic;
+        prism::image::writePng(a.out, prism::scene::renderStochastic(st, scene.width, scene.height));
+        std::cout << "prism-render: wrote " << a.out << " (soft shadows, "
+                  << prism::scene::stochasticSamplerName(st.sampler) << ", " << st.spp << " spp, "
+                  << (st.frames > 1 ? "mean of frames 0.." + std::to_string(st.frames - 1)
+                                    : "frame " + std::to_string(st.frame))
+                  << ")\n";
+    } catch (const std::invalid_argument& e) {
+        return badInput(e.what());
+    } catch (const std::exception& e) {
+        std::cerr << "prism-render: error: " << e.what() << "\n";
+        return kExitFailure;
+    }
+    return kExitOk;
+}
+
+int drawScene(const Arguments& a, const prism::scene::Scene& scene, std::optional<prism::gl::Backend> backend) {
     try {
         auto context = backend ? prism::gl::createContext(*backend) : prism::gl::createContext();
         prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
@@ -150,10 +165,20 @@ int renderScene(const Arguments& a) {
     return kExitOk;
 }
 
-}  // namespace
+int renderScene(const Arguments& a) {
+    if (const Stop stop = checkSceneFlags(a)) return *stop;
+    bool backendOk = true;
+    auto backend = backendOf(a, backendOk);
+    if (!backendOk) return badInput("--backend " + a.backend + ": expected egl or osmesa");
+    prism::scene::Scene scene;
+    if (const Stop stop = loadScene(a, scene)) return *stop;
+    if (const Stop stop = applyStochasticFlags(a, scene)) return *stop;
+    if (scene.stochastic) return writeStochasticScene(a, scene);
+    return drawScene(a, scene, backend);
+}
 
-int main(int argc, char** argv) {
-    Arguments a;
+// The command line; Stop holds the exit code after --help or a usage error.
+Stop parseArguments(int argc, char** argv, Arguments& a) {
     CLI::App app{"prism-render: render one catalogue shader on one mesh into a PNG"};
     auto* shaderOption = app.add_option("--shader", a.shader, "catalogue shader name");
     auto* sceneOption = app.add_option("--scene", a.scene, "render a JSON scene file instead (docs/scenes.md)");
@@ -190,13 +215,12 @@ int main(int argc, char** argv) {
         if (app.count(flag) > 0) a.shaderOnlyGiven.emplace_back(flag);
     a.sizeGiven = app.count("--size") > 0;
     a.subdivGiven = app.count("--subdiv") > 0;
+    return std::nullopt;
+}
 
-    if (!a.scene.empty()) return renderScene(a);
-    if (a.stochasticGiven()) return badInput(a.stochasticFlags() + ": only with --scene FILE.json (a \"stochastic\" scene)");
-    if (a.shader.empty()) return badInput("give --shader NAME or --scene FILE.json");
-
-    // Validate everything before touching GL, so bad input writes nothing.
-    prism::render::RenderJob job;
+// The shader, its variant picks and the flags' numbers, checked before touching GL, so bad
+// input writes nothing.
+Stop catalogueJob(const Arguments& a, prism::render::RenderJob& job) {
     job.shader = a.shader;
     if (!prism::catalog::findShader(prism::shaders::kCatalog, a.shader)) {
         std::string known;
@@ -224,16 +248,6 @@ int main(int argc, char** argv) {
     if (a.out.empty() && !a.checkFinite) return badInput("give --out FILE.png (or --check-finite)");
     if (a.subdivGiven && a.mesh != "sphere" && a.mesh != "icosphere" && a.mesh != "torus" && a.mesh != "grid")
         return badInput("--subdiv: mesh " + a.mesh + " has no subdivision levels (sphere, icosphere, torus and grid have)");
-    bool backendOk = true;
-    const auto backend = backendOf(a, backendOk);
-    if (!backendOk) return badInput("--backend " + a.backend + ": expected egl or osmesa");
-    try {
-        job.mesh = prism::render::meshForShader(a.shader, prism::render::namedMesh(a.mesh, a.subdiv));
-    } catch (const prism::geometry::ObjLoadError& e) {
-        return badInput(e.what());
-    } catch (const std::exception& e) {
-        return badInput(std::string(e.what()));
-    }
     job.material.shininess = *shininess;
     job.material.specular = *specular;
     job.material.color = glm::vec4(*color, 1.0f);
@@ -241,7 +255,11 @@ int main(int argc, char** argv) {
     job.world = glm::scale(glm::mat4(1.0f), *scale);
     job.width = size->first;
     job.height = size->second;
+    return std::nullopt;
+}
 
+// The catalogue render: RGBA8, or RGBA32F checked for NaN and Inf with --check-finite.
+int drawCatalogue(const Arguments& a, const prism::render::RenderJob& job, std::optional<prism::gl::Backend> backend) {
     try {
         auto context = backend ? prism::gl::createContext(*backend) : prism::gl::createContext();
         prism::render::ProgramCache cache(prism::shaders::kCatalog);
@@ -267,4 +285,31 @@ int main(int argc, char** argv) {
         return kExitFailure;
     }
     return kExitOk;
+}
+
+int renderCatalogue(const Arguments& a) {
+    prism::render::RenderJob job;
+    if (const Stop stop = catalogueJob(a, job)) return *stop;
+    bool backendOk = true;
+    const auto backend = backendOf(a, backendOk);
+    if (!backendOk) return badInput("--backend " + a.backend + ": expected egl or osmesa");
+    try {
+        job.mesh = prism::render::meshForShader(a.shader, prism::render::namedMesh(a.mesh, a.subdiv));
+    } catch (const prism::geometry::ObjLoadError& e) {
+        return badInput(e.what());
+    } catch (const std::exception& e) {
+        return badInput(std::string(e.what()));
+    }
+    return drawCatalogue(a, job, backend);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Arguments a;
+    if (const Stop stop = parseArguments(argc, argv, a)) return *stop;
+    if (!a.scene.empty()) return renderScene(a);
+    if (a.stochasticGiven()) return badInput(a.stochasticFlags() + ": only with --scene FILE.json (a \"stochastic\" scene)");
+    if (a.shader.empty()) return badInput("give --shader NAME or --scene FILE.json");
+    return renderCatalogue(a);
 }

@@ -258,6 +258,33 @@ void onKey(GLFWwindow* window, int key, int, int action, int mods) {
     pressKey(*k.live, **k.scene, key, (mods & GLFW_MOD_SHIFT) != 0);
 }
 
+// The window's starting state: --intensity names the class, --technique the technique.
+Live startingState(const Options& o) {
+    Live live;
+    live.options = o;
+    live.wind = o.wind;
+    live.windDirection = o.windDirection;
+    live.fog = o.fog;
+    if (const auto c = parseRainClass(o.intensity)) {
+        for (std::size_t i = 0; i < rainClasses().size(); ++i)
+            if (rainClasses()[i].intensity == rainClassInfo(*c).intensity) live.rainClass = static_cast<int>(i);
+    } else {
+        throw RainParameterError("rain: with --window, --intensity must name a class (drizzle..cloudburst)");
+    }
+    for (int i = 0; i < 3; ++i)
+        if (parseTechnique(o.technique) == kTechniques[i]) live.technique = i;
+    return live;
+}
+
+std::string windowTitle(const Live& live, RainScene& scene, double smoothedMs) {
+    const auto* rain = scene.rain();
+    return "Prism rain - " + std::string(rainClasses()[static_cast<std::size_t>(live.rainClass)].name) + ", " +
+           std::to_string(rain ? rain->particleCount() : 0) + " drops, wind " +
+           std::to_string(static_cast<int>(live.wind)) + " m/s, " + (live.fog ? "fog, " : "") +
+           std::string(techniqueName(kTechniques[live.technique])) + ", " +
+           std::to_string(static_cast<int>(smoothedMs)) + " ms";
+}
+
 int runWindow(const Options& o) {
     prism::gl::ContextOptions co{.majorVersion = 4, .minorVersion = 3};
     co.width = o.width;
@@ -266,19 +293,7 @@ int runWindow(const Options& o) {
     co.vsync = o.frames == 0;
     auto context = prism::gl::createContext(prism::gl::Backend::Glfw, co);
     auto* window = static_cast<GLFWwindow*>(context->nativeWindow());
-    Live live;
-    live.options = o;
-    live.wind = o.wind;
-    live.windDirection = o.windDirection;
-    live.fog = o.fog;
-    if (const auto c = parseRainClass(o.intensity)) {  // --intensity names the starting class
-        for (std::size_t i = 0; i < rainClasses().size(); ++i)
-            if (rainClasses()[i].intensity == rainClassInfo(*c).intensity) live.rainClass = static_cast<int>(i);
-    } else {
-        throw RainParameterError("rain: with --window, --intensity must name a class (drizzle..cloudburst)");
-    }
-    for (int i = 0; i < 3; ++i)  // --technique picks the starting technique
-        if (parseTechnique(o.technique) == kTechniques[i]) live.technique = i;
+    Live live = startingState(o);
     auto build = [&] {
         RainSceneDesc d =
             sceneFor(o, 0, rainClasses()[static_cast<std::size_t>(live.rainClass)].intensity, live.wind, live.fog);
@@ -317,13 +332,7 @@ int runWindow(const Options& o) {
         glFinish();
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - now).count();
         smoothedMs = frame == 0 ? ms : 0.9 * smoothedMs + 0.1 * ms;
-        const auto* rain = current->rain();
-        const std::string title = "Prism rain - " +
-                                  std::string(rainClasses()[static_cast<std::size_t>(live.rainClass)].name) + ", " +
-                                  std::to_string(rain ? rain->particleCount() : 0) + " drops, wind " +
-                                  std::to_string(static_cast<int>(live.wind)) + " m/s, " + (live.fog ? "fog, " : "") +
-                                  std::string(techniqueName(kTechniques[live.technique])) + ", " +
-                                  std::to_string(static_cast<int>(smoothedMs)) + " ms";
+        const std::string title = windowTitle(live, *current, smoothedMs);
         glfwSetWindowTitle(window, title.c_str());
         context->swapBuffers();
         context->pollEvents();

@@ -26,6 +26,7 @@
 #include "panels/panels.hpp"
 #include "prism/gl/gl_context.hpp"
 #include "prism/image/png_io.hpp"
+#include "prism/rain/rain_classes.hpp"
 #include "prism/render/shader_watcher.hpp"
 #include "prism/shaders.hpp"
 #include "reference_check.hpp"
@@ -79,32 +80,244 @@ std::vector<std::string> exampleScenes() {
     return files;
 }
 
+// Everything the command line names, checked before a window opens; throws with the reason.
+void applyCommandLine(ViewerState& state, const ViewerOptions& args, std::optional<ViewerScript>& script) {
+    selectShader(state, kCatalog, args.shader);
+    for (const auto& v : args.variant) {
+        const auto eq = v.find('=');
+        pickAxis(state, v.substr(0, eq), v.substr(eq + 1));
+    }
+    const auto& c = state.catalogue;
+    const std::string why = whyNotAVariant(*prism::catalog::findShader(kCatalog, c.shader),
+                                           prism::render::featuresOf(c.lights, c.fog.has_value()), c.picks);
+    if (!why.empty()) throw std::invalid_argument("--variant: " + why);
+    setParameter(state, "mesh", args.mesh);
+    setParameter(state, "subdivision", std::to_string(args.subdivision));
+    if (std::find(std::begin(kMeshes), std::end(kMeshes), args.mesh) == std::end(kMeshes))
+        throw std::invalid_argument("unknown mesh '" + args.mesh + "'");
+    if (!args.scene.empty()) openScene(state, args.scene);
+    if (!args.script.empty()) script = ViewerScript::load(args.script);
+}
+
+std::unique_ptr<prism::gl::Context> openWindow(const ViewerOptions& args, bool scripted) {
+    prism::gl::ContextOptions options;
+    options.width = args.width;
+    options.height = args.height;
+    options.majorVersion = 4;  // rain and the water step use compute shaders
+    options.minorVersion = 3;
+    options.windowTitle = "Prism viewer";
+    options.vsync = args.frames == 0 && !scripted;
+    return prism::gl::createContext(prism::gl::Backend::Glfw, options);
+}
+
+// The window's frame loop. Each frame is a fixed sequence of stages: hot reload, the next
+// script event, the view (scene or catalogue), the readouts, the panels, the script's
+// expectation, the screenshot, and the swap. A stage that must end the program returns its
+// exit code.
+class ViewerApp {
+  public:
+    ViewerApp(const ViewerOptions& args, ViewerState& state, std::optional<ViewerScript>& script)
+        : args_(args), state_(state), script_(script), context_(openWindow(args, script.has_value())),
+          window_(static_cast<GLFWwindow*>(context_->nativeWindow())), catalogueView_(cache_, kCatalog) {
+        installKeyHandler(window_, state_, kCatalog);
+        if (state_.panels) ui_.emplace(window_);  // after our key callback: ImGui chains to it
+        if (args_.watch) {
+            prism::render::ShaderWatchOptions watchOptions;
+            watchOptions.sourceRoot = args_.sourceRoot;
+            watcher_ = std::make_unique<prism::render::ShaderWatcher>(cache_, watchOptions);
+            std::cout << "viewer: watching " << watcher_->watchedFiles().size() << " files under "
+                      << args_.sourceRoot << std::endl;
+        }
+        std::cout << "viewer: frame time from " << (timer_.gpuTimed() ? "GL_TIME_ELAPSED queries" : "the CPU clock")
+                  << std::endl;
+    }
+
+    int run() {
+        const long maxFrames = args_.frames;
+        for (long frame = 0; !context_->shouldClose() && !gStopRequested && (maxFrames == 0 || frame < maxFrames) &&
+                             !scriptDone_;
+             ++frame) {
+            if (const auto exit = runFrame(frame)) return *exit;
+        }
+        if (!args_.screenshot.empty() && !screenshotWritten_) writeScreenshot();  // stopped between two frames
+        std::cout << "viewer: last frame " << state_.readouts.frameMs << " ms ("
+                  << (state_.readouts.gpuTimed ? "GPU" : "CPU") << "), " << cache_.size() << " programs cached, "
+                  << reference_.referencesRendered() << " exact-sphere references rendered, "
+                  << samplingReference_.referencesRendered() << " sampling references rendered\n";
+        return 0;
+    }
+
+  private:
+    std::optional<int> runFrame(long frame) {
+        if (watcher_) pollHotReload();
+        expected_.clear();
+        if (script_ && !applyScriptEvent()) return 1;
+        glfwGetFramebufferSize(window_, &w_, &h_);
+        w_ = std::max(w_, 1), h_ = std::max(h_, 1);
+        const int left = state_.panels ? std::min(static_cast<int>(kPanelWidth), w_ - 1) : 0;
+        const int viewWidth = w_ - left;
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, w_, h_);
+        glClearColor(0.1f, 0.1f, 0.12f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        timer_.begin();
+        bool sceneRendered = false;
+        const std::string program = drawView(left, viewWidth, sceneRendered);
+        timer_.end();
+        updateReadouts(frame, program, sceneRendered, viewWidth);
+        if (ui_) {
+            ui_->begin();
+            drawControlPanels(state_, kCatalog, sceneFiles_, cache_.size());
+            drawOverlay(state_, static_cast<float>(left));
+            ui_->end();
+        }
+        overlay_.draw(w_, h_);
+        if (!expected_.empty() && state_.readouts.program.find(expected_) == std::string::npos) {
+            std::cerr << script_->path() << ":" << expectLine_ << ":1: error: the program in use is '"
+                      << state_.readouts.program << "', not '" << expected_ << "'\n";
+            return 1;
+        }
+        const bool lastFrame = gStopRequested || scriptDone_ || (args_.frames > 0 && frame + 1 == args_.frames);
+        if (!args_.screenshot.empty() && lastFrame && !screenshotWritten_) writeScreenshot();
+        const std::string title = "Prism viewer - " + state_.readouts.program;
+        glfwSetWindowTitle(window_, title.c_str());
+        context_->swapBuffers();
+        context_->pollEvents();
+        return std::nullopt;
+    }
+
+    void pollHotReload() {
+        const auto result = watcher_->poll();
+        for (const auto& f : result.changedFiles) std::cout << "viewer: changed " << f << "\n";
+        for (const auto& r : result.reloaded) std::cout << "viewer: reloaded " << r << "\n";
+        for (const auto& d : result.diagnostics) std::cerr << d;
+        if (result.checked) {
+            const auto text = overlayText(watcher_->errors(), watcher_->sourceRoot());
+            if (text != overlay_.text())
+                std::cout << "viewer: overlay " << (text.empty() ? "cleared" : "shows: " + text) << std::endl;
+            overlay_.setText(text);
+        }
+        std::cerr.flush();
+    }
+
+    // False after an event that fails (reported as path:line:1: error: ...).
+    bool applyScriptEvent() {
+        const bool wasLast = script_->finished();
+        if (const auto event = script_->next()) {
+            try {
+                expected_ = applyEvent(state_, kCatalog, window_, *script_, *event);
+                expectLine_ = event->line;
+            } catch (const std::exception& e) {
+                std::cerr << script_->path() << ":" << event->line << ":1: error: " << e.what() << "\n";
+                return false;
+            }
+        }
+        scriptDone_ = wasLast && args_.frames == 0;  // one frame after the last event
+        return true;
+    }
+
+    // The open scene, or the catalogue view; returns the program label of what was drawn.
+    std::string drawView(int left, int viewWidth, bool& sceneRendered) {
+        if (!state_.scene.open) return catalogueView_.draw(state_, left, viewWidth, h_);
+        const std::string errorBefore = sceneDisplay_.error();
+        sceneRendered = sceneDisplay_.draw(state_.scene, left, viewWidth, h_);
+        if (sceneDisplay_.error() != errorBefore) {
+            if (!sceneDisplay_.error().empty())
+                std::cerr << "viewer: error: " << state_.scene.file << ": " << sceneDisplay_.error() << std::endl;
+            panelError() = sceneDisplay_.error();
+        }
+        if (!sceneRendered) return state_.readouts.program;
+        state_.readouts.sceneRenderMs = sceneDisplay_.lastRenderMs();
+        const auto& rain = state_.scene.scene.rain;
+        std::cout << "viewer: scene " << state_.scene.file << " rendered in "
+                  << static_cast<long>(state_.readouts.sceneRenderMs) << " ms"
+                  << (rain ? ", rain " + std::string(prism::rain::rainClassInfo(rain->intensityClass).name) : "")
+                  << std::endl;
+        return sceneDisplay_.programLabel(state_.scene);
+    }
+
+    // Frame time, the program in use, and the reference readouts of the current view.
+    void updateReadouts(long frame, const std::string& program, bool sceneRendered, int viewWidth) {
+        state_.readouts.frameMs = timer_.lastMs();
+        state_.readouts.gpuTimed = timer_.gpuTimed();
+        const bool programChanged = program != state_.readouts.program;
+        if (programChanged) std::cout << "viewer: program " << program << std::endl;
+        state_.readouts.program = program;
+        const std::string viewKey = state_.scene.open ? state_.scene.file : std::string();
+        if (viewKey != lastViewKey_) {  // a readout belongs to the view it was measured in
+            state_.readouts.referenceText.clear();
+            referenceSignature_.clear();
+            lastViewKey_ = viewKey;
+        }
+        const bool sampling = state_.scene.open && state_.scene.scene.stochastic.has_value();
+        if (state_.readouts.referenceOn && sampling &&
+            (programChanged || sceneRendered || state_.readouts.referenceText.empty()))
+            setReferenceText(samplingReference_.measure(*state_.scene.scene.stochastic));
+        if (!state_.readouts.referenceOn) state_.readouts.referenceText.clear();
+        if (state_.readouts.referenceOn && !state_.scene.open) measureCatalogueReference(frame, program, viewWidth);
+    }
+
+    // The exact-sphere error of the catalogue view: again when the view changed, and every 30 frames.
+    void measureCatalogueReference(long frame, const std::string& program, int viewWidth) {
+        const auto job = catalogueView_.job(state_, viewWidth, h_);
+        const std::string why = referenceUnavailable(job, state_.catalogue.mesh, job.variant);
+        const auto& c = state_.catalogue;
+        const std::string signature = program + c.mesh + std::to_string(c.subdivision) +
+                                      std::to_string(c.yaw + 7 * c.pitch) + why +
+                                      std::to_string(c.material.shininess) + std::to_string(c.material.specular);
+        if (signature != referenceSignature_ || frame % 30 == 0) {
+            setReferenceText(why.empty() ? reference_.measure(cache_, job, catalogueView_.mesh()) : why);
+            referenceSignature_ = signature;
+        }
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, w_, h_);
+    }
+
+    void setReferenceText(const std::string& text) {
+        if (text != state_.readouts.referenceText) std::cout << "viewer: reference " << text << std::endl;
+        state_.readouts.referenceText = text;
+    }
+
+    void writeScreenshot() {
+        prism::image::writePng(args_.screenshot, readBackBuffer(w_, h_));
+        std::cout << "viewer: wrote " << args_.screenshot << std::endl;
+        screenshotWritten_ = true;
+    }
+
+    const ViewerOptions& args_;
+    ViewerState& state_;
+    std::optional<ViewerScript>& script_;
+    std::unique_ptr<prism::gl::Context> context_;
+    GLFWwindow* window_;
+    std::optional<ImGuiLayer> ui_;
+    prism::render::ProgramCache cache_{kCatalog};
+    CatalogueRenderer catalogueView_;
+    SceneDisplay sceneDisplay_{kCatalog};
+    ReferenceCheck reference_;
+    SamplingReference samplingReference_;
+    FrameTimer timer_;
+    const std::vector<std::string> sceneFiles_ = exampleScenes();
+    std::unique_ptr<prism::render::ShaderWatcher> watcher_;
+    ErrorOverlay overlay_;
+    bool screenshotWritten_ = false;
+    bool scriptDone_ = false;
+    std::string referenceSignature_, lastViewKey_ = "(none)";
+    std::string expected_;  // this frame's script expectation: text the program in use must contain
+    int expectLine_ = 0;
+    int w_ = 0, h_ = 0;
+};
+
 }  // namespace
 
 int main(int argc, char** argv) {
     int exitCode = 0;
     const auto args = parseViewerOptions(argc, argv, exitCode);
     if (!args) return exitCode;
-    const long maxFrames = args->frames;
     ViewerState state;
     state.panels = args->panels;
     std::optional<ViewerScript> script;
-    try {  // everything the command line names is checked before a window opens
-        selectShader(state, kCatalog, args->shader);
-        for (const auto& v : args->variant) {
-            const auto eq = v.find('=');
-            pickAxis(state, v.substr(0, eq), v.substr(eq + 1));
-        }
-        const auto& c = state.catalogue;
-        const std::string why = whyNotAVariant(*prism::catalog::findShader(kCatalog, c.shader),
-                                               prism::render::featuresOf(c.lights, c.fog.has_value()), c.picks);
-        if (!why.empty()) throw std::invalid_argument("--variant: " + why);
-        setParameter(state, "mesh", args->mesh);
-        setParameter(state, "subdivision", std::to_string(args->subdivision));
-        if (std::find(std::begin(kMeshes), std::end(kMeshes), args->mesh) == std::end(kMeshes))
-            throw std::invalid_argument("unknown mesh '" + args->mesh + "'");
-        if (!args->scene.empty()) openScene(state, args->scene);
-        if (!args->script.empty()) script = ViewerScript::load(args->script);
+    try {
+        applyCommandLine(state, *args, script);
     } catch (const std::exception& e) {
         std::cerr << "viewer: error: " << e.what() << "\n";
         return 2;
@@ -112,174 +325,10 @@ int main(int argc, char** argv) {
     std::signal(SIGINT, onStopSignal);
     std::signal(SIGTERM, onStopSignal);
     try {
-        prism::gl::ContextOptions options;
-        options.width = args->width;
-        options.height = args->height;
-        options.majorVersion = 4;  // rain and the water step use compute shaders
-        options.minorVersion = 3;
-        options.windowTitle = "Prism viewer";
-        options.vsync = maxFrames == 0 && !script;
-        auto context = prism::gl::createContext(prism::gl::Backend::Glfw, options);
-        auto* window = static_cast<GLFWwindow*>(context->nativeWindow());
-        installKeyHandler(window, state, kCatalog);
-        std::optional<ImGuiLayer> ui;
-        if (state.panels) ui.emplace(window);  // after our key callback: ImGui chains to it
-
-        prism::render::ProgramCache cache(kCatalog);
-        CatalogueRenderer catalogueView(cache, kCatalog);
-        SceneDisplay sceneDisplay(kCatalog);
-        ReferenceCheck reference;
-        SamplingReference samplingReference;
-        FrameTimer timer;
-        const std::vector<std::string> sceneFiles = exampleScenes();
-        std::unique_ptr<prism::render::ShaderWatcher> watcher;
-        ErrorOverlay overlay;
-        if (args->watch) {
-            prism::render::ShaderWatchOptions watchOptions;
-            watchOptions.sourceRoot = args->sourceRoot;
-            watcher = std::make_unique<prism::render::ShaderWatcher>(cache, watchOptions);
-            std::cout << "viewer: watching " << watcher->watchedFiles().size() << " files under "
-                      << args->sourceRoot << std::endl;
-        }
-        std::cout << "viewer: frame time from " << (timer.gpuTimed() ? "GL_TIME_ELAPSED queries" : "the CPU clock")
-                  << std::endl;
-        bool screenshotWritten = false;
-        std::string referenceSignature, lastViewKey = "(none)";
-        int w = 0, h = 0;
-        auto writeScreenshot = [&]() {
-            prism::image::writePng(args->screenshot, readBackBuffer(w, h));
-            std::cout << "viewer: wrote " << args->screenshot << std::endl;
-            screenshotWritten = true;
-        };
-        bool scriptDone = false;
-        for (long frame = 0; !context->shouldClose() && !gStopRequested && (maxFrames == 0 || frame < maxFrames) &&
-                             !scriptDone;
-             ++frame) {
-            if (watcher) {
-                const auto result = watcher->poll();
-                for (const auto& f : result.changedFiles) std::cout << "viewer: changed " << f << "\n";
-                for (const auto& r : result.reloaded) std::cout << "viewer: reloaded " << r << "\n";
-                for (const auto& d : result.diagnostics) std::cerr << d;
-                if (result.checked) {
-                    const auto text = overlayText(watcher->errors(), watcher->sourceRoot());
-                    if (text != overlay.text())
-                        std::cout << "viewer: overlay " << (text.empty() ? "cleared" : "shows: " + text) << std::endl;
-                    overlay.setText(text);
-                }
-                std::cerr.flush();
-            }
-            std::string expected;
-            int expectLine = 0;
-            if (script) {
-                const bool wasLast = script->finished();
-                if (const auto event = script->next()) {
-                    try {
-                        expected = applyEvent(state, kCatalog, window, *script, *event);
-                        expectLine = event->line;
-                    } catch (const std::exception& e) {
-                        std::cerr << script->path() << ":" << event->line << ":1: error: " << e.what() << "\n";
-                        return 1;
-                    }
-                }
-                scriptDone = wasLast && maxFrames == 0;  // one frame after the last event
-            }
-            glfwGetFramebufferSize(window, &w, &h);
-            w = std::max(w, 1), h = std::max(h, 1);
-            const int left = state.panels ? std::min(static_cast<int>(kPanelWidth), w - 1) : 0;
-            const int viewWidth = w - left;
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
-            glViewport(0, 0, w, h);
-            glClearColor(0.1f, 0.1f, 0.12f, 1.0f);
-            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-            timer.begin();
-            std::string program;
-            bool sceneRendered = false;
-            if (state.scene.open) {
-                const std::string errorBefore = sceneDisplay.error();
-                sceneRendered = sceneDisplay.draw(state.scene, left, viewWidth, h);
-                if (sceneDisplay.error() != errorBefore) {
-                    if (!sceneDisplay.error().empty())
-                        std::cerr << "viewer: error: " << state.scene.file << ": " << sceneDisplay.error() << std::endl;
-                    panelError() = sceneDisplay.error();
-                }
-                if (sceneRendered) {
-                    program = sceneDisplay.programLabel(state.scene);
-                    state.readouts.sceneRenderMs = sceneDisplay.lastRenderMs();
-                    std::cout << "viewer: scene " << state.scene.file << " rendered in "
-                              << static_cast<long>(state.readouts.sceneRenderMs) << " ms"
-                              << (state.scene.scene.rain ? ", rain " + state.scene.scene.rain->intensityClass : "")
-                              << std::endl;
-                } else {
-                    program = state.readouts.program;
-                }
-            } else {
-                program = catalogueView.draw(state, left, viewWidth, h);
-            }
-            timer.end();
-            state.readouts.frameMs = timer.lastMs();
-            state.readouts.gpuTimed = timer.gpuTimed();
-            const bool programChanged = program != state.readouts.program;
-            if (programChanged) std::cout << "viewer: program " << program << std::endl;
-            state.readouts.program = program;
-            const std::string viewKey = state.scene.open ? state.scene.file : std::string();
-            if (viewKey != lastViewKey) {  // a readout belongs to the view it was measured in
-                state.readouts.referenceText.clear();
-                referenceSignature.clear();
-                lastViewKey = viewKey;
-            }
-
-            const bool sampling = state.scene.open && state.scene.scene.stochastic.has_value();
-            if (state.readouts.referenceOn && sampling && (programChanged || sceneRendered || state.readouts.referenceText.empty())) {
-                const std::string text = samplingReference.measure(*state.scene.scene.stochastic);
-                if (text != state.readouts.referenceText) std::cout << "viewer: reference " << text << std::endl;
-                state.readouts.referenceText = text;
-            }
-            if (!state.readouts.referenceOn) state.readouts.referenceText.clear();
-            if (state.readouts.referenceOn && !state.scene.open) {
-                const auto job = catalogueView.job(state, viewWidth, h);
-                std::string why = referenceUnavailable(job, state.catalogue.mesh, job.variant);
-                const std::string signature = program + state.catalogue.mesh +
-                                              std::to_string(state.catalogue.subdivision) +
-                                              std::to_string(state.catalogue.yaw + 7 * state.catalogue.pitch) + why +
-                                              std::to_string(state.catalogue.material.shininess) +
-                                              std::to_string(state.catalogue.material.specular);
-                if (signature != referenceSignature || frame % 30 == 0) {
-                    const std::string text = why.empty() ? reference.measure(cache, job, catalogueView.mesh()) : why;
-                    if (text != state.readouts.referenceText) std::cout << "viewer: reference " << text << std::endl;
-                    state.readouts.referenceText = text;
-                    referenceSignature = signature;
-                }
-                glBindFramebuffer(GL_FRAMEBUFFER, 0);
-                glViewport(0, 0, w, h);
-            }
-
-            if (ui) {
-                ui->begin();
-                drawControlPanels(state, kCatalog, sceneFiles, cache.size());
-                drawOverlay(state, static_cast<float>(left));
-                ui->end();
-            }
-            overlay.draw(w, h);
-            if (!expected.empty() && state.readouts.program.find(expected) == std::string::npos) {
-                std::cerr << script->path() << ":" << expectLine << ":1: error: the program in use is '"
-                          << state.readouts.program << "', not '" << expected << "'\n";
-                return 1;
-            }
-            const bool lastFrame = gStopRequested || scriptDone || (maxFrames > 0 && frame + 1 == maxFrames);
-            if (!args->screenshot.empty() && lastFrame && !screenshotWritten) writeScreenshot();
-            const std::string title = "Prism viewer - " + state.readouts.program;
-            glfwSetWindowTitle(window, title.c_str());
-            context->swapBuffers();
-            context->pollEvents();
-        }
-        if (!args->screenshot.empty() && !screenshotWritten) writeScreenshot();  // stopped between two frames
-        std::cout << "viewer: last frame " << state.readouts.frameMs << " ms ("
-                  << (state.readouts.gpuTimed ? "GPU" : "CPU") << "), " << cache.size() << " programs cached, "
-                  << reference.referencesRendered() << " exact-sphere references rendered, "
-                  << samplingReference.referencesRendered() << " sampling references rendered\n";
+        ViewerApp app(*args, state, script);
+        return app.run();
     } catch (const std::exception& e) {
         std::cerr << "viewer: error: " << e.what() << "\n";
         return 1;
     }
-    return 0;
 }

@@ -327,6 +327,31 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
     }
 }
 
+// What the keys changed since the last frame: the rain class (R) and the fog (F).
+void applyKeyChanges(ViewState& state, WaterScene& scene, const prism::view::Fog& fog) {
+    if (state.rainChanged) {
+        const double mmh = state.rainIndex == 0
+                               ? 0.0
+                               : rainRateMmPerHour(rainClassTable()[static_cast<std::size_t>(state.rainIndex - 1)].id);
+        scene.water()->setRain(mmh);
+        state.rainChanged = false;
+    }
+    if (state.fogToggled) {  // the renderer switches to the FOG=0 / FOG=1 programs
+        scene.setFog(scene.description().fog ? std::nullopt : std::optional<prism::view::Fog>(fog));
+        state.fogToggled = false;
+    }
+}
+
+std::string windowTitle(const WaterScene& scene, const ViewState& state, double smoothedMs) {
+    const HeightField& t = scene.terrain();
+    std::ostringstream title;
+    title << std::fixed << std::setprecision(1) << "Prism water - " << smoothedMs << " ms - rain "
+          << scene.water()->rainMmPerHour() << " mm/h - stored " << std::setprecision(3)
+          << scene.water()->simulation().ledger().stored * t.cellSize * t.cellSize << " m3"
+          << (state.paused ? " (paused)" : "");
+    return title.str();
+}
+
 int runWindow(const Options& o) {
     prism::gl::ContextOptions co;
     co.majorVersion = o.gpu ? 4 : 3;
@@ -358,18 +383,7 @@ int runWindow(const Options& o) {
         const auto now = std::chrono::steady_clock::now();
         const double wall = std::min(0.1, std::chrono::duration<double>(now - last).count());
         last = now;
-        if (state.rainChanged) {
-            const double mmh =
-                state.rainIndex == 0
-                    ? 0.0
-                    : rainRateMmPerHour(rainClassTable()[static_cast<std::size_t>(state.rainIndex - 1)].id);
-            scene->water()->setRain(mmh);
-            state.rainChanged = false;
-        }
-        if (state.fogToggled) {  // the renderer switches to the FOG=0 / FOG=1 programs
-            scene->setFog(scene->description().fog ? std::nullopt : std::optional<prism::view::Fog>(fog));
-            state.fogToggled = false;
-        }
+        applyKeyChanges(state, *scene, fog);
         // 60x accelerated time so puddles form while you watch.
         if (!state.paused) scene->advance(o.frames ? o.dt : 60.0 * wall);
         int w = 0, h = 0;
@@ -388,12 +402,7 @@ int runWindow(const Options& o) {
         glFinish();
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - now).count();
         smoothedMs = frame == 0 ? ms : 0.9 * smoothedMs + 0.1 * ms;
-        std::ostringstream title;
-        title << std::fixed << std::setprecision(1) << "Prism water - " << smoothedMs << " ms - rain "
-              << scene->water()->rainMmPerHour() << " mm/h - stored " << std::setprecision(3)
-              << scene->water()->simulation().ledger().stored * t.cellSize * t.cellSize << " m3"
-              << (state.paused ? " (paused)" : "");
-        glfwSetWindowTitle(window, title.str().c_str());
+        glfwSetWindowTitle(window, windowTitle(*scene, state, smoothedMs).c_str());
         context->swapBuffers();
         context->pollEvents();
     }

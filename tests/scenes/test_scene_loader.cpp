@@ -55,7 +55,7 @@ TEST(SceneLoader, FullObjectSyntax) {
     EXPECT_EQ(s.objects[0].variantOverrides.front(), std::make_pair(std::string("BLINN"), std::string("1")));
     EXPECT_NEAR(s.objects[0].world[3][0], 1.0f, 1e-6f);
     ASSERT_TRUE(s.rain.has_value());
-    EXPECT_EQ(s.rain->intensityClass, "heavy");
+    EXPECT_EQ(s.rain->intensityClass, prism::rain::RainClass::Heavy);
     ASSERT_TRUE(s.water.has_value());
     EXPECT_EQ(s.water->gridSize, 128u);
     EXPECT_DOUBLE_EQ(s.water->seconds, 30.0);

@@ -155,6 +155,24 @@ TEST(SceneRendering, WaterSceneSimulatesAndDrawsTheWaterMap) {
     EXPECT_EQ(renderer.lastFrame().variants.front().rfind("water 128x128", 0), 0u);
 }
 
+// Water, rain and fog billboards all stand on the scene's terrain: it is built once a frame.
+TEST(SceneRendering, WaterRainAndFogShareOneTerrainPerFrame) {
+    prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
+    auto scene = exampleScene("water");
+    scene.width = 96;
+    scene.height = 64;
+    scene.water->gridSize = 32;
+    scene.water->seconds = 1.0;
+    ASSERT_TRUE(scene.rain && scene.fogBillboards);
+    renderer.render(scene);
+    EXPECT_EQ(renderer.terrainsBuilt(), 1u);
+    renderer.render(scene);
+    EXPECT_EQ(renderer.terrainsBuilt(), 2u);
+    scene.water.reset();
+    renderer.render(scene);
+    EXPECT_EQ(renderer.terrainsBuilt(), 2u) << "no terrain without water";
+}
+
 TEST(SceneRendering, RainSceneRunsTheRainSystemOverTheObjects) {
     prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
     auto scene = exampleScene("rain");
@@ -181,7 +199,7 @@ TEST(SceneRendering, RainTechniqueAndRingsApply) {
     scene.height = 64;
     renderer.render(scene);
     const std::string fourRings = renderer.lastFrame().variants.back();
-    scene.rain->technique = "point-sprites";
+    scene.rain->technique = prism::rain::StreakTechnique::PointSprites;
     scene.rain->lodRings = 1;
     renderer.render(scene);
     const std::string oneRing = renderer.lastFrame().variants.back();
@@ -190,13 +208,11 @@ TEST(SceneRendering, RainTechniqueAndRingsApply) {
     // One ring is full density out to the cylinder's edge; four fall off by 0.5 per ring
     // (rain_params.hpp's V_LOD), so one ring holds more drops.
     EXPECT_GT(particles(oneRing), particles(fourRings));
-    scene.rain->technique = "splines";
-    EXPECT_THROW(renderer.render(scene), std::invalid_argument);
 }
 
 TEST(SceneRendering, RainSettingsMapToRainParameters) {
     prism::scene::RainSettings s;
-    s.intensityClass = "cloudburst";
+    s.intensityClass = prism::rain::RainClass::Cloudburst;
     s.wind = {0.0f, 0.0f, 3.0f};
     auto p = prism::scene::rainParamsFor(s);
     EXPECT_NEAR(p.wind.strength, 3.0f, 1e-6f);

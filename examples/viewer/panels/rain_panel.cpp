@@ -5,6 +5,7 @@
 #include <string>
 
 #include "prism/rain/rain_classes.hpp"
+#include "prism/rain/rain_params.hpp"
 #include "../viewer_actions.hpp"
 #include "panels.hpp"
 
@@ -20,10 +21,11 @@ void drawRainPanel(ViewerState& state) {
     bool on = s.rain.has_value();
     if (ImGui::Checkbox("rain", &on)) setParameter(state, "rain.enabled", on ? "1" : "0");
     if (!s.rain) return;
-    if (ImGui::BeginCombo("intensity", s.rain->intensityClass.c_str())) {
+    const std::string intensity(rain::rainClassInfo(s.rain->intensityClass).name);
+    if (ImGui::BeginCombo("intensity", intensity.c_str())) {
         for (const auto& row : rain::rainClasses()) {
             const std::string name(row.name);
-            if (ImGui::Selectable(name.c_str(), name == s.rain->intensityClass))
+            if (ImGui::Selectable(name.c_str(), row.id == s.rain->intensityClass))
                 setParameter(state, "rain.intensity", name);
         }
         ImGui::EndCombo();
@@ -34,9 +36,13 @@ void drawRainPanel(ViewerState& state) {
     changed |= ImGui::SliderInt("LOD rings", &s.rain->lodRings, 1, 16);
     changed |= ImGui::SliderFloat("ring falloff", &s.rain->lodFalloff, 0.05f, 1.0f);
     if (changed) state.scene.dirty = true;
-    if (ImGui::BeginCombo("technique", s.rain->technique.c_str())) {
-        for (const char* t : {"gs-quads", "instanced-quads", "point-sprites"})
-            if (ImGui::Selectable(t, s.rain->technique == t)) setParameter(state, "rain.technique", t);
+    const std::string technique(rain::techniqueName(s.rain->technique));
+    if (ImGui::BeginCombo("technique", technique.c_str())) {
+        using enum rain::StreakTechnique;
+        for (rain::StreakTechnique t : {GeometryShader, Instanced, PointSprites}) {
+            const std::string name(rain::techniqueName(t));
+            if (ImGui::Selectable(name.c_str(), s.rain->technique == t)) setParameter(state, "rain.technique", name);
+        }
         ImGui::EndCombo();
     }
 }

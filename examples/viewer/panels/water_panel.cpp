@@ -2,6 +2,10 @@
 // rain coupling (rain-fed from the scene's rain, or a fixed rate), and the CPU or GPU step.
 #include <imgui.h>
 
+#include <string>
+
+#include "prism/water/water_simulation.hpp"
+
 #include "../viewer_actions.hpp"
 #include "panels.hpp"
 
@@ -42,12 +46,17 @@ void drawWaterPanel(ViewerState& state) {
         w.soilMillimetresPerHour = soil;
         view.dirty = true;
     }
-    if (ImGui::BeginCombo("step on", w.backend.c_str())) {
-        for (const char* b : {"fastest", "cpu", "gpu"})
-            if (ImGui::Selectable(b, w.backend == b)) setParameter(state, "water.backend", b);
+    using water::SimulationBackend;
+    const std::string backend(water::simulationBackendName(w.backend));
+    if (ImGui::BeginCombo("step on", backend.c_str())) {
+        for (SimulationBackend b : {SimulationBackend::Fastest, SimulationBackend::Cpu, SimulationBackend::Gpu}) {
+            const std::string name(water::simulationBackendName(b));
+            if (ImGui::Selectable(name.c_str(), w.backend == b)) setParameter(state, "water.backend", name);
+        }
         ImGui::EndCombo();
     }
-    if (w.backend == "fastest") ImGui::TextDisabled("fastest: CPU or compute, as measured on this renderer");
+    if (w.backend == SimulationBackend::Fastest)
+        ImGui::TextDisabled("fastest: CPU or compute, as measured on this renderer");
 }
 
 }  // namespace prism::viewer

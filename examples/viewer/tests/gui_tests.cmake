@@ -10,6 +10,13 @@ target_include_directories(viewer_variant_choice_tests PRIVATE ${CMAKE_CURRENT_S
 target_link_libraries(viewer_variant_choice_tests PRIVATE prism_render GTest::gtest_main)
 add_test(NAME example.viewer_variant_choice COMMAND viewer_variant_choice_tests)
 set_tests_properties(example.viewer_variant_choice PROPERTIES LABELS unit)
+# The named parameters of keys, panels and scripts (label unit: no window, no context).
+add_executable(viewer_actions_tests ${_gui}/test_viewer_actions.cpp ${CMAKE_CURRENT_SOURCE_DIR}/viewer_actions.cpp)
+target_include_directories(viewer_actions_tests PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
+target_link_libraries(viewer_actions_tests PRIVATE prism_scene_core prism_render GTest::gtest_main)
+target_compile_definitions(viewer_actions_tests PRIVATE PRISM_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+add_test(NAME example.viewer_actions COMMAND viewer_actions_tests)
+set_tests_properties(example.viewer_actions PROPERTIES LABELS unit)
 # No display needed: --help/--version print and exit 0, usage errors exit 2.
 add_test(NAME example.viewer_cli COMMAND bash ${_gui}/gui_test.sh cli $<TARGET_FILE:viewer> ${_work}/cli)
 add_test(NAME example.viewer_rejects_unknown_option

@@ -44,6 +44,12 @@ std::optional<RainClass> parseRainClass(std::string_view name) {
     return std::nullopt;
 }
 
+std::string rainClassNames() {
+    std::string names;
+    for (const auto& c : kClasses) names += (names.empty() ? "" : ", ") + std::string(c.name);
+    return names;
+}
+
 double rainRateMmPerHour(RainClass id) {
     return rainClassInfo(id).inchesPerHour * kCentimetresPerInch * 10.0;
 }

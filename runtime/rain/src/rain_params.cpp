@@ -165,4 +165,25 @@ float shearHeight(const RainParams& p, const glm::vec3& eye) {
     return eye.y - cylinderCenter(p, eye).y;
 }
 
+std::string_view techniqueName(StreakTechnique t) {
+    switch (t) {
+        case StreakTechnique::GeometryShader:
+            return "gs-quads";
+        case StreakTechnique::Instanced:
+            return "instanced-quads";
+        case StreakTechnique::PointSprites:
+            return "point-sprites";
+    }
+    return "?";
+}
+
+std::optional<StreakTechnique> parseTechnique(std::string_view name) {
+    std::string n;
+    for (char c : name) n += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (n == "gs" || n == "gs-quads" || n == "geometry") return StreakTechnique::GeometryShader;
+    if (n == "instanced" || n == "instanced-quads") return StreakTechnique::Instanced;
+    if (n == "points" || n == "point-sprites" || n == "sprites") return StreakTechnique::PointSprites;
+    return std::nullopt;
+}
+
 }  // namespace prism::rain

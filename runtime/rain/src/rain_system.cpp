@@ -4,7 +4,6 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <cctype>
 #include <string>
 
 #include "prism/gl/gl.hpp"
@@ -25,27 +24,6 @@ render::VariantValues fogVariant(const view::Fog* fog) {
 }
 
 }  // namespace
-
-std::string_view techniqueName(StreakTechnique t) {
-    switch (t) {
-        case StreakTechnique::GeometryShader:
-            return "gs-quads";
-        case StreakTechnique::Instanced:
-            return "instanced-quads";
-        case StreakTechnique::PointSprites:
-            return "point-sprites";
-    }
-    return "?";
-}
-
-std::optional<StreakTechnique> parseTechnique(std::string_view name) {
-    std::string n;
-    for (char c : name) n += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (n == "gs" || n == "gs-quads" || n == "geometry") return StreakTechnique::GeometryShader;
-    if (n == "instanced" || n == "instanced-quads") return StreakTechnique::Instanced;
-    if (n == "points" || n == "point-sprites" || n == "sprites") return StreakTechnique::PointSprites;
-    return std::nullopt;
-}
 
 std::string_view techniqueShader(StreakTechnique t) {
     switch (t) {

@@ -14,6 +14,7 @@
 #include <set>
 #include <sstream>
 
+#include "prism/rain/rain_classes.hpp"
 #include "prism/scene/stochastic.hpp"
 #include "prism/water/rain_rates.hpp"
 #include "prism/water/water_simulation.hpp"
@@ -200,11 +201,10 @@ RainSettings readRain(const Reader& r, const json& j) {
     r.object(j, "/rain", {"intensity", "rateMmPerHour", "wind", "seed", "radius", "height", "budget"});
     RainSettings s;
     if (j.contains("intensity")) {
-        s.intensityClass = r.string(j["intensity"], "/rain/intensity");
-        static const std::set<std::string> classes = {"drizzle", "light",     "moderate",
-                                                      "heavy",   "excessive", "cloudburst"};
-        if (!classes.count(s.intensityClass))
-            r.fail("/rain/intensity", "one of drizzle, light, moderate, heavy, excessive, cloudburst");
+        const std::string name = r.string(j["intensity"], "/rain/intensity");
+        const auto cls = rain::parseRainClass(name);
+        if (!cls) r.fail("/rain/intensity", "one of " + rain::rainClassNames());
+        s.intensityClass = *cls;
     }
     if (j.contains("rateMmPerHour"))
         s.rateMillimetresPerHour =

@@ -27,14 +27,12 @@
 
 namespace prism::scene {
 
-rain::RainParams rainParamsFor(const RainSettings& settings) {
+rain::RainParams rainParamsFor(const RainSettings& settings, std::optional<float> groundHeight) {
     rain::RainParams p;
     if (settings.rateMillimetresPerHour) {
         p.intensity = static_cast<float>(*settings.rateMillimetresPerHour / 10.0);  // mm/h -> cm/h
     } else {
-        auto cls = rain::parseRainClass(settings.intensityClass);
-        if (!cls) throw rain::RainParameterError("rain intensity class '" + settings.intensityClass + "' is unknown");
-        p.intensity = rain::rainClassInfo(*cls).intensity;
+        p.intensity = rain::rainClassInfo(settings.intensityClass).intensity;
     }
     const glm::vec2 horizontal(settings.wind.x, settings.wind.z);
     p.wind.strength = glm::length(horizontal);
@@ -46,6 +44,7 @@ rain::RainParams rainParamsFor(const RainSettings& settings) {
     if (settings.particleBudget) p.budget = *settings.particleBudget;
     p.lodRings = settings.lodRings;
     p.lodFalloff = settings.lodFalloff;
+    p.groundHeight = groundHeight;
     rain::validate(p);
     return p;
 }
@@ -59,14 +58,13 @@ water::HeightField sceneTerrain(const WaterSettings& w) {
     return water::proceduralTerrain(terrain);
 }
 
+float lowestPoint(const water::HeightField& terrain) {
+    return *std::min_element(terrain.heights.begin(), terrain.heights.end());
+}
+
 rain::RainParams rainParamsFor(const Scene& scene) {
-    rain::RainParams p = rainParamsFor(*scene.rain);
-    if (scene.water) {
-        const water::HeightField t = sceneTerrain(*scene.water);
-        p.groundHeight = *std::min_element(t.heights.begin(), t.heights.end());
-        rain::validate(p);
-    }
-    return p;
+    if (!scene.water) return rainParamsFor(*scene.rain);
+    return rainParamsFor(*scene.rain, lowestPoint(sceneTerrain(*scene.water)));
 }
 
 struct SceneRenderer::DiffractionTableSet {
@@ -83,8 +81,8 @@ std::size_t SceneRenderer::rainProgramsBuilt() const {
     return rainPrograms_ ? rainPrograms_->built() : 0;
 }
 
-void SceneRenderer::drawRain(const Scene& scene) {
-    const rain::RainParams params = rainParamsFor(scene);
+void SceneRenderer::drawRain(const Scene& scene, std::optional<float> terrainLowest) {
+    const rain::RainParams params = rainParamsFor(*scene.rain, terrainLowest);
     if (!rainPrograms_) rainPrograms_ = std::make_unique<rain::RainPrograms>();
     rain::RainSystem system(*rainPrograms_, params, scene.camera.eye);
     ++rainSystemsCreated_;
@@ -104,23 +102,15 @@ void SceneRenderer::drawRain(const Scene& scene) {
     else
         in.lights.lamp.color = glm::vec3(0.0f);
     in.fog = scene.fog ? &*scene.fog : nullptr;
-    const auto technique = rain::parseTechnique(scene.rain->technique);
-    if (!technique)
-        throw rain::RainParameterError("rain technique '" + scene.rain->technique +
-                                       "' is unknown; use gs-quads, instanced-quads or point-sprites");
-    in.technique = *technique;
+    in.technique = scene.rain->technique;
     system.draw(in);
     lastFrame_.variants.push_back("rain " + std::string(rain::techniqueName(in.technique)) + " (" +
                                   std::to_string(system.particleCount()) + " particles)");
 }
 
-void SceneRenderer::drawFogBillboards(const Scene& scene) {
+void SceneRenderer::drawFogBillboards(const Scene& scene, std::optional<float> terrainLowest) {
     // With water, the billboards fade into the terrain's lowest ground.
-    float groundHeight = scene.fogGroundHeight;
-    if (scene.water) {
-        const water::HeightField t = sceneTerrain(*scene.water);
-        groundHeight = *std::min_element(t.heights.begin(), t.heights.end());
-    }
+    const float groundHeight = terrainLowest.value_or(scene.fogGroundHeight);
     const rain::SceneFog fog = rain::fogOverGround(*scene.fog, *scene.fogBillboards, groundHeight);
     if (!rainPrograms_) rainPrograms_ = std::make_unique<rain::RainPrograms>();
     rain::FogSystem system(*rainPrograms_, fog, scene.camera.eye);
@@ -130,10 +120,10 @@ void SceneRenderer::drawFogBillboards(const Scene& scene) {
     lastFrame_.variants.push_back("fog_billboards FOG=1 (" + std::to_string(fog.billboards.count) + " billboards)");
 }
 
-void SceneRenderer::drawWater(const Scene& scene) {
+void SceneRenderer::drawWater(const Scene& scene, water::HeightField terrain) {
     const WaterSettings& w = *scene.water;
     water::WaterSceneDescription d;
-    d.terrain = sceneTerrain(w);
+    d.terrain = std::move(terrain);
     water::PermeabilityOptions soil;
     soil.soilMmPerHour = w.soilMillimetresPerHour;
     soil.clayMmPerHour = std::min(soil.clayMmPerHour, w.soilMillimetresPerHour);
@@ -142,16 +132,13 @@ void SceneRenderer::drawWater(const Scene& scene) {
     if (scene.rain) {  // the scene's rain feeds the water
         if (scene.rain->rateMillimetresPerHour) {
             d.rainMmPerHour = *scene.rain->rateMillimetresPerHour;
-        } else if (auto cls = water::parseRainClass(scene.rain->intensityClass)) {
-            d.rainMmPerHour = water::rainRateMmPerHour(*cls);
+        } else {
+            d.rainMmPerHour = water::rainRateMmPerHour(scene.rain->intensityClass);
         }
     }
     d.lights = scene.lights;
     d.fog = scene.fog;
-    if (w.backend == "fastest") d.backend = water::SimulationBackend::Fastest;  // both steps give the same water
-    else if (w.backend == "cpu") d.backend = water::SimulationBackend::Cpu;
-    else if (w.backend == "gpu") d.backend = water::SimulationBackend::Gpu;
-    else throw std::invalid_argument("water backend '" + w.backend + "' is unknown; use fastest, cpu or gpu");
+    d.backend = w.backend;  // both steps give the same water
     d.sky.cloudCover = w.cloudCover;
     water::WaterScene waterScene(std::move(d));
     ++waterSystemsCreated_;
@@ -223,27 +210,43 @@ void SceneRenderer::drawDiffraction(const Scene& scene, const SceneObject& objec
         std::to_string(textures->bytes() / 1024) + " KiB)");
 }
 
+// One frame: the water scene (terrain, sky, water) first, since objects stand in it, then the
+// objects, then rain and fog billboards over them. The terrain is built once per frame; rain
+// and billboards reach down to its lowest point.
 image::Image8 SceneRenderer::render(const Scene& scene) {
-    if (scene.stochastic) {  // the Monte Carlo effect, on the CPU: no draws
-        lastFrame_ = {};
-        return renderStochastic(*scene.stochastic, scene.width, scene.height);
-    }
-    const render::FeatureSet features = render::featuresOf(scene.lights, scene.fog.has_value());
-    const float aspect = static_cast<float>(scene.width) / static_cast<float>(scene.height);
     lastFrame_ = {};
-
+    if (scene.stochastic) return renderStochastic(*scene.stochastic, scene.width, scene.height);  // CPU, no draws
     gl::Framebuffer fb(scene.width, scene.height, gl::ColorFormat::Rgba8);
     fb.bind();
     const glm::vec4 background = scene.fog ? glm::vec4(scene.fog->color, 1.0f) : scene.background;
     fb.clear({background.r, background.g, background.b, background.a});
-    if (scene.water) {  // terrain, sky and water first; objects stand in them
-        drawWater(scene);
+    std::optional<float> terrainLowest;
+    if (scene.water) {
+        water::HeightField terrain = buildTerrain(*scene.water);
+        terrainLowest = lowestPoint(terrain);
+        drawWater(scene, std::move(terrain));
         fb.bind();
     }
+    drawObjects(scene);
+    if (scene.rain) drawRain(scene, terrainLowest);
+    if (scene.fog && scene.fogBillboards && *scene.fogBillboards > 0.0f) drawFogBillboards(scene, terrainLowest);
+    glFinish();
+    gl::throwIfGlError("rendering " + scene.file);
+    return fb.readImage8();
+}
+
+water::HeightField SceneRenderer::buildTerrain(const WaterSettings& settings) {
+    ++terrainsBuilt_;
+    return sceneTerrain(settings);
+}
+
+// Each object with its shader's variant for the scene's lights and fog, depth-tested, opaque.
+void SceneRenderer::drawObjects(const Scene& scene) {
+    const render::FeatureSet features = render::featuresOf(scene.lights, scene.fog.has_value());
+    const float aspect = static_cast<float>(scene.width) / static_cast<float>(scene.height);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);
-
     for (const auto& object : scene.objects) {
         if (object.shader == "diffraction") {
             drawDiffraction(scene, object, features, aspect);
@@ -254,20 +257,15 @@ image::Image8 SceneRenderer::render(const Scene& scene) {
         const render::VariantValues variant = variantFor(*shader, features, object.variantOverrides);
         gl::Program& program = programs_.get(object.shader, variant);
         render::GpuMesh mesh(render::meshForShader(object.shader, render::namedMesh(object.mesh, object.subdivision)),
-                     programs_.catalog().contractAttributes);
+                             programs_.catalog().contractAttributes);
         program.use();
         render::setFrameUniforms(program, scene.camera, aspect, scene.lights, object.world, object.material,
-                         scene.fog ? &*scene.fog : nullptr);
+                                 scene.fog ? &*scene.fog : nullptr);
         mesh.draw();
         ++lastFrame_.draws;
         lastFrame_.variants.push_back(object.shader + " " +
                                       std::string(programs_.variantOf(object.shader, variant).name));
     }
-    if (scene.rain) drawRain(scene);
-    if (scene.fog && scene.fogBillboards && *scene.fogBillboards > 0.0f) drawFogBillboards(scene);
-    glFinish();
-    gl::throwIfGlError("rendering " + scene.file);
-    return fb.readImage8();
 }
 
 }  // namespace prism::scene

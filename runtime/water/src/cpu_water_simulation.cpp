@@ -259,180 +259,184 @@ void CpuWaterSimulation::rainAndInfiltration(const StepConstants& k, int z0, int
 // neighbour; interior cells read their 8 neighbours directly, border cells clamp.
 void CpuWaterSimulation::tangentialFlowOut(const StepConstants& k, int z0, int z1) {
     const int W = width(), H = height();
+    for (int z = z0; z < z1; ++z) {
+        if (z == 0 || z == H - 1 || W < 3) {
+            for (int x = 0; x < W; ++x) flowOutCell(k, x, z);
+            continue;
+        }
+        flowOutCell(k, 0, z);
+        flowOutInteriorRow(k, z);
+        flowOutCell(k, W - 1, z);
+    }
+}
+
+// The decision for one cell, with clamped neighbours and a target that may be off the map.
+void CpuWaterSimulation::flowOutCell(const StepConstants& k, int x, int z) {
+    const int W = width(), H = height();
     const float* b = terrain_.heights.data();
     const float* s = surf_.data();
-    auto decide = [&](std::size_t i, int x, int z, float nw, float n, float ne, float w, float e, float sw, float so,
-                      float se) {
-        const float gx = ((ne + 2.0f * e + se) - (nw + 2.0f * w + sw)) * k.invEightCell;
+    auto at = [&](int cx, int cz) { return s[cellIndex(std::clamp(cx, 0, W - 1), std::clamp(cz, 0, H - 1), W)]; };
+    const float nw = at(x - 1, z - 1), n = at(x, z - 1), ne = at(x + 1, z - 1), w = at(x - 1, z), e = at(x + 1, z);
+    const float sw = at(x - 1, z + 1), so = at(x, z + 1), se = at(x + 1, z + 1);
+    const std::size_t i = cellIndex(x, z, W);
+    const float gx = ((ne + 2.0f * e + se) - (nw + 2.0f * w + sw)) * k.invEightCell;
+    const float gz = ((sw + 2.0f * so + se) - (nw + 2.0f * n + ne)) * k.invEightCell;
+    const float slope = std::sqrt(gx * gx + gz * gz);
+    const float dx = -gx, dz = -gz;
+    const int ox = std::abs(dx) > kTan22_5 * std::abs(dz) ? signOf(dx) : 0;
+    const int oz = std::abs(dz) > kTan22_5 * std::abs(dx) ? signOf(dz) : 0;
+    float amount = 0.0f;
+    int code = 4;
+    const int tx = x + ox, tz = z + oz;
+    const bool inside = tx >= 0 && tz >= 0 && tx < W && tz < H;
+    if ((ox != 0 || oz != 0) && slope > 0.0f && (inside || k.openBorder != 0)) {
+        const float si = s[i];
+        const float st = inside ? s[cellIndex(tx, tz, W)] : b[i];
+        const float fraction = std::min(k.maxFlowFraction, k.flowRateDt * slope);
+        const float a = fraction * avail_[i];
+        const float drop = std::max(0.0f, (si - st) * 0.5f);
+        amount = std::min(a, drop);
+        code = (oz + 1) * 3 + (ox + 1);
+    }
+    flowAmount_[i] = amount;
+    flowDirection_[i] = static_cast<std::int32_t>(code);
+}
+
+// Interior: every target is inside; the same decision as flowOutCell(), branch-free, so the
+// loop vectorises (the trip count and the pointers are locals that stay in registers).
+void CpuWaterSimulation::flowOutInteriorRow(const StepConstants& k, int z) {
+    const int W = width();
+    const std::size_t w = static_cast<std::size_t>(W);
+    const std::size_t row = cellIndex(0, z, W);
+    const float* __restrict c = surf_.data() + row;
+    const float* __restrict up = c - w;
+    const float* __restrict down = c + w;
+    const float* __restrict avail = avail_.data() + row;
+    float* __restrict amountOut = flowAmount_.data() + row;
+    std::int32_t* __restrict codeOut = flowDirection_.data() + row;
+    const int interiorEnd = W - 1;
+    for (int x = 1; x < interiorEnd; ++x) {
+        const float nw = up[x - 1], n = up[x], ne = up[x + 1], we = c[x - 1], e = c[x + 1];
+        const float sw = down[x - 1], so = down[x], se = down[x + 1], si = c[x];
+        const float gx = ((ne + 2.0f * e + se) - (nw + 2.0f * we + sw)) * k.invEightCell;
         const float gz = ((sw + 2.0f * so + se) - (nw + 2.0f * n + ne)) * k.invEightCell;
         const float slope = std::sqrt(gx * gx + gz * gz);
         const float dx = -gx, dz = -gz;
-        const int ox = std::abs(dx) > kTan22_5 * std::abs(dz) ? signOf(dx) : 0;
-        const int oz = std::abs(dz) > kTan22_5 * std::abs(dx) ? signOf(dz) : 0;
-        float amount = 0.0f;
-        int code = 4;
-        const int tx = x + ox, tz = z + oz;
-        const bool inside = tx >= 0 && tz >= 0 && tx < W && tz < H;
-        if ((ox != 0 || oz != 0) && slope > 0.0f && (inside || k.openBorder != 0)) {
-            const float si = s[i];
-            const float st = inside ? s[cellIndex(tx, tz, W)] : b[i];
-            const float fraction = std::min(k.maxFlowFraction, k.flowRateDt * slope);
-            const float a = fraction * avail_[i];
-            const float drop = std::max(0.0f, (si - st) * 0.5f);
-            amount = std::min(a, drop);
-            code = (oz + 1) * 3 + (ox + 1);
-        }
-        flowAmount_[i] = amount;
-        flowDirection_[i] = static_cast<std::int32_t>(code);
-    };
-    auto clamped = [&](int x, int z) { return s[cellIndex(std::clamp(x, 0, W - 1), std::clamp(z, 0, H - 1), W)]; };
-    auto border = [&](int x, int z) {
-        decide(cellIndex(x, z, W), x, z, clamped(x - 1, z - 1), clamped(x, z - 1), clamped(x + 1, z - 1),
-               clamped(x - 1, z), clamped(x + 1, z), clamped(x - 1, z + 1), clamped(x, z + 1), clamped(x + 1, z + 1));
-    };
-    const std::size_t w = static_cast<std::size_t>(W);
-    for (int z = z0; z < z1; ++z) {
-        if (z == 0 || z == H - 1 || W < 3) {
-            for (int x = 0; x < W; ++x) border(x, z);
-            continue;
-        }
-        border(0, z);
-        // Interior: every target is inside; the same decision as decide(), branch-free.
-        const std::size_t row = cellIndex(0, z, W);
-        const float* __restrict c = s + row;
-        const float* __restrict up = c - w;
-        const float* __restrict down = c + w;
-        const float* __restrict avail = avail_.data() + row;
-        float* __restrict amountOut = flowAmount_.data() + row;
-        std::int32_t* __restrict codeOut = flowDirection_.data() + row;
-        // Locals the lambdas do not capture (by reference): the trip count and the
-        // pointers stay in registers, so the loop vectorises.
-        const int interiorEnd = W - 1;
-        for (int x = 1; x < interiorEnd; ++x) {
-            const float nw = up[x - 1], n = up[x], ne = up[x + 1], we = c[x - 1], e = c[x + 1];
-            const float sw = down[x - 1], so = down[x], se = down[x + 1], si = c[x];
-            const float gx = ((ne + 2.0f * e + se) - (nw + 2.0f * we + sw)) * k.invEightCell;
-            const float gz = ((sw + 2.0f * so + se) - (nw + 2.0f * n + ne)) * k.invEightCell;
-            const float slope = std::sqrt(gx * gx + gz * gz);
-            const float dx = -gx, dz = -gz;
-            const float adx = std::abs(dx), adz = std::abs(dz);
-            // ox, oz as decide(): the sign of the component that is not too small; the
-            // target's surface picked by masks (written as chained selects so the loop
-            // vectorises).
-            const bool useX = adx > kTan22_5 * adz, useZ = adz > kTan22_5 * adx;
-            const bool xPos = useX & (dx > 0.0f), xNeg = useX & (dx < 0.0f);
-            const bool zPos = useZ & (dz > 0.0f), zNeg = useZ & (dz < 0.0f);
-            const int ox = static_cast<int>(xPos) - static_cast<int>(xNeg);
-            const int oz = static_cast<int>(zPos) - static_cast<int>(zNeg);
-            float northRow = n;
-            northRow = xNeg ? nw : northRow;
-            northRow = xPos ? ne : northRow;
-            float centreRow = si;
-            centreRow = xNeg ? we : centreRow;
-            centreRow = xPos ? e : centreRow;
-            float southRow = so;
-            southRow = xNeg ? sw : southRow;
-            southRow = xPos ? se : southRow;
-            float st = centreRow;
-            st = zNeg ? northRow : st;
-            st = zPos ? southRow : st;
-            const float flow = k.flowRateDt * slope;
-            const float fraction = flow < k.maxFlowFraction ? flow : k.maxFlowFraction;
-            const float a = fraction * avail[x];
-            const float half = (si - st) * 0.5f;
-            const float drop = 0.0f < half ? half : 0.0f;
-            const float amount = drop < a ? drop : a;
-            const bool moves = ((ox != 0) | (oz != 0)) & (slope > 0.0f);
-            amountOut[x] = moves ? amount : 0.0f;
-            codeOut[x] = static_cast<std::int32_t>(moves ? (oz + 1) * 3 + (ox + 1) : 4);
-        }
-        border(W - 1, z);
+        const float adx = std::abs(dx), adz = std::abs(dz);
+        // ox, oz as flowOutCell(): the sign of the component that is not too small; the
+        // target's surface picked by masks (written as chained selects so the loop
+        // vectorises).
+        const bool useX = adx > kTan22_5 * adz, useZ = adz > kTan22_5 * adx;
+        const bool xPos = useX & (dx > 0.0f), xNeg = useX & (dx < 0.0f);
+        const bool zPos = useZ & (dz > 0.0f), zNeg = useZ & (dz < 0.0f);
+        const int ox = static_cast<int>(xPos) - static_cast<int>(xNeg);
+        const int oz = static_cast<int>(zPos) - static_cast<int>(zNeg);
+        float northRow = n;
+        northRow = xNeg ? nw : northRow;
+        northRow = xPos ? ne : northRow;
+        float centreRow = si;
+        centreRow = xNeg ? we : centreRow;
+        centreRow = xPos ? e : centreRow;
+        float southRow = so;
+        southRow = xNeg ? sw : southRow;
+        southRow = xPos ? se : southRow;
+        float st = centreRow;
+        st = zNeg ? northRow : st;
+        st = zPos ? southRow : st;
+        const float flow = k.flowRateDt * slope;
+        const float fraction = flow < k.maxFlowFraction ? flow : k.maxFlowFraction;
+        const float a = fraction * avail[x];
+        const float half = (si - st) * 0.5f;
+        const float drop = 0.0f < half ? half : 0.0f;
+        const float amount = drop < a ? drop : a;
+        const bool moves = ((ox != 0) | (oz != 0)) & (slope > 0.0f);
+        amountOut[x] = moves ? amount : 0.0f;
+        codeOut[x] = static_cast<std::int32_t>(moves ? (oz + 1) * 3 + (ox + 1) : 4);
     }
 }
 
 // 3b (water_flow_gather.comp): each cell adds what its neighbours send it and subtracts
 // what it sends; water sent off an open border is counted as lost.
 void CpuWaterSimulation::tangentialFlowGather(int z0, int z1) {
-    const WaterOut write{terrain_.heights.data(), hiOut_.data(), loOut_.data(), surfOut_.data(), availOut_.data()};
-    const float* __restrict hiIn = hi_.data();
-    const float* __restrict loIn = lo_.data();
     const int W = width(), H = height();
-    const float* amountOf = flowAmount_.data();
-    const std::int32_t* codeOf = flowDirection_.data();
-    auto inside = [&](int x, int z) { return x >= 0 && z >= 0 && x < W && z < H; };
-    auto border = [&](int x, int z, float& net, float& lost) {
-        const std::size_t i = cellIndex(x, z, W);
-        const int code = codeOf[i];
-        if (code != 4 && amountOf[i] > 0.0f) {
-            net = -amountOf[i];
-            if (!inside(x + code % 3 - 1, z + code / 3 - 1)) lost = amountOf[i];
-        }
-        for (int oz = -1; oz <= 1; ++oz)
-            for (int ox = -1; ox <= 1; ++ox) {
-                if (ox == 0 && oz == 0) continue;
-                const int nx = x + ox, nz = z + oz;
-                if (!inside(nx, nz)) continue;
-                const std::size_t j = cellIndex(nx, nz, W);
-                const int ncode = codeOf[j];
-                if (ncode != 4 && ncode % 3 - 1 == -ox && ncode / 3 - 1 == -oz) net = net + amountOf[j];
-            }
-    };
-    const std::size_t w = static_cast<std::size_t>(W);
-    auto borderCell = [&](int x, int z) {
-        float net = 0.0f, lost = 0.0f;
-        border(x, z, net, lost);
-        const std::size_t i = cellIndex(x, z, W);
-        float h = hiIn[i], l = loIn[i];
-        dfAdd(h, l, net);
-        write(i, h, l);
-        return lost;
-    };
     for (int z = z0; z < z1; ++z) {
         double lostRow = 0.0;
         if (z == 0 || z == H - 1 || W < 3) {
-            for (int x = 0; x < W; ++x) lostRow += borderCell(x, z);
+            for (int x = 0; x < W; ++x) lostRow += gatherCell(x, z);
             lostRow_[static_cast<std::size_t>(z)] = lostRow;
             continue;
         }
-        lostRow += borderCell(0, z);
-        // Interior: every target is inside, nothing is lost. A neighbour at (ox, oz)
-        // sends here when its code points back: (1 - oz) * 3 + (1 - ox). Adding +0 for a
-        // neighbour that sends nothing changes no bit: net is never -0 (it starts at +0
-        // or below zero, and amounts are >= +0).
-        const std::size_t row = cellIndex(0, z, W);
-        const float* __restrict am = amountOf + row;
-        const float* __restrict amN = am - w;
-        const float* __restrict amS = am + w;
-        const std::int32_t* __restrict cd = codeOf + row;
-        const std::int32_t* __restrict cdN = cd - w;
-        const std::int32_t* __restrict cdS = cd + w;
-        // Locals the lambdas do not capture (by reference): the trip count and the
-        // pointers stay in registers, so the loop vectorises.
-        const int interiorEnd = W - 1;
-        const WaterOut put = write;
-        const float* __restrict hiRow = hiIn;
-        const float* __restrict loRow = loIn;
-        for (int x = 1; x < interiorEnd; ++x) {
-            // Every amount is loaded first, so the selects need no conditional loads.
-            const float out = am[x], fromNw = amN[x - 1], fromN = amN[x], fromNe = amN[x + 1];
-            const float fromW = am[x - 1], fromE = am[x + 1], fromSw = amS[x - 1], fromS = amS[x],
-                        fromSe = amS[x + 1];
-            float net = ((cd[x] != 4) & (out > 0.0f)) ? -out : 0.0f;
-            net = net + (cdN[x - 1] == 8 ? fromNw : 0.0f);
-            net = net + (cdN[x] == 7 ? fromN : 0.0f);
-            net = net + (cdN[x + 1] == 6 ? fromNe : 0.0f);
-            net = net + (cd[x - 1] == 5 ? fromW : 0.0f);
-            net = net + (cd[x + 1] == 3 ? fromE : 0.0f);
-            net = net + (cdS[x - 1] == 2 ? fromSw : 0.0f);
-            net = net + (cdS[x] == 1 ? fromS : 0.0f);
-            net = net + (cdS[x + 1] == 0 ? fromSe : 0.0f);
-            const std::size_t i = row + static_cast<std::size_t>(x);
-            float h = hiRow[i], l = loRow[i];
-            dfAdd(h, l, net);
-            put(i, h, l);
-        }
-        lostRow += borderCell(W - 1, z);
+        lostRow += gatherCell(0, z);
+        gatherInteriorRow(z);
+        lostRow += gatherCell(W - 1, z);
         lostRow_[static_cast<std::size_t>(z)] = lostRow;
+    }
+}
+
+// One cell with every neighbour checked against the map's edges.
+float CpuWaterSimulation::gatherCell(int x, int z) {
+    const WaterOut write{terrain_.heights.data(), hiOut_.data(), loOut_.data(), surfOut_.data(), availOut_.data()};
+    const int W = width(), H = height();
+    const float* amountOf = flowAmount_.data();
+    const std::int32_t* codeOf = flowDirection_.data();
+    auto inside = [&](int cx, int cz) { return cx >= 0 && cz >= 0 && cx < W && cz < H; };
+    const std::size_t i = cellIndex(x, z, W);
+    float net = 0.0f, lost = 0.0f;
+    const int code = codeOf[i];
+    if (code != 4 && amountOf[i] > 0.0f) {
+        net = -amountOf[i];
+        if (!inside(x + code % 3 - 1, z + code / 3 - 1)) lost = amountOf[i];
+    }
+    for (int oz = -1; oz <= 1; ++oz)
+        for (int ox = -1; ox <= 1; ++ox) {
+            if (ox == 0 && oz == 0) continue;
+            const int nx = x + ox, nz = z + oz;
+            if (!inside(nx, nz)) continue;
+            const std::size_t j = cellIndex(nx, nz, W);
+            const int ncode = codeOf[j];
+            if (ncode != 4 && ncode % 3 - 1 == -ox && ncode / 3 - 1 == -oz) net = net + amountOf[j];
+        }
+    float h = hi_[i], l = lo_[i];
+    dfAdd(h, l, net);
+    write(i, h, l);
+    return lost;
+}
+
+// Interior: every target is inside, nothing is lost. A neighbour at (ox, oz) sends here when
+// its code points back: (1 - oz) * 3 + (1 - ox). Adding +0 for a neighbour that sends
+// nothing changes no bit: net is never -0 (it starts at +0 or below zero, and amounts are
+// >= +0). Branch-free with local restrict pointers, so the loop vectorises.
+void CpuWaterSimulation::gatherInteriorRow(int z) {
+    const WaterOut put{terrain_.heights.data(), hiOut_.data(), loOut_.data(), surfOut_.data(), availOut_.data()};
+    const int W = width();
+    const std::size_t w = static_cast<std::size_t>(W);
+    const std::size_t row = cellIndex(0, z, W);
+    const float* __restrict am = flowAmount_.data() + row;
+    const float* __restrict amN = am - w;
+    const float* __restrict amS = am + w;
+    const std::int32_t* __restrict cd = flowDirection_.data() + row;
+    const std::int32_t* __restrict cdN = cd - w;
+    const std::int32_t* __restrict cdS = cd + w;
+    const float* __restrict hiRow = hi_.data();
+    const float* __restrict loRow = lo_.data();
+    const int interiorEnd = W - 1;
+    for (int x = 1; x < interiorEnd; ++x) {
+        // Every amount is loaded first, so the selects need no conditional loads.
+        const float out = am[x], fromNw = amN[x - 1], fromN = amN[x], fromNe = amN[x + 1];
+        const float fromW = am[x - 1], fromE = am[x + 1], fromSw = amS[x - 1], fromS = amS[x], fromSe = amS[x + 1];
+        float net = ((cd[x] != 4) & (out > 0.0f)) ? -out : 0.0f;
+        net = net + (cdN[x - 1] == 8 ? fromNw : 0.0f);
+        net = net + (cdN[x] == 7 ? fromN : 0.0f);
+        net = net + (cdN[x + 1] == 6 ? fromNe : 0.0f);
+        net = net + (cd[x - 1] == 5 ? fromW : 0.0f);
+        net = net + (cd[x + 1] == 3 ? fromE : 0.0f);
+        net = net + (cdS[x - 1] == 2 ? fromSw : 0.0f);
+        net = net + (cdS[x] == 1 ? fromS : 0.0f);
+        net = net + (cdS[x + 1] == 0 ? fromSe : 0.0f);
+        const std::size_t i = row + static_cast<std::size_t>(x);
+        float h = hiRow[i], l = loRow[i];
+        dfAdd(h, l, net);
+        put(i, h, l);
     }
 }
 

@@ -78,23 +78,60 @@ void validate(const HeightField& f, const char* what) {
     if (!std::isfinite(f.origin)) throw std::invalid_argument(w + ": the origin must be a finite height");
 }
 
+namespace {
+
+// What a PNG read keeps across libpng's longjmp: everything that changes after setjmp lives
+// on the heap behind a pointer fixed before it.
+struct PngReadState {
+    std::string libpngError;
+    std::string problem;  // why the header is no map's (mapProblem)
+    std::vector<unsigned char> pixels;
+    std::vector<png_bytep> rows;
+    png_uint_32 w = 0, h = 0;
+    int depth = 0, channels = 0;
+};
+
+// Why a PNG with this header is no height or permeability map; empty when it is one.
+std::string mapProblem(png_uint_32 w, png_uint_32 h, int colorType, int depth) {
+    if (w > kMaxMapSide || h > kMaxMapSide || static_cast<std::uint64_t>(w) * h > kMaxMapCells)
+        return std::to_string(w) + "x" + std::to_string(h) +
+               " pixels is past the limit for height and permeability maps (" + std::to_string(kMaxMapSide) +
+               " a side, " + std::to_string(kMaxMapCells) + " in all)";
+    if (colorType == PNG_COLOR_TYPE_PALETTE)
+        return "palette PNG; height and permeability maps must be greyscale (or RGB, red channel) with 8 or 16 bits";
+    if (depth != 8 && depth != 16)
+        return std::to_string(depth) + "-bit PNG; height and permeability maps must have 8 or 16 bits per sample";
+    return {};
+}
+
+// The first channel of every pixel (grey, or red of RGB), 16-bit samples little-endian.
+GreyImage firstChannel(const PngReadState& state) {
+    const png_uint_32 w = state.w, h = state.h;
+    GreyImage image;
+    image.width = static_cast<int>(w);
+    image.height = static_cast<int>(h);
+    image.bitDepth = state.depth;
+    image.values.resize(static_cast<std::size_t>(w) * h);
+    const std::size_t bytesPerSample = state.depth == 16 ? 2 : 1;
+    for (png_uint_32 y = 0; y < h; ++y)
+        for (png_uint_32 x = 0; x < w; ++x) {
+            const unsigned char* p =
+                state.rows[y] + static_cast<std::size_t>(x) * static_cast<std::size_t>(state.channels) * bytesPerSample;
+            image.values[static_cast<std::size_t>(y) * w + x] =
+                state.depth == 16 ? static_cast<std::uint16_t>(p[0] | (p[1] << 8)) : p[0];
+        }
+    return image;
+}
+
+}  // namespace
+
+// libpng reports errors by longjmp; they are rethrown as exceptions naming the file.
 GreyImage readGreyPng(const std::filesystem::path& path) {
     std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
     if (!file) fail(path, std::filesystem::exists(path) ? "cannot be opened for reading" : "no such file");
     unsigned char signature[8] = {};
     if (std::fread(signature, 1, 8, file.get()) != 8 || png_sig_cmp(signature, 0, 8) != 0) fail(path, "not a PNG file");
-
-    // libpng reports errors by longjmp: everything that changes after setjmp lives on
-    // the heap behind a pointer fixed before it, and errors are rethrown as exceptions.
-    struct ReadState {
-        std::string libpngError;
-        std::string problem;
-        std::vector<unsigned char> pixels;
-        std::vector<png_bytep> rows;
-        png_uint_32 w = 0, h = 0;
-        int depth = 0, channels = 0;
-    };
-    const auto state = std::make_unique<ReadState>();
+    const auto state = std::make_unique<PngReadState>();
     png_structp png =
         png_create_read_struct(PNG_LIBPNG_VER_STRING, &state->libpngError, pngErrorHandler, pngWarningHandler);
     if (!png) fail(path, "libpng could not be initialised");
@@ -114,18 +151,7 @@ GreyImage readGreyPng(const std::filesystem::path& path) {
     state->w = png_get_image_width(png, info);
     state->h = png_get_image_height(png, info);
     state->depth = png_get_bit_depth(png, info);
-    const int colorType = png_get_color_type(png, info);
-    if (state->w > kMaxMapSide || state->h > kMaxMapSide ||
-        static_cast<std::uint64_t>(state->w) * state->h > kMaxMapCells)
-        state->problem = std::to_string(state->w) + "x" + std::to_string(state->h) +
-                         " pixels is past the limit for height and permeability maps (" + std::to_string(kMaxMapSide) +
-                         " a side, " + std::to_string(kMaxMapCells) + " in all)";
-    else if (colorType == PNG_COLOR_TYPE_PALETTE)
-        state->problem =
-            "palette PNG; height and permeability maps must be greyscale (or RGB, red channel) with 8 or 16 bits";
-    else if (state->depth != 8 && state->depth != 16)
-        state->problem =
-            std::to_string(state->depth) + "-bit PNG; height and permeability maps must have 8 or 16 bits per sample";
+    state->problem = mapProblem(state->w, state->h, png_get_color_type(png, info), state->depth);
     if (!state->problem.empty()) {
         png_destroy_read_struct(&png, &info, nullptr);
         fail(path, state->problem);
@@ -140,24 +166,7 @@ GreyImage readGreyPng(const std::filesystem::path& path) {
     png_read_image(png, state->rows.data());
     png_read_end(png, nullptr);
     png_destroy_read_struct(&png, &info, nullptr);
-
-    const png_uint_32 w = state->w, h = state->h;
-    const int depth = state->depth, channels = state->channels;
-    const auto& rows = state->rows;
-    GreyImage image;
-    image.width = static_cast<int>(w);
-    image.height = static_cast<int>(h);
-    image.bitDepth = depth;
-    image.values.resize(static_cast<std::size_t>(w) * h);
-    const std::size_t bytesPerSample = depth == 16 ? 2 : 1;
-    for (png_uint_32 y = 0; y < h; ++y)
-        for (png_uint_32 x = 0; x < w; ++x) {
-            const unsigned char* p =
-                rows[y] + static_cast<std::size_t>(x) * static_cast<std::size_t>(channels) * bytesPerSample;
-            image.values[static_cast<std::size_t>(y) * w + x] =
-                depth == 16 ? static_cast<std::uint16_t>(p[0] | (p[1] << 8)) : p[0];
-        }
-    return image;
+    return firstChannel(*state);
 }
 
 void writeGreyPng(const std::filesystem::path& path, const GreyImage& image) {

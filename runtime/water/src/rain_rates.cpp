@@ -20,9 +20,7 @@ double parseRainRateMmPerHour(std::string_view text) {
     auto [ptr, ec] = std::from_chars(text.data(), end, value);
     if (ec == std::errc() && ptr == end && std::isfinite(value) && value >= 0.0 && value <= kMaxRainMmPerHour)
         return value;
-    std::string names;
-    for (const auto& row : rainClassTable()) names += std::string(names.empty() ? "" : ", ") + std::string(row.name);
-    throw std::invalid_argument("rain '" + std::string(text) + "' is neither a rain class (" + names +
+    throw std::invalid_argument("rain '" + std::string(text) + "' is neither a rain class (" + rain::rainClassNames() +
                                 ", none) nor a number of mm/h in [0, " + std::to_string(int(kMaxRainMmPerHour)) +
                                 "]");
 }

@@ -198,4 +198,22 @@ MassLedger WaterSimulation::ledger() const {
     return l;
 }
 
+std::string_view simulationBackendName(SimulationBackend backend) {
+    switch (backend) {
+        case SimulationBackend::Cpu:
+            return "cpu";
+        case SimulationBackend::Gpu:
+            return "gpu";
+        case SimulationBackend::Fastest:
+            return "fastest";
+    }
+    return "?";
+}
+
+std::optional<SimulationBackend> parseSimulationBackend(std::string_view name) {
+    for (SimulationBackend b : {SimulationBackend::Cpu, SimulationBackend::Gpu, SimulationBackend::Fastest})
+        if (simulationBackendName(b) == name) return b;
+    return std::nullopt;
+}
+
 }  // namespace prism::water

@@ -19,6 +19,7 @@
 
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 
 namespace prism::rain {
@@ -44,6 +45,8 @@ std::span<const RainClassInfo> rainClasses();  // the six rows, lightest first
 const RainClassInfo& rainClassInfo(RainClass id);
 // "drizzle" ... "cloudburst" (case-insensitive); nullopt otherwise.
 std::optional<RainClass> parseRainClass(std::string_view name);
+// "drizzle, light, moderate, heavy, excessive, cloudburst": the names, for messages.
+std::string rainClassNames();
 // The class's intensity in mm/h (inchesPerHour × 25.4, in double).
 double rainRateMmPerHour(RainClass id);
 

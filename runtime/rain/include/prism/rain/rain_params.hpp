@@ -59,6 +59,12 @@ struct WindParams {
     float strength = 0.0f;                  // m/s, >= 0
 };
 
+// How streaks are drawn (prism/rain/rain_system.hpp): quads from a geometry shader, instanced
+// quads, or point sprites. Plain data here, so a scene can name one without a GL context.
+enum class StreakTechnique { GeometryShader, Instanced, PointSprites };
+std::string_view techniqueName(StreakTechnique t);                     // "gs-quads", "instanced-quads", "point-sprites"
+std::optional<StreakTechnique> parseTechnique(std::string_view name);  // also "gs", "instanced", "points"
+
 // How streaks look (used when drawing only).
 struct StreakStyle {
     float exposure = 1.0f / 30.0f;  // s: streak length = speed x exposure

@@ -36,9 +36,7 @@
 
 namespace prism::rain {
 
-enum class StreakTechnique { GeometryShader, Instanced, PointSprites };
-std::string_view techniqueName(StreakTechnique t);                     // "gs-quads", "instanced-quads", "point-sprites"
-std::optional<StreakTechnique> parseTechnique(std::string_view name);  // also "gs", "instanced", "points"
+// StreakTechnique, techniqueName and parseTechnique: prism/rain/rain_params.hpp.
 std::string_view techniqueShader(StreakTechnique t);                   // rain_streaks, rain_instanced, rain_points
 
 // The rain scene's lights: ambient, a directional sun and a lamp with falloff

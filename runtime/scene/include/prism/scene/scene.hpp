@@ -29,8 +29,10 @@
 #include "prism/diffraction/material.hpp"
 #include "prism/bluenoise/samplers.hpp"
 #include "prism/bluenoise/soft_shadows.hpp"
+#include "prism/rain/rain_params.hpp"
 #include "prism/view/camera.hpp"
 #include "prism/view/lighting.hpp"
+#include "prism/water/water_simulation.hpp"
 
 namespace prism::scene {
 
@@ -50,7 +52,7 @@ struct SceneObject {
 
 // Rain as a scene asks for it: an intensity class (the seed's Table 2) or a rate.
 struct RainSettings {
-    std::string intensityClass = "moderate";       // drizzle, light, moderate, heavy, excessive, cloudburst
+    rain::RainClass intensityClass = rain::RainClass::Moderate;  // "intensity": drizzle .. cloudburst
     std::optional<double> rateMillimetresPerHour;  // overrides the class when given
     glm::vec3 wind{0.0f};
     unsigned seed = 1;
@@ -58,11 +60,10 @@ struct RainSettings {
     float cylinderHeight = 20.0f;
     std::optional<unsigned> particleBudget;
     // Set in code (the viewer's rain panel), not read from JSON: the level-of-detail rings
-    // and their density falloff (prism/rain/rain_params.hpp), and the streak technique,
-    // "gs-quads", "instanced-quads" or "point-sprites" (prism/rain/rain_system.hpp).
+    // and their density falloff, and the streak technique (prism/rain/rain_params.hpp).
     int lodRings = 4;
     float lodFalloff = 0.5f;
-    std::string technique = "gs-quads";
+    rain::StreakTechnique technique = rain::StreakTechnique::GeometryShader;
 };
 
 // Water as a scene asks for it (docs/water.md): a procedural terrain of gridSize^2
@@ -77,9 +78,9 @@ struct WaterSettings {
     unsigned seed = 1;                         // of the procedural terrain
     float relief = 3.0f;                       // m between the lowest and highest hills
     float cloudCover = 0.6f;                   // of the procedural sky: 0 clear (bright) .. 1 overcast
-    // Set in code (the viewer's water panel), not read from JSON: the water step, "fastest"
-    // (measured once per renderer, prism/water/backend_choice.hpp), "cpu" or "gpu".
-    std::string backend = "fastest";
+    // Set in code (the viewer's water panel), not read from JSON: the water step, Fastest
+    // (measured once per renderer, prism/water/backend_choice.hpp), Cpu or Gpu.
+    water::SimulationBackend backend = water::SimulationBackend::Fastest;
 };
 
 // A Monte Carlo effect as a scene asks for it (docs/scenes.md, docs/bluenoise.md): soft

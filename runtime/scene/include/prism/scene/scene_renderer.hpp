@@ -24,6 +24,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,14 +44,16 @@ struct HeightField;
 namespace prism::scene {
 
 // The rain system's parameters for a scene's rain settings (intensity class or rate,
-// wind as a world vector, seed, cylinder, budget). Throws rain::RainParameterError.
-rain::RainParams rainParamsFor(const RainSettings& settings);
-// The same for a whole scene: with water, the rain cylinder's bottom reaches down to the
-// lowest point of the scene's terrain (RainParams::groundHeight), so the drops reach the
-// puddles they feed. Needs scene.rain.
+// wind as a world vector, seed, cylinder, budget), with the cylinder's bottom reaching down
+// to groundHeight when given (RainParams::groundHeight). Throws rain::RainParameterError.
+rain::RainParams rainParamsFor(const RainSettings& settings, std::optional<float> groundHeight = std::nullopt);
+// The same for a whole scene: with water, the ground is the lowest point of the scene's
+// terrain, so the drops reach the puddles they feed. Needs scene.rain.
 rain::RainParams rainParamsFor(const Scene& scene);
 // The procedural terrain a scene's water settings describe (grid, cell size, seed).
 water::HeightField sceneTerrain(const WaterSettings& settings);
+// The terrain's lowest height: where rain and fog billboards reach down to in a scene with water.
+float lowestPoint(const water::HeightField& terrain);
 
 struct SceneFrameInfo {
     std::size_t draws = 0;
@@ -73,6 +76,9 @@ class SceneRenderer {
     std::size_t rainProgramsBuilt() const;
     // Water maps created so far: one per rendered frame of a scene with water.
     std::size_t waterSystemsCreated() const { return waterSystemsCreated_; }
+    // Procedural terrains built so far: one per rendered frame of a scene with water, shared
+    // by the water, the rain and the fog billboards of that frame.
+    std::size_t terrainsBuilt() const { return terrainsBuilt_; }
     // Diffraction table sets built so far: one per distinct diffraction material (kept
     // while the renderer lives, the kDiffractionTablesKept most recent), none for scenes
     // without one; and the diffraction programs built so far.
@@ -87,9 +93,11 @@ class SceneRenderer {
     static constexpr std::size_t kDiffractionTablesKept = 8;
 
   private:
-    void drawRain(const Scene& scene);
-    void drawWater(const Scene& scene);
-    void drawFogBillboards(const Scene& scene);
+    water::HeightField buildTerrain(const WaterSettings& settings);  // sceneTerrain(), counted
+    void drawObjects(const Scene& scene);
+    void drawRain(const Scene& scene, std::optional<float> terrainLowest);
+    void drawWater(const Scene& scene, water::HeightField terrain);
+    void drawFogBillboards(const Scene& scene, std::optional<float> terrainLowest);
     void drawDiffraction(const Scene& scene, const SceneObject& object, const render::FeatureSet& features,
                          float aspect);
 
@@ -98,6 +106,7 @@ class SceneRenderer {
     std::unique_ptr<rain::RainPrograms> rainPrograms_;
     std::size_t rainSystemsCreated_ = 0;
     std::size_t waterSystemsCreated_ = 0;
+    std::size_t terrainsBuilt_ = 0;
     std::unique_ptr<render::ProgramCache> diffractionPrograms_;  // created with the first diffraction object
     std::size_t diffractionTablesBuilt_ = 0;
     struct DiffractionTableSet;  // a material, its N and its uploaded tables

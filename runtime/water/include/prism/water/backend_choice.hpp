@@ -22,8 +22,6 @@
 
 namespace prism::water {
 
-enum class SimulationBackend { Cpu, Gpu, Fastest };
-
 struct BackendChoice {
     SimulationBackend backend = SimulationBackend::Cpu;  // Cpu or Gpu
     double cpuMsPerSubstep = 0.0;                        // median of the measured substeps

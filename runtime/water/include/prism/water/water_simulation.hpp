@@ -49,6 +49,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <cstddef>
 #include <span>
 #include <string_view>
@@ -57,6 +58,12 @@
 #include "prism/water/height_field.hpp"
 
 namespace prism::water {
+
+// Which implementation runs the step: the CPU reference, the compute shaders, or the faster
+// of the two on the current renderer, measured once (prism/water/backend_choice.hpp).
+enum class SimulationBackend { Cpu, Gpu, Fastest };
+std::string_view simulationBackendName(SimulationBackend backend);            // "cpu", "gpu", "fastest"
+std::optional<SimulationBackend> parseSimulationBackend(std::string_view name);  // one of those names
 
 enum class BorderMode {
     Open,    // tangential flow carries water off the map (the ledger's "lost through the border")
@@ -226,7 +233,11 @@ class CpuWaterSimulation final : public WaterSimulation {
     // Each pass works on rows [z0, z1); those that change the water write the *Out arrays.
     void rainAndInfiltration(const StepConstants& k, int z0, int z1);
     void tangentialFlowOut(const StepConstants& k, int z0, int z1);
+    void flowOutCell(const StepConstants& k, int x, int z);  // any cell, neighbours clamped
+    void flowOutInteriorRow(const StepConstants& k, int z);  // cells 1 .. W-2 of an inner row
     void tangentialFlowGather(int z0, int z1);
+    float gatherCell(int x, int z);  // any cell; returns the water it sent off the map
+    void gatherInteriorRow(int z);   // cells 1 .. W-2 of an inner row: nothing is lost
     void distributionVelocity(const StepConstants& k, int z0, int z1);
     void distributionApply(const StepConstants& k, int z0, int z1);
     void smoothing(const StepConstants& k, int z0, int z1);
