@@ -11,7 +11,7 @@ PACKAGES=(
   libpng-dev python3-glad
   libkissfft-dev colord-data
   libgtest-dev libgmock-dev libbenchmark-dev
-  libcli11-dev libfmt-dev nlohmann-json3-dev
+  libcli11-dev libfmt-dev nlohmann-json3-dev libxxhash-dev
   libtinyobjloader-dev libstb-dev
   xvfb xauth
   clang-14 libclang-rt-14-dev

@@ -13,6 +13,7 @@
 #include "include_resolver.hpp"
 #include "job_pool.hpp"
 #include "module_naming.hpp"
+#include "prism/hash/content_hash.hpp"
 #include "shown_path.hpp"
 #include "validator.hpp"
 #include "variant_resolution.hpp"
@@ -307,16 +308,9 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
 
 
 std::string fingerprint(const ResolvedCatalog& rc) {
-    // FNV-1a over the resolved texts, paths and everything else the generated files print.
-    std::uint64_t h = 1469598103934665603ull;
-    auto mix = [&](std::string_view s) {
-        for (unsigned char c : s) {
-            h ^= c;
-            h *= 1099511628211ull;
-        }
-        h ^= 0xff;
-        h *= 1099511628211ull;
-    };
+    // Over the resolved texts, paths and everything else the generated files print.
+    hash::ContentHash h;
+    const auto mix = [&](std::string_view part) { h.add(part); };
     const auto& d = rc.data;
     mix(PRISM_VERSION);
     mix(d.nameSpace);
@@ -352,9 +346,7 @@ std::string fingerprint(const ResolvedCatalog& rc) {
         mix(u.type);
         mix(std::to_string(u.array));
     }
-    char buf[17];
-    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-    return buf;
+    return h.hex64();
 }
 
 }  // namespace prism::shaderc

@@ -4,11 +4,11 @@
 // and its own body), and so is a module's own text. The runtime concatenates a stage's
 // pieces (prism::catalog::joinChunks) once per program it builds.
 #include <algorithm>
-#include <cstdio>
 #include <map>
 #include <sstream>
 
 #include "header_writer.hpp"
+#include "prism/hash/content_hash.hpp"
 
 namespace prism::shaderc {
 namespace {
@@ -278,15 +278,8 @@ class DataWriter {
 
 constexpr std::string_view kHeaderHashLine = "// ---- header hash: ";
 
-std::string textHash(const std::string& text) {  // FNV-1a, 64 bits
-    std::uint64_t h = 1469598103934665603ull;
-    for (unsigned char c : text) {
-        h ^= c;
-        h *= 1099511628211ull;
-    }
-    char buf[17];
-    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-    return buf;
+std::string textHash(const std::string& text) {
+    return hash::ContentHash().add(text).hex64();
 }
 
 }  // namespace

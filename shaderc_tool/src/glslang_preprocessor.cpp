@@ -2,7 +2,6 @@
 // glslang_preprocessor.hpp).
 #include "glslang_preprocessor.hpp"
 
-#include "content_hash.hpp"
 
 #include <memory>
 #include <mutex>

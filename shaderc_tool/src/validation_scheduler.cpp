@@ -13,7 +13,7 @@
 
 #include <glslang/Public/ShaderLang.h>
 
-#include "content_hash.hpp"
+#include "prism/hash/content_hash.hpp"
 #include "job_pool.hpp"
 
 namespace prism::shaderc {
@@ -49,7 +49,7 @@ std::string toolIdentity() {
 }  // namespace
 
 ProgramKey programKey(const ResolvedCatalog& rc, const Contract& contract, std::size_t s, std::size_t v) {
-    ContentHash tokens;
+    hash::ContentHash tokens;
     tokens.add("prism-shaderc validation").add(toolIdentity());
     for (const auto& a : contract.attributes) tokens.add(a.name).add(a.type).add(std::to_string(a.location));
     tokens.add("uniforms");
@@ -61,7 +61,7 @@ ProgramKey programKey(const ResolvedCatalog& rc, const Contract& contract, std::
             .add(resolved[st].versionDirective)
             .add(resolved[st].validationKey);
     }
-    ContentHash text;
+    hash::ContentHash text;
     text.add(tokens.hex());
     for (const auto& f : contract.files) text.add(f);
     for (std::size_t st = 0; st < resolved.size(); ++st) {
