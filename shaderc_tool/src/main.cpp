@@ -13,8 +13,10 @@
 #include "catalog_builder.hpp"
 #include "clean_check.hpp"
 #include "contract.hpp"
+#include "data_writer.hpp"
 #include "depfile.hpp"
 #include "diagnostics.hpp"
+#include "generated_format.hpp"
 #include "glsl_emitter.hpp"
 #include "header_writer.hpp"
 #include "output_file.hpp"
@@ -40,14 +42,15 @@ std::string readWholeFile(const std::string& path) {
 // The end of `path`, where the data file keeps its sources record: reading only that keeps
 // the no-op flat in the catalogue's size. The whole file when the record starts earlier.
 std::string readRecord(const std::string& path) {
-    constexpr std::streamoff kTail = 64 * 1024;
+    constexpr auto kTail = static_cast<std::streamoff>(format::kRecordTailBytes);
     std::ifstream in(path, std::ios::binary | std::ios::ate);
     const std::streamoff size = in ? static_cast<std::streamoff>(in.tellg()) : 0;
     if (size <= kTail) return readWholeFile(path);
     in.seekg(size - kTail);
     std::string tail(static_cast<std::size_t>(kTail), '\0');
     in.read(tail.data(), kTail);
-    return tail.find("\n// ---- sources read") != std::string::npos ? tail : readWholeFile(path);
+    return tail.find("\n" + std::string(format::kSourcesRecordStart)) != std::string::npos ? tail
+                                                                                          : readWholeFile(path);
 }
 
 // The data file records the fingerprint and is written after the header, so a run killed

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "code_signature.hpp"
+#include "generated_format.hpp"
 #include "prism/hash/content_hash.hpp"
 #include "shown_path.hpp"
 
@@ -15,8 +16,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::string_view kBlockStart = "// ---- sources read (prism-shaderc's no-op check): ";
-constexpr std::string_view kFilePrefix = "//   ";
+using format::kSourcesRecordFile;
+using format::kSourcesRecordStart;
 
 // The sorted names of `dir`'s regular files whose extension passes `keep`.
 std::vector<std::string> listing(const std::string& dir, bool (*keep)(const fs::path&)) {
@@ -85,21 +86,21 @@ SourcesRecord recordSources(const Options& o, const std::vector<std::string>& fi
 }
 
 std::string sourcesBlock(const SourcesRecord& record) {
-    std::string block = std::string(kBlockStart) + record.fingerprint + "\n";
-    for (const auto& f : record.files) block += std::string(kFilePrefix) + f + "\n";
+    std::string block = std::string(kSourcesRecordStart) + record.fingerprint + "\n";
+    for (const auto& f : record.files) block += std::string(kSourcesRecordFile) + f + "\n";
     return block;
 }
 
 std::optional<std::vector<std::string>> unchangedSources(const Options& o, const std::string& header,
                                                          const SourceReader& reader, ContentKey key) {
-    const auto start = header.rfind(kBlockStart);
+    const auto start = header.rfind(kSourcesRecordStart);
     if (start == std::string::npos) return std::nullopt;
-    std::istringstream in(header.substr(start + kBlockStart.size()));
+    std::istringstream in(header.substr(start + kSourcesRecordStart.size()));
     SourcesRecord recorded;
     std::getline(in, recorded.fingerprint);
     for (std::string line; std::getline(in, line);) {
-        if (!line.starts_with(kFilePrefix)) return std::nullopt;
-        recorded.files.push_back(line.substr(kFilePrefix.size()));
+        if (!line.starts_with(kSourcesRecordFile)) return std::nullopt;
+        recorded.files.push_back(line.substr(kSourcesRecordFile.size()));
     }
     if (recorded.files.empty() || fingerprintOf(o, recorded.files, reader, key) != recorded.fingerprint)
         return std::nullopt;
