@@ -85,6 +85,8 @@ ArgsResult parseArgs(int argc, char** argv) {
     app.add_flag("--stats", o.printStats, "print how many programs were validated, shared or found in the cache");
     app.add_flag("--revalidate", o.revalidate,
                  "with --check: resolve and validate even when no code changed since the last clean check");
+    app.add_flag("--no-variant-sharing", o.noVariantSharing,
+                 "resolve every variant on its own (the reference that variant sharing must equal; same outputs)");
     app.add_option("--cache-dir", o.cacheDir,
                    "validation results cache (content-addressed); default: next to --stamp, none without "
                    "--stamp; 'none' disables it");

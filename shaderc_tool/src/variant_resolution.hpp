@@ -10,8 +10,7 @@
 // found the variant axes, are the first such runs; then one variant per group of like
 // structural values runs glslang; any variant still left runs it on its own.
 // With `share` false every variant runs glslang (the reference that tests and the
-// variant_sharing fuzzer compare with; prism-shaderc does so under
-// PRISM_SHADERC_NO_VARIANT_SHARING=1).
+// variant_sharing fuzzer compare with; prism-shaderc does so with --no-variant-sharing).
 // Last, each stage gets its validation key (validation_key.hpp).
 //
 //   auto results = resolveVariants(stagePaths, baseOptions, choices, reader, jobs, baseRuns, true);
