@@ -1,4 +1,4 @@
-// Orchestration of resolution and validation into a CatalogData (see catalog_builder.hpp).
+// The resolution stage as its phases, resolveBaseRuns to attachModules (see catalog_builder.hpp).
 #include "catalog_builder.hpp"
 
 #include <algorithm>

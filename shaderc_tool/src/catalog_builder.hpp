@@ -1,6 +1,7 @@
-// Builds the catalogue: for every shader, resolves its stages, derives its variant
-// axes, then resolves and validates every chosen variant (in parallel, -j), and
-// gathers the modules of the include directories with their dependencies.
+// Stage 4 of prism-shaderc: builds the catalogue: for every shader, resolves its stages,
+// derives its variant axes, then resolves every chosen variant (in parallel, -j), and
+// gathers the modules of the include directories with their dependencies. Validation is
+// stage 5 (validation_scheduler.hpp).
 #pragma once
 
 #include <string>

@@ -1,4 +1,4 @@
-// Stage 5 of prism-shaderc, its second file: the data file X.cpp beside the header X.hpp
+// Part of stage 6 (outputs.hpp): the data file X.cpp beside the header X.hpp
 // (header_writer.hpp). Each distinct piece of GLSL text is stored once, in a pool of raw
 // string literals; a stage is a list of references to pool pieces, and so is a module's
 // own text. The file ends with the records the no-op check reads back (up_to_date.hpp):

@@ -1,4 +1,4 @@
-// Stage 5 of prism-shaderc: prints the catalogue as C++, split in two files so that a
+// Part of stage 6 (outputs.hpp): prints the catalogue as C++, split in two files so that a
 // module edit recompiles one translation unit:
 //   - the header (-o X.hpp): a banner, `enum class ShaderId`, `enum class ModuleId`, the
 //     names and module paths as constexpr tables, and declarations of the data

@@ -7,12 +7,14 @@
 //      the -I and input folders are all as recorded, the run ends here.
 //   2. The clean-check record (clean_check.hpp), in the cache directory. Asked instead by
 //      --check (without --revalidate, --emit-glsl): when the last check found nothing and
-//      every file it read has the same code signature, the check passes here. Written or
-//      removed after each check that validated (rememberCheckOutcome).
+//      every file it read has the same code signature, the check passes here. Written by
+//      a full check that found nothing, removed by one that found something
+//      (rememberCheckOutcome).
 //   3. The inputs fingerprint (catalog_builder.hpp's fingerprint()), in the data file's
 //      banner. Asked after resolution, by the runs of 1: it covers everything the outputs
 //      print, the new sources record included, so it answers where record 1 could not be
-//      read back (a record that lists no file) but the outputs would be the same.
+//      read back (a record that lists no file, or one damaged by hand) but the outputs
+//      would be the same.
 //   4. The validation cache (validation_cache.hpp), asked inside stage 5 for each program
 //      and not for the run: a program whose token stream passed before is not validated.
 // When 1, 2 or 3 answers, only the depfile and stamp are written (stage 6).
@@ -48,7 +50,7 @@ void fillRecords(const Options& options, ResolvedCatalog& catalog, const SourceR
 // Record 3: true when the header and data file on disk are those this catalogue writes.
 bool outputsAreCurrent(const Options& options, const ResolvedCatalog& catalog);
 
-// Record 2 after a check that validated: written when it found nothing, else removed.
+// Record 2 after a full check: written when it found nothing, else removed.
 void rememberCheckOutcome(const Options& options, const ResolvedCatalog& catalog, const DiagnosticSink& sink,
                           const SourceReader& reader);
 

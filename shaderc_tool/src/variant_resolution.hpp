@@ -1,6 +1,6 @@
-// Stage 2b of prism-shaderc: resolves every stage of every chosen variant of a shader
-// (include_resolver.hpp) on `jobs` threads (the readers cache files behind a mutex and
-// glslang's preprocessor is thread-safe per TShader).
+// Part of stage 4 (catalog_builder.hpp): resolves every stage of every chosen variant of a
+// shader (include_resolver.hpp) on `jobs` threads (the readers cache files behind a mutex
+// and glslang's preprocessor is thread-safe per TShader).
 //
 // Variants share what cannot differ: the flattened text is the files glslang enters and
 // the directives it reaches, and only structural macros (structural_macros.hpp) can
