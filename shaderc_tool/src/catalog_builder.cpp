@@ -311,7 +311,8 @@ void attachModules(const Options& o, const std::vector<ShaderInput>& shaders, co
 }  // namespace
 
 ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>& shaders, const Contract& contract,
-                               const SourceReader& reader, DiagnosticSink& sink) {
+                               const SourceReader& reader) {
+    DiagnosticSink sink;
     ResolvedCatalog rc;
     rc.data.nameSpace = o.nameSpace;
     rc.data.contract = contract;
@@ -340,6 +341,7 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
     checkWildcardFilters(filters.filters, rc.data, sink);
     attachModules(o, shaders, included, reader, rc, sink);
     rc.resolveMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    rc.diagnostics = sink.diagnostics();
     return rc;
 }
 

@@ -25,10 +25,11 @@ struct ResolvedCatalog {
     std::size_t preprocessorRuns = 0;  // runs of glslang's preprocessor (variant_resolution.hpp)
     double builtInsMs = 0;             // glslang's built-in tables, timed apart under --stats
     double resolveMs = 0;              // the whole resolution, wall clock
+    std::vector<Diagnostic> diagnostics;  // the resolution's, in order (repeats dropped)
 };
 
 ResolvedCatalog resolveCatalog(const Options& options, const std::vector<ShaderInput>& shaders,
-                               const Contract& contract, const SourceReader& reader, DiagnosticSink& sink);
+                               const Contract& contract, const SourceReader& reader);
 
 // A stable fingerprint of everything that determines the header's content.
 std::string fingerprint(const ResolvedCatalog& catalog);

@@ -1,5 +1,6 @@
 // prism-shaderc: the build-time GLSL toolchain. main() only sequences the stages, each a
-// function of its own file that returns its result with its diagnostics:
+// function of its own file that returns its result with its diagnostics, which main()
+// gathers and prints once, at the end:
 //   1 args.hpp                 the command line
 //   2 up_to_date.hpp           nothing changed? (asked again after stage 4)
 //   3 shader_inputs.hpp        the stage files, and the binding contract (contract.hpp)
@@ -51,14 +52,15 @@ int main(int argc, char** argv) {
         return kExitUsageOrIo;
     }
 
-    auto catalog = resolveCatalog(o, inputs.shaders, contract.contract, disk, sink);
+    auto catalog = resolveCatalog(o, inputs.shaders, contract.contract, disk);
+    sink.reportAll(catalog.diagnostics);
     fillRecords(o, catalog, disk);
     if (sink.errorCount() == 0 && outputsAreCurrent(o, catalog)) {
         sink.print(std::cerr, o.errorFormat);
         return exitStatus(writeBuildSystemFiles(o, catalog.filesRead));
     }
 
-    if (sink.errorCount() == 0) validateCatalog(o, catalog, contract.contract, sink);
+    if (sink.errorCount() == 0) sink.reportAll(validateCatalog(o, catalog, contract.contract).diagnostics);
     sink.print(std::cerr, o.errorFormat);
     rememberCheckOutcome(o, catalog, sink, disk);
     if (sink.errorCount() > 0) {

@@ -254,15 +254,17 @@ ValidationStats validateCatalogScheduled(ResolvedCatalog& rc, const Contract& co
     return stats;
 }
 
-ValidationStats validateCatalog(const Options& o, ResolvedCatalog& catalog, const Contract& contract,
-                                DiagnosticSink& sink) {
+Validation validateCatalog(const Options& o, ResolvedCatalog& catalog, const Contract& contract) {
     ValidationCache cache(validationCacheDir(o), catalogueCacheKey(o));
-    const auto stats = validateCatalogScheduled(catalog, contract, o.jobs, cache, sink);
+    DiagnosticSink sink;
+    Validation validation;
+    validation.stats = validateCatalogScheduled(catalog, contract, o.jobs, cache, sink);
+    validation.diagnostics = sink.diagnostics();
     if (o.printStats) {
         printResolutionStats(std::cerr, catalog);
-        printValidationStats(std::cerr, stats);
+        printValidationStats(std::cerr, validation.stats);
     }
-    return stats;
+    return validation;
 }
 
 }  // namespace prism::shaderc

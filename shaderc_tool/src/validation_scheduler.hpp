@@ -12,7 +12,7 @@
 // A shared result is reused only when it has no diagnostics; a program whose result
 // has some is validated with its own text, so every message keeps its own lines.
 //
-//   if (sink.errorCount() == 0) validateCatalog(options, catalog, contract, sink);
+//   if (sink.errorCount() == 0) sink.reportAll(validateCatalog(options, catalog, contract).diagnostics);
 #pragma once
 
 #include <cstddef>
@@ -31,10 +31,14 @@ struct ValidationStats {
     double ms = 0;                   // wall clock
 };
 
+struct Validation {
+    ValidationStats stats;
+    std::vector<Diagnostic> diagnostics;  // every program's, in catalogue order (repeats dropped)
+};
+
 // The stage: validateCatalogScheduled with the cache the options name (--cache-dir), and
 // under --stats the resolution's and the validation's counts on stderr.
-ValidationStats validateCatalog(const Options& options, ResolvedCatalog& catalog, const Contract& contract,
-                                DiagnosticSink& sink);
+Validation validateCatalog(const Options& options, ResolvedCatalog& catalog, const Contract& contract);
 
 // Fills in every variant's reflection and reports the diagnostics of every program.
 ValidationStats validateCatalogScheduled(ResolvedCatalog& catalog, const Contract& contract, int jobs,
