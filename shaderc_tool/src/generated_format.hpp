@@ -2,7 +2,7 @@
 // MaterialChunkType.h): every line tag and record marker that a writer prints and a reader
 // looks for. The writers (header_writer.cpp, data_writer.cpp, source_fingerprint.cpp) and
 // the readers (data_writer.cpp's headerMatchesData and recordedFingerprint,
-// source_fingerprint.cpp's unchangedSources, the no-op check's read of the data file's
+// source_fingerprint.cpp's unchangedSources, up_to_date.cpp's read of the data file's
 // tail) take them from here, so a format change is one edit. The files: docs/shaderc.md.
 //
 //   X.hpp                                       X.cpp (the data file)
