@@ -11,7 +11,7 @@ PACKAGES=(
   libpng-dev python3-glad
   libkissfft-dev colord-data
   libgtest-dev libgmock-dev libbenchmark-dev
-  libcli11-dev libfmt-dev nlohmann-json3-dev
+  libcli11-dev libfmt-dev nlohmann-json3-dev libxxhash-dev
   libtinyobjloader-dev libstb-dev
   universal-ctags  # scripts/check_function_length.py (tests/architecture)
   xvfb xauth

@@ -1,5 +1,6 @@
 // Command-line parsing for prism-shaderc (see docs/shaderc.md for the contract).
 #include "args.hpp"
+#include "data_writer.hpp"
 #include "source_reader.hpp"
 
 #include <CLI/CLI.hpp>
@@ -46,17 +47,13 @@ std::string conflictOf(const Options& o, const CLI::App& app) {
                "<header> or drop --namespace";
     if (!o.checkOnly && o.output.empty() && o.emitGlslDir.empty())
         return "nothing to write: give -o <header>, --emit-glsl <dir> or --check";
+    if (!o.checkOnly && !o.output.empty() && o.emitGlslDir.empty() && dataPathFor(o.output) == o.output)
+        return "-o " + o.output + ": the data file would overwrite the header; name the header .hpp or .h";
     return {};
 }
 
-}  // namespace
-
-ArgsResult parseArgs(int argc, char** argv) {
-    Options o;
-    std::vector<std::string> defines;
-    std::string errfmt = "gcc";
-    CLI::App app{"prism-shaderc: resolve #includes, validate GLSL with glslang and embed it in a C++ header",
-                 "prism-shaderc"};
+// Every option, bound to `o` (to `defines` and `errfmt` where parseArgs checks them after).
+void addOptions(CLI::App& app, Options& o, std::vector<std::string>& defines, std::string& errfmt) {
     app.set_version_flag("--version", std::string("prism-shaderc ") + PRISM_VERSION);
     // Unknown options are collected (not an error inside CLI11, whose required-positional
     // check would otherwise speak first) and named below.
@@ -85,10 +82,22 @@ ArgsResult parseArgs(int argc, char** argv) {
     app.add_flag("--stats", o.printStats, "print how many programs were validated, shared or found in the cache");
     app.add_flag("--revalidate", o.revalidate,
                  "with --check: resolve and validate even when no code changed since the last clean check");
+    app.add_flag("--no-variant-sharing", o.noVariantSharing,
+                 "resolve every variant on its own (the reference that variant sharing must equal; same outputs)");
     app.add_option("--cache-dir", o.cacheDir,
                    "validation results cache (content-addressed); default: next to --stamp, none without "
                    "--stamp; 'none' disables it");
+}
 
+}  // namespace
+
+ArgsResult parseArgs(int argc, char** argv) {
+    Options o;
+    std::vector<std::string> defines;
+    std::string errfmt = "gcc";
+    CLI::App app{"prism-shaderc: resolve #includes, validate GLSL with glslang and embed it in a C++ header",
+                 "prism-shaderc"};
+    addOptions(app, o, defines, errfmt);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

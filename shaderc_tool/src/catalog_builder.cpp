@@ -1,18 +1,16 @@
-// Orchestration of resolution and validation into a CatalogData (see catalog_builder.hpp).
+// The resolution stage as its phases, resolveBaseRuns to attachModules (see catalog_builder.hpp).
 #include "catalog_builder.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
-#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <set>
-#include <thread>
 
 #include "include_resolver.hpp"
 #include "job_pool.hpp"
 #include "module_naming.hpp"
+#include "prism/hash/content_hash.hpp"
 #include "shown_path.hpp"
 #include "validator.hpp"
 #include "variant_resolution.hpp"
@@ -64,11 +62,9 @@ std::string namingPath(const std::string& canonical, const std::vector<std::stri
 }
 
 // Every .glsl directly in the include dirs (the first directory wins for a shadowed
-// name), plus every included file elsewhere (in their subfolders too). Problems found
-// scanning a module no stage includes are warnings: only what is used fails a build.
-ModuleIndex indexModules(const Options& o, const std::vector<ShaderInput>& shaders,
-                         const std::vector<std::string>& includedFiles, const std::set<std::string>& used,
-                         const SourceReader& reader, DiagnosticSink& sink) {
+// name), plus every included file elsewhere (in their subfolders too).
+std::vector<ModuleFile> moduleFiles(const Options& o, const std::vector<std::string>& includedFiles,
+                                    const SourceReader& reader) {
     std::vector<ModuleFile> files;
     std::set<std::string> canonicals, shadowed;
     auto add = [&](const std::string& path) {
@@ -85,9 +81,15 @@ ModuleIndex indexModules(const Options& o, const std::vector<ShaderInput>& shade
             if (shadowed.insert(f.filename().string()).second) add(f.string());
     }
     for (const auto& f : includedFiles) add(f);
+    return files;
+}
 
+// Each file's module identifier with its index into `files`, sorted by identifier.
+std::vector<std::pair<std::string, std::size_t>> moduleNames(const Options& o, const std::vector<ShaderInput>& shaders,
+                                                             const std::vector<ModuleFile>& files,
+                                                             const SourceReader& reader, DiagnosticSink& sink) {
     const auto roots = namingRoots(o, shaders, reader);
-    std::vector<std::pair<std::string, std::size_t>> named;  // identifier, index into files
+    std::vector<std::pair<std::string, std::size_t>> named;
     std::set<std::string> identifiers;
     for (std::size_t i = 0; i < files.size(); ++i) {
         std::string id = mangleModulePath(namingPath(files[i].canonical, roots));
@@ -106,43 +108,45 @@ ModuleIndex indexModules(const Options& o, const std::vector<ShaderInput>& shade
         named.emplace_back(id, i);
     }
     std::sort(named.begin(), named.end());
+    return named;
+}
 
-    // Scans are independent: spread them over -j threads, then report in name order.
-    ResolveOptions ro{o.includeDirs, o.defines, {}, o.baseDir};
+// A scan's diagnostics. Errors in a module no stage includes are warnings: only what is
+// used fails a build (used modules show their errors in the stages, under their macros).
+void reportScan(ModuleScanResult& scan, const std::string& identifier, bool used, DiagnosticSink& sink) {
+    for (auto& d : scan.diagnostics) {
+        if (d.severity != Severity::Error) {
+            sink.report(std::move(d));
+        } else if (!used) {
+            d.severity = Severity::Warning;
+            d.message += " (in module " + identifier + ", which no stage includes, so a warning)";
+            sink.report(std::move(d));
+        }
+    }
+}
+
+// The modules of moduleFiles(), named, scanned (on -j threads, a thread per 64 modules at
+// most) and reported in name order, with their dependencies.
+ModuleIndex indexModules(const Options& o, const std::vector<ShaderInput>& shaders,
+                         const std::vector<std::string>& includedFiles, const std::set<std::string>& used,
+                         const SourceReader& reader, DiagnosticSink& sink) {
+    const auto files = moduleFiles(o, includedFiles, reader);
+    const auto named = moduleNames(o, shaders, files, reader, sink);
+    const ResolveOptions ro{o.includeDirs, o.defines, {}, o.baseDir};
     std::vector<ModuleScanResult> scans(named.size());
-    std::atomic<std::size_t> next{0};
-    auto worker = [&] {
-        for (std::size_t i; (i = next.fetch_add(1)) < named.size();)
-            scans[i] = scanModule(files[named[i].second].path, ro, reader);
-    };
-    const std::size_t threads =
-        std::clamp<std::size_t>(static_cast<std::size_t>(o.jobs), 1, std::max<std::size_t>(1, named.size() / 64));
-    std::vector<std::thread> pool;
-    for (std::size_t i = 1; i < threads; ++i) pool.emplace_back(worker);
-    worker();
-    for (auto& thread : pool) thread.join();
+    const int jobs = std::clamp(o.jobs, 1, static_cast<int>(std::max<std::size_t>(1, named.size() / 64)));
+    runPool(named.size(), jobs, [&](std::size_t i) { scans[i] = scanModule(files[named[i].second].path, ro, reader); });
 
     ModuleIndex index;
     std::vector<std::vector<std::string>> includes;
     for (std::size_t n = 0; n < named.size(); ++n) {
-        const std::string& identifier = named[n].first;
-        const ModuleFile& file = files[named[n].second];
-        auto& scan = scans[n];
-        const bool isUsed = used.contains(file.canonical);
-        for (auto& d : scan.diagnostics) {
-            if (d.severity != Severity::Error) {
-                sink.report(std::move(d));
-            } else if (!isUsed) {  // used modules show their errors in the stages, under the stages' macros
-                d.severity = Severity::Warning;
-                d.message += " (in module " + identifier + ", which no stage includes, so a warning)";
-                sink.report(std::move(d));
-            }
-        }
-        CatalogModule m{identifier, shownPath(file.path, o), scan.module.description, scan.module.text, {},
-                        file.path};
+        const auto& [identifier, fileIndex] = named[n];
+        const ModuleFile& file = files[fileIndex];
+        reportScan(scans[n], identifier, used.contains(file.canonical), sink);
         index.byCanonical[file.canonical] = static_cast<std::uint32_t>(index.modules.size());
-        index.modules.push_back(std::move(m));
-        includes.push_back(scan.module.includes);
+        index.modules.push_back({identifier, shownPath(file.path, o), scans[n].module.description,
+                                 scans[n].module.text, {}, file.path});
+        includes.push_back(scans[n].module.includes);
     }
     for (std::size_t i = 0; i < index.modules.size(); ++i)
         for (const auto& inc : includes[i])
@@ -155,28 +159,18 @@ std::string versionDirective(int version, const std::string& profile) {
     return "#version " + std::to_string(version) + (profile.empty() ? "" : " " + profile);
 }
 
-}  // namespace
+// The files stages included (source number > 0), by canonical path, with a path to read them by.
+struct IncludedFiles {
+    std::map<std::string, std::string> pathOf;  // canonical -> display
+    void add(const ResolvedFile& f) {
+        if (f.number > 0) pathOf.try_emplace(f.canonical, f.path);
+    }
+};
 
-ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>& shaders, const Contract& contract,
-                               const SourceReader& reader, DiagnosticSink& sink) {
-    ResolvedCatalog rc;
-    rc.data.nameSpace = o.nameSpace;
-    rc.data.contract = contract;
-    rc.data.versionDirective = versionDirective(o.glslVersion, o.glslProfile);
-    for (const auto& f : contract.files) rc.filesRead.push_back(f);
-
-    auto filters = parseVariantFilters(o.variantFilters);
-    sink.reportAll(filters.diagnostics);
-    std::set<std::string> includedCanonical;
-    std::map<std::string, std::string> includedPath;  // canonical -> display
-
-    const auto start = std::chrono::steady_clock::now();
-    if (o.printStats)
-        if (const auto version = parseVersionDirective(rc.data.versionDirective))
-            rc.builtInsMs = buildGlslangBuiltIns(*version);
-    // Every stage once with the base options (no variant defines), on -j threads: these
-    // runs find the variant axes, and variants share them where they can.
-    const ResolveOptions base{o.includeDirs, o.defines, rc.data.versionDirective, o.baseDir};
+// Phase 1: every stage once with the base options (no variant defines), on -j threads.
+// These runs find the variant axes, and variants share them where they can.
+std::vector<std::vector<ResolveResult>> resolveBaseRuns(const Options& o, const std::vector<ShaderInput>& shaders,
+                                                        const ResolveOptions& base, const SourceReader& reader) {
     std::vector<std::pair<std::size_t, std::size_t>> allStages;  // (shader, stage)
     for (std::size_t s = 0; s < shaders.size(); ++s)
         for (std::size_t st = 0; st < shaders[s].stages.size(); ++st) allStages.emplace_back(s, st);
@@ -186,137 +180,175 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
         const auto [s, st] = allStages[i];
         baseRuns[s][st] = resolveStage(shaders[s].stages[st].path, base, reader);
     });
-    rc.preprocessorRuns = allStages.size();
+    return baseRuns;
+}
 
-    // Each shader's axes and variant choices, from its base runs.
-    struct ShaderPlan {
-        std::vector<Diagnostic> diagnostics;  // reported in this order, before the variants'
-        bool ok = true;
-        std::vector<std::string> stagePaths;
-        std::vector<Axis> axes;
-        std::vector<VariantChoice> choices;
-        std::vector<std::vector<ResolveResult>> resolved;  // [variant][stage]
-    };
-    std::vector<ShaderPlan> plans(shaders.size());
+// A shader's axes and variant choices, from its base runs.
+struct ShaderPlan {
+    std::vector<Diagnostic> diagnostics;  // reported in this order, before the variants'
+    bool ok = true;
+    std::vector<std::string> stagePaths;
+    std::vector<Axis> axes;
+    std::vector<VariantChoice> choices;
+    std::vector<std::vector<ResolveResult>> resolved;  // [variant][stage]
+};
+
+// Phase 2: one shader's plan. Its base runs' files count as included even when a stage
+// fails, so that no module it uses is called one "no stage includes".
+ShaderPlan planShader(const ShaderInput& shader, const std::vector<ResolveResult>& baseRuns,
+                      const std::vector<VariantFilter>& filters, IncludedFiles& included) {
+    ShaderPlan plan;
+    std::vector<VariantPragma> pragmas;
+    for (const auto& r : baseRuns) {
+        plan.diagnostics.insert(plan.diagnostics.end(), r.diagnostics.begin(), r.diagnostics.end());
+        plan.ok = plan.ok && r.ok;
+        for (const auto& f : r.stage.files) included.add(f);
+        pragmas.insert(pragmas.end(), r.stage.variantPragmas.begin(), r.stage.variantPragmas.end());
+        plan.stagePaths.push_back(shader.stages[plan.stagePaths.size()].path);
+    }
+    if (!plan.ok) return plan;
+    auto axes = axesFromPragmas(pragmas);
+    plan.diagnostics.insert(plan.diagnostics.end(), axes.diagnostics.begin(), axes.diagnostics.end());
+    auto choices = variantChoices(shader.name, axes.axes, filters);
+    plan.diagnostics.insert(plan.diagnostics.end(), choices.diagnostics.begin(), choices.diagnostics.end());
+    plan.ok = axes.diagnostics.empty() && choices.diagnostics.empty();
+    plan.axes = std::move(axes.axes);
+    plan.choices = std::move(choices.choices);
+    return plan;
+}
+
+// Phase 3: the planned shaders' variants, several shaders at once (each on -j / shaders
+// threads), sharing runs unless --no-variant-sharing.
+void resolvePlannedVariants(const Options& o, const ResolveOptions& base, std::vector<ShaderPlan>& plans,
+                            const std::vector<std::vector<ResolveResult>>& baseRuns, const SourceReader& reader) {
     std::vector<std::size_t> toResolve;
-    for (std::size_t s = 0; s < shaders.size(); ++s) {
-        ShaderPlan& plan = plans[s];
-        std::vector<VariantPragma> pragmas;
-        for (const auto& r : baseRuns[s]) {
-            plan.diagnostics.insert(plan.diagnostics.end(), r.diagnostics.begin(), r.diagnostics.end());
-            plan.ok = plan.ok && r.ok;
-            for (const auto& f : r.stage.files)  // used even when the stage fails: no "no stage includes" warning
-                if (f.number > 0 && includedCanonical.insert(f.canonical).second) includedPath[f.canonical] = f.path;
-            pragmas.insert(pragmas.end(), r.stage.variantPragmas.begin(), r.stage.variantPragmas.end());
-            plan.stagePaths.push_back(shaders[s].stages[plan.stagePaths.size()].path);
-        }
-        if (!plan.ok) continue;
-        auto axes = axesFromPragmas(pragmas);
-        plan.diagnostics.insert(plan.diagnostics.end(), axes.diagnostics.begin(), axes.diagnostics.end());
-        auto choices = variantChoices(shaders[s].name, axes.axes, filters.filters);
-        plan.diagnostics.insert(plan.diagnostics.end(), choices.diagnostics.begin(), choices.diagnostics.end());
-        plan.ok = axes.diagnostics.empty() && choices.diagnostics.empty();
-        plan.axes = std::move(axes.axes);
-        plan.choices = std::move(choices.choices);
-        if (plan.ok) toResolve.push_back(s);
-    }
-
-    // The shaders' variants, several shaders at once (each on -j / shaders threads).
+    for (std::size_t s = 0; s < plans.size(); ++s)
+        if (plans[s].ok) toResolve.push_back(s);
     const int innerJobs = std::max(1, o.jobs / std::max(1, static_cast<int>(toResolve.size())));
-    const bool share = !std::getenv("PRISM_SHADERC_NO_VARIANT_SHARING");
     runPool(toResolve.size(), o.jobs, [&](std::size_t i) {
-        const std::size_t s = toResolve[i];
-        plans[s].resolved =
-            resolveVariants(plans[s].stagePaths, base, plans[s].choices, reader, innerJobs, baseRuns[s], share);
+        ShaderPlan& plan = plans[toResolve[i]];
+        plan.resolved = resolveVariants(plan.stagePaths, base, plan.choices, reader, innerJobs, baseRuns[toResolve[i]],
+                                        !o.noVariantSharing);
     });
+}
 
-    std::map<std::string, std::string> shownPaths;  // every variant names the same few files
-    for (std::size_t s = 0; s < shaders.size(); ++s) {
-        const auto& shader = shaders[s];
-        ShaderPlan& plan = plans[s];
-        sink.reportAll(plan.diagnostics);
-        if (!plan.ok) continue;
-        bool ok = true;
-        CatalogShader cs{shader.name, plan.axes, {}, {}};
-        std::vector<std::vector<ResolvedStage>> resolvedVariants;
-        for (std::size_t vi = 0; vi < plan.choices.size(); ++vi) {
-            const auto& choice = plan.choices[vi];
-            CatalogVariant cv{choice.name, choice.defines, {}, {}};
-            std::vector<ResolvedStage> stages;
-            for (std::size_t si = 0; si < shader.stages.size(); ++si) {
-                const auto& st = shader.stages[si];
-                auto r = std::move(plan.resolved[vi][si]);
-                rc.preprocessorRuns += !r.stage.shared;
-                sink.reportAll(r.diagnostics);
-                ok = ok && r.ok;
-                CatalogStage cst{st.stage, r.stage.text, {}};
-                for (const auto& f : r.stage.files) {
-                    auto shown = shownPaths.find(f.path);
-                    if (shown == shownPaths.end()) shown = shownPaths.emplace(f.path, shownPath(f.path, o)).first;
-                    cst.files.push_back(shown->second);
-                    if (f.number > 0 && includedCanonical.insert(f.canonical).second)
-                        includedPath[f.canonical] = f.path;
-                }
-                rc.filesRead.insert(rc.filesRead.end(), r.stage.filesRead.begin(), r.stage.filesRead.end());
-                cv.stages.push_back(std::move(cst));
-                stages.push_back(std::move(r.stage));
+// Phase 4: one shader of the catalogue from its resolved plan, reporting its diagnostics
+// in order; false when a variant failed.
+bool assembleShader(const Options& o, const ShaderInput& shader, ShaderPlan& plan, IncludedFiles& included,
+                    std::map<std::string, std::string>& shownPaths, ResolvedCatalog& rc, DiagnosticSink& sink) {
+    bool ok = true;
+    CatalogShader cs{shader.name, plan.axes, {}, {}};
+    std::vector<std::vector<ResolvedStage>> resolvedVariants;
+    for (std::size_t vi = 0; vi < plan.choices.size(); ++vi) {
+        CatalogVariant cv{plan.choices[vi].name, plan.choices[vi].defines, {}, {}};
+        std::vector<ResolvedStage> stages;
+        for (std::size_t si = 0; si < shader.stages.size(); ++si) {
+            auto r = std::move(plan.resolved[vi][si]);
+            rc.preprocessorRuns += !r.stage.shared;
+            sink.reportAll(r.diagnostics);
+            ok = ok && r.ok;
+            CatalogStage cst{shader.stages[si].stage, r.stage.text, {}};
+            for (const auto& f : r.stage.files) {
+                auto shown = shownPaths.find(f.path);
+                if (shown == shownPaths.end()) shown = shownPaths.emplace(f.path, shownPath(f.path, o)).first;
+                cst.files.push_back(shown->second);
+                included.add(f);
             }
-            cs.variants.push_back(std::move(cv));
-            resolvedVariants.push_back(std::move(stages));
+            rc.filesRead.insert(rc.filesRead.end(), r.stage.filesRead.begin(), r.stage.filesRead.end());
+            cv.stages.push_back(std::move(cst));
+            stages.push_back(std::move(r.stage));
         }
-        if (!ok) continue;
-        rc.data.shaders.push_back(std::move(cs));
-        rc.resolved.push_back(std::move(resolvedVariants));
-        rc.stagePaths.push_back(std::move(plan.stagePaths));
+        cs.variants.push_back(std::move(cv));
+        resolvedVariants.push_back(std::move(stages));
     }
+    if (!ok) return false;
+    rc.data.shaders.push_back(std::move(cs));
+    rc.resolved.push_back(std::move(resolvedVariants));
+    rc.stagePaths.push_back(std::move(plan.stagePaths));
+    return true;
+}
 
-    // A "*" filter must name axes that some shader declares, or it is a typo.
-    for (const auto& f : filters.filters) {
+// Phase 5: a "*" filter must name axes that some shader declares, or it is a typo.
+void checkWildcardFilters(const std::vector<VariantFilter>& filters, const CatalogData& data, DiagnosticSink& sink) {
+    for (const auto& f : filters) {
         if (f.shader != "*") continue;
         for (const auto& [name, value] : f.fixed) {
             bool declared = false;
-            for (const auto& cs : rc.data.shaders)
+            for (const auto& cs : data.shaders)
                 for (const auto& axis : cs.axes) declared = declared || axis.name == name;
             if (!declared)
                 sink.report(makeError(
                     "", 0, 0, "--variant *:" + name + "=" + value + ": no shader declares a variant '" + name + "'"));
         }
     }
+}
 
-    // Modules: the include dirs' .glsl files plus every other file a stage included.
-    std::vector<std::string> extra;  // those in an -I dir are known already and skipped
-    for (const auto& [canonical, path] : includedPath) extra.push_back(path);
+// Phase 6: the modules (the include dirs' .glsl files plus every other file a stage
+// included; those in an -I dir are known already) and each shader's list of them.
+void attachModules(const Options& o, const std::vector<ShaderInput>& shaders, const IncludedFiles& included,
+                   const SourceReader& reader, ResolvedCatalog& rc, DiagnosticSink& sink) {
+    std::vector<std::string> extra;
     std::set<std::string> used;
-    for (const auto& [canonical, path] : includedPath) used.insert(canonical);
+    for (const auto& [canonical, path] : included.pathOf) {
+        extra.push_back(path);
+        used.insert(canonical);
+    }
     auto modules = indexModules(o, shaders, extra, used, reader, sink);
     for (const auto& m : modules.modules) rc.filesRead.push_back(m.sourcePath);
     for (std::size_t s = 0; s < rc.data.shaders.size(); ++s) {
-        std::set<std::uint32_t> used;
+        std::set<std::uint32_t> shaderModules;
         for (const auto& variant : rc.resolved[s])
             for (const auto& stage : variant)
                 for (const auto& f : stage.files)
                     if (auto it = modules.byCanonical.find(f.canonical);
                         f.number > 0 && it != modules.byCanonical.end())
-                        used.insert(it->second);
-        rc.data.shaders[s].modules.assign(used.begin(), used.end());
+                        shaderModules.insert(it->second);
+        rc.data.shaders[s].modules.assign(shaderModules.begin(), shaderModules.end());
     }
     rc.data.modules = std::move(modules.modules);
+}
+
+}  // namespace
+
+ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>& shaders, const Contract& contract,
+                               const SourceReader& reader) {
+    DiagnosticSink sink;
+    ResolvedCatalog rc;
+    rc.data.nameSpace = o.nameSpace;
+    rc.data.contract = contract;
+    rc.data.versionDirective = versionDirective(o.glslVersion, o.glslProfile);
+    rc.filesRead = contract.files;
+    auto filters = parseVariantFilters(o.variantFilters);
+    sink.reportAll(filters.diagnostics);
+
+    const auto start = std::chrono::steady_clock::now();
+    if (o.printStats)
+        if (const auto version = parseVersionDirective(rc.data.versionDirective))
+            rc.builtInsMs = buildGlslangBuiltIns(*version);
+    const ResolveOptions base{o.includeDirs, o.defines, rc.data.versionDirective, o.baseDir};
+    const auto baseRuns = resolveBaseRuns(o, shaders, base, reader);
+    for (const auto& runs : baseRuns) rc.preprocessorRuns += runs.size();
+    IncludedFiles included;
+    std::vector<ShaderPlan> plans;
+    for (std::size_t s = 0; s < shaders.size(); ++s)
+        plans.push_back(planShader(shaders[s], baseRuns[s], filters.filters, included));
+    resolvePlannedVariants(o, base, plans, baseRuns, reader);
+    std::map<std::string, std::string> shownPaths;  // every variant names the same few files
+    for (std::size_t s = 0; s < shaders.size(); ++s) {
+        sink.reportAll(plans[s].diagnostics);
+        if (plans[s].ok) assembleShader(o, shaders[s], plans[s], included, shownPaths, rc, sink);
+    }
+    checkWildcardFilters(filters.filters, rc.data, sink);
+    attachModules(o, shaders, included, reader, rc, sink);
     rc.resolveMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    rc.diagnostics = sink.diagnostics();
     return rc;
 }
 
-
 std::string fingerprint(const ResolvedCatalog& rc) {
-    // FNV-1a over the resolved texts, paths and everything else the generated files print.
-    std::uint64_t h = 1469598103934665603ull;
-    auto mix = [&](std::string_view s) {
-        for (unsigned char c : s) {
-            h ^= c;
-            h *= 1099511628211ull;
-        }
-        h ^= 0xff;
-        h *= 1099511628211ull;
-    };
+    // Over the resolved texts, paths and everything else the generated files print.
+    hash::ContentHash h;
+    const auto mix = [&](std::string_view part) { h.add(part); };
     const auto& d = rc.data;
     mix(PRISM_VERSION);
     mix(d.nameSpace);
@@ -352,9 +384,7 @@ std::string fingerprint(const ResolvedCatalog& rc) {
         mix(u.type);
         mix(std::to_string(u.array));
     }
-    char buf[17];
-    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-    return buf;
+    return h.hex64();
 }
 
 }  // namespace prism::shaderc

@@ -1,6 +1,7 @@
-// Builds the catalogue: for every shader, resolves its stages, derives its variant
-// axes, then resolves and validates every chosen variant (in parallel, -j), and
-// gathers the modules of the include directories with their dependencies.
+// Stage 4 of prism-shaderc: builds the catalogue: for every shader, resolves its stages,
+// derives its variant axes, then resolves every chosen variant (in parallel, -j), and
+// gathers the modules of the include directories with their dependencies. Validation is
+// stage 5 (validation_scheduler.hpp).
 #pragma once
 
 #include <string>
@@ -24,10 +25,11 @@ struct ResolvedCatalog {
     std::size_t preprocessorRuns = 0;  // runs of glslang's preprocessor (variant_resolution.hpp)
     double builtInsMs = 0;             // glslang's built-in tables, timed apart under --stats
     double resolveMs = 0;              // the whole resolution, wall clock
+    std::vector<Diagnostic> diagnostics;  // the resolution's, in order (repeats dropped)
 };
 
 ResolvedCatalog resolveCatalog(const Options& options, const std::vector<ShaderInput>& shaders,
-                               const Contract& contract, const SourceReader& reader, DiagnosticSink& sink);
+                               const Contract& contract, const SourceReader& reader);
 
 // A stable fingerprint of everything that determines the header's content.
 std::string fingerprint(const ResolvedCatalog& catalog);

@@ -70,75 +70,77 @@ bool isGlslIdentifier(const std::string& name) {
 // Contracts nest 3 levels; deeper JSON is refused before parsing (docs/reliability.md).
 constexpr int kMaxJsonDepth = 64;
 
-void loadOne(const std::string& path, const std::string& text, Contract& c, std::vector<Diagnostic>& out) {
+// The parsed document, or nullopt with the error (nesting too deep, or malformed JSON).
+std::optional<json> parseContractJson(const std::string& path, const std::string& text, std::vector<Diagnostic>& out) {
     if (const auto deep = io::firstTooDeep(text, kMaxJsonDepth)) {
         auto [line, col] = lineColumnOf(text, *deep);
         out.push_back(makeError(path, line, col,
                                 "contract JSON nested more than " + std::to_string(kMaxJsonDepth) +
                                     " levels deep (the limit); a contract needs 3"));
-        return;
+        return std::nullopt;
     }
-    json doc;
     try {
-        doc = json::parse(text);
+        return json::parse(text);
     } catch (const json::parse_error& e) {
         auto [line, col] = lineColumnOf(text, e.byte > 0 ? e.byte - 1 : 0);
         std::string what = e.what();
         auto pos = what.find("syntax error");
         out.push_back(makeError(path, line, col,
                                 "malformed contract JSON: " + (pos == std::string::npos ? what : what.substr(pos))));
-        return;
     } catch (const json::exception& e) {  // e.g. out_of_range 406: a number too large for a double
         std::string what = e.what();
         auto pos = what.find("] ");
         out.push_back(makeError(path, 0, 0,
                                 "malformed contract JSON: " + (pos == std::string::npos ? what : what.substr(pos + 2))));
-        return;
     }
+    return std::nullopt;
+}
+
+// The array under `key`: each entry an object (`shape`), read by `read(entry, at)`.
+template <class Read>
+void readArray(const json& doc, const std::string& key, const std::string& shape, Field& f, Read read) {
+    if (!doc[key].is_array()) return f.fail("/" + key, "an array");
+    for (std::size_t i = 0; i < doc[key].size(); ++i) {
+        const std::string at = "/" + key + "/" + std::to_string(i);
+        if (doc[key][i].is_object())
+            read(doc[key][i], at);
+        else
+            f.fail(at, "an object " + shape);
+    }
+}
+
+// An entry's "name" must be a GLSL identifier and its "type" a GLSL type ("" is none).
+void checkNameAndType(const json& entry, const std::string& name, const std::string& type, const std::string& at,
+                      const std::string& typeExample, const std::string& nameExample, Field& f) {
+    if (entry.contains("type") && entry["type"].is_string() && glTypeOf(type) == 0)
+        f.fail(at + "/type", "a GLSL type such as " + typeExample);
+    if (entry.contains("name") && entry["name"].is_string() && !isGlslIdentifier(name))
+        f.fail(at + "/name", "a GLSL identifier such as " + nameExample);
+}
+
+void readAttributes(const json& doc, Field& f, Contract& c) {
+    readArray(doc, "attributes", "{name, type, location}", f, [&](const json& a, const std::string& at) {
+        ContractAttribute attr{f.string(a, "name", at), f.string(a, "type", at), f.integer(a, "location", at, true)};
+        checkNameAndType(a, attr.name, attr.type, at, "vec3", "a_position", f);
+        c.attributes.push_back(std::move(attr));
+    });
+}
+
+void readUniforms(const json& doc, Field& f, Contract& c) {
+    readArray(doc, "uniforms", "{name, type[, array]}", f, [&](const json& u, const std::string& at) {
+        ContractUniform uni{f.string(u, "name", at), f.string(u, "type", at), f.integer(u, "array", at, false)};
+        checkNameAndType(u, uni.name, uni.type, at, "mat4", "u_world", f);
+        c.uniforms.push_back(std::move(uni));
+    });
+}
+
+void loadOne(const std::string& path, const std::string& text, Contract& c, std::vector<Diagnostic>& out) {
+    const auto doc = parseContractJson(path, text, out);
+    if (!doc) return;
     Field f{path, out};
-    if (!doc.is_object()) {
-        f.fail("/", "an object with \"attributes\" and \"uniforms\"");
-        return;
-    }
-    if (doc.contains("attributes")) {
-        if (!doc["attributes"].is_array())
-            f.fail("/attributes", "an array");
-        else
-            for (std::size_t i = 0; i < doc["attributes"].size(); ++i) {
-                std::string at = "/attributes/" + std::to_string(i);
-                const json& a = doc["attributes"][i];
-                if (!a.is_object()) {
-                    f.fail(at, "an object {name, type, location}");
-                    continue;
-                }
-                ContractAttribute attr{f.string(a, "name", at), f.string(a, "type", at),
-                                       f.integer(a, "location", at, true)};
-                if (a.contains("type") && a["type"].is_string() && glTypeOf(attr.type) == 0)  // "" too
-                    f.fail(at + "/type", "a GLSL type such as vec3");
-                if (a.contains("name") && a["name"].is_string() && !isGlslIdentifier(attr.name))
-                    f.fail(at + "/name", "a GLSL identifier such as a_position");
-                c.attributes.push_back(std::move(attr));
-            }
-    }
-    if (doc.contains("uniforms")) {
-        if (!doc["uniforms"].is_array())
-            f.fail("/uniforms", "an array");
-        else
-            for (std::size_t i = 0; i < doc["uniforms"].size(); ++i) {
-                std::string at = "/uniforms/" + std::to_string(i);
-                const json& u = doc["uniforms"][i];
-                if (!u.is_object()) {
-                    f.fail(at, "an object {name, type[, array]}");
-                    continue;
-                }
-                ContractUniform uni{f.string(u, "name", at), f.string(u, "type", at), f.integer(u, "array", at, false)};
-                if (u.contains("type") && u["type"].is_string() && glTypeOf(uni.type) == 0)  // "" too
-                    f.fail(at + "/type", "a GLSL type such as mat4");
-                if (u.contains("name") && u["name"].is_string() && !isGlslIdentifier(uni.name))
-                    f.fail(at + "/name", "a GLSL identifier such as u_world");
-                c.uniforms.push_back(std::move(uni));
-            }
-    }
+    if (!doc->is_object()) return f.fail("/", "an object with \"attributes\" and \"uniforms\"");
+    if (doc->contains("attributes")) readAttributes(*doc, f, c);
+    if (doc->contains("uniforms")) readUniforms(*doc, f, c);
 }
 
 template <class T>

@@ -1,8 +1,8 @@
-// The binding contract: the vertex attributes and uniforms the runtime supplies,
-// declared once in a JSON file (modules/contract.json). A shader that declares an
-// attribute or uniform outside it is an error, because a misspelled name would
-// otherwise silently receive no data (the failure the FUDGE shader thesis §3 describes:
-// mistakes in shader strings show up only at run time).
+// Part of stage 3 (shader_inputs.hpp). The binding contract: the vertex attributes and
+// uniforms the runtime supplies, declared once in a JSON file (modules/contract.json). A
+// shader that declares an attribute or uniform outside it is an error, because a misspelled
+// name would otherwise silently receive no data (the failure the FUDGE shader thesis §3
+// describes: mistakes in shader strings show up only at run time).
 //
 //   { "attributes": [ { "name": "a_position", "type": "vec3", "location": 0 } ],
 //     "uniforms":   [ { "name": "u_world", "type": "mat4" },

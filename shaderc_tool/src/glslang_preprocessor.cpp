@@ -2,7 +2,6 @@
 // glslang_preprocessor.hpp).
 #include "glslang_preprocessor.hpp"
 
-#include "content_hash.hpp"
 
 #include <memory>
 #include <mutex>
@@ -255,6 +254,29 @@ class RecordingIncluder final : public glslang::TShader::Includer {
         return names;
     }
 
+    // `found` is open already, at `openAt` in the stack: unless #pragma once skips it, an
+    // include cycle. With an include guard, whether the guard is defined is glslang's to
+    // say: a probe asks it, and the error is reported only when the probe is entered.
+    IncludeResult* cycle(const EnteredFile& includer, int lineNumber, int column, const FoundFile& found,
+                         std::size_t openAt) {
+        const FileFlags& flags = flags_[found.canonical];
+        if (flags.once) return nothing();
+        auto names = chainNames(stack_.size());
+        names.erase(names.begin(), names.begin() + static_cast<std::ptrdiff_t>(openAt));
+        names.push_back(found.display);
+        Diagnostic error = makeError(includer.display, lineNumber, column,
+                                     "include cycle: " + describeChain(names) +
+                                         "; add an include guard or #pragma once, or break the cycle");
+        error.includedFrom = includer.chain;
+        if (flags.guard.empty()) {
+            run_.diagnostics.push_back(std::move(error));
+            return nothing();
+        }
+        pendingCycles_.push_back(std::move(error));
+        const std::string probeName = "!cycle:" + std::to_string(pendingCycles_.size() - 1);
+        probes_.push_back("#ifndef " + flags.guard + "\n#include \"" + probeName + "\"\n#endif\n");
+        return new IncludeResult("guard", probes_.back().data(), probes_.back().size(), nullptr);
+    }
     IncludeResult* include(int includerNumber, const LogicalLine& line, const IncludeTarget& target,
                            std::size_t depth) {
         EnteredFile& includer = run_.files[static_cast<std::size_t>(includerNumber)];
@@ -274,25 +296,8 @@ class RecordingIncluder final : public glslang::TShader::Includer {
         FileFlags& flags = flags_[found->canonical];
         const auto open = std::find_if(stack_.begin(), stack_.end(),
                                        [&](std::uint32_t n) { return run_.files[n].canonical == found->canonical; });
-        if (open != stack_.end() && !flags.reinclude) {
-            if (flags.once) return nothing();
-            auto names = chainNames(stack_.size());
-            names.erase(names.begin(), names.begin() + (open - stack_.begin()));
-            names.push_back(found->display);
-            Diagnostic cycle = makeError(includer.display, line.firstLine, column,
-                                         "include cycle: " + describeChain(names) +
-                                             "; add an include guard or #pragma once, or break the cycle");
-            cycle.includedFrom = includer.chain;
-            if (flags.guard.empty()) {
-                run_.diagnostics.push_back(std::move(cycle));
-                return nothing();
-            }
-            // Whether the guard is defined is glslang's to say: ask it.
-            pendingCycles_.push_back(std::move(cycle));
-            probes_.push_back("#ifndef " + flags.guard +
-                              "\n#include \"!cycle:" + std::to_string(pendingCycles_.size() - 1) + "\"\n#endif\n");
-            return new IncludeResult("guard", probes_.back().data(), probes_.back().size(), nullptr);
-        }
+        if (open != stack_.end() && !flags.reinclude)
+            return cycle(includer, line.firstLine, column, *found, static_cast<std::size_t>(open - stack_.begin()));
         if (flags.entered && !flags.reinclude) return nothing();  // include-once
         if (depth > static_cast<std::size_t>(kMaxIncludeDepth)) {
             auto names = chainNames(stack_.size());

@@ -1,4 +1,4 @@
-// Stage 2 of prism-shaderc: flattens a stage file and the #includes glslang's
+// Part of stage 4 (catalog_builder.hpp): flattens a stage file and the #includes glslang's
 // preprocessor follows into one driver-safe GLSL text with true `#line` numbers, and
 // scans modules for the catalogue (see include_resolver.hpp for the rules).
 #include "include_resolver.hpp"

@@ -1,4 +1,5 @@
-// Stage 2 of prism-shaderc: turns one stage file into a single driver-safe GLSL text.
+// Part of stage 4 (catalog_builder.hpp): turns one stage file into a single driver-safe
+// GLSL text.
 //
 // - Which #include, #version and #pragma lines are active is decided by glslang's own
 //   preprocessor (glslang_preprocessor.hpp), with the -D and variant macros; that is

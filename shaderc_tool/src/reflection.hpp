@@ -1,5 +1,6 @@
-// Stage 4 of prism-shaderc: the active attributes and uniforms of a linked program
-// (glslang's reflection), with attribute locations taken from the binding contract.
+// Part of stage 5 (validation_scheduler.hpp): the active attributes and uniforms of a
+// linked program (glslang's reflection), with attribute locations taken from the binding
+// contract.
 #pragma once
 
 #include <cstdint>

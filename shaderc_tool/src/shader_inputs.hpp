@@ -1,4 +1,5 @@
-// Turns the command line's files and directories into shaders: the stage files that
+// Stage 3 of prism-shaderc, with the contract (contract.hpp): the inputs. Turns the
+// command line's files and directories into shaders: the stage files that
 // share a base name (`phong.vert` + `phong.frag` [+ `phong.geom`], or `rain.comp` alone).
 #pragma once
 

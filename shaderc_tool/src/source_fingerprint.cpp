@@ -2,12 +2,13 @@
 #include "source_fingerprint.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
 #include <set>
 #include <sstream>
 
 #include "code_signature.hpp"
+#include "generated_format.hpp"
+#include "prism/hash/content_hash.hpp"
 #include "shown_path.hpp"
 
 namespace prism::shaderc {
@@ -15,28 +16,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::string_view kBlockStart = "// ---- sources read (prism-shaderc's no-op check): ";
-constexpr std::string_view kFilePrefix = "//   ";
-
-class Fnv1a {
-  public:
-    void mix(std::string_view s) {
-        for (unsigned char c : s) {
-            h_ ^= c;
-            h_ *= 1099511628211ull;
-        }
-        h_ ^= 0xff;
-        h_ *= 1099511628211ull;
-    }
-    std::string hex() const {
-        char buf[17];
-        std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h_));
-        return buf;
-    }
-
-  private:
-    std::uint64_t h_ = 1469598103934665603ull;
-};
+using format::kSourcesRecordFile;
+using format::kSourcesRecordStart;
 
 // The sorted names of `dir`'s regular files whose extension passes `keep`.
 std::vector<std::string> listing(const std::string& dir, bool (*keep)(const fs::path&)) {
@@ -58,37 +39,37 @@ bool isStage(const fs::path& p) {
 
 std::string fingerprintOf(const Options& o, const std::vector<std::string>& embedded, const SourceReader& reader,
                           ContentKey key) {
-    Fnv1a h;
-    h.mix(PRISM_VERSION);
-    if (key == ContentKey::Code) h.mix("code signatures");  // never equal to a text record
+    hash::ContentHash h;
+    h.add(PRISM_VERSION);
+    if (key == ContentKey::Code) h.add("code signatures");  // never equal to a text record
     // Only the options that change the generated files, with paths as embedded (never
     // --depfile, --stamp, --emit-glsl, -j or the error format).
     const auto shown = [&](const std::string& dir) { return recordedName(dir, o); };
-    h.mix("ns " + o.nameSpace);
-    h.mix("glsl " + std::to_string(o.glslVersion) + " " + o.glslProfile);
-    h.mix("out " + fs::path(o.output).filename().string());
-    for (const auto& [name, value] : o.defines) h.mix("-D " + name + "=" + value);
-    for (const auto& filter : o.variantFilters) h.mix("--variant " + filter);
-    for (const auto& contract : o.contracts) h.mix("--contract " + shown(contract));
-    for (const auto& dir : o.includeDirs) h.mix("-I " + shown(dir));
-    for (const auto& input : o.inputs) h.mix("in " + shown(input));
+    h.add("ns " + o.nameSpace);
+    h.add("glsl " + std::to_string(o.glslVersion) + " " + o.glslProfile);
+    h.add("out " + fs::path(o.output).filename().string());
+    for (const auto& [name, value] : o.defines) h.add("-D " + name + "=" + value);
+    for (const auto& filter : o.variantFilters) h.add("--variant " + filter);
+    for (const auto& contract : o.contracts) h.add("--contract " + shown(contract));
+    for (const auto& dir : o.includeDirs) h.add("-I " + shown(dir));
+    for (const auto& input : o.inputs) h.add("in " + shown(input));
     for (const auto& file : embedded) {
-        h.mix(file);
+        h.add(file);
         const auto text = reader.read(recordedToPath(file, o));
         if (!text)
-            h.mix(std::string("\0missing", 8));
+            h.add(std::string("\0missing", 8));
         else if (key == ContentKey::Code && hasCodeSignature(file))
-            h.mix(codeSignature(*text));
+            h.add(codeSignature(*text));
         else
-            h.mix(*text);
+            h.add(*text);
     }
     // Folders as embedded (relative to --base-dir), so that the same tree checked out at
     // another absolute path gives the same fingerprint and byte-identical outputs.
     for (const auto& dir : o.includeDirs)
-        for (const auto& name : listing(dir, isModule)) h.mix("-I " + shown(dir) + "/" + name);
+        for (const auto& name : listing(dir, isModule)) h.add("-I " + shown(dir) + "/" + name);
     for (const auto& input : o.inputs)
-        for (const auto& name : listing(input, isStage)) h.mix("in " + shown(input) + "/" + name);
-    return h.hex();
+        for (const auto& name : listing(input, isStage)) h.add("in " + shown(input) + "/" + name);
+    return h.hex64();
 }
 
 }  // namespace
@@ -105,21 +86,21 @@ SourcesRecord recordSources(const Options& o, const std::vector<std::string>& fi
 }
 
 std::string sourcesBlock(const SourcesRecord& record) {
-    std::string block = std::string(kBlockStart) + record.fingerprint + "\n";
-    for (const auto& f : record.files) block += std::string(kFilePrefix) + f + "\n";
+    std::string block = std::string(kSourcesRecordStart) + record.fingerprint + "\n";
+    for (const auto& f : record.files) block += std::string(kSourcesRecordFile) + f + "\n";
     return block;
 }
 
 std::optional<std::vector<std::string>> unchangedSources(const Options& o, const std::string& header,
                                                          const SourceReader& reader, ContentKey key) {
-    const auto start = header.rfind(kBlockStart);
+    const auto start = header.rfind(kSourcesRecordStart);
     if (start == std::string::npos) return std::nullopt;
-    std::istringstream in(header.substr(start + kBlockStart.size()));
+    std::istringstream in(header.substr(start + kSourcesRecordStart.size()));
     SourcesRecord recorded;
     std::getline(in, recorded.fingerprint);
     for (std::string line; std::getline(in, line);) {
-        if (!line.starts_with(kFilePrefix)) return std::nullopt;
-        recorded.files.push_back(line.substr(kFilePrefix.size()));
+        if (!line.starts_with(kSourcesRecordFile)) return std::nullopt;
+        recorded.files.push_back(line.substr(kSourcesRecordFile.size()));
     }
     if (recorded.files.empty() || fingerprintOf(o, recorded.files, reader, key) != recorded.fingerprint)
         return std::nullopt;

@@ -1,8 +1,8 @@
-// Stage 0 of prism-shaderc: the cheap no-op check. The data file records, at its end,
-// every file the run that wrote it read (relative to --base-dir) and a fingerprint of
-// the tool version, the options that change the output (never --depfile, --stamp or
-// --emit-glsl), those files' contents and the listings of the -I directories and input
-// folders. When all of that is unchanged, nothing the outputs depend on changed, and
+// The sources record of stage 2 (up_to_date.hpp), the cheap no-op check. The data file
+// records, at its end, every file the run that wrote it read (relative to --base-dir) and a
+// fingerprint of the tool version, the options that change the output (never --depfile,
+// --stamp or --emit-glsl), those files' contents and the listings of the -I directories and
+// input folders. When all of that is unchanged, nothing the outputs depend on changed, and
 // the run ends before any resolution or glslang call.
 //
 //   if (auto files = unchangedSources(options, dataText, reader)) ... // no-op; *files for the depfile

@@ -5,7 +5,7 @@
 #include <cctype>
 
 #include "code_signature.hpp"
-#include "content_hash.hpp"
+#include "prism/hash/content_hash.hpp"
 #include "directive_lines.hpp"
 
 namespace prism::shaderc {
@@ -32,7 +32,7 @@ std::string bodyHash(std::string_view text, std::size_t defineCount) {
         bodyStart = end == std::string_view::npos ? text.size() : end + 1;
     }
     const std::string_view body = text.substr(bodyStart);
-    ContentHash key;
+    hash::ContentHash key;
     if (body.find("__LINE__") != std::string_view::npos || body.find("__FILE__") != std::string_view::npos) {
         key.add("whole").add(body);
         return key.hex();
@@ -84,7 +84,7 @@ ValidationKeyBasis validationKeyBasis(const ResolvedStage& stage, std::size_t de
 }
 
 std::string validationKey(const ResolvedStage& stage, const DefineList& defines, const ValidationKeyBasis& basis) {
-    ContentHash key;
+    hash::ContentHash key;
     key.add("validation key 1").add(stage.versionDirective).add(basis.body);
     const auto met = [&](const std::string& name) {
         if (std::find(basis.met.begin(), basis.met.end(), name) != basis.met.end()) return true;

@@ -7,14 +7,16 @@
 #include <chrono>
 #include <filesystem>
 #include <functional>
+#include <iostream>
 #include <map>
 #include <mutex>
-#include <thread>
+#include <optional>
 
 #include <glslang/Public/ShaderLang.h>
 
-#include "content_hash.hpp"
+#include "prism/hash/content_hash.hpp"
 #include "job_pool.hpp"
+#include "validation_settings.hpp"
 
 namespace prism::shaderc {
 namespace {
@@ -49,7 +51,7 @@ std::string toolIdentity() {
 }  // namespace
 
 ProgramKey programKey(const ResolvedCatalog& rc, const Contract& contract, std::size_t s, std::size_t v) {
-    ContentHash tokens;
+    hash::ContentHash tokens;
     tokens.add("prism-shaderc validation").add(toolIdentity());
     for (const auto& a : contract.attributes) tokens.add(a.name).add(a.type).add(std::to_string(a.location));
     tokens.add("uniforms");
@@ -61,7 +63,7 @@ ProgramKey programKey(const ResolvedCatalog& rc, const Contract& contract, std::
             .add(resolved[st].versionDirective)
             .add(resolved[st].validationKey);
     }
-    ContentHash text;
+    hash::ContentHash text;
     text.add(tokens.hex());
     for (const auto& f : contract.files) text.add(f);
     for (std::size_t st = 0; st < resolved.size(); ++st) {
@@ -74,113 +76,137 @@ ProgramKey programKey(const ResolvedCatalog& rc, const Contract& contract, std::
     return {tokens.hex(), text.hex()};
 }
 
-ValidationStats validateCatalogScheduled(ResolvedCatalog& rc, const Contract& contract, int jobs,
-                                         ValidationCache& cache, DiagnosticSink& sink) {
-    struct Program {
-        std::size_t shader, variant;
-        ProgramKey key;
-    };
-    const auto start = std::chrono::steady_clock::now();
+namespace {
+
+struct Program {
+    std::size_t shader, variant;
+    ProgramKey key;
+};
+
+// Phase 1: every variant's program with its content key, on -j threads.
+std::vector<Program> keyPrograms(const ResolvedCatalog& rc, const Contract& contract, int jobs) {
     std::vector<Program> programs;
     for (std::size_t s = 0; s < rc.data.shaders.size(); ++s)
         for (std::size_t v = 0; v < rc.data.shaders[s].variants.size(); ++v) programs.push_back({s, v, {}});
     runPool(programs.size(), jobs,
             [&](std::size_t i) { programs[i].key = programKey(rc, contract, programs[i].shader, programs[i].variant); });
+    return programs;
+}
 
-    // One representative per token key, in catalogue order.
-    std::map<std::string, std::size_t> groupOf;
-    std::vector<std::size_t> representatives;
+// Phase 2: programs with one token key form a group; its first program represents it.
+struct Groups {
+    std::map<std::string, std::size_t> byTokens;  // token key -> group
+    std::vector<std::size_t> representatives;     // group -> program, in catalogue order
+    std::vector<std::optional<ValidatedVariant>> results;
+};
+
+Groups groupByTokens(const std::vector<Program>& programs) {
+    Groups groups;
     for (std::size_t i = 0; i < programs.size(); ++i)
-        if (groupOf.try_emplace(programs[i].key.tokens, representatives.size()).second) representatives.push_back(i);
+        if (groups.byTokens.try_emplace(programs[i].key.tokens, groups.representatives.size()).second)
+            groups.representatives.push_back(i);
+    groups.results.resize(groups.representatives.size());
+    return groups;
+}
 
-    ValidationStats stats;
-    stats.programs = programs.size();
-    stats.distinct = representatives.size();
-    std::vector<std::optional<ValidatedVariant>> groupResults(representatives.size());
+// Phase 3: the groups the cache answers; returns the others.
+std::vector<std::size_t> lookUpGroups(const std::vector<Program>& programs, Groups& groups,
+                                      const ValidationCache& cache) {
     std::vector<std::size_t> toValidate;
-    for (std::size_t g = 0; g < representatives.size(); ++g) {
-        groupResults[g] = cache.find(programs[representatives[g]].key);
-        if (groupResults[g]) ++stats.fromCache;
-        else toValidate.push_back(g);
+    for (std::size_t g = 0; g < groups.representatives.size(); ++g) {
+        groups.results[g] = cache.find(programs[groups.representatives[g]].key);
+        if (!groups.results[g]) toValidate.push_back(g);
     }
-    if (!toValidate.empty()) initializeValidator();
-    // Each distinct stage (kind, #version, token stream) of those programs is parsed
-    // once, then shared by the programs using it.
-    std::vector<std::vector<StageToValidate>> stageLists(toValidate.size());
-    std::map<std::string, std::size_t> stageIndex;
-    std::vector<const StageToValidate*> distinctStages;
-    std::vector<std::vector<std::size_t>> stageRefs(toValidate.size());
+    return toValidate;
+}
+
+// Phase 4: each distinct stage (kind, #version, token stream) of the groups to validate,
+// and which of them each group's program uses.
+struct StagePlan {
+    std::vector<std::vector<StageToValidate>> lists;  // [i]: the stages of group toValidate[i]
+    std::vector<const StageToValidate*> distinct;     // points into `lists`
+    std::vector<std::vector<std::size_t>> refs;       // [i]: indices into `distinct`
+};
+
+StagePlan planStages(const ResolvedCatalog& rc, const std::vector<Program>& programs, const Groups& groups,
+                     const std::vector<std::size_t>& toValidate) {
+    StagePlan plan;
+    plan.lists.resize(toValidate.size());
+    plan.refs.resize(toValidate.size());
     for (std::size_t i = 0; i < toValidate.size(); ++i) {
-        const Program& p = programs[representatives[toValidate[i]]];
-        stageLists[i] = stagesOf(rc, p.shader, p.variant);
+        const Program& p = programs[groups.representatives[toValidate[i]]];
+        plan.lists[i] = stagesOf(rc, p.shader, p.variant);
     }
+    std::map<std::string, std::size_t> index;
     for (std::size_t i = 0; i < toValidate.size(); ++i)
-        for (const auto& st : stageLists[i]) {
+        for (const auto& st : plan.lists[i]) {
             const std::string key = std::to_string(static_cast<int>(st.stage)) + " " + st.resolved.versionDirective +
                                     " " + st.resolved.validationKey;
-            auto [it, fresh] = stageIndex.try_emplace(key, distinctStages.size());
-            if (fresh) distinctStages.push_back(&st);
-            stageRefs[i].push_back(it->second);
+            auto [it, fresh] = index.try_emplace(key, plan.distinct.size());
+            if (fresh) plan.distinct.push_back(&st);
+            plan.refs[i].push_back(it->second);
         }
-    // A stage is parsed by the first program that needs it and freed after the last one:
-    // glslang's trees of every stage at once cost more in fresh memory than the parses.
+    return plan;
+}
+
+// Phase 5: validates the groups on -j threads and stores their results. A stage is parsed
+// by the first program that needs it and freed after the last one: glslang's trees of
+// every stage at once cost more in fresh memory than the parses.
+void validateGroups(const std::vector<Program>& programs, Groups& groups, const std::vector<std::size_t>& toValidate,
+                    const StagePlan& plan, const Contract& contract, int jobs, ValidationCache& cache) {
     struct StageSlot {
         std::once_flag parsed;
         std::shared_ptr<CompiledStage> compiled;
         std::atomic<std::size_t> users{0};
     };
-    std::vector<StageSlot> slots(distinctStages.size());
-    for (const auto& refs : stageRefs)
+    std::vector<StageSlot> slots(plan.distinct.size());
+    for (const auto& refs : plan.refs)
         for (auto k : refs) ++slots[k].users;
     runPool(toValidate.size(), jobs, [&](std::size_t i) {
-        const std::size_t g = toValidate[i];
-        const Program& p = programs[representatives[g]];
+        auto& result = groups.results[toValidate[i]];
         std::vector<std::shared_ptr<CompiledStage>> mine;
-        for (auto k : stageRefs[i]) {
-            std::call_once(slots[k].parsed, [&] { slots[k].compiled = compileStage(*distinctStages[k]); });
+        for (auto k : plan.refs[i]) {
+            std::call_once(slots[k].parsed, [&] { slots[k].compiled = compileStage(*plan.distinct[k]); });
             mine.push_back(slots[k].compiled);
         }
-        groupResults[g] = validateCompiledProgram(stageLists[i], mine, contract);
+        result = validateCompiledProgram(plan.lists[i], mine, contract);
         // Messages must speak of this program's own text, and a failed link leaves state
         // in shared stages: any message means a private run.
-        if (!groupResults[g]->diagnostics.empty()) groupResults[g] = validateProgram(stageLists[i], contract);
-        cache.store(p.key, *groupResults[g]);
+        if (!result->diagnostics.empty()) result = validateProgram(plan.lists[i], contract);
+        cache.store(programs[groups.representatives[toValidate[i]]].key, *result);
         mine.clear();
-        for (auto k : stageRefs[i])
+        for (auto k : plan.refs[i])
             if (--slots[k].users == 0) slots[k].compiled.reset();
     });
-    stats.validated = toValidate.size();
-    stats.stagesCompiled = distinctStages.size();
+}
 
-    // A group result with diagnostics speaks of its representative's lines: the other
-    // members (other texts) are validated on their own (rare: only when there are problems).
+// Phase 6: each program's result. A group result with diagnostics speaks of its
+// representative's lines: the other members (other texts) take the cache's result for
+// their own text, else are returned in `ownRuns` (rare: only when there are problems).
+std::vector<std::optional<ValidatedVariant>> programResults(const std::vector<Program>& programs, const Groups& groups,
+                                                            const ValidationCache& cache,
+                                                            std::vector<std::size_t>& ownRuns) {
     std::vector<std::optional<ValidatedVariant>> results(programs.size());
-    std::vector<std::size_t> ownRuns;
     for (std::size_t i = 0; i < programs.size(); ++i) {
-        const std::size_t g = groupOf[programs[i].key.tokens];
-        const Program& rep = programs[representatives[g]];
-        if (groupResults[g]->diagnostics.empty() || rep.key.text == programs[i].key.text) {
-            results[i] = groupResults[g];
+        const std::size_t g = groups.byTokens.at(programs[i].key.tokens);
+        const Program& rep = programs[groups.representatives[g]];
+        if (groups.results[g]->diagnostics.empty() || rep.key.text == programs[i].key.text) {
+            results[i] = groups.results[g];
         } else if (auto hit = cache.find(programs[i].key)) {
             results[i] = std::move(hit);
         } else {
             ownRuns.push_back(i);
         }
     }
-    if (!ownRuns.empty() && toValidate.empty()) initializeValidator();
-    runPool(ownRuns.size(), jobs, [&](std::size_t k) {
-        const Program& p = programs[ownRuns[k]];
-        results[ownRuns[k]] = validateProgram(stagesOf(rc, p.shader, p.variant), contract);
-    });
-    stats.validated += ownRuns.size();
-    if (!toValidate.empty() || !ownRuns.empty()) finalizeValidator();
-    cache.flush();
-    stats.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return results;
+}
 
+// Phase 7: diagnostics (errors of a shader with variants name the variant) and reflection.
+void reportResults(ResolvedCatalog& rc, const std::vector<Program>& programs,
+                   std::vector<std::optional<ValidatedVariant>>& results, DiagnosticSink& sink) {
     for (std::size_t i = 0; i < programs.size(); ++i) {
-        const Program& p = programs[i];
-        auto& shader = rc.data.shaders[p.shader];
-        auto& variant = shader.variants[p.variant];
+        auto& shader = rc.data.shaders[programs[i].shader];
+        auto& variant = shader.variants[programs[i].variant];
         for (auto d : results[i]->diagnostics) {
             if (shader.variants.size() > 1 && d.severity == Severity::Error)
                 d.notes.push_back({Severity::Note,
@@ -194,7 +220,51 @@ ValidationStats validateCatalogScheduled(ResolvedCatalog& rc, const Contract& co
         }
         variant.reflection = std::move(results[i]->reflection);
     }
+}
+
+}  // namespace
+
+ValidationStats validateCatalogScheduled(ResolvedCatalog& rc, const Contract& contract, int jobs,
+                                         ValidationCache& cache, DiagnosticSink& sink) {
+    const auto start = std::chrono::steady_clock::now();
+    const auto programs = keyPrograms(rc, contract, jobs);
+    auto groups = groupByTokens(programs);
+    const auto toValidate = lookUpGroups(programs, groups, cache);
+    if (!toValidate.empty()) initializeValidator();
+    const auto plan = planStages(rc, programs, groups, toValidate);
+    validateGroups(programs, groups, toValidate, plan, contract, jobs, cache);
+    std::vector<std::size_t> ownRuns;
+    auto results = programResults(programs, groups, cache, ownRuns);
+    if (!ownRuns.empty() && toValidate.empty()) initializeValidator();
+    runPool(ownRuns.size(), jobs, [&](std::size_t k) {
+        const Program& p = programs[ownRuns[k]];
+        results[ownRuns[k]] = validateProgram(stagesOf(rc, p.shader, p.variant), contract);
+    });
+    if (!toValidate.empty() || !ownRuns.empty()) finalizeValidator();
+    cache.flush();
+
+    ValidationStats stats;
+    stats.programs = programs.size();
+    stats.distinct = groups.representatives.size();
+    stats.fromCache = groups.representatives.size() - toValidate.size();
+    stats.validated = toValidate.size() + ownRuns.size();
+    stats.stagesCompiled = plan.distinct.size();
+    stats.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    reportResults(rc, programs, results, sink);
     return stats;
+}
+
+Validation validateCatalog(const Options& o, ResolvedCatalog& catalog, const Contract& contract) {
+    ValidationCache cache(validationCacheDir(o), catalogueCacheKey(o));
+    DiagnosticSink sink;
+    Validation validation;
+    validation.stats = validateCatalogScheduled(catalog, contract, o.jobs, cache, sink);
+    validation.diagnostics = sink.diagnostics();
+    if (o.printStats) {
+        printResolutionStats(std::cerr, catalog);
+        printValidationStats(std::cerr, validation.stats);
+    }
+    return validation;
 }
 
 }  // namespace prism::shaderc

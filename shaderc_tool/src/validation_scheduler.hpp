@@ -1,5 +1,5 @@
-// Stage 3 of prism-shaderc, scheduled: validates every variant of the catalogue with
-// as little glslang work as the results allow.
+// Stage 5 of prism-shaderc: validates every variant of the catalogue with as little
+// glslang work as the results allow (one program: validator.hpp).
 //   1. Each program gets a content key (validation_cache.hpp) from its stages'
 //      validation keys (validation_key.hpp); programs with the same token stream are
 //      validated once.
@@ -12,8 +12,7 @@
 // A shared result is reused only when it has no diagnostics; a program whose result
 // has some is validated with its own text, so every message keeps its own lines.
 //
-//   ValidationCache cache(validationCacheDir(options), catalogueCacheKey(options));
-//   auto stats = validateCatalogScheduled(catalog, contract, jobs, cache, sink);
+//   if (sink.errorCount() == 0) sink.reportAll(validateCatalog(options, catalog, contract).diagnostics);
 #pragma once
 
 #include <cstddef>
@@ -32,7 +31,16 @@ struct ValidationStats {
     double ms = 0;                   // wall clock
 };
 
-// Fills in every variant's reflection and reports diagnostics, as validateCatalog does.
+struct Validation {
+    ValidationStats stats;
+    std::vector<Diagnostic> diagnostics;  // every program's, in catalogue order (repeats dropped)
+};
+
+// The stage: validateCatalogScheduled with the cache the options name (--cache-dir), and
+// under --stats the resolution's and the validation's counts on stderr.
+Validation validateCatalog(const Options& options, ResolvedCatalog& catalog, const Contract& contract);
+
+// Fills in every variant's reflection and reports the diagnostics of every program.
 ValidationStats validateCatalogScheduled(ResolvedCatalog& catalog, const Contract& contract, int jobs,
                                          ValidationCache& cache, DiagnosticSink& sink);
 

@@ -5,7 +5,7 @@
 #include <iomanip>
 #include <ostream>
 
-#include "content_hash.hpp"
+#include "prism/hash/content_hash.hpp"
 
 namespace prism::shaderc {
 
@@ -18,7 +18,7 @@ std::string validationCacheDir(const Options& o) {
 }
 
 std::string catalogueCacheKey(const Options& o) {
-    ContentHash h;
+    hash::ContentHash h;
     h.add("catalogue");
     for (const auto& list : {o.inputs, o.includeDirs, o.contracts, o.variantFilters}) {
         h.add(std::to_string(list.size()));

@@ -238,6 +238,53 @@ ValidatedVariant validateProgram(const std::vector<StageToValidate>& stages, con
     return validateCompiledProgram(stages, compiled, contract);
 }
 
+namespace {
+
+// The stage interfaces' and the contract's checks; messages find the declarations' lines.
+std::vector<Diagnostic> checkInterfaces(const std::vector<StageToValidate>& stages,
+                                        const std::vector<glslang::TShader*>& shaders, const Contract& contract) {
+    SourceLocator locate;
+    locate.path = [&](std::size_t stage, std::uint32_t number) { return pathOf(stages[stage], number); };
+    locate.chain = [&](std::size_t stage, std::uint32_t number) { return chainOf(stages[stage], number); };
+    std::vector<StageInterface> interfaces;
+    for (std::size_t i = 0; i < stages.size(); ++i)
+        interfaces.push_back(extractStageInterface(stages[i].stage, *shaders[i]));
+    auto io = checkStageInterfaces(interfaces, locate);
+    auto bound = checkContract(contract, interfaces, locate);
+    if (!io.empty() || !bound.empty()) {  // messages: find the declarations' lines, then check again
+        for (std::size_t i = 0; i < stages.size(); ++i) {
+            const SourceLines lines(stages[i].resolved);
+            for (auto& v : interfaces[i].variables) lines.locateDeclaration(v);
+        }
+        io = checkStageInterfaces(interfaces, locate);
+        bound = checkContract(contract, interfaces, locate);
+    }
+    io.insert(io.end(), bound.begin(), bound.end());
+    return io;
+}
+
+// Links the program and reflects it into `result`; link errors become diagnostics.
+void linkAndReflect(const std::vector<StageToValidate>& stages, const std::vector<glslang::TShader*>& shaders,
+                    const Contract& contract, ValidatedVariant& result) {
+    glslang::TProgram program;
+    for (auto* sh : shaders) program.addShader(sh);
+    if (!program.link(EShMsgDefault)) {
+        std::istringstream log(program.getInfoLog());
+        std::string line;
+        while (std::getline(log, line))
+            if (line.rfind("ERROR: ", 0) == 0)
+                result.diagnostics.push_back(makeError(stages.front().path, 0, 0, "link: " + line.substr(7)));
+        if (result.diagnostics.empty())
+            result.diagnostics.push_back(makeError(stages.front().path, 0, 0, "glslang could not link the program"));
+        return;
+    }
+    result.reflection = reflectProgram(program, contract);
+    result.ok = true;
+    for (const auto& d : result.diagnostics) result.ok = result.ok && d.severity != Severity::Error;
+}
+
+}  // namespace
+
 ValidatedVariant validateCompiledProgram(const std::vector<StageToValidate>& stages,
                                          const std::vector<std::shared_ptr<CompiledStage>>& compiledStages,
                                          const Contract& contract) {
@@ -265,43 +312,10 @@ ValidatedVariant validateCompiledProgram(const std::vector<StageToValidate>& sta
     glslang::TPoolAllocator pool;
     glslang::SetThreadPoolAllocator(&pool);
 
-    SourceLocator locate;
-    locate.path = [&](std::size_t stage, std::uint32_t number) { return pathOf(stages[stage], number); };
-    locate.chain = [&](std::size_t stage, std::uint32_t number) { return chainOf(stages[stage], number); };
-    std::vector<StageInterface> interfaces;
-    for (std::size_t i = 0; i < stages.size(); ++i) {
-        interfaces.push_back(extractStageInterface(stages[i].stage, *shaders[i]));
-    }
-    auto io = checkStageInterfaces(interfaces, locate);
-    auto bound = checkContract(contract, interfaces, locate);
-    if (!io.empty() || !bound.empty()) {  // messages: find the declarations' lines, then check again
-        for (std::size_t i = 0; i < stages.size(); ++i) {
-            const SourceLines lines(stages[i].resolved);
-            for (auto& v : interfaces[i].variables) lines.locateDeclaration(v);
-        }
-        io = checkStageInterfaces(interfaces, locate);
-        bound = checkContract(contract, interfaces, locate);
-    }
-    result.diagnostics.insert(result.diagnostics.end(), io.begin(), io.end());
-    result.diagnostics.insert(result.diagnostics.end(), bound.begin(), bound.end());
+    const auto interfaceMessages = checkInterfaces(stages, shaders, contract);
+    result.diagnostics.insert(result.diagnostics.end(), interfaceMessages.begin(), interfaceMessages.end());
     // glslang's own link check would only repeat these, with less detail.
-    if (!io.empty() || !bound.empty()) return result;
-
-    glslang::TProgram program;
-    for (auto* sh : shaders) program.addShader(sh);
-    if (!program.link(EShMsgDefault)) {
-        std::istringstream log(program.getInfoLog());
-        std::string line;
-        while (std::getline(log, line))
-            if (line.rfind("ERROR: ", 0) == 0)
-                result.diagnostics.push_back(makeError(stages.front().path, 0, 0, "link: " + line.substr(7)));
-        if (result.diagnostics.empty())
-            result.diagnostics.push_back(makeError(stages.front().path, 0, 0, "glslang could not link the program"));
-        return result;
-    }
-    result.reflection = reflectProgram(program, contract);
-    result.ok = true;
-    for (const auto& d : result.diagnostics) result.ok = result.ok && d.severity != Severity::Error;
+    if (interfaceMessages.empty()) linkAndReflect(stages, shaders, contract, result);
     return result;
 }
 

@@ -1,6 +1,7 @@
-// Stage 3 of prism-shaderc: compiles every stage of one variant with glslang, links the
-// program, runs the cross-stage interface check and the contract check, and maps each
-// glslang message back to the module's own file:line (with its "included from" chain).
+// Part of stage 5 (validation_scheduler.hpp): compiles every stage of one variant with
+// glslang, links the program, runs the cross-stage interface check and the contract check,
+// and maps each glslang message back to the module's own file:line (with its "included
+// from" chain).
 #pragma once
 
 #include <memory>

@@ -6,6 +6,7 @@
 #include <deque>
 #include <map>
 #include <optional>
+#include <set>
 
 #include "job_pool.hpp"
 #include "structural_macros.hpp"
@@ -77,6 +78,123 @@ ResolveResult withDefines(const ResolveResult& from, const ResolveOptions& fromO
     return r;
 }
 
+// One shader's variants being resolved: results[variant][stage], and the run each result
+// was taken from (nullptr: the base run was not taken, the result is its own run).
+struct Resolution {
+    std::vector<std::vector<ResolveResult>> results;
+    std::vector<ResolveOptions> options;  // [variant]: the base options and its defines
+    std::vector<std::vector<char>> done;
+    std::vector<std::vector<const Representative*>> origin;
+    std::vector<std::deque<Representative>> reps;  // [stage]; a deque: `origin` points into it
+    bool share = true;
+};
+
+Resolution startResolution(std::size_t stages, const ResolveOptions& base, const std::vector<VariantChoice>& choices,
+                           const std::vector<ResolveResult>& baseRuns, bool share, const SourceReader& reader) {
+    const std::size_t variants = choices.size();
+    Resolution r;
+    r.share = share;
+    r.results.assign(variants, std::vector<ResolveResult>(stages));
+    r.options.assign(variants, base);
+    for (std::size_t v = 0; v < variants; ++v)
+        r.options[v].defines.insert(r.options[v].defines.end(), choices[v].defines.begin(), choices[v].defines.end());
+    r.done.assign(variants, std::vector<char>(stages, 0));
+    r.origin.assign(variants, std::vector<const Representative*>(stages));
+    r.reps.resize(stages);
+    if (share && baseRuns.size() == stages)
+        for (std::size_t st = 0; st < stages; ++st)
+            r.reps[st].push_back({&baseRuns[st], &base, structureOf(baseRuns[st], reader)});
+    return r;
+}
+
+// Takes the result of a run that variant `v` may share, if any.
+bool takeShared(Resolution& r, std::size_t v, std::size_t st) {
+    if (!r.share) return false;
+    for (const auto& rep : r.reps[st]) {
+        if (!mayShare(rep, r.options[v])) continue;
+        r.results[v][st] = withDefines(*rep.result, *rep.options, r.options[v]);
+        r.origin[v][st] = &rep;
+        r.done[v][st] = 1;
+        return true;
+    }
+    return false;
+}
+
+// The group of variant `v` in `round`: the values of the macros that the first
+// representative found structural; the first variant alone when there is no
+// representative yet; each variant alone when the first has no structure, or from round 2 on.
+std::vector<std::string> groupOf(const Resolution& r, const VariantChoice& choice, std::size_t v, std::size_t st,
+                                 int round) {
+    std::vector<std::string> group;
+    if (r.share && r.reps[st].empty()) {
+        group.push_back("first");
+    } else if (r.share && round < 2 && r.reps[st].front().structure) {
+        for (const auto& [name, value] : choice.defines)
+            group.push_back(r.reps[st].front().structure->decisive.contains(name) ? value : "\x01");
+    } else {
+        group.push_back(std::to_string(v));
+    }
+    return group;
+}
+
+// One round: shares what can be shared, and returns the (variant, stage) runs to make:
+// one per group (every one without sharing).
+std::vector<std::pair<std::size_t, std::size_t>> planRound(Resolution& r, const std::vector<VariantChoice>& choices,
+                                                            int round) {
+    std::vector<std::pair<std::size_t, std::size_t>> toRun;
+    for (std::size_t st = 0; st < r.reps.size(); ++st) {
+        std::set<std::vector<std::string>> groupsTaken;
+        for (std::size_t v = 0; v < choices.size(); ++v) {
+            if (r.done[v][st] || takeShared(r, v, st)) continue;
+            if (groupsTaken.insert(groupOf(r, choices[v], v, st, round)).second || !r.share) toRun.emplace_back(v, st);
+        }
+    }
+    return toRun;
+}
+
+// Rounds: share what can be shared; of the rest, resolve one variant per group of like
+// structural values (every variant on its own in the last round), and repeat.
+void resolveInRounds(Resolution& r, const std::vector<std::string>& stagePaths,
+                     const std::vector<VariantChoice>& choices, const SourceReader& reader, int jobs) {
+    for (int round = 0;; ++round) {
+        const auto toRun = planRound(r, choices, round);
+        if (toRun.empty()) break;
+        runPool(toRun.size(), jobs, [&](std::size_t i) {
+            const auto [v, st] = toRun[i];
+            r.results[v][st] = resolveStage(stagePaths[st], r.options[v], reader);
+            r.done[v][st] = 1;
+        });
+        for (const auto& [v, st] : toRun)
+            r.reps[st].push_back(
+                {&r.results[v][st], &r.options[v], r.share ? structureOf(r.results[v][st], reader) : std::nullopt});
+    }
+}
+
+// Keys: a shared result has its representative's files and body, so the costly part
+// (the body's signature, which define names the files meet) is worked out once per run.
+void assignValidationKeys(Resolution& r, const SourceReader& reader, int jobs) {
+    std::vector<std::pair<std::size_t, std::size_t>> all;
+    for (std::size_t v = 0; v < r.results.size(); ++v)
+        for (std::size_t st = 0; st < r.reps.size(); ++st) all.emplace_back(v, st);
+    std::map<const Representative*, ValidationKeyBasis> bases;
+    std::vector<const Representative*> needed;
+    for (const auto& [v, st] : all)
+        if (r.origin[v][st] && bases.try_emplace(r.origin[v][st]).second) needed.push_back(r.origin[v][st]);
+    std::vector<std::string> names;
+    if (!r.options.empty())
+        for (const auto& d : r.options[0].defines) names.push_back(d.first);
+    runPool(needed.size(), jobs, [&](std::size_t i) {
+        const Representative* rep = needed[i];
+        bases.at(rep) = validationKeyBasis(rep->result->stage, rep->options->defines.size(), names, reader);
+    });
+    runPool(all.size(), jobs, [&](std::size_t i) {
+        const auto [v, st] = all[i];
+        auto& stage = r.results[v][st].stage;
+        stage.validationKey = r.origin[v][st] ? validationKey(stage, r.options[v].defines, bases.at(r.origin[v][st]))
+                                              : validationKey(stage, r.options[v].defines, reader);
+    });
+}
+
 }  // namespace
 
 std::vector<std::vector<ResolveResult>> resolveVariants(const std::vector<std::string>& stagePaths,
@@ -84,85 +202,10 @@ std::vector<std::vector<ResolveResult>> resolveVariants(const std::vector<std::s
                                                         const std::vector<VariantChoice>& choices,
                                                         const SourceReader& reader, int jobs,
                                                         const std::vector<ResolveResult>& baseRuns, bool share) {
-    const std::size_t variants = choices.size(), stages = stagePaths.size();
-    std::vector<std::vector<ResolveResult>> results(variants, std::vector<ResolveResult>(stages));
-    std::vector<ResolveOptions> options(variants, base);
-    for (std::size_t v = 0; v < variants; ++v)
-        options[v].defines.insert(options[v].defines.end(), choices[v].defines.begin(), choices[v].defines.end());
-    std::vector<std::vector<char>> done(variants, std::vector<char>(stages, 0));
-    std::vector<std::vector<const Representative*>> origin(variants, std::vector<const Representative*>(stages));
-    std::vector<std::deque<Representative>> reps(stages);  // a deque: `origin` points into it
-    if (share && baseRuns.size() == stages)
-        for (std::size_t st = 0; st < stages; ++st)
-            reps[st].push_back({&baseRuns[st], &base, structureOf(baseRuns[st], reader)});
-
-    // Rounds: share what can be shared; of the rest, resolve one variant per group of
-    // like structural values (every variant on its own in the last round), and repeat.
-    for (int round = 0;; ++round) {
-        std::vector<std::pair<std::size_t, std::size_t>> toRun;  // (variant, stage)
-        for (std::size_t st = 0; st < stages; ++st) {
-            std::map<std::vector<std::string>, bool> groupsTaken;
-            for (std::size_t v = 0; v < variants; ++v) {
-                if (done[v][st]) continue;
-                bool shared = false;
-                for (const auto& rep : reps[st]) {
-                    if (share && mayShare(rep, options[v])) {
-                        results[v][st] = withDefines(*rep.result, *rep.options, options[v]);
-                        origin[v][st] = &rep;
-                        done[v][st] = 1;
-                        shared = true;
-                        break;
-                    }
-                }
-                if (shared) continue;
-                // The group: the values of the macros that the first representative found
-                // structural; the first variant alone when there is no representative yet;
-                // each variant alone when the first has no structure, or from round 2 on.
-                std::vector<std::string> group;
-                if (share && reps[st].empty()) {
-                    group.push_back("first");
-                } else if (share && round < 2 && reps[st].front().structure) {
-                    for (const auto& [name, value] : choices[v].defines)
-                        group.push_back(reps[st].front().structure->decisive.contains(name) ? value : "\x01");
-                } else {
-                    group.push_back(std::to_string(v));
-                }
-                if (groupsTaken.try_emplace(group, true).second || !share) toRun.emplace_back(v, st);
-            }
-        }
-        if (toRun.empty()) break;
-        runPool(toRun.size(), jobs, [&](std::size_t i) {
-            const auto [v, st] = toRun[i];
-            results[v][st] = resolveStage(stagePaths[st], options[v], reader);
-            done[v][st] = 1;
-        });
-        for (const auto& [v, st] : toRun)
-            reps[st].push_back({&results[v][st], &options[v], share ? structureOf(results[v][st], reader) : std::nullopt});
-    }
-
-    // Keys: a shared result has its representative's files and body, so the costly part
-    // (the body's signature, which define names the files meet) is worked out once per run.
-    std::vector<std::pair<std::size_t, std::size_t>> all;
-    for (std::size_t v = 0; v < variants; ++v)
-        for (std::size_t st = 0; st < stages; ++st) all.emplace_back(v, st);
-    std::map<const Representative*, ValidationKeyBasis> bases;
-    std::vector<const Representative*> needed;
-    for (const auto& [v, st] : all)
-        if (origin[v][st] && bases.try_emplace(origin[v][st]).second) needed.push_back(origin[v][st]);
-    std::vector<std::string> names;
-    if (variants > 0)
-        for (const auto& d : options[0].defines) names.push_back(d.first);
-    runPool(needed.size(), jobs, [&](std::size_t i) {
-        const Representative* rep = needed[i];
-        bases.at(rep) = validationKeyBasis(rep->result->stage, rep->options->defines.size(), names, reader);
-    });
-    runPool(all.size(), jobs, [&](std::size_t i) {
-        const auto [v, st] = all[i];
-        auto& stage = results[v][st].stage;
-        stage.validationKey = origin[v][st] ? validationKey(stage, options[v].defines, bases.at(origin[v][st]))
-                                            : validationKey(stage, options[v].defines, reader);
-    });
-    return results;
+    Resolution r = startResolution(stagePaths.size(), base, choices, baseRuns, share, reader);
+    resolveInRounds(r, stagePaths, choices, reader, jobs);
+    assignValidationKeys(r, reader, jobs);
+    return std::move(r.results);
 }
 
 }  // namespace prism::shaderc

@@ -1,6 +1,6 @@
-// Stage 2b of prism-shaderc: resolves every stage of every chosen variant of a shader
-// (include_resolver.hpp) on `jobs` threads (the readers cache files behind a mutex and
-// glslang's preprocessor is thread-safe per TShader).
+// Part of stage 4 (catalog_builder.hpp): resolves every stage of every chosen variant of a
+// shader (include_resolver.hpp) on `jobs` threads (the readers cache files behind a mutex
+// and glslang's preprocessor is thread-safe per TShader).
 //
 // Variants share what cannot differ: the flattened text is the files glslang enters and
 // the directives it reaches, and only structural macros (structural_macros.hpp) can
@@ -10,8 +10,7 @@
 // found the variant axes, are the first such runs; then one variant per group of like
 // structural values runs glslang; any variant still left runs it on its own.
 // With `share` false every variant runs glslang (the reference that tests and the
-// variant_sharing fuzzer compare with; prism-shaderc does so under
-// PRISM_SHADERC_NO_VARIANT_SHARING=1).
+// variant_sharing fuzzer compare with; prism-shaderc does so with --no-variant-sharing).
 // Last, each stage gets its validation key (validation_key.hpp).
 //
 //   auto results = resolveVariants(stagePaths, baseOptions, choices, reader, jobs, baseRuns, true);

@@ -3,6 +3,8 @@
 // text pool that stores each module body once.
 #include <gtest/gtest.h>
 
+#include "data_writer.hpp"
+#include "generated_format.hpp"
 #include "header_writer.hpp"
 
 using namespace prism::shaderc;
@@ -120,7 +122,8 @@ TEST(HeaderWriter, HeaderIgnoresTextEdits) {
 // or from another run (then it rewrites it instead of stopping at the no-op).
 TEST(DataWriter, RecordsTheHeadersHash) {
     auto c = twoVariantCatalogue("// Provides: one.\nfloat f() { return 1.0; }\n");
-    c.sourcesBlock = "// ---- sources read (prism-shaderc's no-op check): 0123\n//   a.glsl\n";
+    c.sourcesBlock =
+        std::string(format::kSourcesRecordStart) + "0123\n" + std::string(format::kSourcesRecordFile) + "a.glsl\n";
     const auto header = writeHeader(c, "x.cpp");
     const auto data = writeData(c, "x.hpp", header);
     EXPECT_TRUE(headerMatchesData(header, data));

@@ -1,11 +1,10 @@
 // Variants that cannot differ share one resolution (variant_resolution.hpp): the output
 // must be byte-identical to resolving every variant on its own
-// (PRISM_SHADERC_NO_VARIANT_SHARING=1), for the whole project catalogue, and a macro
+// (--no-variant-sharing), for the whole project catalogue, and a macro
 // met only in a file that another value of an axis includes must still count.
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <vector>
 #include <filesystem>
 #include <string>
@@ -39,9 +38,7 @@ TEST(VariantSharing, ProjectCatalogueIsByteIdenticalWithAndWithoutSharing) {
     fs::create_directories(dir.path() / "own");
     auto shared = runShaderc(args, (dir.path() / "shared").string());
     ASSERT_EQ(shared.exitCode, 0) << shared.output;
-    ::setenv("PRISM_SHADERC_NO_VARIANT_SHARING", "1", 1);
-    auto own = runShaderc(args, (dir.path() / "own").string());
-    ::unsetenv("PRISM_SHADERC_NO_VARIANT_SHARING");
+    auto own = runShaderc("--no-variant-sharing " + args, (dir.path() / "own").string());
     ASSERT_EQ(own.exitCode, 0) << own.output;
     const std::string a = treeText(dir.path() / "shared/glsl"), b = treeText(dir.path() / "own/glsl");
     EXPECT_GT(a.size(), 100000u);
@@ -112,9 +109,7 @@ TEST(VariantSharing, RoundaboutStructuresMatchEveryVariantsOwnRun) {
     dir.write("s/m/d.glsl", "// Provides: d().\nfloat d() { return 2.0; }\n");
     const std::string args = "--check --stats --cache-dir none s --emit-glsl ";
     auto shared = runShaderc(args + "shared", dir.str());
-    ::setenv("PRISM_SHADERC_NO_VARIANT_SHARING", "1", 1);
-    auto own = runShaderc(args + "own", dir.str());
-    ::unsetenv("PRISM_SHADERC_NO_VARIANT_SHARING");
+    auto own = runShaderc("--no-variant-sharing " + args + "own", dir.str());
     ASSERT_EQ(shared.exitCode, 0) << shared.output;
     ASSERT_EQ(own.exitCode, 0) << own.output;
     const std::string a = treeText(dir.path() / "shared"), b = treeText(dir.path() / "own");
@@ -145,9 +140,8 @@ TEST(VariantSharing, AnAxisValueNamingAMacroIsCheckedInItsOwnRun) {
                           "void main() { gl_Position = vec4(float(E)); }\n");
     dir.write("s/a.frag", "#version 330 core\nout vec4 o;\nvoid main() { o = vec4(1.0); }\n");
     for (const bool share : {true, false}) {
-        if (!share) ::setenv("PRISM_SHADERC_NO_VARIANT_SHARING", "1", 1);
-        auto run = runShaderc("--check --cache-dir none s", dir.str());
-        ::unsetenv("PRISM_SHADERC_NO_VARIANT_SHARING");
+        const std::string sharing = share ? "" : "--no-variant-sharing ";
+        auto run = runShaderc(sharing + "--check --cache-dir none s", dir.str());
         EXPECT_EQ(run.exitCode, 1) << "sharing " << share << ":\n" << run.output;
         EXPECT_NE(run.output.find("expand to more than 1,000,000 tokens"), std::string::npos)
             << "sharing " << share << ":\n" << run.output;

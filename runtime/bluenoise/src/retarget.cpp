@@ -10,6 +10,7 @@
 #include "prism/bluenoise/gray_png.hpp"
 #include "prism/bluenoise/random.hpp"
 #include "prism/bluenoise/samplers.hpp"
+#include "prism/hash/content_hash.hpp"
 
 namespace prism::bluenoise {
 namespace {
@@ -128,8 +129,8 @@ void validate(const Mask& mask, const RetargetOptions& o) {
 }
 
 std::string cacheKey(const Mask& mask, const RetargetOptions& o) {
-    std::uint64_t hash = 1469598103934665603ull;  // FNV-1a over the ranks
-    for (std::uint32_t r : mask.rank) hash = (hash ^ r) * 1099511628211ull;
+    const std::uint64_t hash =
+        hash::hash64({reinterpret_cast<const char*>(mask.rank.data()), mask.rank.size() * sizeof(std::uint32_t)});
     std::ostringstream key;
     key.precision(17);
     key << "prism-bluenoise-retarget 1 " << mask.width << "x" << mask.height << " mask " << hash << " radius "

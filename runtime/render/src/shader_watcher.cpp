@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "prism/hash/content_hash.hpp"
 #include "shader_rebuild.hpp"
 
 namespace prism::render {
@@ -15,15 +16,6 @@ namespace {
 
 std::string normalised(const fs::path& p) {
     return fs::absolute(p).lexically_normal().string();
-}
-
-std::uint64_t fnv1a(const std::string& text) {
-    std::uint64_t h = 1469598103934665603ull;
-    for (unsigned char c : text) {
-        h ^= c;
-        h *= 1099511628211ull;
-    }
-    return h;
 }
 
 std::string variantLabel(const std::string& shader, const std::string& variant) {
@@ -97,7 +89,7 @@ bool ShaderWatcher::refresh(const std::string& path, FileState& state) {
     std::ifstream in(path, std::ios::binary);
     std::ostringstream text;
     text << in.rdbuf();
-    const auto hash = fnv1a(text.str());
+    const auto hash = hash::hash64(text.str());
     const bool changed = !state.exists || hash != state.hash;
     const auto racyWindow = std::chrono::duration_cast<fs::file_time_type::duration>(std::chrono::seconds(2));
     const bool racy = mtime >= (readAt - racyWindow).time_since_epoch().count();

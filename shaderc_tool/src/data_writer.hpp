@@ -1,0 +1,31 @@
+// Part of stage 6 (outputs.hpp): the data file X.cpp beside the header X.hpp
+// (header_writer.hpp). Each distinct piece of GLSL text is stored once, in a pool of raw
+// string literals; a stage is a list of references to pool pieces, and so is a module's
+// own text. The file ends with the records the no-op check reads back (up_to_date.hpp):
+// the inputs fingerprint in its banner, the header's hash, and the sources record. Tags
+// and layout: generated_format.hpp.
+//
+//   const std::string header = writeHeader(catalog, "shaders.cpp");
+//   writeIfChanged(dataPathFor("gen/shaders.hpp"), writeData(catalog, "shaders.hpp", header), error);
+#pragma once
+
+#include <string>
+
+#include "catalog_model.hpp"
+
+namespace prism::shaderc {
+
+// Where the data file of header `headerPath` goes: the same path with extension .cpp.
+std::string dataPathFor(const std::string& headerPath);
+
+// The data file's text; it includes the header by its file name (it sits beside it) and
+// records a hash of `headerText`, so that a run can tell a stale or edited header.
+std::string writeData(const CatalogData& catalog, const std::string& headerFileName, const std::string& headerText);
+
+// True when `dataText` (or its tail) records the hash of `headerText`.
+bool headerMatchesData(const std::string& headerText, const std::string& dataText);
+
+// The fingerprint recorded in an existing data file's banner, or "" when there is none.
+std::string recordedFingerprint(const std::string& dataText);
+
+}  // namespace prism::shaderc

@@ -1,0 +1,42 @@
+// The outputs of a run (see outputs.hpp).
+#include "outputs.hpp"
+
+#include <filesystem>
+
+#include "data_writer.hpp"
+#include "depfile.hpp"
+#include "glsl_emitter.hpp"
+#include "header_writer.hpp"
+#include "output_file.hpp"
+
+namespace prism::shaderc {
+
+std::string writeOutputs(const Options& o, const ResolvedCatalog& rc) {
+    std::string error;
+    const auto name = [](const std::string& path) { return std::filesystem::path(path).filename().string(); };
+    if (!o.output.empty()) {
+        const std::string data = dataPathFor(o.output);
+        const std::string header = writeHeader(rc.data, name(data));
+        const bool headerExisted = std::filesystem::exists(o.output);
+        if (writeIfChanged(o.output, header, error) == WriteOutcome::Failed ||
+            writeIfChanged(data, writeData(rc.data, name(o.output), header), error) == WriteOutcome::Failed) {
+            std::error_code ec;
+            if (!headerExisted) std::filesystem::remove(o.output, ec);  // nothing written on failure
+            return error;
+        }
+    }
+    if (!o.emitGlslDir.empty() && !emitGlsl(o.emitGlslDir, rc.data, error)) return error;
+    return {};
+}
+
+std::string writeBuildSystemFiles(const Options& o, const std::vector<std::string>& filesRead) {
+    std::string error;
+    const std::string target = !o.stamp.empty() ? o.stamp : o.output;
+    if (!o.depfile.empty() && !target.empty() &&
+        writeIfChanged(o.depfile, makeDepfile(target, filesRead), error) == WriteOutcome::Failed)
+        return error;
+    if (!o.stamp.empty() && !touchFile(o.stamp, error)) return error;
+    return {};
+}
+
+}  // namespace prism::shaderc
