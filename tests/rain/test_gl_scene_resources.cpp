@@ -9,12 +9,12 @@
 #include <vector>
 
 #include "prism/rain/rain_scene.hpp"
-#include "rain_gl_support.hpp"
+#include "prism/test/gl_test.hpp"
 
 namespace prism::rain::test {
 namespace {
 
-class RainSceneResources : public RainGlTest {};
+class RainSceneResources : public ::prism::test::GlTest {};
 
 bool anyContains(const std::vector<std::string>& names, const std::string& part) {
     return std::any_of(names.begin(), names.end(),
