@@ -6,15 +6,26 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "prism/test/cli_case.hpp"
 
 namespace {
 
+// {name, exit status, args, stdout regex, stderr regex, files, the case it needs}
 struct Row {
+    Row(std::string name, int exitCode, std::vector<std::string> args, std::string outRegex = "",
+        std::string errRegex = "", std::vector<std::string> files = {}, std::string needs = "")
+        : name(std::move(name)),
+          exitCode(exitCode),
+          args(std::move(args)),
+          outRegex(std::move(outRegex)),
+          errRegex(std::move(errRegex)),
+          files(std::move(files)),
+          needs(std::move(needs)) {}
     std::string name;
-    int exitCode = 0;
+    int exitCode;
     std::vector<std::string> args;
     std::string outRegex, errRegex;
     std::vector<std::string> files;
@@ -108,13 +119,22 @@ const Row kRows[] = {
 std::vector<prism::test::CliCase> cases() {
     std::vector<prism::test::CliCase> cases;
     for (const Row& r : kRows)
-        cases.push_back({.name = r.name, .program = "prism-bluenoise", .args = r.args, .exitCode = r.exitCode,
-                         .files = r.files, .needs = r.needs, .outRegex = r.outRegex, .errRegex = r.errRegex});
+        cases.push_back({.name = r.name,
+                         .program = "prism-bluenoise",
+                         .args = r.args,
+                         .exitCode = r.exitCode,
+                         .errText = "",
+                         .files = r.files,
+                         .needs = r.needs,
+                         .outRegex = r.outRegex,
+                         .errRegex = r.errRegex});
     return cases;
 }
 
-const prism::test::CliSuite kSuite{
-    .root = PRISM_BLUENOISE_TEST_TMP, .apps = {{"prism-bluenoise", PRISM_BLUENOISE_CLI}}, .cases = cases()};
+const prism::test::CliSuite kSuite{.root = PRISM_BLUENOISE_TEST_TMP,
+                                   .apps = {{"prism-bluenoise", PRISM_BLUENOISE_CLI}},
+                                   .cases = cases(),
+                                   .scenes = ""};
 
 class BluenoiseCli : public ::testing::TestWithParam<prism::test::CliCase> {};
 

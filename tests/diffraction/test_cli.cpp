@@ -26,7 +26,7 @@ Result run(const std::string& args) {
     std::vector<std::string> command{PRISM_DIFFRACTION_CLI};
     std::istringstream words(args);
     for (std::string word; words >> word;) command.push_back(word);
-    const auto r = prism::test::runCommand(command, {.mergeStderr = true});
+    const auto r = prism::test::runCommand(command, {.workDir = {}, .mergeStderr = true});
     return {r.exitCode, r.out};
 }
 

@@ -44,7 +44,7 @@ fs::path testDir() {
 test::CommandResult runPrismRender(const std::vector<std::string>& args, const fs::path& dir) {
     std::vector<std::string> command{PRISM_RENDER_EXECUTABLE};
     command.insert(command.end(), args.begin(), args.end());
-    return test::runCommand(command, {.workDir = dir});
+    return test::runCommand(command, {.workDir = dir, .mergeStderr = false});
 }
 
 fs::path writeFile(const fs::path& path, const std::string& text) {

@@ -21,7 +21,7 @@ using prism::test::ScratchDir;
 namespace {
 
 std::string runGlslangValidator(const fs::path& file) {
-    return prism::test::runCommand({"glslangValidator", file.string()}, {.mergeStderr = true}).out;
+    return prism::test::runCommand({"glslangValidator", file.string()}, {.workDir = {}, .mergeStderr = true}).out;
 }
 
 }  // namespace

@@ -28,7 +28,7 @@ std::string expand(std::string text, const CliSuite& suite, const fs::path& fold
 CommandResult runCase(const CliSuite& suite, const CliCase& c, const fs::path& folder) {
     std::vector<std::string> command = appCommand(suite, c.program);
     for (const auto& a : c.args) command.push_back(expand(a, suite, folder));
-    return runCommand(command, {.workDir = folder});
+    return runCommand(command, {.workDir = folder, .mergeStderr = false});
 }
 
 bool isPng(const fs::path& path) {
@@ -40,16 +40,19 @@ bool isPng(const fs::path& path) {
 void checkOutcome(const CliSuite& suite, const CliCase& c, const fs::path& folder, const CommandResult& r) {
     EXPECT_EQ(r.exitCode, c.exitCode) << r;
     EXPECT_NE(r.err.find(c.errText), std::string::npos) << "stderr lacks '" << c.errText << "'\n" << r;
-    if (!c.outRegex.empty()) EXPECT_TRUE(std::regex_search(r.out, std::regex(c.outRegex))) << c.outRegex << "\n" << r;
-    if (!c.errRegex.empty()) EXPECT_TRUE(std::regex_search(r.err, std::regex(c.errRegex))) << c.errRegex << "\n" << r;
+    // An empty regex matches any text.
+    EXPECT_TRUE(std::regex_search(r.out, std::regex(c.outRegex))) << "stdout does not match " << c.outRegex << "\n"
+                                                                  << r;
+    EXPECT_TRUE(std::regex_search(r.err, std::regex(c.errRegex))) << "stderr does not match " << c.errRegex << "\n"
+                                                                  << r;
     for (const auto& f : c.files) {
         const fs::path path = expand(f, suite, folder);
         EXPECT_TRUE(fs::is_regular_file(path) && (path.extension() != ".png" || isPng(path)))
             << f << " was not written";
     }
-    if (c.exitCode == 2)
-        for (const auto& e : fs::directory_iterator(folder))
-            EXPECT_NE(e.path().filename().string().rfind("out", 0), 0u) << "a refused run wrote " << e.path();
+    if (c.exitCode != 2) return;
+    for (const auto& e : fs::directory_iterator(folder))
+        EXPECT_NE(e.path().filename().string().rfind("out", 0), 0u) << "a refused run wrote " << e.path();
 }
 
 }  // namespace
