@@ -15,10 +15,10 @@ run() {
   if ! "$@" > "$out/$name.log" 2>&1; then status=1; fi
   grep -E "PASSED|FAILED TEST|target|^\| " "$out/$name.log" | tail -12
 }
-run gl_context  "$build/tests/gl/prism_gl_tests" --gtest_filter='EglContext.*:ContextLifetime.*'
+run gl_context  "$build/tests/gl/prism_gl_gl_tests" --gtest_filter='EglContext.*:ContextLifetime.*'
 run water_gl    "$build/tests/water/prism_water_gl_tests" --gtest_filter='-*Golden*'
 run diffraction "$build/tests/diffraction/prism_diffraction_gl_tests"
-run rendering   "$build/tests/rendering/prism_rendering_tests" --gtest_filter='-*Golden*:*Cli*'
+run rendering   "$build/tests/rendering/prism_rendering_gl_tests" --gtest_filter='-*Golden*'
 run rain_gl     "$build/tests/rain/prism_rain_gl_tests" --gtest_filter='-*Golden*'
 run bluenoise   "$build/tests/bluenoise/prism_bluenoise_gl_tests"
 run bench_water "$build/bench/water/prism_bench_water" --grids 128 256 512 1024

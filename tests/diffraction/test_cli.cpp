@@ -3,15 +3,16 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <png.h>
-#include <sys/wait.h>
 
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <vector>
 #include <numbers>
+#include <sstream>
 #include <string>
+
+#include "prism/test/run_command.hpp"
 
 namespace {
 
@@ -20,16 +21,13 @@ struct Result {
     std::string output;  // stdout and stderr
 };
 
+// prism-diffraction with `args` split at spaces (no argument here contains one).
 Result run(const std::string& args) {
-    Result r;
-    const std::string command = std::string(PRISM_DIFFRACTION_CLI) + " " + args + " 2>&1";
-    std::FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return r;
-    std::array<char, 4096> buffer{};
-    while (std::fgets(buffer.data(), buffer.size(), pipe)) r.output += buffer.data();
-    const int status = pclose(pipe);
-    r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
+    std::vector<std::string> command{PRISM_DIFFRACTION_CLI};
+    std::istringstream words(args);
+    for (std::string word; words >> word;) command.push_back(word);
+    const auto r = prism::test::runCommand(command, {.workDir = {}, .mergeStderr = true});
+    return {r.exitCode, r.out};
 }
 
 }  // namespace

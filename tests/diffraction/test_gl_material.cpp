@@ -15,6 +15,7 @@
 #include "prism/gl/gl.hpp"
 #include "prism/gl/gl_context.hpp"
 #include "diffraction_gl_support.hpp"
+#include "prism/test/gl_test.hpp"
 #include "prism/render/gpu_mesh.hpp"
 #include "prism/geometry/procedural_meshes.hpp"
 #include "prism/shaders.hpp"
@@ -25,10 +26,10 @@ namespace {
 
 constexpr int kSize = 65;  // odd: the centre pixel's centre is the view axis
 
-class DiffractionMaterialGl : public test::GlSuite {
+class DiffractionMaterialGl : public prism::test::GlTest {
   protected:
     void SetUp() override {
-        test::GlSuite::SetUp();
+        prism::test::GlTest::SetUp();
         if (HasFatalFailure()) return;
         camera_.eye = {0.0f, 1.0f, 1.2f};  // looks at the origin, on the plate (y = 0, normal +y)
         camera_.target = {0.0f, 0.0f, 0.0f};

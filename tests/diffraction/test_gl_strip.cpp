@@ -14,6 +14,7 @@
 #include "prism/gl/gl.hpp"
 #include "prism/gl/gl_context.hpp"
 #include "diffraction_gl_support.hpp"
+#include "prism/test/gl_test.hpp"
 
 using namespace prism::diffraction;
 
@@ -22,7 +23,7 @@ namespace {
 constexpr double kStartDeg = -80.0, kStepDeg = 0.5;
 constexpr int kColumns = 321;  // -80 .. 80 deg
 
-class DiffractionGl : public test::GlSuite {
+class DiffractionGl : public prism::test::GlTest {
   protected:
     // Renders the strip for light incidence `incidenceDeg` and returns relative Linf vs `cpu`.
     template <typename Cpu>

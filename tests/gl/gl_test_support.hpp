@@ -99,12 +99,6 @@ inline constexpr cat::Catalog kCatalog{kShaders, kModules, kContractAttributes, 
 // --- Helpers -----------------------------------------------------------------------
 inline constexpr int kSize = 64;
 
-// A context of `backend` or a skipped test when this build lacks it.
-inline std::unique_ptr<gl::Context> contextOrSkip(gl::Backend backend) {
-    if (!gl::isBackendCompiledIn(backend)) return nullptr;
-    return gl::createContext(backend);
-}
-
 // Triangle (-0.5,-0.5) (0.5,-0.5) (0,0.5) with red, green, blue corners, bound to
 // the contract locations 0 (a_position) and 1 (a_color).
 class TriangleMesh {

@@ -32,7 +32,7 @@ def from_doc(text):
 
 def main():
     root = pathlib.Path(sys.argv[1])
-    reference = from_test((root / "tests/hotreload/test_shader_watcher.cpp").read_text())
+    reference = from_test((root / "tests/hotreload/test_gl_shader_watcher.cpp").read_text())
     others = {
         "runtime/render/include/prism/render/shader_watcher.hpp": from_header(
             (root / "runtime/render/include/prism/render/shader_watcher.hpp").read_text()),

@@ -1,6 +1,4 @@
-// The rendering tier's shared context environment and helpers (see
-// rendering_test_support.hpp). Registers the environment at static initialisation, so
-// every test binary built from this directory has exactly one context.
+// The rendering tier's shared helpers (see rendering_test_support.hpp).
 #include "rendering_test_support.hpp"
 
 #include <algorithm>
@@ -11,26 +9,9 @@
 
 #include "prism/render/shader_meshes.hpp"
 #include "prism/shaders.hpp"
+#include "prism/test/gl_test.hpp"
 
 namespace prism::rendering_test {
-namespace {
-
-struct GlState {
-    std::unique_ptr<gl::Context> context;
-    std::unique_ptr<render::ProgramCache> cache;
-    std::string error;
-};
-
-GlState& state() {
-    static GlState s;
-    return s;
-}
-
-[[maybe_unused]] const ::testing::Environment* const kEnvironment =
-    ::testing::AddGlobalTestEnvironment(new GlEnvironment);
-
-}  // namespace
-
 const std::vector<ShaderSpec>& catalogueShaders() {
     static const std::vector<ShaderSpec> specs = {
         {"unicolor", "unicolor", {}, false, false}, {"flat", "flat", {}, true, false},
@@ -53,36 +34,8 @@ glm::vec3 brightestAllowed(const ShaderSpec& spec, const view::Lights& lights, c
     return view::maxRadiance(lights, m);
 }
 
-void GlEnvironment::SetUp() {
-    try {
-        state().context = gl::createContext();
-        state().cache = std::make_unique<render::ProgramCache>(shaders::kCatalog);
-    } catch (const std::exception& e) {
-        state().error = e.what();
-    }
-}
-
-void GlEnvironment::TearDown() {
-    state().cache.reset();  // programs need the context: delete them first
-    state().context.reset();
-}
-
-gl::Context* context() {
-    return state().context.get();
-}
-const std::string& contextError() {
-    return state().error;
-}
-
 render::ProgramCache& programCache() {
-    if (!state().cache) throw std::logic_error("no GL context: " + state().error);
-    return *state().cache;
-}
-
-void RenderingTest::SetUp() {
-    ASSERT_NE(context(), nullptr) << "cannot create the headless GL context the rendering tests need: "
-                                  << contextError();
-    context()->makeCurrent();
+    return test::GlTest::suiteResource<render::ProgramCache>(shaders::kCatalog);
 }
 
 render::RenderJob jobFor(const ShaderSpec& spec, const geometry::Mesh& mesh, int width, int height) {
@@ -147,13 +100,6 @@ PixelInspection inspectPixels(const image::ImageF& image, const glm::vec3& bound
             r.negative += negative ? 1 : 0;
         }
     return r;
-}
-
-bool envFlag(const char* name) {
-    const char* v = std::getenv(name);
-    if (!v) return false;
-    const std::string_view s(v);
-    return !(s.empty() || s == "0" || s == "false" || s == "FALSE" || s == "off");
 }
 
 }  // namespace prism::rendering_test

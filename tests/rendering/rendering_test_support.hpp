@@ -1,7 +1,6 @@
-// Shared pieces of the rendering-tier tests: the one GL context and program cache of
-// the test binary (a gtest Environment), the catalogue shaders as the tests iterate
-// them (phong twice: plain and BLINN=1), the brightest value each shader may write,
-// and small image helpers (coverage, largest channel, environment flags).
+// Shared pieces of the rendering-tier tests: the catalogue shaders as the tests iterate
+// them (phong twice: plain and BLINN=1), the brightest value each shader may write, the
+// program cache of a GlTest suite, and small image helpers (coverage, largest channel).
 #pragma once
 
 #include <gtest/gtest.h>
@@ -14,7 +13,6 @@
 #include <string>
 #include <vector>
 
-#include "prism/gl/gl_context.hpp"
 #include "prism/image/image.hpp"
 #include "prism/render/offscreen_render.hpp"
 #include "prism/render/program_cache.hpp"
@@ -42,22 +40,8 @@ const ShaderSpec& shaderSpec(const std::string& label);
 // a specular term leaking into flat or smooth shading).
 glm::vec3 brightestAllowed(const ShaderSpec& spec, const view::Lights& lights, const view::Material& material);
 
-// The process-wide context and program cache, created once by the environment.
-class GlEnvironment : public ::testing::Environment {
-  public:
-    void SetUp() override;
-    void TearDown() override;
-};
-gl::Context* context();             // nullptr when creation failed
-const std::string& contextError();  // why it failed
+// The running GlTest suite's program cache of the catalogue shaders.
 render::ProgramCache& programCache();
-
-// Base fixture of every test that renders: fails (not skips) without a context, since a
-// rendering tier that silently skips would hide a broken headless setup.
-class RenderingTest : public ::testing::Test {
-  protected:
-    void SetUp() override;
-};
 
 // A render::RenderJob for `spec` with the mesh prepared for its shader.
 render::RenderJob jobFor(const ShaderSpec& spec, const geometry::Mesh& mesh, int width, int height);
@@ -75,8 +59,5 @@ struct PixelInspection {
     std::string firstNegative;
 };
 PixelInspection inspectPixels(const image::ImageF& image, const glm::vec3& bound, float epsilon);
-
-// True when the environment variable is set to something other than "", "0" or "false".
-bool envFlag(const char* name);
 
 }  // namespace prism::rendering_test

@@ -5,9 +5,6 @@
 // requested size.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -18,6 +15,7 @@
 #include "prism/image/image_compare.hpp"
 #include "prism/image/png_io.hpp"
 #include "prism/shaders.hpp"
+#include "prism/test/run_command.hpp"
 #include "rendering_test_support.hpp"
 
 namespace prism::rendering_test {
@@ -26,24 +24,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr int kExitBadInput = 2;
-
-struct CliResult {
-    int exitCode = -1;  // -1 when killed by a signal
-    std::string out;    // stdout
-    std::string err;    // stderr
-};
-
-std::string shellQuote(const std::string& s) {
-    std::string q(1, '\'');
-    for (char c : s) {
-        if (c == '\'')
-            q.append("'\\''");  // close, escaped quote, reopen
-        else
-            q.push_back(c);
-    }
-    q.push_back('\'');
-    return q;
-}
 
 std::string readText(const fs::path& path) {
     std::ifstream in(path);
@@ -61,20 +41,10 @@ fs::path testDir() {
     return dir;
 }
 
-CliResult runPrismRender(const std::vector<std::string>& args, const fs::path& dir) {
-    const fs::path errFile = dir / "stderr.txt";
-    std::string cmd = shellQuote(PRISM_RENDER_EXECUTABLE);
-    for (const auto& a : args) cmd.append(" ").append(shellQuote(a));
-    cmd.append(" 2>").append(shellQuote(errFile.string()));
-    CliResult r;
-    FILE* pipe = popen(cmd.c_str(), "r");
-    if (!pipe) return r;
-    char buffer[4096];
-    while (std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) r.out.append(buffer, n);
-    const int status = pclose(pipe);
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.err = readText(errFile);
-    return r;
+test::CommandResult runPrismRender(const std::vector<std::string>& args, const fs::path& dir) {
+    std::vector<std::string> command{PRISM_RENDER_EXECUTABLE};
+    command.insert(command.end(), args.begin(), args.end());
+    return test::runCommand(command, {.workDir = dir, .mergeStderr = false});
 }
 
 fs::path writeFile(const fs::path& path, const std::string& text) {

@@ -27,23 +27,6 @@ namespace {
 
 const fs::path kCompat = fs::path(PRISM_SOURCE_DIR) / "tests/shaderc/fixtures/compat";
 
-struct ProcessResult {
-    int exitCode = -1;
-    std::string output;
-};
-
-ProcessResult runProcess(const std::string& command) {
-    ProcessResult r;
-    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-    if (!pipe) return r;
-    std::array<char, 4096> buffer{};
-    std::size_t n;
-    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) r.output.append(buffer.data(), n);
-    const int status = pclose(pipe);
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
-
 std::string quoted(const std::string& s) {
     return "'" + s + "'";
 }
@@ -89,7 +72,7 @@ std::string glslangFlags(const CompatCase& c, bool withDefines) {
 // Runs both sides of one case and compares them; returns glslang's active code.
 std::string expectSameAsGlslang(const CompatCase& c) {
     SCOPED_TRACE(c.name);
-    const auto original = runProcess("glslangValidator -E" + glslangFlags(c, true) + " " + quoted(c.stage.string()));
+    const auto original = prism::test::runShell("glslangValidator -E" + glslangFlags(c, true) + " " + quoted(c.stage.string()));
     EXPECT_EQ(original.exitCode, 0) << "glslang rejects the fixture itself:\n" << original.output;
 
     ResolveOptions options;
@@ -104,11 +87,11 @@ std::string expectSameAsGlslang(const CompatCase& c) {
     prism::test::ScratchDir scratch("compat-" + c.name);
     const fs::path flattened = scratch.path() / ("flat" + c.stage.extension().string());
     prism::test::writeFile(flattened, resolved.stage.text);
-    const auto emitted = runProcess("glslangValidator -E " + quoted(flattened.string()));
+    const auto emitted = prism::test::runShell("glslangValidator -E " + quoted(flattened.string()));
     EXPECT_EQ(emitted.exitCode, 0) << emitted.output;
     EXPECT_EQ(activeCode(emitted.output), activeCode(original.output))
         << "prism-shaderc's output takes other branches than glslang on the original";
-    const auto compiled = runProcess("glslangValidator -l " + quoted(flattened.string()));
+    const auto compiled = prism::test::runShell("glslangValidator -l " + quoted(flattened.string()));
     EXPECT_EQ(compiled.exitCode, 0) << "the flattened stage does not compile:\n" << compiled.output;
 
     std::set<std::string> prismFiles;
@@ -127,7 +110,7 @@ CompatCase fixture(const std::string& name, const std::string& stage, std::vecto
 
 TEST(GlslangCompat, GlslangValidatorIsInstalled) {
     // Not a skip: without the reference compiler these tests would prove nothing.
-    ASSERT_EQ(runProcess("glslangValidator --version").exitCode, 0) << "install glslang-tools (scripts/setup.sh)";
+    ASSERT_EQ(prism::test::runShell("glslangValidator --version").exitCode, 0) << "install glslang-tools (scripts/setup.sh)";
 }
 
 TEST(GlslangCompat, RelativeIncludesGuardsAndDefaults) {
@@ -165,7 +148,7 @@ TEST(GlslangCompat, UnusedBrokenModuleDoesNotMatter) {
     expectSameAsGlslang(fixture("unused", "unused_broken/shaders/main.frag", {"unused_broken/modules"}));
     // The module really is broken, as glslang sees it.
     const auto broken =
-        runProcess("glslangValidator -E " + quoted((kCompat / "unused_broken/modules/broken.glsl").string()));
+        prism::test::runShell("glslangValidator -E " + quoted((kCompat / "unused_broken/modules/broken.glsl").string()));
     EXPECT_NE(broken.exitCode, 0) << broken.output;
 }
 

@@ -7,11 +7,8 @@
 
 #include <prism/catalog/line_directive.hpp>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <string>
-#include <sys/wait.h>
 
 #include "tool_runner.hpp"
 
@@ -24,14 +21,7 @@ using prism::test::ScratchDir;
 namespace {
 
 std::string runGlslangValidator(const fs::path& file) {
-    std::string out;
-    FILE* pipe = popen(("glslangValidator '" + file.string() + "' 2>&1").c_str(), "r");
-    if (!pipe) return out;
-    std::array<char, 4096> buf{};
-    std::size_t n;
-    while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) out.append(buf.data(), n);
-    pclose(pipe);
-    return out;
+    return prism::test::runCommand({"glslangValidator", file.string()}, {.workDir = {}, .mergeStderr = true}).out;
 }
 
 }  // namespace

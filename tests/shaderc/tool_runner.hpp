@@ -1,14 +1,14 @@
-// Test helper: runs the real prism-shaderc executable and captures its exit code and
-// output, and builds scratch directories of GLSL files for it.
+// Test helper: runs the real prism-shaderc executable (through prism::test::runCommand) and
+// captures its exit code and output, and builds scratch directories of GLSL files for it.
 #pragma once
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
+#include <unistd.h>
+
+#include "prism/test/run_command.hpp"
 
 namespace prism::test {
 
@@ -17,18 +17,15 @@ struct ToolRun {
     std::string output;  // stdout and stderr together
 };
 
+// A shell command line (quoting as the shell reads it), in `workDir` when not empty.
+inline ToolRun runShell(const std::string& commandLine, const std::string& workDir = "") {
+    const auto r = runCommand({"/bin/sh", "-c", commandLine}, {.workDir = workDir, .mergeStderr = true});
+    return {r.exitCode, r.out};
+}
+
+// The real prism-shaderc with `args`, written as on a shell command line.
 inline ToolRun runShaderc(const std::string& args, const std::string& workDir = "") {
-    std::string cmd =
-        (workDir.empty() ? "" : "cd '" + workDir + "' && ") + std::string(PRISM_SHADERC_EXE) + " " + args + " 2>&1";
-    ToolRun r;
-    FILE* pipe = popen(cmd.c_str(), "r");
-    if (!pipe) return r;
-    std::array<char, 4096> buf{};
-    std::size_t n;
-    while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) r.output.append(buf.data(), n);
-    int status = pclose(pipe);
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
+    return runShell(std::string(PRISM_SHADERC_EXE) + " " + args, workDir);
 }
 
 inline std::string readFile(const std::filesystem::path& p) {

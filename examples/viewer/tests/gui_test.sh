@@ -1,7 +1,6 @@
 #!/usr/bin/env bash
 # Driver of the viewer's gui-tier tests (tests/gui_tests.cmake): runs the viewer under
 # xvfb-run (Mesa llvmpipe) and checks what it printed or drew.
-#   gui_test.sh cli VIEWER                 --help/--version without a display; usage errors exit 2
 #   gui_test.sh lit VIEWER WORK            first frame of the default view is lit
 #   gui_test.sh panels VIEWER WORK         the controls column, its panels and the overlay
 #   gui_test.sh script VIEWER WORK         switch_systems.script: shader, scene, rain intensity
@@ -21,21 +20,6 @@ run() {  # run NAME ARGS...: the viewer under xvfb-run, output in $work/NAME.log
 }
 [ -n "$work" ] && { rm -rf "$work"; mkdir -p "$work"; }
 case $mode in
-cli)
-    out=$(env -u DISPLAY "$viewer" --help) || fail "--help exited $?"
-    grep -q '^Usage: viewer' <<<"$out" || fail "--help printed no usage: $out"
-    grep -q -- '--scene' <<<"$out" || fail "--help does not list --scene"
-    out=$(env -u DISPLAY "$viewer" --version) || fail "--version exited $?"
-    grep -q '^viewer (Prism) [0-9]' <<<"$out" || fail "--version printed '$out'"
-    for bad in "--frames -1" "--subdivision 9" "--scene /nonexistent.json" "--variant BLINN" "--shader nosuch" \
-               "--mesh nosuch" "extra" "--variant BLINN=7" "--shader gouraud --variant BLINN=1"; do
-        # shellcheck disable=SC2086
-        env -u DISPLAY "$viewer" $bad >/dev/null 2>"$work/err.txt"
-        status=$?
-        [ "$status" -eq 2 ] || fail "'$bad' exited $status, not 2 (usage error)"
-        grep -q '^viewer: error: ' "$work/err.txt" || fail "'$bad' printed no 'viewer: error:' line"
-    done
-    echo "gui_test cli: OK (--help, --version without DISPLAY; 9 usage errors exit 2)" ;;
 lit)
     run lit --frames 3 --no-panels --width 400 --height 400 --screenshot "$work/lit.png" || fail "viewer exited $?"
     # Thresholds: the lit default measures luminance ~78 and ~5000 colours; the unlit

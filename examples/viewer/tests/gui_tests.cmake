@@ -17,12 +17,16 @@ target_link_libraries(viewer_actions_tests PRIVATE prism_scene_core prism_render
 target_compile_definitions(viewer_actions_tests PRIVATE PRISM_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 add_test(NAME example.viewer_actions COMMAND viewer_actions_tests)
 set_tests_properties(example.viewer_actions PROPERTIES LABELS unit)
-# No display needed: --help/--version print and exit 0, usage errors exit 2.
-add_test(NAME example.viewer_cli COMMAND bash ${_gui}/gui_test.sh cli $<TARGET_FILE:viewer> ${_work}/cli)
-add_test(NAME example.viewer_rejects_unknown_option
-         COMMAND bash -c "out=\$(\"$0\" --frmaes 5 2>&1); test \$? -eq 2 && grep -q 'viewer: error: .*--frmaes' <<<\"\$out\""
-                 $<TARGET_FILE:viewer>)
-set_tests_properties(example.viewer_cli example.viewer_rejects_unknown_option PROPERTIES LABELS gui TIMEOUT 60)
+# The command line without a display (label gui; tests/README.md): --help/--version exit 0,
+# usage errors exit 2. One test per case, through prism::test::runCommand.
+include(GoogleTest)
+add_executable(viewer_cli_tests ${_gui}/test_cli.cpp)
+target_link_libraries(viewer_cli_tests PRIVATE prism_test_core GTest::gtest_main)
+target_compile_definitions(viewer_cli_tests PRIVATE PRISM_VIEWER="$<TARGET_FILE:viewer>"
+                                                    PRISM_VIEWER_TEST_TMP="${_work}/cli")
+add_dependencies(viewer_cli_tests viewer)
+gtest_discover_tests(viewer_cli_tests TEST_PREFIX "example." DISCOVERY_TIMEOUT 60 NO_PRETTY_VALUES
+                     PROPERTIES LABELS gui TIMEOUT 60 ENVIRONMENT_MODIFICATION "DISPLAY=unset:")
 if(PRISM_XVFB_RUN)
   add_test(NAME example.viewer_smoke COMMAND ${PRISM_XVFB_RUN} -a $<TARGET_FILE:viewer> --frames 5)
   foreach(check lit panels script reference sampling)

@@ -9,12 +9,12 @@
 #include "prism/water/rain_rates.hpp"
 #include "prism/water/water_scene.hpp"
 #include "prism/water_shaders.hpp"
-#include "water_gl_support.hpp"
+#include "prism/test/gl_test.hpp"
 
 namespace prism::water {
 namespace {
 
-using test::WaterGlTest;
+using WaterGlTest = ::prism::test::GlTest;
 
 WaterSceneDescription smallScene(bool water, double rainMmPerHour) {
     WaterSceneDescription d;

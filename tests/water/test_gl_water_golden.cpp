@@ -21,23 +21,19 @@
 #include "prism/image/png_io.hpp"
 #include "prism/water/rain_rates.hpp"
 #include "prism/water/water_scene.hpp"
-#include "water_gl_support.hpp"
+#include "prism/test/env_flag.hpp"
+#include "prism/test/gl_test.hpp"
 
 namespace prism::water {
 namespace {
 
 namespace fs = std::filesystem;
-using test::WaterGlTest;
+using WaterGlTest = ::prism::test::GlTest;
 
 constexpr int kSize = 160;
 constexpr image::Thresholds kGoldenThresholds{.maxChannelDiff = 3, .maxShareOver = 0.001, .maxMean = 0.5};
 
-bool envFlag(const char* name) {
-    const char* v = std::getenv(name);
-    if (!v) return false;
-    const std::string s(v);
-    return !(s.empty() || s == "0" || s == "false" || s == "off");
-}
+using ::prism::test::envFlag;
 
 fs::path goldenPath(const std::string& name) {
     return fs::path(PRISM_GOLDEN_DIR) / "water" / (name + ".png");

@@ -15,12 +15,12 @@
 #include "prism/gl/handles.hpp"
 #include "prism/rain/rain_scene.hpp"
 #include "prism/render/gpu_mesh.hpp"
-#include "rain_gl_support.hpp"
+#include "prism/test/gl_test.hpp"
 
 namespace prism::rain::test {
 namespace {
 
-class RainSceneResources : public RainGlTest {};
+class RainSceneResources : public ::prism::test::GlTest {};
 
 bool anyContains(const std::vector<std::string>& names, const std::string& part) {
     return std::any_of(names.begin(), names.end(),
@@ -89,7 +89,7 @@ TEST_F(RainSceneResources, NoRainNoFogBuildsOnlyTheGround) {
     });
     // Exactly the ground's mesh and the frame render() draws into, built here directly.
     const Cost ground = costOf([&] {
-        render::GpuMesh mesh(makeRainGround(desc.ground), programs().catalog().contractAttributes);
+        render::GpuMesh mesh(makeRainGround(desc.ground), suiteResource<RainPrograms>().catalog().contractAttributes);
         gl::Framebuffer frame(kSize, kSize, gl::ColorFormat::Rgba8);
     });
     EXPECT_EQ(scene, ground) << "particle or billboard buffers, streak or noise textures without rain or fog";

@@ -10,12 +10,13 @@
 
 #include "prism/image/png_io.hpp"
 #include "prism/rain/rain_scene.hpp"
-#include "rain_gl_support.hpp"
+#include "prism/test/env_flag.hpp"
+#include "prism/test/gl_test.hpp"
 
 namespace prism::rain {
 namespace {
 
-using test::RainGlTest;
+using RainGlTest = ::prism::test::GlTest;
 
 constexpr int kSize = 128;
 
@@ -52,7 +53,7 @@ double contribution(const image::Image8& withFog, const image::Image8& without, 
 TEST_F(RainGlTest, FogBillboardsFadeSoftlyIntoTheGround) {
     const image::Image8 without = renderFog(0.0f, 1.5f);
     const image::Image8 softImage = renderFog(0.6f, 1.5f), hardImage = renderFog(0.6f, 1e-4f);
-    if (test::envFlag("PRISM_SAVE_ACTUAL")) {
+    if (::prism::test::envFlag("PRISM_SAVE_ACTUAL")) {
         image::writePng("/tmp/fog-soft.png", softImage);
         image::writePng("/tmp/fog-hard.png", hardImage);
         image::writePng("/tmp/fog-none.png", without);

@@ -13,13 +13,13 @@
 #include "prism/gl/gl.hpp"
 #include "prism/gl/handles.hpp"
 #include "prism/rain/rain_system.hpp"
-#include "rain_gl_support.hpp"
+#include "prism/test/gl_test.hpp"
 #include "rain_test_checks.hpp"
 
 namespace prism::rain::test {
 namespace {
 
-class GpuRainExtremes : public RainGlTest {};
+class GpuRainExtremes : public ::prism::test::GlTest {};
 
 TEST_F(GpuRainExtremes, ZeroParticlesAllocateNothing) {
     RainParams p;
@@ -27,7 +27,7 @@ TEST_F(GpuRainExtremes, ZeroParticlesAllocateNothing) {
     gl::Framebuffer fb(32, 32);
     const auto before = gl::objectCounts();
     const auto dispatchesBefore = gl::computeDispatches();
-    RainSystem rain(programs(), p, glm::vec3(0.0f));
+    RainSystem rain(suiteResource<RainPrograms>(), p, glm::vec3(0.0f));
     rain.update(1.0f / 60.0f, glm::vec3(10.0f));
     fb.clear({0.f, 0.f, 0.f, 1.f});
     rain.draw(RainDrawInputs{});
@@ -49,7 +49,7 @@ TEST_F(GpuRainExtremes, FourMillionParticlesRunOneUpdate) {
     p.fixedCount = 1u << 22;
     p.wind.strength = 4.0f;
     const auto t0 = std::chrono::steady_clock::now();
-    RainSystem rain(programs(), p, glm::vec3(0.0f, 1.7f, 0.0f));
+    RainSystem rain(suiteResource<RainPrograms>(), p, glm::vec3(0.0f, 1.7f, 0.0f));
     rain.update(1.0f / 60.0f, glm::vec3(1.0f, 1.7f, 0.0f));
     const auto g = rain.readParticles();
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -64,7 +64,7 @@ TEST_F(GpuRainExtremes, NoWindAndAGale) {
         RainParams p;
         p.fixedCount = 20000;
         p.wind.strength = wind;
-        RainSystem rain(programs(), p, glm::vec3(0.0f));
+        RainSystem rain(suiteResource<RainPrograms>(), p, glm::vec3(0.0f));
         for (int i = 0; i < 60; ++i) rain.update(1.0f / 30.0f, glm::vec3(0.0f, 0.0f, 0.05f * i));
         EXPECT_TRUE(allFiniteAndInside(rain.readParticles(), rain.center(), p.radius, p.height)) << "wind " << wind;
     }
@@ -74,7 +74,7 @@ TEST_F(GpuRainExtremes, TeleportAndZeroAndHugeSteps) {
     RainParams p;
     p.fixedCount = 20000;
     p.wind.strength = 5.0f;
-    RainSystem rain(programs(), p, glm::vec3(0.0f));
+    RainSystem rain(suiteResource<RainPrograms>(), p, glm::vec3(0.0f));
     const auto start = rain.readParticles();
     rain.update(0.0f, glm::vec3(0.0f));
     const auto still = rain.readParticles();
@@ -97,7 +97,7 @@ TEST_F(GpuRainExtremes, TeleportAndZeroAndHugeSteps) {
     EXPECT_THROW(rain.setIntensity(-1.0f), RainParameterError);
     EXPECT_THROW(rain.setWind(WindParams{std::nullopt, std::numeric_limits<float>::quiet_NaN()}), RainParameterError);
     EXPECT_THROW(RainSystem(
-                     programs(),
+                     suiteResource<RainPrograms>(),
                      [] {
                          RainParams q;
                          q.intensity = -3.0f;
@@ -114,7 +114,7 @@ TEST_F(GpuRainExtremes, EveryTechniqueDrawsFinitePixels) {
     view::Camera cam;
     cam.eye = {0.0f, 1.7f, 0.0f};
     cam.target = {0.0f, 30.0f, 0.001f};  // straight up, along the fall: degenerate streak frames
-    RainSystem rain(programs(), p, cam.eye);
+    RainSystem rain(suiteResource<RainPrograms>(), p, cam.eye);
     rain.update(1.0f / 30.0f, cam.eye);
     for (StreakTechnique t :
          {StreakTechnique::GeometryShader, StreakTechnique::Instanced, StreakTechnique::PointSprites}) {

@@ -24,19 +24,12 @@
 #include "prism/scene/scene_renderer.hpp"
 #include "prism/scene/stochastic.hpp"
 #include "prism/shaders.hpp"
+#include "prism/test/env_flag.hpp"
+#include "prism/test/gl_test.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
-
-std::unique_ptr<prism::gl::Context> gContext;
-
-class ContextEnvironment : public ::testing::Environment {
-  public:
-    void SetUp() override { gContext = prism::gl::createContext(); }
-    void TearDown() override { gContext.reset(); }
-};
-const auto* const kEnv = ::testing::AddGlobalTestEnvironment(new ContextEnvironment);
 
 prism::scene::Scene exampleScene(const std::string& name) {
     return prism::scene::loadScene(std::string(PRISM_SCENES_DIR) + "/" + name + ".json");
@@ -52,19 +45,20 @@ prism::scene::Scene smallGrating(int size, int tableSize, int terms) {
     return scene;
 }
 
-bool envFlag(const char* name) {
-    const char* v = std::getenv(name);
-    return v && *v && std::string(v) != "0";
-}
+using prism::test::envFlag;
 
 // Golden thresholds: llvmpipe renders byte-identically run to run, so these only absorb
 // driver or technique changes (ANCHORS.md): a pixel counts as different above 3/255 in
 // a channel; at most 0.1 % of pixels may, and the mean error must stay <= 0.5/255.
 const prism::image::Thresholds kThresholds{3, 0.001, 0.5};
 
+class SceneGoldenMutation : public prism::test::GlTest {};
+class SceneRendering : public prism::test::GlTest {};
+class StochasticScene : public prism::test::GlTest {};
+
 }  // namespace
 
-TEST(SceneRendering, OneLightNoFogProgramHasNoFogUniformsAndLoopBoundOne) {
+TEST_F(SceneRendering, OneLightNoFogProgramHasNoFogUniformsAndLoopBoundOne) {
     prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
     auto scene = exampleScene("one_light");
     scene.width = scene.height = 64;
@@ -98,7 +92,7 @@ TEST(SceneRendering, OneLightNoFogProgramHasNoFogUniformsAndLoopBoundOne) {
     }
 }
 
-TEST(SceneRendering, DrawsWithTheSameFeatureSetShareOneProgram) {
+TEST_F(SceneRendering, DrawsWithTheSameFeatureSetShareOneProgram) {
     prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
     auto scene = exampleScene("four_lights");  // two phong spheres and a flat floor
     scene.width = scene.height = 64;
@@ -110,7 +104,7 @@ TEST(SceneRendering, DrawsWithTheSameFeatureSetShareOneProgram) {
     EXPECT_EQ(renderer.programs().size(), 2u);
 }
 
-TEST(SceneRendering, FogSceneUsesFogVariantsOnly) {
+TEST_F(SceneRendering, FogSceneUsesFogVariantsOnly) {
     prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
     auto scene = exampleScene("fog");
     scene.width = scene.height = 64;
@@ -118,7 +112,7 @@ TEST(SceneRendering, FogSceneUsesFogVariantsOnly) {
     for (const auto& v : renderer.lastFrame().variants) EXPECT_NE(v.find("FOG=1"), std::string::npos) << v;
 }
 
-TEST(SceneRendering, UnknownShaderListsTheKnownOnes) {
+TEST_F(SceneRendering, UnknownShaderListsTheKnownOnes) {
     prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
     auto scene = prism::scene::parseScene(R"({"objects": [{"material": {"shader": "toon"}}]})", "toon.json");
     try {
@@ -131,7 +125,7 @@ TEST(SceneRendering, UnknownShaderListsTheKnownOnes) {
     }
 }
 
-TEST(SceneRendering, NoRainNoRainSystemAndNoRainProgram) {
+TEST_F(SceneRendering, NoRainNoRainSystemAndNoRainProgram) {
     prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
     auto scene = exampleScene("one_light");
     scene.width = scene.height = 64;
@@ -141,7 +135,7 @@ TEST(SceneRendering, NoRainNoRainSystemAndNoRainProgram) {
     EXPECT_EQ(renderer.waterSystemsCreated(), 0u);
 }
 
-TEST(SceneRendering, WaterSceneSimulatesAndDrawsTheWaterMap) {
+TEST_F(SceneRendering, WaterSceneSimulatesAndDrawsTheWaterMap) {
     prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
     auto scene = exampleScene("water");
     scene.width = 128;
@@ -156,7 +150,7 @@ TEST(SceneRendering, WaterSceneSimulatesAndDrawsTheWaterMap) {
 }
 
 // Water, rain and fog billboards all stand on the scene's terrain: it is built once a frame.
-TEST(SceneRendering, WaterRainAndFogShareOneTerrainPerFrame) {
+TEST_F(SceneRendering, WaterRainAndFogShareOneTerrainPerFrame) {
     prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
     auto scene = exampleScene("water");
     scene.width = 96;
@@ -173,7 +167,7 @@ TEST(SceneRendering, WaterRainAndFogShareOneTerrainPerFrame) {
     EXPECT_EQ(renderer.terrainsBuilt(), 2u) << "no terrain without water";
 }
 
-TEST(SceneRendering, RainSceneRunsTheRainSystemOverTheObjects) {
+TEST_F(SceneRendering, RainSceneRunsTheRainSystemOverTheObjects) {
     prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
     auto scene = exampleScene("rain");
     scene.width = 128;
@@ -192,7 +186,7 @@ TEST(SceneRendering, RainSceneRunsTheRainSystemOverTheObjects) {
 }
 
 // The viewer's rain panel: technique and level-of-detail rings reach the rain system.
-TEST(SceneRendering, RainTechniqueAndRingsApply) {
+TEST_F(SceneRendering, RainTechniqueAndRingsApply) {
     prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
     auto scene = exampleScene("rain");
     scene.width = 96;
@@ -210,7 +204,7 @@ TEST(SceneRendering, RainTechniqueAndRingsApply) {
     EXPECT_GT(particles(oneRing), particles(fourRings));
 }
 
-TEST(SceneRendering, RainSettingsMapToRainParameters) {
+TEST_F(SceneRendering, RainSettingsMapToRainParameters) {
     prism::scene::RainSettings s;
     s.intensityClass = prism::rain::RainClass::Cloudburst;
     s.wind = {0.0f, 0.0f, 3.0f};
@@ -226,7 +220,7 @@ TEST(SceneRendering, RainSettingsMapToRainParameters) {
 
 // examples/scenes/water.json: eye at 9 m over terrain 0-3 m. The rain must fall onto the
 // terrain it feeds (it used to stop 4 m under the eye, at 5 m).
-TEST(SceneRendering, RainReachesTheTerrainInTheWaterScene) {
+TEST_F(SceneRendering, RainReachesTheTerrainInTheWaterScene) {
     const prism::scene::Scene scene = exampleScene("water");
     ASSERT_TRUE(scene.rain && scene.water);
     const prism::rain::RainParams p = prism::scene::rainParamsFor(scene);
@@ -248,7 +242,7 @@ TEST(SceneRendering, RainReachesTheTerrainInTheWaterScene) {
     EXPECT_GT(belowTerrain, 0) << "the cylinder reaches the lowest ground, so some drops pass under higher ground";
 }
 
-TEST(SceneRendering, NoDiffractionMaterialNoDiffractionTablesOrProgram) {
+TEST_F(SceneRendering, NoDiffractionMaterialNoDiffractionTablesOrProgram) {
     prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
     auto scene = exampleScene("four_lights");
     scene.width = scene.height = 64;
@@ -260,7 +254,7 @@ TEST(SceneRendering, NoDiffractionMaterialNoDiffractionTablesOrProgram) {
 
 // Only the chosen path's tables are built, with N terms: path b has 2N + 1 RGB layers, path a
 // N + 1 RG layers plus the wavelength row; the program is the variant of that path.
-TEST(SceneRendering, DiffractionObjectBuildsOnlyItsPathsTables) {
+TEST_F(SceneRendering, DiffractionObjectBuildsOnlyItsPathsTables) {
     prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
     auto scene = smallGrating(64, 64, 4);
     auto& m = *scene.objects[0].diffraction;
@@ -286,7 +280,7 @@ TEST(SceneRendering, DiffractionObjectBuildsOnlyItsPathsTables) {
 
 // Tables belong to the material, not the frame: a second frame of the same material, or of
 // one seen before, builds nothing and draws the same image.
-TEST(SceneRendering, DiffractionTablesAreBuiltOncePerMaterial) {
+TEST_F(SceneRendering, DiffractionTablesAreBuiltOncePerMaterial) {
     prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
     auto scene = smallGrating(48, 32, 3);
     auto& m = *scene.objects[0].diffraction;
@@ -305,7 +299,7 @@ TEST(SceneRendering, DiffractionTablesAreBuiltOncePerMaterial) {
 
 // A scene's fog covers its diffraction objects too: the FOG variant, fogged towards the fog
 // colour; without fog the FOG=0 program (no fog code).
-TEST(SceneRendering, DiffractionObjectsAreFoggedLikeTheRest) {
+TEST_F(SceneRendering, DiffractionObjectsAreFoggedLikeTheRest) {
     prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
     auto scene = smallGrating(48, 32, 3);
     const auto clear = renderer.render(scene);
@@ -320,7 +314,7 @@ TEST(SceneRendering, DiffractionObjectsAreFoggedLikeTheRest) {
     EXPECT_NE(clear.at(24, 24), centre);
 }
 
-TEST(SceneRendering, DiffractionTooManyTermsNamesTheMaterial) {
+TEST_F(SceneRendering, DiffractionTooManyTermsNamesTheMaterial) {
     prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
     auto scene = prism::scene::parseScene(R"({"objects": [{"mesh": "grid", "material": {"shader": "diffraction",
         "diffraction": {"height_field": {"type": "sinusoid", "amplitude_nm": 100000}, "table_size": 16}}}]})",
@@ -335,7 +329,7 @@ TEST(SceneRendering, DiffractionTooManyTermsNamesTheMaterial) {
     EXPECT_EQ(renderer.diffractionTablesBuilt(), 0u);
 }
 
-class SceneGolden : public ::testing::TestWithParam<std::string> {};
+class SceneGolden : public prism::test::GlTest, public ::testing::WithParamInterface<std::string> {};
 
 TEST_P(SceneGolden, MatchesTheGoldenImage) {
     auto scene = exampleScene(GetParam());
@@ -366,7 +360,7 @@ INSTANTIATE_TEST_SUITE_P(ExampleScenes, SceneGolden,
 
 // Mutation check: the grating golden pins the period. At 2400 nm instead of 2500 nm every order
 // moves (sin t = sin 75 - m lambda / d), and the image must fail the golden's thresholds.
-TEST(SceneGoldenMutation, GratingPeriod2400FailsTheGolden) {
+TEST_F(SceneGoldenMutation, GratingPeriod2400FailsTheGolden) {
     auto scene = exampleScene("diffraction_grating");
     scene.width /= 2;
     scene.height /= 2;
@@ -412,7 +406,7 @@ fs::path stochasticGolden(const std::string& sampler) {
 
 }  // namespace
 
-class StochasticGolden : public ::testing::TestWithParam<std::string> {};
+class StochasticGolden : public prism::test::GlTest, public ::testing::WithParamInterface<std::string> {};
 
 TEST_P(StochasticGolden, MatchesTheGoldenImage) {
     const auto actual = renderStochasticScene(GetParam(), 0);
@@ -449,7 +443,7 @@ TEST_P(StochasticGolden, AnotherSamplerOrFrameFailsTheGolden) {
 
 INSTANTIATE_TEST_SUITE_P(Samplers, StochasticGolden, ::testing::Values("white", "bluenoise", "sorted"));
 
-TEST(StochasticScene, AccumulatedFramesConvergeTowardsTheReference) {
+TEST_F(StochasticScene, AccumulatedFramesConvergeTowardsTheReference) {
     // The mean of 16 frames is closer to a 256-spp reference than frame 0 alone, for
     // every sampler; blue noise's frame 0 has a lower blurred error than white's.
     auto scene = exampleScene("soft_shadows");

@@ -14,7 +14,7 @@
 #include <string>
 #include <thread>
 
-#include "prism/gl/gl_context.hpp"
+#include "prism/test/gl_test.hpp"
 #include "prism/render/offscreen_render.hpp"
 #include "prism/render/shader_meshes.hpp"
 #include "prism/render/shader_watcher.hpp"
@@ -43,14 +43,11 @@ void writeFile(const fs::path& p, const std::string& text) {
     out << text;
 }
 
-class HotReload : public ::testing::Test {
+class HotReload : public GlTest {
   protected:
     void SetUp() override {
-        try {
-            context_ = gl::createContext();
-        } catch (const std::exception& e) {
-            GTEST_SKIP() << "no GL context: " << e.what();
-        }
+        GlTest::SetUp();
+        if (HasFatalFailure()) return;
         const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
         root_ = fs::path(PRISM_HOTRELOAD_TEMP_DIR) / info->name();
         fs::remove_all(root_);
@@ -67,8 +64,7 @@ class HotReload : public ::testing::Test {
     }
     void TearDown() override {
         watcher_.reset();
-        cache_.reset();  // programs before the context
-        context_.reset();
+        cache_.reset();
     }
 
     render::ShaderWatcher& watcher(std::chrono::milliseconds interval = std::chrono::milliseconds(0)) {
@@ -85,7 +81,6 @@ class HotReload : public ::testing::Test {
     }
     void editMaterial(const std::string& line6) { writeFile(material_, originalMaterial_ + line6); }
 
-    std::unique_ptr<gl::Context> context_;
     fs::path root_, material_;
     std::string originalMaterial_;
     std::unique_ptr<render::ProgramCache> cache_;

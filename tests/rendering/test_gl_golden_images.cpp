@@ -36,9 +36,13 @@
 #include "prism/image/png_io.hpp"
 #include "prism/render/shader_meshes.hpp"
 #include "prism/shaders.hpp"
+#include "prism/test/env_flag.hpp"
+#include "prism/test/gl_test.hpp"
 #include "rendering_test_support.hpp"
 
 namespace prism::rendering_test {
+
+using test::envFlag;
 namespace {
 
 namespace fs = std::filesystem;
@@ -148,7 +152,7 @@ std::string testNameOf(const ::testing::TestParamInfo<GoldenCase>& info) {
     return n;
 }
 
-class GoldenImage : public RenderingTest, public ::testing::WithParamInterface<GoldenCase> {};
+class GoldenImage : public test::GlTest, public ::testing::WithParamInterface<GoldenCase> {};
 
 TEST_P(GoldenImage, MatchesStoredGoldenWithinThresholds) {
     const GoldenCase& c = GetParam();
@@ -197,10 +201,10 @@ TEST(GoldenCatalogue, EveryCatalogueShaderIsCovered) {
 
 // --- Mutation tests: the comparison must catch real changes ------------------------
 
-class GoldenMutation : public RenderingTest {
+class GoldenMutation : public test::GlTest {
   protected:
     void SetUp() override {
-        RenderingTest::SetUp();
+        test::GlTest::SetUp();
         if (HasFatalFailure()) return;
         if (envFlag("PRISM_UPDATE_GOLDENS")) GTEST_SKIP() << "goldens are being rewritten";
     }

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "prism/rain/rain_system.hpp"
-#include "rain_gl_support.hpp"
+#include "prism/test/gl_test.hpp"
 #include "rain_test_checks.hpp"
 
 namespace prism::rain::test {
@@ -42,7 +42,7 @@ Agreement compare(const std::vector<Particle>& gpu, std::span<const Particle> cp
     return a;
 }
 
-class GpuRain : public RainGlTest {};
+class GpuRain : public ::prism::test::GlTest {};
 
 TEST_F(GpuRain, SeedsWithTheSameRandomNumbersAsTheCpu) {
     RainParams p;
@@ -50,7 +50,7 @@ TEST_F(GpuRain, SeedsWithTheSameRandomNumbersAsTheCpu) {
     p.seed = 4242;
     p.wind.strength = 3.0f;
     const glm::vec3 eye(1.0f, 1.7f, 2.0f);
-    RainSystem gpu(programs(), p, eye);
+    RainSystem gpu(suiteResource<RainPrograms>(), p, eye);
     CpuRainSimulation cpu(p, eye);
     const auto g = gpu.readParticles();
     ASSERT_EQ(g.size(), cpu.particleCount());
@@ -77,7 +77,7 @@ TEST_F(GpuRain, UpdateAgreesWithTheCpuReferenceAfterManySteps) {
     p.seed = 77;
     p.wind.strength = 5.0f;
     glm::vec3 eye(0.0f, 1.7f, 0.0f);
-    RainSystem gpu(programs(), p, eye);
+    RainSystem gpu(suiteResource<RainPrograms>(), p, eye);
     CpuRainSimulation cpu(p, eye);
     constexpr int kSteps = 180;  // 3 s at 60 Hz: every drop respawns at least once
     for (int i = 0; i < kSteps; ++i) {
@@ -101,7 +101,7 @@ TEST_F(GpuRain, EveryParticleStaysInsideAfterCameraMoves) {
     p.fixedCount = 30000;
     p.wind.strength = 6.0f;
     glm::vec3 eye(0.0f, 1.7f, 0.0f);
-    RainSystem gpu(programs(), p, eye);
+    RainSystem gpu(suiteResource<RainPrograms>(), p, eye);
     const glm::vec3 moves[] = {{0.1f, 0, 0},   {15.0f, 0, 0},        {0, 0, -45.0f}, {0, 12.0f, 0},
                                {0, -40.0f, 0}, {3000.0f, 0, 200.0f}, {0, 0, 0},      {-60.0f, 5.0f, 60.0f}};
     for (const auto& m : moves) {
@@ -118,7 +118,7 @@ TEST_F(GpuRain, CountFollowsTheIntensityAndKeepsExistingDrops) {
     RainParams p;
     p.seed = 8;
     const glm::vec3 eye(0.0f, 1.7f, 0.0f);
-    RainSystem gpu(programs(), p, eye);
+    RainSystem gpu(suiteResource<RainPrograms>(), p, eye);
     EXPECT_EQ(gpu.particleCount(), particleCountFor(p));
     gpu.update(1.0f / 60.0f, eye);
     const auto before = gpu.readParticles();

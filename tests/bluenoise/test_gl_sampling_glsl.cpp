@@ -11,7 +11,7 @@
 #include "prism/bluenoise/samplers.hpp"
 #include "prism/bluenoise/void_and_cluster.hpp"
 #include "prism/gl/gl.hpp"
-#include "prism/gl/gl_context.hpp"
+#include "prism/test/gl_test.hpp"
 
 namespace bn = prism::bluenoise;
 
@@ -53,8 +53,9 @@ GLuint uintTexture(int w, int h, const std::vector<std::uint32_t>& values) {
 
 }  // namespace
 
-TEST(SamplingGlsl, MatchesCppBitForBit) {
-    auto context = prism::gl::createContext();
+class SamplingGlsl : public prism::test::GlTest {};
+
+TEST_F(SamplingGlsl, MatchesCppBitForBit) {
     const std::string vert =
         "#version 330 core\n"
         "void main() { vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2); gl_Position = vec4(p * 2.0 - 1.0, 0.0, "

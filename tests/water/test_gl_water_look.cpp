@@ -9,13 +9,13 @@
 
 #include "prism/gl/gl_context.hpp"
 #include "prism/water/water_scene.hpp"
-#include "water_gl_support.hpp"
+#include "prism/test/gl_test.hpp"
 #include "water_test_support.hpp"
 
 namespace prism::water {
 namespace {
 
-using test::WaterGlTest;
+using WaterGlTest = ::prism::test::GlTest;
 
 constexpr int kSize = 64;
 

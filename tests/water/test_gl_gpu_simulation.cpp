@@ -12,13 +12,13 @@
 #include "prism/water/gpu_water_simulation.hpp"
 #include "prism/water/water_scene.hpp"
 #include "prism/water/rain_rates.hpp"
-#include "water_gl_support.hpp"
+#include "prism/test/gl_test.hpp"
 #include "water_test_support.hpp"
 
 namespace prism::water {
 namespace {
 
-using test::WaterGlTest;
+using WaterGlTest = ::prism::test::GlTest;
 
 // The stated tolerance of CPU/GPU agreement: both run the same fp32 operations in the
 // same order, so on a driver that rounds as IEEE 754 (llvmpipe does) they agree to the

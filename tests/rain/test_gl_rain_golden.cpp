@@ -20,7 +20,8 @@
 #include "prism/image/image_compare.hpp"
 #include "prism/image/png_io.hpp"
 #include "prism/rain/rain_scene.hpp"
-#include "rain_gl_support.hpp"
+#include "prism/test/env_flag.hpp"
+#include "prism/test/gl_test.hpp"
 
 namespace prism::rain::test {
 namespace {
@@ -108,7 +109,7 @@ double addedLight(const image::Image8& a, const image::Image8& reference) {
     return sum;
 }
 
-class RainGolden : public RainGlTest, public ::testing::WithParamInterface<RainCase> {};
+class RainGolden : public ::prism::test::GlTest, public ::testing::WithParamInterface<RainCase> {};
 
 TEST_P(RainGolden, MatchesStoredGoldenWithinThresholds) {
     const RainCase& c = GetParam();
@@ -119,7 +120,7 @@ TEST_P(RainGolden, MatchesStoredGoldenWithinThresholds) {
     ASSERT_GT(changedPixels(actual, renderScene(dry)), actual.pixelCount() / 50)
         << c.name << ": (almost) no rain drawn";
 
-    if (envFlag("PRISM_UPDATE_GOLDENS")) {
+    if (::prism::test::envFlag("PRISM_UPDATE_GOLDENS")) {
         image::writePng(goldenPath(c.name), actual);
         GTEST_SKIP() << "PRISM_UPDATE_GOLDENS: rewrote " << goldenPath(c.name).string();
     }
@@ -129,7 +130,7 @@ TEST_P(RainGolden, MatchesStoredGoldenWithinThresholds) {
     const image::ImageComparison cmp = image::compareImages(actual, golden, kThresholds.maxChannelDiff);
     const bool ok = image::passes(cmp, kThresholds);
     std::string saved;
-    if (!ok || envFlag("PRISM_SAVE_ACTUAL")) saved = saveActualAndDiff(c.name, actual, cmp);
+    if (!ok || ::prism::test::envFlag("PRISM_SAVE_ACTUAL")) saved = saveActualAndDiff(c.name, actual, cmp);
     EXPECT_TRUE(ok) << goldenPath(c.name).string() << ": " << prism::image::describe(cmp, kThresholds)
                     << "\nactual and diff images: " << saved;
 }
@@ -142,7 +143,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, RainGolden, ::testing::ValuesIn(goldenCases()),
                              return n;
                          });
 
-class RainImages : public RainGlTest {};
+class RainImages : public ::prism::test::GlTest {};
 
 TEST_F(RainImages, RepeatedRenderIsByteIdentical) {
     const RainSceneDesc d = describe(goldenCases()[1]);

@@ -8,11 +8,13 @@
 #include "prism/bluenoise/gl_soft_shadows.hpp"
 #include "prism/bluenoise/void_and_cluster.hpp"
 #include "prism/gl/gl_context.hpp"
+#include "prism/test/gl_test.hpp"
 
 namespace bn = prism::bluenoise;
 
-TEST(GlSoftShadows, MatchesTheCpuRenderer) {
-    auto context = prism::gl::createContext();
+class GlSoftShadows : public prism::test::GlTest {};
+
+TEST_F(GlSoftShadows, MatchesTheCpuRenderer) {
     bn::StochasticSetup setup = bn::StochasticSetup::make(bn::generateVoidAndCluster({.width = 32, .height = 32}));
     bn::RetargetOptions r;
     r.shiftX = setup.shiftX;

@@ -32,6 +32,7 @@
 #include "prism/geometry/normals.hpp"
 #include "prism/render/shader_meshes.hpp"
 #include "prism/shaders.hpp"
+#include "prism/test/gl_test.hpp"
 #include "rendering_test_support.hpp"
 
 namespace prism::rendering_test {
@@ -159,7 +160,7 @@ void expectSameImages(const std::map<std::string, image::ImageF>& scene, const s
     }
 }
 
-class Extremes : public RenderingTest {};
+class Extremes : public test::GlTest {};
 
 // --- Shininess --------------------------------------------------------------------
 
@@ -532,7 +533,7 @@ PixelInspection renderMutant(const MutantCatalog& mutant, const Scene& scene) {
     return inspectPixels(image, brightestAllowed(spec, scene.lights, scene.material), kBrightnessEpsilon);
 }
 
-class ExtremeChecksCatchThesisShaderBugs : public RenderingTest {};
+class ExtremeChecksCatchThesisShaderBugs : public test::GlTest {};
 
 TEST_F(ExtremeChecksCatchThesisShaderBugs, ConstantAddedToHighlightIsOverBright) {
     // calculateReflection (FUDGE shader thesis §5.3) added 1 to the highlight.
