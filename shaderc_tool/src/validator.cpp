@@ -284,8 +284,10 @@ ValidatedVariant validateCompiledProgram(const std::vector<StageToValidate>& sta
     }
     result.diagnostics.insert(result.diagnostics.end(), io.begin(), io.end());
     result.diagnostics.insert(result.diagnostics.end(), bound.begin(), bound.end());
-    // glslang's own link check would only repeat these, with less detail.
-    if (!io.empty() || !bound.empty()) return result;
+    // glslang's own link check would only repeat these errors, with less detail; a
+    // warning (a near miss of Prism's built-in contract) still links and reflects.
+    const auto isError = [](const Diagnostic& d) { return d.severity == Severity::Error; };
+    if (std::any_of(io.begin(), io.end(), isError) || std::any_of(bound.begin(), bound.end(), isError)) return result;
 
     glslang::TProgram program;
     for (auto* sh : shaders) program.addShader(sh);
