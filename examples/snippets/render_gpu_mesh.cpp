@@ -18,7 +18,7 @@ int main() {
     // [snippet]
     prism::render::GpuMesh gpu(mesh, prism::shaders::kCatalog.contractAttributes);
     program.use();
-    gpu.draw(program);   // checks the program's attributes, then glDrawElements of every triangle
+    gpu.draw(program);  // checks the program's attributes, then glDrawElements of every triangle
     // [/snippet]
     return gpu.triangleCount() == 12 ? 0 : 1;
 }

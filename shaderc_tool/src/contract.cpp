@@ -178,8 +178,8 @@ void checkAttribute(const Contract& c, std::size_t s, const InterfaceVariable& v
                                        meant + "'?)" + remedy(c)));
     } else if (it->type != glslTypeWithArray(v)) {
         out.push_back(diagnosticAt(locate, s, v, severityFor(c),
-                                   "vertex attribute '" + v.name + "' is `" + glslTypeWithArray(v) + "` but the contract (" +
-                                       contractFiles(c) + ") supplies `" + it->type + "`"));
+                                   "vertex attribute '" + v.name + "' is `" + glslTypeWithArray(v) +
+                                       "` but the contract (" + contractFiles(c) + ") supplies `" + it->type + "`"));
     }
 }
 
@@ -273,9 +273,10 @@ ContractLoadResult loadContracts(const std::vector<std::string>& paths, const So
         const auto& a = r.contract.attributes[i - 1];
         const auto& b = r.contract.attributes[i];
         if (a.location == b.location)
-            r.diagnostics.push_back(makeError(r.contract.files.empty() ? "<Prism's built-in contract>" : r.contract.files.back(), 0, 0,
-                                              "attributes '" + a.name + "' and '" + b.name + "' share location " +
-                                                  std::to_string(a.location) + "; give each its own"));
+            r.diagnostics.push_back(
+                makeError(r.contract.files.empty() ? "<Prism's built-in contract>" : r.contract.files.back(), 0, 0,
+                          "attributes '" + a.name + "' and '" + b.name + "' share location " +
+                              std::to_string(a.location) + "; give each its own"));
     }
     return r;
 }

@@ -38,8 +38,8 @@ fi
 if "$CMAKE" -S "$PROJECT" -B "$WORK/same" -DPRISM_SOURCE_DIR="$SOURCE" -DSECOND_WITH_SAME_NAMESPACE=ON \
      >"$WORK/same.log" 2>&1; then
   fail "a second catalogue with namespace toon_shaders configured"; show_log "$WORK/same.log"
-elif tr -s ' \n' ' ' <"$WORK/same.log" |
-       grep -q "prism_add_shaders(more_toon): NAMESPACE toon_shaders is already the namespace of the catalogue toon-shaders"; then
+elif tr -s ' \n' ' ' <"$WORK/same.log" | grep -q "prism_add_shaders(more_toon): NAMESPACE toon_shaders is \
+already the namespace of the catalogue toon-shaders"; then
   pass "a second catalogue with namespace toon_shaders is a configure error naming both"
 else
   fail "the error for a second catalogue with namespace toon_shaders"; show_log "$WORK/same.log"

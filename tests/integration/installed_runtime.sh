@@ -64,8 +64,8 @@ check_safe_defaults() {
   sed -i 's/a_position/a_positon/g' "$src/shaders/toon/toon.vert"
   local line; line=$(grep -n "^in vec3 a_positon;" "$src/shaders/toon/toon.vert" | cut -d: -f1)
   "$CMAKE" --build "$bld" --parallel "$JOBS" --target toon_shaders >"$logs/misspelt.log" 2>&1
-  if grep -q "shaders/toon/toon\.vert:$line:[0-9]*: warning: vertex attribute 'a_positon' .*(did you mean 'a_position'?)" \
-       "$logs/misspelt.log"; then
+  local want="shaders/toon/toon\.vert:$line:[0-9]*: warning: vertex attribute 'a_positon' .*(did you mean 'a_position'?)"
+  if grep -q "$want" "$logs/misspelt.log"; then
     pass "$gen: no CONTRACT: a_positon is a warning at toon.vert:$line with did you mean"
   else
     fail "$gen: no CONTRACT: a_positon warning at toon.vert:$line"; show_log "$logs/misspelt.log"

@@ -25,13 +25,17 @@ gl::Program programReading(const std::string& positionName) {
     gl::ProgramSources sources;
     sources.label = "toon";
     sources.stages.push_back({catalog::Stage::Vertex,
-                              "#version 330 core\nin vec3 " + positionName + ";\nin vec3 a_normal;\nout vec3 v_n;\n"
-                              "void main() { v_n = a_normal; gl_Position = vec4(" + positionName + ", 1.0); }\n",
+                              "#version 330 core\nin vec3 " + positionName +
+                                  ";\nin vec3 a_normal;\nout vec3 v_n;\n"
+                                  "void main() { v_n = a_normal; gl_Position = vec4(" +
+                                  positionName + ", 1.0); }\n",
                               {}});
-    sources.stages.push_back({catalog::Stage::Fragment,
-                              "#version 330 core\nin vec3 v_n;\nout vec4 frag;\nvoid main() { frag = vec4(v_n, 1.0); }\n",
-                              {}});
-    for (const auto& a : shaders::kCatalog.contractAttributes) sources.attributes.push_back({std::string(a.name), a.location});
+    sources.stages.push_back(
+        {catalog::Stage::Fragment,
+         "#version 330 core\nin vec3 v_n;\nout vec4 frag;\nvoid main() { frag = vec4(v_n, 1.0); }\n",
+         {}});
+    for (const auto& a : shaders::kCatalog.contractAttributes)
+        sources.attributes.push_back({std::string(a.name), a.location});
     return gl::Program(std::move(sources));
 }
 
@@ -44,9 +48,10 @@ TEST_F(MeshAttributes, MisspelledAttributeIsNamedWithDidYouMean) {
         mesh.requireAttributesOf(program);
         FAIL() << "a program reading a_positon must not draw from a mesh that feeds a_position";
     } catch (const render::MeshAttributeError& e) {
-        EXPECT_STREQ(e.what(), "program 'toon' reads vertex attribute 'a_positon', which the mesh does not provide "
-                               "(did you mean 'a_position'?); the mesh provides a_position, a_normal: fix the name "
-                               "in the shader, or feed it with a vertex array of your own");
+        EXPECT_STREQ(e.what(),
+                     "program 'toon' reads vertex attribute 'a_positon', which the mesh does not provide "
+                     "(did you mean 'a_position'?); the mesh provides a_position, a_normal: fix the name "
+                     "in the shader, or feed it with a vertex array of your own");
     }
     program.use();
     EXPECT_THROW(mesh.draw(program), render::MeshAttributeError);

@@ -156,9 +156,10 @@ TEST(Contract, LocationPastIntRangeIsAnError) {
 // program (fixture of our own) declares u_resolution, u_time and u_mouse; Prism's contract
 // must not reject them.
 TEST(Contract, NamesFarFromTheContractAreTheShadersOwn) {
-    auto r = validateVertex("in vec3 a_position;\nin vec4 a_tangent;\nuniform vec2 u_resolution;\n"
-                            "uniform float u_time;\nuniform vec2 u_mouse;",
-                            "gl_Position = vec4(a_position + a_tangent.xyz, u_time) + vec4(u_resolution, u_mouse);");
+    auto r = validateVertex(
+        "in vec3 a_position;\nin vec4 a_tangent;\nuniform vec2 u_resolution;\n"
+        "uniform float u_time;\nuniform vec2 u_mouse;",
+        "gl_Position = vec4(a_position + a_tangent.xyz, u_time) + vec4(u_resolution, u_mouse);");
     EXPECT_TRUE(r.ok) << test::allMessages(r);
     EXPECT_TRUE(r.diagnostics.empty()) << test::allMessages(r);
 }
@@ -178,8 +179,8 @@ TEST(Contract, BuiltInContractIsPrismsOwn) {
 // Without --contract a near miss is a warning at the declaration, and the program still
 // validates (the name may be the user's own).
 TEST(Contract, WithoutAContractANearMissIsAWarningAtItsLine) {
-    auto r = validateVertex("in vec3 a_positon;\nuniform mat4 u_wrold;", "gl_Position = u_wrold * vec4(a_positon, 1.0);",
-                            builtInContract());
+    auto r = validateVertex("in vec3 a_positon;\nuniform mat4 u_wrold;",
+                            "gl_Position = u_wrold * vec4(a_positon, 1.0);", builtInContract());
     EXPECT_TRUE(r.ok) << test::allMessages(r);
     const auto msg = test::allMessages(r);
     EXPECT_NE(msg.find("p.vert:2:9: warning: vertex attribute 'a_positon' is not in the binding contract (Prism's "

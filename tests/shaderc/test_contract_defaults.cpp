@@ -20,10 +20,12 @@ const std::string kSource = PRISM_SOURCE_DIR;
 void writeToon(const ScratchDir& dir, const std::string& positionName) {
     dir.write("shaders/toon.vert", "#version 330 core\nin vec3 " + positionName +
                                        ";\nuniform float u_time;\n"
-                                       "void main() { gl_Position = vec4(" + positionName + " * u_time, 1.0); }\n");
-    dir.write("shaders/toon.frag", "#version 330 core\nuniform vec2 u_resolution;\nuniform float u_time;\n"
-                                   "out vec4 frag;\n"
-                                   "void main() { frag = vec4(gl_FragCoord.xy / u_resolution, sin(u_time), 1.0); }\n");
+                                       "void main() { gl_Position = vec4(" +
+                                       positionName + " * u_time, 1.0); }\n");
+    dir.write("shaders/toon.frag",
+              "#version 330 core\nuniform vec2 u_resolution;\nuniform float u_time;\n"
+              "out vec4 frag;\n"
+              "void main() { frag = vec4(gl_FragCoord.xy / u_resolution, sin(u_time), 1.0); }\n");
 }
 
 }  // namespace
@@ -47,9 +49,8 @@ TEST(ContractDefaults, WithoutContractAMisspelledAttributeIsAWarningAtItsLine) {
 TEST(ContractDefaults, PrismsContractAcceptsALygiaStyleProgramsOwnUniforms) {
     ScratchDir dir("contract-defaults-lygia");
     writeToon(dir, "a_position");
-    const auto run = runShaderc("-o gen/toon_shaders.hpp --base-dir . --contract " + kSource +
-                                    "/modules/contract.json shaders",
-                                dir.str());
+    const auto run = runShaderc(
+        "-o gen/toon_shaders.hpp --base-dir . --contract " + kSource + "/modules/contract.json shaders", dir.str());
     EXPECT_EQ(run.exitCode, 0) << run.output;
     EXPECT_EQ(run.output.find("warning"), std::string::npos) << run.output;
     EXPECT_EQ(run.output.find("error"), std::string::npos) << run.output;

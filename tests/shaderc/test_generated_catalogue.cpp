@@ -176,8 +176,9 @@ TEST(GeneratedCatalogue, UnknownVariantAxisNamesItAndListsTheAxes) {
         prism::catalog::findVariant(phong, {{"DIRECTIONAL_LIGHT", "1"}});
         FAIL() << "a misspelled axis must throw";
     } catch (const prism::catalog::VariantLookupError& e) {
-        EXPECT_STREQ(e.what(), "shader 'phong' has no variant axis 'DIRECTIONAL_LIGHT' (did you mean "
-                               "'DIRECTIONAL_LIGHTS'?); its axes: BLINN, FOG, DIRECTIONAL_LIGHTS, POINT_LIGHTS");
+        EXPECT_STREQ(e.what(),
+                     "shader 'phong' has no variant axis 'DIRECTIONAL_LIGHT' (did you mean "
+                     "'DIRECTIONAL_LIGHTS'?); its axes: BLINN, FOG, DIRECTIONAL_LIGHTS, POINT_LIGHTS");
     }
 }
 

@@ -10,7 +10,7 @@
 //     #include "prism/shaders.hpp"
 //     prism::render::GpuMesh gpu(mesh, prism::shaders::kCatalog.contractAttributes);
 //     program.use();
-//     gpu.draw(program);   // checks the program's attributes, then glDrawElements of every triangle
+//     gpu.draw(program);  // checks the program's attributes, then glDrawElements of every triangle
 //
 // Needs a current context for its whole life; move-only.
 #pragma once
