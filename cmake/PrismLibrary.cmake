@@ -88,6 +88,7 @@ function(prism_install_catalog target export_name)
   file(RELATIVE_PATH header_rel ${gen_dir} ${header_dir})
   target_include_directories(${target} PUBLIC $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
   set_target_properties(${target} PROPERTIES EXPORT_NAME ${export_name})
+  set_property(TARGET ${target} APPEND PROPERTY EXPORT_PROPERTIES PRISM_NAMESPACE)  # claimed by PrismConfig.cmake
   install(TARGETS ${target} EXPORT PrismTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
                                                LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
   install(FILES ${header} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/${header_rel})

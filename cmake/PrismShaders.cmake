@@ -6,7 +6,7 @@
 #     SOURCES <stage files...>          # .vert/.geom/.frag/.comp (or directories)
 #     MODULE_DIRS <dirs...>             # -I, searched in order
 #     [HEADER <name.hpp>]               # default <target>.hpp; may contain a subdirectory
-#     [NAMESPACE <ns>]                  # default prism::shaders
+#     [NAMESPACE <ns>]                  # default: the target's name (as a C identifier)
 #     [CONTRACT <json files...>]        # binding contract(s)
 #     [DEFINES NAME[=VALUE]...]         # -D for every stage
 #     [VARIANTS SHADER:NAME=VALUE,...]  # emit only these variants of those shaders
@@ -42,6 +42,20 @@ if(NOT DEFINED PRISM_SHADERS_LIBRARY_TYPE)
   set(PRISM_SHADERS_LIBRARY_TYPE STATIC)
 endif()
 
+# Records that catalogue `owner` defines <ns>::kCatalog; a second catalogue with the same
+# namespace would link (a shared and a static kCatalog) and run with the wrong data, so it
+# is a configure error. PrismConfig.cmake claims the namespaces of Prism's installed ones.
+function(_prism_claim_catalog_namespace ns owner)
+  string(MAKE_C_IDENTIFIER "${ns}" key)
+  get_property(taken GLOBAL PROPERTY PRISM_CATALOG_NAMESPACE_${key})
+  if(taken AND NOT taken STREQUAL owner)
+    message(FATAL_ERROR "prism_add_shaders(${owner}): NAMESPACE ${ns} is already the namespace of the catalogue "
+                        "${taken}, so both would define ${ns}::kCatalog; give ${owner} a NAMESPACE of its own, "
+                        "or leave NAMESPACE out to take the target's name")
+  endif()
+  set_property(GLOBAL PROPERTY PRISM_CATALOG_NAMESPACE_${key} ${owner})
+endfunction()
+
 function(prism_add_shaders target)
   cmake_parse_arguments(PARSE_ARGV 1 PAS "" "HEADER;NAMESPACE;GLSL_VERSION"
                         "SOURCES;MODULE_DIRS;DEFINES;CONTRACT;VARIANTS")
@@ -59,8 +73,11 @@ function(prism_add_shaders target)
     set(PAS_HEADER ${target}.hpp)
   endif()
   if(NOT PAS_NAMESPACE)
-    set(PAS_NAMESPACE prism::shaders)
+    # Target names are unique in a build, so two catalogues in one program never share
+    # the symbol <ns>::kCatalog (Prism's own is prism::shaders, in libprism_shaders).
+    string(MAKE_C_IDENTIFIER "${target}" PAS_NAMESPACE)
   endif()
+  _prism_claim_catalog_namespace(${PAS_NAMESPACE} ${target})
 
   set(gen_dir ${CMAKE_CURRENT_BINARY_DIR}/${target}_generated)
   set(header ${gen_dir}/${PAS_HEADER})
@@ -119,7 +136,7 @@ function(prism_add_shaders target)
   set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
   target_include_directories(${target} PUBLIC $<BUILD_INTERFACE:${gen_dir}>)
   target_link_libraries(${target} PUBLIC Prism::catalog)
-  set_target_properties(${target} PROPERTIES PRISM_HEADER ${header})
+  set_target_properties(${target} PROPERTIES PRISM_HEADER ${header} PRISM_NAMESPACE ${PAS_NAMESPACE})
   if(COMMAND prism_set_layer)  # inside Prism's own build: catalogues are CPU-layer data
     prism_set_layer(${target} cpu)
   endif()

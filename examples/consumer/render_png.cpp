@@ -9,6 +9,7 @@
 
 #include <cstring>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 
 #include "consumer/lit_shaders.hpp"
@@ -39,6 +40,7 @@ int main(int argc, char** argv) {
         const auto values =
             prism::render::variantFor(shader, prism::render::featuresOf(lights, false), {{"BLINN", "1"}});
         const prism::catalog::Variant* variant = prism::catalog::findVariant(shader, values);
+        if (variant == nullptr) throw std::runtime_error("tinted_phong: that variant was not generated");
         prism::gl::Program program(*variant, consumer::lit::kCatalog.contractAttributes, "tinted_phong");
 
         prism::geometry::Mesh sphere = prism::geometry::makeIcosphere(1.0f, 4);
@@ -53,7 +55,7 @@ int main(int argc, char** argv) {
         program.use();
         prism::render::setFrameUniforms(program, camera, 1.0f, lights, glm::mat4(1.0f), material);
         program.set("u_tint", glm::vec4(0.3f, 0.7f, 1.0f, 0.5f));  // the consumer's own uniform
-        mesh.draw();
+        mesh.draw(program);
 
         const prism::image::Image8 image = target.readImage8();
         prism::image::writePng(argv[1], image);

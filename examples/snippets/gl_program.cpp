@@ -13,6 +13,7 @@ int main() {
     // [snippet]
     const auto& phong = prism::shaders::shaderInfo(prism::shaders::ShaderId::phong);
     const auto* variant = prism::catalog::findVariant(phong, {{"FOG", "1"}, {"DIRECTIONAL_LIGHTS", "4"}});
+    if (variant == nullptr) return 1;  // not generated; a misspelled axis or value throws instead
     prism::gl::Program program(*variant, prism::shaders::kCatalog.contractAttributes, "phong");
 
     program.use();

@@ -13,11 +13,12 @@ int main() {
     prism::gl::Framebuffer target(16, 16);
     target.bind();
     prism::render::ProgramCache cache(prism::shaders::kCatalog);
-    cache.get("unicolor").use();
+    prism::gl::Program& program = cache.get("unicolor");
     const prism::geometry::Mesh mesh = prism::geometry::makeCube();
     // [snippet]
     prism::render::GpuMesh gpu(mesh, prism::shaders::kCatalog.contractAttributes);
-    gpu.draw();   // glDrawElements of every triangle, with the program already in use
+    program.use();
+    gpu.draw(program);  // checks the program's attributes, then glDrawElements of every triangle
     // [/snippet]
     return gpu.triangleCount() == 12 ? 0 : 1;
 }

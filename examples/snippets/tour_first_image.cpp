@@ -27,8 +27,9 @@ int main() {
     lights.directional.push_back({.direction = {-0.4f, -0.6f, -0.7f}, .color = {1.0f, 0.95f, 0.85f}});
     const auto& phong = prism::shaders::shaderInfo(prism::shaders::ShaderId::phong);
     const auto values = prism::render::variantFor(phong, prism::render::featuresOf(lights, false));
-    prism::gl::Program program(*prism::catalog::findVariant(phong, values),
-                               prism::shaders::kCatalog.contractAttributes, "phong");
+    const prism::catalog::Variant* variant = prism::catalog::findVariant(phong, values);
+    if (variant == nullptr) return 1;  // those values exist, but the build did not generate them
+    prism::gl::Program program(*variant, prism::shaders::kCatalog.contractAttributes, "phong");
 
     prism::geometry::Mesh sphere = prism::geometry::makeIcosphere(1.0f, 3);  // with unit normals
     prism::render::GpuMesh mesh(sphere, prism::shaders::kCatalog.contractAttributes);
@@ -48,7 +49,7 @@ int main() {
     prism::render::setFrameUniforms(program, camera, /*aspect*/ 1.0f, lights, world, material);
     // ... and any uniform by name; set() checks the name and the GLSL type.
     program.set("u_color", glm::vec4(0.2f, 0.5f, 0.9f, 1.0f));
-    mesh.draw();
+    mesh.draw(program);  // a program attribute the mesh does not feed throws, naming it
 
     // Read back (row 0 is the top row) and write atomically (a temp file, then rename).
     prism::image::Image8 image = target.readImage8();

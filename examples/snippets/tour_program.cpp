@@ -17,7 +17,7 @@ int main() {
     // One variant of one shader: the values not named here take their axis's first value.
     const prism::catalog::Shader& phong = prism::shaders::shaderInfo(prism::shaders::ShaderId::phong);
     const prism::catalog::Variant* variant = prism::catalog::findVariant(phong, {{"BLINN", "1"}});
-    if (variant == nullptr) return 1;
+    if (variant == nullptr) return 1;  // not generated; a misspelled axis or value throws VariantLookupError
     std::cout << "building phong " << variant->name << "\n";
 
     // Compiles every stage, binds the contract's attribute locations, links. A GLSL error

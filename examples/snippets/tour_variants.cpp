@@ -20,7 +20,17 @@ int main() {
     const prism::catalog::Shader& phong = prism::shaders::shaderInfo(prism::shaders::ShaderId::phong);
     prism::render::VariantValues values = prism::render::variantFor(phong, features, {{"BLINN", "1"}});
     const prism::catalog::Variant* variant = prism::catalog::findVariant(phong, values);
+    if (variant == nullptr) return 1;  // those values exist, but the build did not generate them (VARIANTS)
     std::cout << "phong " << variant->name << "\n";  // BLINN=1,FOG=0,DIRECTIONAL_LIGHTS=2,POINT_LIGHTS=0
+
+    // A misspelled axis or value is an error that names it and lists the known ones.
+    try {
+        prism::catalog::findVariant(phong, {{"DIRECTIONAL_LIGHT", "1"}});
+        return 1;
+    } catch (const prism::catalog::VariantLookupError& e) {
+        // shader 'phong' has no variant axis 'DIRECTIONAL_LIGHT' (did you mean 'DIRECTIONAL_LIGHTS'?); its axes: ...
+        std::cout << e.what() << "\n";
+    }
     return 0;
 }
 // [/snippet]

@@ -9,6 +9,16 @@ bool hasAxis(const catalog::Shader& shader, std::string_view name) {
         if (a.name == name) return true;
     return false;
 }
+
+// For the panel a value its axis lacks is one more combination that does not exist, not
+// an error (findVariant throws VariantLookupError for it).
+const catalog::Variant* variantOrNull(const catalog::Shader& shader, const render::VariantValues& values) {
+    try {
+        return catalog::findVariant(shader, values);
+    } catch (const catalog::VariantLookupError&) {
+        return nullptr;
+    }
+}
 }  // namespace
 
 render::VariantValues effectiveVariant(const catalog::Shader& shader, const render::FeatureSet& features,
@@ -17,7 +27,7 @@ render::VariantValues effectiveVariant(const catalog::Shader& shader, const rend
     for (const auto& p : picks)
         if (hasAxis(shader, p.first)) known.push_back(p);
     render::VariantValues values = render::variantFor(shader, features, known);
-    if (catalog::findVariant(shader, values)) return values;
+    if (variantOrNull(shader, values)) return values;
     return render::variantFor(shader, features, {});
 }
 
@@ -25,7 +35,7 @@ bool isValidChoice(const catalog::Shader& shader, const render::VariantValues& c
                    std::string_view value) {
     render::VariantValues v = current;
     setAxis(v, axis, value);
-    return catalog::findVariant(shader, v) != nullptr;
+    return variantOrNull(shader, v) != nullptr;
 }
 
 void setAxis(render::VariantValues& values, std::string_view axis, std::string_view value) {
@@ -57,7 +67,7 @@ std::string whyNotAVariant(const catalog::Shader& shader, const render::FeatureS
         if (!valid) return axis + "=" + value + " is not a value of " + std::string(shader.name) + "'s axis " + axis +
                            " (values: " + known + ")";
     }
-    if (!catalog::findVariant(shader, render::variantFor(shader, features, picks)))
+    if (!variantOrNull(shader, render::variantFor(shader, features, picks)))
         return std::string(shader.name) + " has no generated variant " +
                variantLabel(render::variantFor(shader, features, picks));
     return {};

@@ -2,7 +2,7 @@
 #include "prism/io/json_nesting.hpp"
 #include "contract.hpp"
 
-#include "did_you_mean.hpp"
+#include "prism/catalog/did_you_mean.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -143,24 +143,69 @@ void loadOne(const std::string& path, const std::string& text, Contract& c, std:
     if (doc->contains("uniforms")) readUniforms(*doc, f, c);
 }
 
-template <class T>
-std::string suggestion(const std::string& name, const std::vector<T>& known) {
-    std::string best;
-    std::size_t bestDistance = 4;
-    for (const auto& k : known) {
-        auto d = editDistance(name, k.name);
-        if (d < bestDistance) {
-            bestDistance = d;
-            best = k.name;
-        }
-    }
-    return best.empty() ? std::string() : " (did you mean '" + best + "'?)";
-}
-
 std::string contractFiles(const Contract& c) {
+    if (c.builtIn) return "Prism's contract, built into prism-shaderc";
     std::string s;
     for (const auto& f : c.files) s += (s.empty() ? "" : ", ") + f;
     return s;
+}
+
+// The contract name that `name` misspells (within kContractTypoDistance, not equal), or "".
+template <class T>
+std::string misspelledName(const std::string& name, const std::vector<T>& known) {
+    std::vector<std::string> names;
+    for (const auto& k : known) names.push_back(k.name);
+    return catalog::closestName(name, names, kContractTypoDistance);
+}
+
+// Against the built-in contract, which the user never chose, problems are warnings.
+Severity severityFor(const Contract& c) {
+    return c.builtIn ? Severity::Warning : Severity::Error;
+}
+
+std::string remedy(const Contract& c) {
+    return c.builtIn ? "; fix the name, or give prism_add_shaders() a CONTRACT (--contract) that declares it"
+                     : "; fix the name or add it to the contract";
+}
+
+void checkAttribute(const Contract& c, std::size_t s, const InterfaceVariable& v, const SourceLocator& locate,
+                    std::vector<Diagnostic>& out) {
+    auto it = std::find_if(c.attributes.begin(), c.attributes.end(), [&](const auto& a) { return a.name == v.name; });
+    if (it == c.attributes.end()) {
+        const std::string meant = misspelledName(v.name, c.attributes);
+        if (meant.empty()) return;  // far from every contract name: the shader's own attribute
+        out.push_back(diagnosticAt(locate, s, v, severityFor(c),
+                                   "vertex attribute '" + v.name + "' is not in the binding contract (" +
+                                       contractFiles(c) + "), so the runtime would never feed it (did you mean '" +
+                                       meant + "'?)" + remedy(c)));
+    } else if (it->type != glslTypeWithArray(v)) {
+        out.push_back(diagnosticAt(locate, s, v, severityFor(c),
+                                   "vertex attribute '" + v.name + "' is `" + glslTypeWithArray(v) +
+                                       "` but the contract (" + contractFiles(c) + ") supplies `" + it->type + "`"));
+    }
+}
+
+void checkUniform(const Contract& c, std::size_t s, const InterfaceVariable& v, const SourceLocator& locate,
+                  std::vector<Diagnostic>& out) {
+    const std::string files = contractFiles(c);
+    auto it = std::find_if(c.uniforms.begin(), c.uniforms.end(), [&](const auto& u) { return u.name == v.name; });
+    if (it == c.uniforms.end()) {
+        const std::string meant = misspelledName(v.name, c.uniforms);
+        if (meant.empty()) return;  // far from every contract name: the shader's own uniform
+        out.push_back(diagnosticAt(locate, s, v, severityFor(c),
+                                   "uniform '" + v.name + "' is not in the binding contract (" + files +
+                                       "), so the runtime never sets it (did you mean '" + meant + "'?)" + remedy(c)));
+    } else if (it->type != v.type) {
+        out.push_back(diagnosticAt(locate, s, v, severityFor(c),
+                                   "uniform '" + v.name + "' is `" + glslTypeWithArray(v) + "` but the contract (" +
+                                       files + ") supplies `" + it->type +
+                                       (it->array ? "[" + std::to_string(it->array) + "]" : "") + "`"));
+    } else if ((v.arraySize != 0) != (it->array != 0) || v.arraySize > it->array || v.arraySize < 0) {
+        out.push_back(diagnosticAt(
+            locate, s, v, severityFor(c),
+            "uniform '" + v.name + "' is `" + glslTypeWithArray(v) + "` but the contract (" + files + ") supplies " +
+                (it->array ? "at most " + std::to_string(it->array) + " elements" : "a single value")));
+    }
 }
 
 }  // namespace
@@ -208,6 +253,10 @@ std::uint32_t glTypeOf(const std::string& t) {
 
 ContractLoadResult loadContracts(const std::vector<std::string>& paths, const SourceReader& reader) {
     ContractLoadResult r;
+    if (paths.empty()) {
+        loadOne("<Prism's built-in contract>", std::string(builtInContractJson()), r.contract, r.diagnostics);
+        r.contract.builtIn = true;
+    }
     for (const auto& p : paths) {
         auto text = reader.read(p);
         if (!text) {
@@ -226,9 +275,10 @@ ContractLoadResult loadContracts(const std::vector<std::string>& paths, const So
         const auto& a = r.contract.attributes[i - 1];
         const auto& b = r.contract.attributes[i];
         if (a.location == b.location)
-            r.diagnostics.push_back(makeError(r.contract.files.back(), 0, 0,
-                                              "attributes '" + a.name + "' and '" + b.name + "' share location " +
-                                                  std::to_string(a.location) + "; give each its own"));
+            r.diagnostics.push_back(
+                makeError(r.contract.files.empty() ? "<Prism's built-in contract>" : r.contract.files.back(), 0, 0,
+                          "attributes '" + a.name + "' and '" + b.name + "' share location " +
+                              std::to_string(a.location) + "; give each its own"));
     }
     return r;
 }
@@ -237,45 +287,12 @@ std::vector<Diagnostic> checkContract(const Contract& contract, const std::vecto
                                       const SourceLocator& locate) {
     std::vector<Diagnostic> out;
     if (contract.empty()) return out;
-    const std::string files = contractFiles(contract);
     for (std::size_t s = 0; s < stages.size(); ++s) {
         for (const auto& v : stages[s].variables) {
-            if (v.storage == StorageKind::In && stages[s].stage == catalog::Stage::Vertex) {
-                auto it = std::find_if(contract.attributes.begin(), contract.attributes.end(),
-                                       [&](const auto& a) { return a.name == v.name; });
-                if (it == contract.attributes.end()) {
-                    out.push_back(diagnosticAt(locate, s, v, Severity::Error,
-                                               "vertex attribute '" + v.name + "' is not in the binding contract (" +
-                                                   files + "), so the runtime would never feed it" +
-                                                   suggestion(v.name, contract.attributes) +
-                                                   "; fix the name or add it to the contract"));
-                } else if (it->type != glslTypeWithArray(v)) {
-                    out.push_back(diagnosticAt(locate, s, v, Severity::Error,
-                                               "vertex attribute '" + v.name + "' is `" + glslTypeWithArray(v) +
-                                                   "` but the contract (" + files + ") supplies `" + it->type + "`"));
-                }
-            } else if (v.storage == StorageKind::Uniform && !v.isBlock) {
-                auto it = std::find_if(contract.uniforms.begin(), contract.uniforms.end(),
-                                       [&](const auto& u) { return u.name == v.name; });
-                if (it == contract.uniforms.end()) {
-                    out.push_back(diagnosticAt(locate, s, v, Severity::Error,
-                                               "uniform '" + v.name + "' is not in the binding contract (" + files +
-                                                   "), so the runtime never sets it" +
-                                                   suggestion(v.name, contract.uniforms) +
-                                                   "; fix the name or add it to the contract"));
-                } else if (it->type != v.type) {
-                    out.push_back(diagnosticAt(locate, s, v, Severity::Error,
-                                               "uniform '" + v.name + "' is `" + glslTypeWithArray(v) +
-                                                   "` but the contract (" + files + ") supplies `" + it->type +
-                                                   (it->array ? "[" + std::to_string(it->array) + "]" : "") + "`"));
-                } else if ((v.arraySize != 0) != (it->array != 0) || v.arraySize > it->array || v.arraySize < 0) {
-                    out.push_back(diagnosticAt(
-                        locate, s, v, Severity::Error,
-                        "uniform '" + v.name + "' is `" + glslTypeWithArray(v) + "` but the contract (" + files +
-                            ") supplies " +
-                            (it->array ? "at most " + std::to_string(it->array) + " elements" : "a single value")));
-                }
-            }
+            if (v.storage == StorageKind::In && stages[s].stage == catalog::Stage::Vertex)
+                checkAttribute(contract, s, v, locate, out);
+            else if (v.storage == StorageKind::Uniform && !v.isBlock)
+                checkUniform(contract, s, v, locate, out);
         }
     }
     return out;

@@ -1,8 +1,11 @@
 // Part of stage 3 (shader_inputs.hpp). The binding contract: the vertex attributes and
 // uniforms the runtime supplies, declared once in a JSON file (modules/contract.json). A
-// shader that declares an attribute or uniform outside it is an error, because a misspelled
-// name would otherwise silently receive no data (the failure the FUDGE shader thesis §3
-// describes: mistakes in shader strings show up only at run time).
+// shader's attribute or uniform within edit distance 2 of a contract name, but not equal to it, is a misspelling that
+// would silently receive no data (the failure the FUDGE shader thesis §3 describes:
+// mistakes in shader strings show up only at run time), so it is an error with "did you
+// mean". Names far from every contract name are the shader's own (lygia's `u_time`,
+// `u_resolution`) and pass. Without --contract the tool still knows Prism's own contract,
+// compiled in: then a near miss is a warning, since the names may be the user's.
 //
 //   { "attributes": [ { "name": "a_position", "type": "vec3", "location": 0 } ],
 //     "uniforms":   [ { "name": "u_world", "type": "mat4" },
@@ -12,6 +15,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "diagnostics.hpp"
@@ -31,10 +35,11 @@ struct ContractUniform {
 };
 
 struct Contract {
-    std::vector<std::string> files;             // where it was read from
+    std::vector<std::string> files;             // where it was read from (none for the built-in one)
     std::vector<ContractAttribute> attributes;  // sorted by location
     std::vector<ContractUniform> uniforms;      // sorted by name
-    bool empty() const { return files.empty(); }
+    bool builtIn = false;                       // Prism's own, taken for want of --contract
+    bool empty() const { return files.empty() && !builtIn; }
 };
 
 struct ContractLoadResult {
@@ -44,10 +49,20 @@ struct ContractLoadResult {
 };
 
 // Reads and merges the contract files; a malformed file gives `file:line:col` and the
-// JSON path of the offending value.
+// JSON path of the offending value. No paths: Prism's built-in contract.
 ContractLoadResult loadContracts(const std::vector<std::string>& paths, const SourceReader& reader);
 
-// Checks the vertex stage's inputs and every stage's plain uniforms (not blocks).
+// The text of Prism's modules/contract.json, compiled into the tool
+// (shaderc_tool/CMakeLists.txt writes it from builtin_contract.cpp.in).
+std::string_view builtInContractJson();
+
+// How far (edit distance) a shader's name may be from a contract name to count as a
+// misspelling of it; farther names are the shader's own.
+inline constexpr std::size_t kContractTypoDistance = 2;
+
+// Checks the vertex stage's inputs and every stage's plain uniforms (not blocks): a name
+// in the contract must have its type; a near miss is an error (a warning against the
+// built-in contract); other names pass.
 std::vector<Diagnostic> checkContract(const Contract& contract, const std::vector<StageInterface>& stages,
                                       const SourceLocator& locate);
 

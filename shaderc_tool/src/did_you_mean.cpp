@@ -1,5 +1,5 @@
-// "Did you mean" hints: edit distance, function names of a stage, include candidates
-// (see did_you_mean.hpp).
+// "Did you mean" hints of the tool: function names of a stage, include candidates
+// (see did_you_mean.hpp; the edit-distance rule is prism/catalog/did_you_mean.hpp).
 #include "did_you_mean.hpp"
 
 #include <algorithm>
@@ -10,41 +10,6 @@
 #include "include_search.hpp"
 
 namespace prism::shaderc {
-
-std::size_t editDistance(std::string_view a, std::string_view b) {
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        std::size_t diag = row[0];
-        row[0] = i;
-        for (std::size_t j = 1; j <= b.size(); ++j) {
-            const std::size_t up = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
-            diag = up;
-        }
-    }
-    return row[b.size()];
-}
-
-std::string closestName(std::string_view name, const std::vector<std::string>& candidates) {
-    const std::size_t limit = std::min<std::size_t>(1 + name.size() / 3, name.size() > 0 ? name.size() - 1 : 0);
-    std::string best;
-    std::size_t bestDistance = limit + 1;
-    for (const auto& c : candidates) {
-        if (c == name) continue;
-        const std::size_t d = editDistance(name, c);
-        if (d < bestDistance || (d == bestDistance && !best.empty() && c < best)) {
-            bestDistance = d;
-            best = c;
-        }
-    }
-    return best;
-}
-
-std::string didYouMean(std::string_view name, const std::vector<std::string>& candidates) {
-    const std::string best = closestName(name, candidates);
-    return best.empty() ? std::string() : " (did you mean '" + best + "'?)";
-}
 
 namespace {
 

@@ -1,5 +1,6 @@
 // "Did you mean" hints for prism-shaderc's diagnostics: the closest known name by edit
-// distance, the functions a resolved stage defines (for glslang's "no matching
+// distance (the rule itself is public, prism/catalog/did_you_mean.hpp, shared with the
+// runtime), the functions a resolved stage defines (for glslang's "no matching
 // overloaded function found") and the files an #include could have meant (for
 // "cannot find include").
 //
@@ -11,20 +12,16 @@
 #include <string_view>
 #include <vector>
 
+#include "prism/catalog/did_you_mean.hpp"
+
 namespace prism::shaderc {
 
 struct SearchDir;
 struct IncludeTarget;
 
-// Levenshtein distance.
-std::size_t editDistance(std::string_view a, std::string_view b);
-
-// The candidate closest to `name` (edit distance at most 1 + size / 3, and less than
-// `name`'s size), never `name` itself; "" when none is close.
-std::string closestName(std::string_view name, const std::vector<std::string>& candidates);
-
-// " (did you mean 'x'?)" with the closest candidate, or "".
-std::string didYouMean(std::string_view name, const std::vector<std::string>& candidates);
+using catalog::closestName;
+using catalog::didYouMean;
+using catalog::editDistance;
 
 // Names of the functions defined or declared at global scope in GLSL text (a return
 // type, a name and a parameter list at the start of a line, outside comments).

@@ -269,12 +269,13 @@ void linkAndReflect(const std::vector<StageToValidate>& stages, const std::vecto
     glslang::TProgram program;
     for (auto* sh : shaders) program.addShader(sh);
     if (!program.link(EShMsgDefault)) {
+        const auto before = result.diagnostics.size();
         std::istringstream log(program.getInfoLog());
         std::string line;
         while (std::getline(log, line))
             if (line.rfind("ERROR: ", 0) == 0)
                 result.diagnostics.push_back(makeError(stages.front().path, 0, 0, "link: " + line.substr(7)));
-        if (result.diagnostics.empty())
+        if (result.diagnostics.size() == before)
             result.diagnostics.push_back(makeError(stages.front().path, 0, 0, "glslang could not link the program"));
         return;
     }
@@ -314,8 +315,11 @@ ValidatedVariant validateCompiledProgram(const std::vector<StageToValidate>& sta
 
     const auto interfaceMessages = checkInterfaces(stages, shaders, contract);
     result.diagnostics.insert(result.diagnostics.end(), interfaceMessages.begin(), interfaceMessages.end());
-    // glslang's own link check would only repeat these, with less detail.
-    if (interfaceMessages.empty()) linkAndReflect(stages, shaders, contract, result);
+    // glslang's own link check would only repeat these errors, with less detail; a
+    // warning (a near miss of Prism's built-in contract) still links and reflects.
+    const auto isError = [](const Diagnostic& d) { return d.severity == Severity::Error; };
+    if (std::none_of(interfaceMessages.begin(), interfaceMessages.end(), isError))
+        linkAndReflect(stages, shaders, contract, result);
     return result;
 }
 

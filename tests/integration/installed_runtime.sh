@@ -4,7 +4,11 @@
 # with Unix Makefiles (find_package(Prism)), runs its prism_consumer_render, and compares
 # the PNG with tests/golden/consumer/tinted_phong.png (thresholds in render_png.cpp).
 # Also checks that the prefix holds the runtime's headers, libraries, generated
-# catalogues and glad headers, and no path of the source tree leaks into the build.
+# catalogues and glad headers, and no path of the source tree leaks into the build; and
+# the safe defaults of prism_add_shaders() (issue 22, item 4): a catalogue with no
+# NAMESPACE links beside Prism's own into one program (prism_consumer_two_catalogues),
+# its lygia-style uniforms build without a word, and with no CONTRACT a misspelled
+# a_positon is a GCC-style warning at toon.vert with "did you mean".
 #
 # Usage: installed_runtime.sh --source <prism source> --build <prism build> --work <scratch dir>
 #          [--cmake <cmake>] [--jobs <n>]
@@ -44,6 +48,30 @@ for f in include/prism/gl/program.hpp include/prism/render/gpu_mesh.hpp include/
   if [ -e "$PREFIX/$f" ]; then pass "prefix has $f"; else fail "prefix lacks $f"; fi
 done
 
+# check_safe_defaults <generator> <consumer copy> <build dir> <log dir>
+check_safe_defaults() {
+  local gen=$1 src=$2 bld=$3 logs=$4
+  if "$bld/prism_consumer_two_catalogues" >"$logs/two.log" 2>&1 && grep -qx "two catalogues: OK" "$logs/two.log"; then
+    pass "$gen: toon_shaders (no NAMESPACE) and prism::shaders in one program ($(head -n 1 "$logs/two.log"))"
+  else
+    fail "$gen: prism_consumer_two_catalogues"; show_log "$logs/two.log"
+  fi
+  if grep -q "toon\.[a-z]*:[0-9]*:[0-9]*: \(warning\|error\)" "$logs/build.log"; then
+    fail "$gen: toon's own uniforms (u_resolution, u_time) drew a diagnostic"; show_log "$logs/build.log"
+  else
+    pass "$gen: toon's own uniforms (u_resolution, u_time) build without a diagnostic"
+  fi
+  sed -i 's/a_position/a_positon/g' "$src/shaders/toon/toon.vert"
+  local line; line=$(grep -n "^in vec3 a_positon;" "$src/shaders/toon/toon.vert" | cut -d: -f1)
+  "$CMAKE" --build "$bld" --parallel "$JOBS" --target toon_shaders >"$logs/misspelt.log" 2>&1
+  local want="shaders/toon/toon\.vert:$line:[0-9]*: warning: vertex attribute 'a_positon' .*(did you mean 'a_position'?)"
+  if grep -q "$want" "$logs/misspelt.log"; then
+    pass "$gen: no CONTRACT: a_positon is a warning at toon.vert:$line with did you mean"
+  else
+    fail "$gen: no CONTRACT: a_positon warning at toon.vert:$line"; show_log "$logs/misspelt.log"
+  fi
+}
+
 for gen in Ninja "Unix Makefiles"; do
   tag=${gen// /-}
   src=$WORK/$tag/consumer bld=$WORK/$tag/build
@@ -68,6 +96,7 @@ for gen in Ninja "Unix Makefiles"; do
   else
     fail "$gen: prism_consumer_render against the golden"; show_log "$WORK/$tag/run.log"
   fi
+  check_safe_defaults "$gen" "$src" "$bld" "$WORK/$tag"
 done
 echo "installed_runtime: $FAILURES failed check(s)"
 [ "$FAILURES" -eq 0 ]

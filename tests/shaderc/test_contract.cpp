@@ -2,6 +2,8 @@
 // that rejects attributes and uniforms the runtime never provides.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "validation_fixture.hpp"
 
 using namespace prism;
@@ -25,13 +27,22 @@ Contract contractFrom(const std::string& text) {
     return r.contract;
 }
 
-ValidatedVariant validateVertex(const std::string& declarations, const std::string& body) {
+ValidatedVariant validateVertex(const std::string& declarations, const std::string& body,
+                                const Contract& contract = contractFrom(kContract)) {
     MemoryReader files{
         {"p.vert", "#version 330 core\n" + declarations + "\nvoid main() { " + body + " }\n"},
         {"p.frag", "#version 330 core\nout vec4 frag;\nvoid main() { frag = vec4(1.0); }\n"},
     };
     return test::validateInMemory(files, {{catalog::Stage::Vertex, "p.vert"}, {catalog::Stage::Fragment, "p.frag"}},
-                                  contractFrom(kContract));
+                                  contract);
+}
+
+// What a build given no --contract checks against.
+Contract builtInContract() {
+    MemoryReader none;
+    auto r = loadContracts({}, none);
+    EXPECT_TRUE(r.diagnostics.empty()) << (r.diagnostics.empty() ? "" : r.diagnostics[0].message);
+    return r.contract;
 }
 
 }  // namespace
@@ -139,4 +150,52 @@ TEST(Contract, LocationPastIntRangeIsAnError) {
     EXPECT_NE(all.find("/attributes/0/location: expected a non-negative integer up to 2147483647"), std::string::npos)
         << all;
     EXPECT_NE(all.find("/uniforms/0/array: expected a non-negative integer up to 2147483647"), std::string::npos) << all;
+}
+
+// Issue 22, item 4: names far from every contract name are the shader's own. A lygia-style
+// program (fixture of our own) declares u_resolution, u_time and u_mouse; Prism's contract
+// must not reject them.
+TEST(Contract, NamesFarFromTheContractAreTheShadersOwn) {
+    auto r = validateVertex(
+        "in vec3 a_position;\nin vec4 a_tangent;\nuniform vec2 u_resolution;\n"
+        "uniform float u_time;\nuniform vec2 u_mouse;",
+        "gl_Position = vec4(a_position + a_tangent.xyz, u_time) + vec4(u_resolution, u_mouse);");
+    EXPECT_TRUE(r.ok) << test::allMessages(r);
+    EXPECT_TRUE(r.diagnostics.empty()) << test::allMessages(r);
+}
+
+TEST(Contract, BuiltInContractIsPrismsOwn) {
+    const Contract c = builtInContract();
+    EXPECT_TRUE(c.builtIn);
+    EXPECT_FALSE(c.empty());
+    EXPECT_TRUE(c.files.empty());  // nothing for the depfile
+    ASSERT_FALSE(c.attributes.empty());
+    EXPECT_EQ(c.attributes[0].name, "a_position");
+    EXPECT_EQ(c.attributes[0].location, 0);
+    EXPECT_TRUE(std::any_of(c.uniforms.begin(), c.uniforms.end(),
+                            [](const ContractUniform& u) { return u.name == "u_lightDirection" && u.array == 8; }));
+}
+
+// Without --contract a near miss is a warning at the declaration, and the program still
+// validates (the name may be the user's own).
+TEST(Contract, WithoutAContractANearMissIsAWarningAtItsLine) {
+    auto r = validateVertex("in vec3 a_positon;\nuniform mat4 u_wrold;",
+                            "gl_Position = u_wrold * vec4(a_positon, 1.0);", builtInContract());
+    EXPECT_TRUE(r.ok) << test::allMessages(r);
+    const auto msg = test::allMessages(r);
+    EXPECT_NE(msg.find("p.vert:2:9: warning: vertex attribute 'a_positon' is not in the binding contract (Prism's "
+                       "contract, built into prism-shaderc)"),
+              std::string::npos)
+        << msg;
+    EXPECT_NE(msg.find("(did you mean 'a_position'?)"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("p.vert:3:14: warning: uniform 'u_wrold'"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("(did you mean 'u_world'?)"), std::string::npos) << msg;
+    EXPECT_EQ(msg.find("error"), std::string::npos) << msg;
+}
+
+TEST(Contract, WithoutAContractFarNamesGiveNoWarning) {
+    auto r = validateVertex("in vec3 a_position;\nuniform vec2 u_resolution;\nuniform float u_time;",
+                            "gl_Position = vec4(a_position, u_time) + u_resolution.xyxy;", builtInContract());
+    EXPECT_TRUE(r.ok) << test::allMessages(r);
+    EXPECT_TRUE(r.diagnostics.empty()) << test::allMessages(r);
 }

@@ -47,7 +47,7 @@ TEST(GeneratedCatalogue, PhongHasTheBlinnVariantAndReflection) {
     ASSERT_NE(blinn, nullptr);
     EXPECT_EQ(blinn->name, "BLINN=1,FOG=0,DIRECTIONAL_LIGHTS=2,POINT_LIGHTS=1");
     EXPECT_NE(joinChunks(blinn->stages[1].chunks).find("#define BLINN 1"), std::string::npos);
-    EXPECT_EQ(prism::catalog::findVariant(phong, {{"NOPE", "1"}}), nullptr);
+    EXPECT_THROW(prism::catalog::findVariant(phong, {{"NOPE", "1"}}), prism::catalog::VariantLookupError);
     auto hasUniform = [&](std::string_view n) {
         return std::any_of(blinn->uniforms.begin(), blinn->uniforms.end(), [&](const auto& u) { return u.name == n; });
     };
@@ -165,4 +165,34 @@ TEST(GeneratedCatalogue, ModuleTextIsItsFileWithIncludesBlanked) {
             EXPECT_EQ(got, want);
     }
     EXPECT_GT(lines, 10);
+}
+
+// Issue 22, item 4: a misspelled axis or value is an error that names it and lists the
+// known ones (before, findVariant returned nullptr and the docs' first snippet
+// dereferenced it).
+namespace {
+// The message findVariant throws for `wanted`; "" when it throws nothing.
+std::string lookupError(std::initializer_list<prism::catalog::Define> wanted) {
+    try {
+        prism::catalog::findVariant(shaders::shaderInfo(shaders::ShaderId::phong), wanted);
+    } catch (const prism::catalog::VariantLookupError& e) {
+        return e.what();
+    }
+    return "";
+}
+}  // namespace
+
+TEST(GeneratedCatalogue, UnknownVariantAxisNamesItAndListsTheAxes) {
+    EXPECT_EQ(lookupError({{"DIRECTIONAL_LIGHT", "1"}}),
+              "shader 'phong' has no variant axis 'DIRECTIONAL_LIGHT' (did you mean 'DIRECTIONAL_LIGHTS'?); its axes: "
+              "BLINN, FOG, DIRECTIONAL_LIGHTS, POINT_LIGHTS");
+}
+
+TEST(GeneratedCatalogue, UnknownVariantValueNamesItAndListsTheValues) {
+    EXPECT_EQ(lookupError({{"FOG", "2"}}), "variant axis 'FOG' of shader 'phong' has no value '2'; its values: 0, 1");
+    EXPECT_EQ(lookupError({{"FOG", "1"}}), "");  // a declared value is no error
+    // Pairs of strings go through the same check.
+    const std::vector<std::pair<std::string, std::string>> pairs{{"BLINN", "yes"}};
+    EXPECT_THROW(prism::catalog::findVariant(shaders::shaderInfo(shaders::ShaderId::phong), pairs),
+                 prism::catalog::VariantLookupError);
 }

@@ -9,8 +9,8 @@
 
 #include "contract.hpp"
 #include "diagnostics.hpp"
-#include "did_you_mean.hpp"
 #include "include_resolver.hpp"
+#include "prism/catalog/did_you_mean.hpp"
 #include "prism/gl/compose.hpp"
 #include "source_reader.hpp"
 
@@ -119,17 +119,14 @@ const catalog::Catalog& ModuleLibrary::catalog() const {
 }
 
 std::uint32_t ModuleLibrary::id(std::string_view name) const {
-    std::string known, closest;
-    std::size_t best = 3;
+    std::vector<std::string> known;
     for (std::uint32_t i = 0; i < storage_->modules.size(); ++i) {
-        const std::string_view n = storage_->modules[i].name;
-        if (n == name) return i;
-        known += (known.empty() ? "" : ", ") + std::string(n);
-        if (const std::size_t d = shaderc::editDistance(name, n); d < best) best = d, closest = n;
+        if (storage_->modules[i].name == name) return i;
+        known.emplace_back(storage_->modules[i].name);
     }
     throw CompositionError("prism module library: no module named '" + std::string(name) + "'" +
-                           (closest.empty() ? "" : " (did you mean '" + closest + "'?)") + "; the library has " +
-                           (known.empty() ? "no modules" : known));
+                           catalog::didYouMean(name, known) + "; the library has " +
+                           (known.empty() ? "no modules" : catalog::nameList(known)));
 }
 
 }  // namespace prism::gl

@@ -2,6 +2,7 @@
 // link failures become ShaderBuildError with file:line messages.
 #include "prism/gl/program.hpp"
 
+#include <algorithm>
 #include <iostream>
 #include <mutex>
 #include <utility>
@@ -67,6 +68,27 @@ std::string programLog(GLuint program) {
 
 std::string programName(const std::string& label) {
     return label.empty() ? "program" : "program '" + label + "'";
+}
+
+// What the linked program reads, as the driver reports it (not the reflection table: a
+// program built from raw sources has none).
+std::vector<AttributeBinding> activeAttributesOf(GLuint program) {
+    GLint count = 0, maxLength = 0;
+    glGetProgramiv(program, GL_ACTIVE_ATTRIBUTES, &count);
+    glGetProgramiv(program, GL_ACTIVE_ATTRIBUTE_MAX_LENGTH, &maxLength);
+    std::vector<AttributeBinding> out;
+    std::string name(static_cast<std::size_t>(std::max(maxLength, 1)), '\0');
+    for (GLint i = 0; i < count; ++i) {
+        GLsizei length = 0;
+        GLint size = 0;
+        GLenum type = 0;
+        glGetActiveAttrib(program, static_cast<GLuint>(i), static_cast<GLsizei>(name.size()), &length, &size, &type,
+                          name.data());
+        std::string attribute(name.data(), static_cast<std::size_t>(length));
+        if (attribute.rfind("gl_", 0) == 0) continue;  // gl_VertexID and friends: fed by GL itself
+        out.push_back({attribute, glGetAttribLocation(program, attribute.c_str())});
+    }
+    return out;
 }
 
 }  // namespace
@@ -176,6 +198,7 @@ void Program::build(ProgramSources sources) {
         program_.reset();
         throw ShaderBuildError(e.what(), "");
     }
+    activeAttributes_ = activeAttributesOf(program);
     buildUniformTable(sources.uniforms);
 }
 

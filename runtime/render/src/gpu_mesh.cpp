@@ -1,6 +1,7 @@
 // Vertex buffers for a Mesh (see prism/render/gpu_mesh.hpp).
 #include "prism/render/gpu_mesh.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -25,8 +26,10 @@ GpuMesh::GpuMesh(const geometry::Mesh& mesh, std::span<const catalog::Attribute>
     geometry::requireValidMesh(mesh, "GpuMesh");
     vao_ = gl::VertexArray::create();
     glBindVertexArray(vao_.id());
-    positions_ = uploadVec3(mesh.positions, catalog::attributeLocation(contract, "a_position"));
+    const int positionLocation = catalog::attributeLocation(contract, "a_position");
     const int normalLocation = catalog::attributeLocation(contract, "a_normal");
+    attributes_ = {{"a_position", positionLocation}, {"a_normal", normalLocation}};
+    positions_ = uploadVec3(mesh.positions, positionLocation);
     if (!mesh.normals.empty()) {
         normals_ = uploadVec3(mesh.normals, normalLocation);
     } else {
@@ -40,6 +43,29 @@ GpuMesh::GpuMesh(const geometry::Mesh& mesh, std::span<const catalog::Attribute>
     indexCount_ = mesh.indices.size();
     glBindVertexArray(0);
     gl::throwIfGlError("uploading a mesh");
+}
+
+void GpuMesh::requireAttributesOf(const gl::Program& program) const {
+    std::vector<std::string> fed;
+    for (const auto& a : attributes_) fed.push_back(a.name);
+    for (const auto& wanted : program.activeAttributes()) {
+        const auto it = std::find_if(attributes_.begin(), attributes_.end(),
+                                     [&](const gl::AttributeBinding& a) { return a.name == wanted.name; });
+        const std::string who = "program '" + program.label() + "' reads vertex attribute '" + wanted.name + "'";
+        if (it == attributes_.end())
+            throw MeshAttributeError(who + ", which the mesh does not provide" + catalog::didYouMean(wanted.name, fed) +
+                                     "; the mesh provides " + catalog::nameList(fed) +
+                                     ": fix the name in the shader, or feed it with a vertex array of your own");
+        if (it->location != wanted.location)
+            throw MeshAttributeError(who + " at location " + std::to_string(wanted.location) +
+                                     ", but the mesh feeds it at location " + std::to_string(it->location) +
+                                     "; build the program and the mesh with the same contract attributes");
+    }
+}
+
+void GpuMesh::draw(const gl::Program& program) const {
+    requireAttributesOf(program);
+    draw();
 }
 
 void GpuMesh::draw() const {

@@ -39,7 +39,7 @@ void drawJob(ProgramCache& cache, const RenderJob& job, const GpuMesh& mesh) {
     program.use();
     setFrameUniforms(program, job.camera, static_cast<float>(job.width) / static_cast<float>(job.height), job.lights,
                      job.world, job.material, job.fog ? &*job.fog : nullptr);
-    mesh.draw();
+    mesh.draw(program);
 }
 
 namespace {

@@ -16,7 +16,13 @@ const catalog::Variant& ProgramCache::variantOf(std::string_view shader, const V
         for (const auto& n : shaderNames()) known += (known.empty() ? "" : ", ") + n;
         throw UnknownShaderError("unknown shader '" + std::string(shader) + "'; known shaders: " + known);
     }
-    if (const auto* v = catalog::findVariant(*s, values)) return *v;
+    const catalog::Variant* found = nullptr;
+    try {
+        found = catalog::findVariant(*s, values);
+    } catch (const catalog::VariantLookupError& e) {  // a misspelled axis or value, named with the known ones
+        throw UnknownShaderError(e.what());
+    }
+    if (found) return *found;
     std::string known;
     for (const auto& v : s->variants) known += (known.empty() ? "" : "; ") + std::string(v.name);
     std::string asked;

@@ -18,7 +18,10 @@
 //
 //     #include "prism/shaders.hpp"          // generated
 //     const auto& s = prism::shaders::shaderInfo(prism::shaders::ShaderId::phong);
+//     // A misspelled axis or value throws VariantLookupError naming it and the known ones;
+//     // nullptr means known values whose combination was not generated (VARIANTS).
 //     const auto* v = prism::catalog::findVariant(s, {{"BLINN", "1"}});
+//     if (v == nullptr) return 1;
 //     std::string vert = prism::catalog::joinChunks(v->stages[0].chunks);
 #pragma once
 
@@ -29,6 +32,9 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
+
+#include "prism/catalog/did_you_mean.hpp"
 
 namespace prism::catalog {
 
@@ -150,10 +156,14 @@ constexpr const Module* findModule(const Catalog& c, std::string_view name) {
 // The location the binding contract gives attribute `name` (e.g. "a_position"); throws
 // std::out_of_range naming the attribute when the contract has no such attribute.
 inline std::int32_t attributeLocation(std::span<const Attribute> contract, std::string_view name) {
-    for (const auto& a : contract)
+    std::vector<std::string> names;
+    for (const auto& a : contract) {
         if (a.name == name) return a.location;
-    throw std::out_of_range("the binding contract has no attribute '" + std::string(name) +
-                            "'; declare it in the contract JSON (modules/contract.json) or use a contract name");
+        names.emplace_back(a.name);
+    }
+    throw std::out_of_range("the binding contract has no attribute '" + std::string(name) + "'" +
+                            didYouMean(name, names) + " (its attributes: " + nameList(names) +
+                            "); declare it in the contract JSON (modules/contract.json) or use a contract name");
 }
 inline std::int32_t attributeLocation(const Catalog& c, std::string_view name) {
     return attributeLocation(c.contractAttributes, name);
@@ -176,16 +186,47 @@ std::string_view wantedValue(const std::pair<Name, Value>& p) {
 }
 }  // namespace detail
 
+// Thrown by findVariant for a name that is no axis of the shader, or a value its axis
+// never declared; the message names it, with "did you mean", and lists the known ones.
+class VariantLookupError : public std::invalid_argument {
+  public:
+    using std::invalid_argument::invalid_argument;
+};
+
+namespace detail {
+inline std::vector<std::string> namesOf(std::span<const VariantAxis> axes) {
+    std::vector<std::string> out;
+    for (const auto& ax : axes) out.emplace_back(ax.name);
+    return out;
+}
+inline std::vector<std::string> namesOf(std::span<const std::string_view> values) {
+    return {values.begin(), values.end()};
+}
+
+// Throws VariantLookupError unless `name` is an axis of `s` and `value` one of its values.
+inline void requireAxisValue(const Shader& s, std::string_view name, std::string_view value) {
+    for (const auto& ax : s.axes) {
+        if (ax.name != name) continue;
+        for (const auto& v : ax.values)
+            if (v == value) return;
+        const auto values = namesOf(ax.values);
+        throw VariantLookupError("variant axis '" + std::string(name) + "' of shader '" + std::string(s.name) +
+                                 "' has no value '" + std::string(value) + "'" + didYouMean(value, values) +
+                                 "; its values: " + nameList(values));
+    }
+    const auto axes = namesOf(s.axes);
+    throw VariantLookupError("shader '" + std::string(s.name) + "' has no variant axis '" + std::string(name) + "'" +
+                             didYouMean(name, axes) + "; its axes: " + nameList(axes));
+}
+}  // namespace detail
+
 // The variant whose axis values equal `wanted` (Defines, or pairs of strings); axes not
-// named in `wanted` take their first declared value. Returns nullptr when no such
-// variant was generated, or when `wanted` names something that is no axis.
+// named in `wanted` take their first declared value. A name in `wanted` that is no axis,
+// or a value its axis never declared, throws VariantLookupError. Returns nullptr only
+// for declared values whose combination was not generated (prism_add_shaders VARIANTS).
 template <class Range>
 const Variant* findVariant(const Shader& s, const Range& wanted) {
-    for (const auto& w : wanted) {
-        bool known = false;
-        for (const auto& ax : s.axes) known = known || ax.name == detail::wantedName(w);
-        if (!known) return nullptr;
-    }
+    for (const auto& w : wanted) detail::requireAxisValue(s, detail::wantedName(w), detail::wantedValue(w));
     for (const auto& v : s.variants) {
         bool match = true;
         for (std::size_t a = 0; a < s.axes.size() && match; ++a) {

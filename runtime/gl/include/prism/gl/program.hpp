@@ -9,6 +9,7 @@
 //     #include "prism/shaders.hpp"   // generated catalogue
 //     const auto& phong = prism::shaders::shaderInfo(prism::shaders::ShaderId::phong);
 //     const auto* variant = prism::catalog::findVariant(phong, {{"FOG", "1"}, {"DIRECTIONAL_LIGHTS", "4"}});
+//     if (variant == nullptr) return 1;  // not generated; a misspelled axis or value throws instead
 //     prism::gl::Program program(*variant, prism::shaders::kCatalog.contractAttributes, "phong");
 //
 //     program.use();
@@ -124,6 +125,10 @@ class Program {
     unsigned id() const { return program_.id(); }
     const std::string& label() const { return label_; }
 
+    // The vertex attributes the linked program reads (the driver's active attributes,
+    // gl_ built-ins left out) at the locations they were linked to.
+    const std::vector<AttributeBinding>& activeAttributes() const { return activeAttributes_; }
+
     bool hasUniform(std::string_view name) const;
     int uniformLocation(std::string_view name) const;  // -1 when unknown or optimised away
 
@@ -172,6 +177,7 @@ class Program {
 
     ProgramObject program_;
     std::string label_;
+    std::vector<AttributeBinding> activeAttributes_;
     std::map<std::string, UniformSlot, std::less<>> uniforms_;
     std::set<std::string, std::less<>> reported_;
     std::vector<std::string> unknownReports_;
