@@ -25,7 +25,8 @@ void addGenerate(CLI::App& app, GenerateArgs& args) {
     cmd->add_option("--sigma-time", args.sigmaTime, "spatiotemporal: Gaussian sigma across slices")
         ->check(CLI::Range(0.05, 64.0));
     cmd->callback([cmd, &args] {  // a flag is used or refused, never ignored
-        if (cmd->count("--sigma-time") > 0 && !args.spatiotemporal) throw UsageError("--sigma-time needs --spatiotemporal");
+        if (cmd->count("--sigma-time") > 0 && !args.spatiotemporal)
+            throw UsageError("--sigma-time needs --spatiotemporal");
     });
 }
 

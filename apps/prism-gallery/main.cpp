@@ -111,7 +111,8 @@ int main(int argc, char** argv) {
                 const auto path = std::filesystem::path(outDir) / (entry.fileStem + "-" + meshName + ".png");
                 prism::image::writePng(path, image);
                 const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-                const std::string variant = entry.label.size() > entry.shader.size() ? entry.label.substr(entry.shader.size() + 1) : "";
+                const std::string variant =
+                    entry.label.size() > entry.shader.size() ? entry.label.substr(entry.shader.size() + 1) : "";
                 tsv << path.filename().string() << '\t' << entry.shader << '\t' << variant << '\t' << meshName << '\t'
                     << seconds << '\n';
                 char line[64];
@@ -122,9 +123,10 @@ int main(int argc, char** argv) {
                 labels.push_back(entry.label + "\n" + meshName);  // two lines: legible at 14 px in small cells
             }
         }
-        if (!tsv.flush()) throw std::runtime_error("cannot write " + (std::filesystem::path(outDir) / "catalogue.tsv").string());
+        if (!tsv.flush())
+            throw std::runtime_error("cannot write " + (std::filesystem::path(outDir) / "catalogue.tsv").string());
         prism::image::writePng(std::filesystem::path(outDir) / "gallery.png",
-                        prism::image::composeContactSheet(shots, labels, static_cast<int>(meshes.size())));
+                               prism::image::composeContactSheet(shots, labels, static_cast<int>(meshes.size())));
         std::cout << "wrote " << (std::filesystem::path(outDir) / "gallery.png").string() << " (" << shots.size()
                   << " images, " << cache.size() << " programs)\n";
     } catch (const std::exception& e) {

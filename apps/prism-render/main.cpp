@@ -48,8 +48,9 @@ struct Arguments {
     bool stochasticGiven() const { return spp || frame || frames || sampler; }
     std::string stochasticFlags() const {
         std::string f;
-        for (const auto& [given, name] : {std::pair{spp.has_value(), "--spp"}, std::pair{sampler.has_value(), "--sampler"},
-                                          std::pair{frame.has_value(), "--frame"}, std::pair{frames.has_value(), "--frames"}})
+        for (const auto& [given, name] :
+             {std::pair{spp.has_value(), "--spp"}, std::pair{sampler.has_value(), "--sampler"},
+              std::pair{frame.has_value(), "--frame"}, std::pair{frames.has_value(), "--frames"}})
             if (given) f += (f.empty() ? "" : ", ") + std::string(name);
         return f;
     }
@@ -76,7 +77,8 @@ Stop checkSceneFlags(const Arguments& a) {
     if (a.out.empty()) return badInput("give --out FILE.png");
     if (a.checkFinite) return badInput("--check-finite works with --shader, not with --scene");
     if (!a.shaderOnlyGiven.empty())
-        return badInput(a.shaderOnlyGiven.front() + " describes a --shader render; a --scene file sets its own (docs/scenes.md)");
+        return badInput(a.shaderOnlyGiven.front() +
+                        " describes a --shader render; a --scene file sets its own (docs/scenes.md)");
     if (a.sizeGiven && !prism::apps::parseSize(a.size))
         return badInput("--size " + a.size + ": expected WxH with 1 <= W, H <= 16384, e.g. 512x512");
     return std::nullopt;
@@ -119,15 +121,19 @@ Stop applyStochasticFlags(const Arguments& a, prism::scene::Scene& scene) {
         st.frames = *a.frames;
         st.frame = 0;
     }
-    if (st.sampler == prism::bluenoise::SamplerKind::Sorted && st.frame > static_cast<int>(prism::scene::kMaxSortedFrame))
-        return badInput("--frame " + std::to_string(st.frame) + ": the sorted sampler replays every frame before K; use K <= " +
+    if (st.sampler == prism::bluenoise::SamplerKind::Sorted &&
+        st.frame > static_cast<int>(prism::scene::kMaxSortedFrame))
+        return badInput("--frame " + std::to_string(st.frame) +
+                        ": the sorted sampler replays every frame before K; use K <= " +
                         std::to_string(prism::scene::kMaxSortedFrame));
     return std::nullopt;
 }
 
 // A "stochastic" scene: on the CPU, no GL context.
 int writeStochasticScene(const Arguments& a, const prism::scene::Scene& scene) {
-    if (!a.backend.empty()) return badInput("--backend: " + a.scene + " is drawn on the CPU (a \"stochastic\" scene); it uses no GL backend");
+    if (!a.backend.empty())
+        return badInput("--backend: " + a.scene +
+                        " is drawn on the CPU (a \"stochastic\" scene); it uses no GL backend");
     try {
         const auto& st = *scene.stochastic;
         prism::image::writePng(a.out, prism::scene::renderStochastic(st, scene.width, scene.height));
@@ -211,7 +217,8 @@ Stop parseArguments(int argc, char** argv, Arguments& a) {
     } catch (const CLI::ParseError& e) {
         return app.exit(e) == 0 ? kExitOk : kExitBadInput;
     }
-    for (const char* flag : {"--mesh", "--subdiv", "--variant", "--shininess", "--specular", "--color", "--light-dir", "--scale"})
+    for (const char* flag :
+         {"--mesh", "--subdiv", "--variant", "--shininess", "--specular", "--color", "--light-dir", "--scale"})
         if (app.count(flag) > 0) a.shaderOnlyGiven.emplace_back(flag);
     a.sizeGiven = app.count("--size") > 0;
     a.subdivGiven = app.count("--subdiv") > 0;
@@ -247,7 +254,8 @@ Stop catalogueJob(const Arguments& a, prism::render::RenderJob& job) {
     if (!size) return badInput("--size " + a.size + ": expected WxH with 1 <= W, H <= 16384, e.g. 512x512");
     if (a.out.empty() && !a.checkFinite) return badInput("give --out FILE.png (or --check-finite)");
     if (a.subdivGiven && a.mesh != "sphere" && a.mesh != "icosphere" && a.mesh != "torus" && a.mesh != "grid")
-        return badInput("--subdiv: mesh " + a.mesh + " has no subdivision levels (sphere, icosphere, torus and grid have)");
+        return badInput("--subdiv: mesh " + a.mesh +
+                        " has no subdivision levels (sphere, icosphere, torus and grid have)");
     job.material.shininess = *shininess;
     job.material.specular = *specular;
     job.material.color = glm::vec4(*color, 1.0f);
@@ -309,7 +317,8 @@ int main(int argc, char** argv) {
     Arguments a;
     if (const Stop stop = parseArguments(argc, argv, a)) return *stop;
     if (!a.scene.empty()) return renderScene(a);
-    if (a.stochasticGiven()) return badInput(a.stochasticFlags() + ": only with --scene FILE.json (a \"stochastic\" scene)");
+    if (a.stochasticGiven())
+        return badInput(a.stochasticFlags() + ": only with --scene FILE.json (a \"stochastic\" scene)");
     if (a.shader.empty()) return badInput("give --shader NAME or --scene FILE.json");
     return renderCatalogue(a);
 }

@@ -161,8 +161,8 @@ struct Scene {
     }
 };
 
-double medianFrameMs(prism::gl::Program& program, const prism::render::GpuMesh& mesh, const prism::gl::Framebuffer& target,
-                     int frames) {
+double medianFrameMs(prism::gl::Program& program, const prism::render::GpuMesh& mesh,
+                     const prism::gl::Framebuffer& target, int frames) {
     std::vector<double> ms;
     for (int f = 0; f < frames + 1; ++f) {  // first frame is a warm-up
         target.clear({0, 0, 0, 1});

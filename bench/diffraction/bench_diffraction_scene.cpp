@@ -60,8 +60,9 @@ prism::diffraction::Lab labOf(const Image8& image, std::size_t i) {
 Error compare(const Image8& reference, const Image8& image, const Image8& background) {
     std::vector<double> de;
     for (std::size_t i = 0; i < image.data.size(); i += 4) {
-        const bool onDisc = !std::equal(reference.data.begin() + i, reference.data.begin() + i + 3, background.data.begin() + i) ||
-                            !std::equal(image.data.begin() + i, image.data.begin() + i + 3, background.data.begin() + i);
+        const bool onDisc =
+            !std::equal(reference.data.begin() + i, reference.data.begin() + i + 3, background.data.begin() + i) ||
+            !std::equal(image.data.begin() + i, image.data.begin() + i + 3, background.data.begin() + i);
         if (onDisc) de.push_back(prism::diffraction::ciede2000(labOf(reference, i), labOf(image, i)));
     }
     Error e;
@@ -94,7 +95,9 @@ int main(int argc, char** argv) {
     int size = 512, frames = 7;
     app.add_option("--scene", scenePath, "scene JSON with one diffraction object")->check(CLI::ExistingFile);
     app.add_option("--size", size, "square frame edge in pixels")->check(CLI::Range(16, 2048))->capture_default_str();
-    app.add_option("--frames", frames, "timed frames per setting (median)")->check(CLI::Range(1, 101))->capture_default_str();
+    app.add_option("--frames", frames, "timed frames per setting (median)")
+        ->check(CLI::Range(1, 101))
+        ->capture_default_str();
     CLI11_PARSE(app, argc, argv);
 
     auto context = prism::gl::createContext(prism::gl::Backend::Egl, {.majorVersion = 4, .minorVersion = 3});
@@ -149,7 +152,9 @@ int main(int argc, char** argv) {
         {"b, 512^2, 5 nm", 'b', 512, 8, 5, 1e-6},
         {"b, 512^2, 20 nm", 'b', 512, 8, 20, 1e-6},
     };
-    std::printf("| setting | ms | Phong ms | x Phong (target <= 4) | tables MiB | mean dE2000 (target <= 1) | p95 dE2000 | disc pixels |\n");
+    std::printf(
+        "| setting | ms | Phong ms | x Phong (target <= 4) | tables MiB | mean dE2000 (target <= 1) | p95 dE2000 | "
+        "disc pixels |\n");
     std::printf("|---|---:|---:|---:|---:|---:|---:|---:|\n");
     for (const Setting& s : settings) {
         const prism::scene::Scene sceneWith = withSetting(s);

@@ -142,7 +142,9 @@ int main(int argc, char** argv) {
     const std::vector<Case> cases{
         {"unicolor (material.glsl edit)", "material.glsl", {"unicolor"}},
         {"phong (lighting.glsl edit)", "lighting.glsl", {"phong"}},
-        {"lit (lighting.glsl edit; flat, gouraud, phong, smooth)", "lighting.glsl", {"flat", "gouraud", "phong", "smooth"}},
+        {"lit (lighting.glsl edit; flat, gouraud, phong, smooth)",
+         "lighting.glsl",
+         {"flat", "gouraud", "phong", "smooth"}},
     };
     try {
         auto context = prism::gl::createContext();
@@ -159,14 +161,15 @@ int main(int argc, char** argv) {
             overTarget = overTarget || worst >= kTargetMs;
             failures += r.failures;
             std::cout << std::fixed << std::setprecision(1) << "| " << c.name << " | " << r.programs << " | "
-                      << median(r.rebuildMs) << " | " << median(r.firstFrameMs) << " | " << median(r.latencyMs) << " | " << worst << " | < "
-                      << kTargetMs << " |\n";
+                      << median(r.rebuildMs) << " | " << median(r.firstFrameMs) << " | " << median(r.latencyMs) << " | "
+                      << worst << " | < " << kTargetMs << " |\n";
         }
         if (failures > 0) {
             std::cerr << "prism_bench_hotreload: " << failures << " run(s) did not reload\n";
             return 1;
         }
-        std::cout << "\n" << (overTarget ? "Some edits took 1 s or more." : "Every edit reached the screen within 1 s.")
+        std::cout << "\n"
+                  << (overTarget ? "Some edits took 1 s or more." : "Every edit reached the screen within 1 s.")
                   << "\n";
     } catch (const std::exception& e) {
         std::cerr << "prism_bench_hotreload: error: " << e.what() << "\n";

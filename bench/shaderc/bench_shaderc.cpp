@@ -72,7 +72,7 @@ using Command = std::vector<std::string>;
 struct Settings {
     int runs = 15;
     int syntheticShaders = 40;
-    int jobs = 0;  // 0: hardware concurrency
+    int jobs = 0;                               // 0: hardware concurrency
     std::string csv = PRISM_BENCH_CSV_DEFAULT;  // in the build tree, never the source tree
     std::string shaderc = PRISM_BENCH_SHADERC;
     std::string glslang = PRISM_BENCH_GLSLANG;
@@ -96,7 +96,8 @@ struct Settings {
                  "  --runs N      timed runs per case, after one warm-up round (default 15)\n"
                  "  --shaders N   shaders in the synthetic catalogue, copies of the project's (default 40)\n"
                  "  --jobs N      -j of the parallel prism-shaderc --check (default: all cores)\n"
-                 "  --csv FILE    where the CSV goes (default " PRISM_BENCH_CSV_DEFAULT ")\n"
+                 "  --csv FILE    where the CSV goes (default " PRISM_BENCH_CSV_DEFAULT
+                 ")\n"
                  "  --work-dir D  scratch directory (default: a new one under $TMPDIR, removed at exit)\n"
                  "  --keep        keep the scratch directory\n"
                  "  --no-cmake    skip the CMake/ninja cases (e) and (f)\n"

@@ -46,14 +46,10 @@ double msSince(Clock::time_point t) {
 
 EShLanguage glslangStage(prism::catalog::Stage s) {
     switch (s) {
-        case prism::catalog::Stage::Vertex:
-            return EShLangVertex;
-        case prism::catalog::Stage::Geometry:
-            return EShLangGeometry;
-        case prism::catalog::Stage::Fragment:
-            return EShLangFragment;
-        default:
-            return EShLangCompute;
+        case prism::catalog::Stage::Vertex: return EShLangVertex;
+        case prism::catalog::Stage::Geometry: return EShLangGeometry;
+        case prism::catalog::Stage::Fragment: return EShLangFragment;
+        default: return EShLangCompute;
     }
 }
 
@@ -91,7 +87,8 @@ struct ModeResult {
     prism::image::Image8 image;
 };
 
-ModeResult measure(const prism::scene::Scene& scene, const prism::render::FeatureSet& features, bool uber, int runs, int frames) {
+ModeResult measure(const prism::scene::Scene& scene, const prism::render::FeatureSet& features, bool uber, int runs,
+                   int frames) {
     ModeResult r;
     std::vector<Draw> draws;
     std::map<std::string, const prism::catalog::Variant*> distinct;
@@ -102,10 +99,10 @@ ModeResult measure(const prism::scene::Scene& scene, const prism::render::Featur
         const prism::render::FeatureSet f = uber ? prism::render::FeatureSet{8, 4, true} : features;
         const auto& variant = names.variantOf(o.shader, prism::render::variantFor(*shader, f, o.variantOverrides));
         distinct[o.shader + " " + std::string(variant.name)] = &variant;
-        draws.push_back(
-            {&o, &variant,
-             std::make_unique<prism::render::GpuMesh>(prism::render::meshForShader(o.shader, prism::render::namedMesh(o.mesh, o.subdivision)),
-                                              prism::shaders::kCatalog.contractAttributes)});
+        draws.push_back({&o, &variant,
+                         std::make_unique<prism::render::GpuMesh>(
+                             prism::render::meshForShader(o.shader, prism::render::namedMesh(o.mesh, o.subdivision)),
+                             prism::shaders::kCatalog.contractAttributes)});
     }
     r.programs = distinct.size();
     // Compile + link of every distinct program, median over runs (shader cache disabled).
@@ -140,8 +137,8 @@ ModeResult measure(const prism::scene::Scene& scene, const prism::render::Featur
         for (const auto& d : draws) {
             auto& program = *programs[d.variant];
             program.use();
-            prism::render::setFrameUniforms(program, scene.camera, float(scene.width) / float(scene.height), scene.lights,
-                                    d.object->world, d.object->material, fog);
+            prism::render::setFrameUniforms(program, scene.camera, float(scene.width) / float(scene.height),
+                                            scene.lights, d.object->world, d.object->material, fog);
             d.mesh->draw();
         }
         glFinish();

@@ -273,14 +273,15 @@ int main(int argc, char** argv) {
         for (const Row& r : rows) {
             const double floorMs = static_cast<double>(r.grid) * r.grid * bytesPerCell / bandwidth * 1e3;
             std::cout << "| " << r.grid << "^2 | " << r.grid * r.grid << " | " << fmt(r.cpuOneThreadMs) << " | "
-                      << fmt(r.cpuStepMs) << (r.grid == 512 ? " (target <= " + fmt(kTargetMs512, 0) + ")" : "")
-                      << " | " << fmt(r.cpuTimeMs) << " | " << fmt(floorMs) << " | "
+                      << fmt(r.cpuStepMs) << (r.grid == 512 ? " (target <= " + fmt(kTargetMs512, 0) + ")" : "") << " | "
+                      << fmt(r.cpuTimeMs) << " | " << fmt(floorMs) << " | "
                       << (r.gpuStepMs > 0 ? fmt(r.gpuStepMs) : "-") << " | "
                       << (r.gpuStepMs > 0 ? fmt(r.gpuStepMs / r.cpuStepMs) : "-") << " | "
                       << fmt(r.cellsPerSecondCpu() * 1e-6) << " | " << fmt(r.renderMs) << " |\n";
         }
         std::cout << "(median of " << rows.front().cpuRuns << " (" << rows.front().grid << "^2) to "
-                  << rows.back().cpuRuns << " (" << rows.back().grid << "^2) runs; one step = one substep of the largest stable dt; GPU times end with glFinish)\n";
+                  << rows.back().cpuRuns << " (" << rows.back().grid
+                  << "^2) runs; one step = one substep of the largest stable dt; GPU times end with glFinish)\n";
         std::cout << "memory: a substep reads and writes " << bytesPerCell << " bytes per cell; copy bandwidth "
                   << fmt(bandwidth * 1e-9) << " GB/s (STREAM-like copy, 64 MiB, best of 7); memory floor = cells x "
                   << bytesPerCell << " B / bandwidth\n";
@@ -288,8 +289,8 @@ int main(int argc, char** argv) {
             if (r.grid == 512) {
                 const double floorMs = 512.0 * 512.0 * bytesPerCell / bandwidth * 1e3;
                 std::cout << "512^2: " << fmt(r.cpuStepMs) << " ms per substep on " << r.threads
-                          << " threads (target <= " << fmt(kTargetMs512, 0) << " ms: "
-                          << (r.cpuStepMs <= kTargetMs512 ? "met" : "NOT met") << "); the memory floor is "
+                          << " threads (target <= " << fmt(kTargetMs512, 0)
+                          << " ms: " << (r.cpuStepMs <= kTargetMs512 ? "met" : "NOT met") << "); the memory floor is "
                           << fmt(floorMs) << " ms, so the step runs at " << fmt(floorMs / r.cpuStepMs * 100.0, 0)
                           << "% of the copy bandwidth; " << std::thread::hardware_concurrency()
                           << " hardware threads; load average when run: see `uptime`\n";

@@ -93,7 +93,7 @@ int main(int argc, char** argv) {
         prism::view::Material material{{0.3f, 0.6f, 0.9f, 1.0f}, 1.0f, 0.0f};
         program.use();
         prism::render::setFrameUniforms(program, prism::render::defaultCamera(), 1.0f, prism::render::defaultLights(),
-                                glm::rotate(glm::mat4(1.0f), 0.4f, glm::vec3(0, 1, 0)), material);
+                                        glm::rotate(glm::mat4(1.0f), 0.4f, glm::vec3(0, 1, 0)), material);
         gpu.draw();
         auto image = fb.readImage8();
         prism::image::writePng(out, image);

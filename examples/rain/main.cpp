@@ -209,12 +209,8 @@ constexpr StreakTechnique kTechniques[] = {StreakTechnique::GeometryShader, Stre
 void pressKey(Live& s, RainScene& scene, int key, bool shift) {
     const int classes = static_cast<int>(rainClasses().size());
     switch (key) {
-        case GLFW_KEY_I:
-            s.rainClass = std::min(s.rainClass + 1, classes - 1);
-            break;
-        case GLFW_KEY_K:
-            s.rainClass = std::max(s.rainClass - 1, 0);
-            break;
+        case GLFW_KEY_I: s.rainClass = std::min(s.rainClass + 1, classes - 1); break;
+        case GLFW_KEY_K: s.rainClass = std::max(s.rainClass - 1, 0); break;
         case GLFW_KEY_W:
             if (shift)
                 s.windDirection = std::fmod(s.windDirection + 45.0f, 360.0f);
@@ -229,8 +225,7 @@ void pressKey(Live& s, RainScene& scene, int key, bool shift) {
             s.technique = (s.technique + 1) % 3;
             scene.setTechnique(kTechniques[s.technique]);
             return;
-        default:
-            return;
+        default: return;
     }
     if (auto* rain = scene.rain()) {
         rain->setIntensity(rainClasses()[static_cast<std::size_t>(s.rainClass)].intensity);

@@ -18,7 +18,7 @@ int main() {
     options.sampler = bn::SamplerKind::BlueNoise;
     bn::GlSoftShadows gpu(32, 32);
     bn::RealImage image = gpu.render(bn::SoftShadowScene::classic(), setup, options);
-    double ms = gpu.lastFrameMilliseconds();   // GPU draw + readback of the last frame
+    double ms = gpu.lastFrameMilliseconds();  // GPU draw + readback of the last frame
     // [/snippet]
     // The CPU renders the same frame with the same (bit-identical) samples: only float
     // rounding differs.

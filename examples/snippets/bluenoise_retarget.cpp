@@ -12,9 +12,9 @@ int main() {
     // [snippet]
     namespace bn = prism::bluenoise;
     bn::Mask mask = bn::generateVoidAndCluster({.width = 16, .height = 16});
-    bn::RetargetOptions options;                       // radius 6, sigma_i 2.1, sigma_s 1
+    bn::RetargetOptions options;  // radius 6, sigma_i 2.1, sigma_s 1
     options.schedule = bn::CoolingSchedule::Exponential;
-    options.epochs = 32;                               // of W*H proposed swaps
+    options.epochs = 32;                                                      // of W*H proposed swaps
     bn::frameShift(mask.width, mask.height, options.shiftX, options.shiftY);  // towards the next frame's mask
     bn::RetargetResult r = bn::computeRetarget(mask, options);
     bool cached = false;
@@ -30,8 +30,9 @@ int main() {
     bool cachedAgain = false;
     const bn::RetargetPermutation again = bn::loadOrComputeRetarget(mask, options, "out/retarget.bin", &cachedAgain);
     return sorted.size() == 256 && !cached && cachedAgain && p.source == r.permutation.source &&
-                   again.source == p.source && r.finalEnergy < r.initialEnergy && r.finalTarget < 0.6 * r.initialTarget &&
-                   r.initialTarget > 0.0 && r.accepted > 0 && r.accepted <= r.moves
+                   again.source == p.source && r.finalEnergy < r.initialEnergy &&
+                   r.finalTarget < 0.6 * r.initialTarget && r.initialTarget > 0.0 && r.accepted > 0 &&
+                   r.accepted <= r.moves
                ? 0
                : 1;
 }

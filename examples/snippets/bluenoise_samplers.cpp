@@ -9,9 +9,9 @@ int main() {
     namespace bn = prism::bluenoise;
     bn::Mask mask = bn::generateVoidAndCluster({.width = 16, .height = 16});
     bn::SamplerTables tables = bn::SamplerTables::fromMask(mask);
-    std::uint32_t w = bn::sample(bn::SamplerKind::White, tables, 10, 20, 7, 0);      // pixel (10, 20), frame 7, dim 0
+    std::uint32_t w = bn::sample(bn::SamplerKind::White, tables, 10, 20, 7, 0);  // pixel (10, 20), frame 7, dim 0
     std::uint32_t b = bn::sample(bn::SamplerKind::BlueNoise, tables, 10, 20, 7, 1);
-    float u = bn::toUnitFloat(b);                                                    // [0, 1)
+    float u = bn::toUnitFloat(b);  // [0, 1)
     // [/snippet]
     // White: the hash chain of the header comment.
     const std::uint32_t white = bn::pcgHash(bn::pcgHash(bn::pcgHash(bn::pcgHash(10u) + 20u) + 7u) + 0u);

@@ -15,7 +15,7 @@ int main() {
     bn::RenderOptions options;
     options.width = options.height = 32;
     options.sampler = bn::SamplerKind::BlueNoise;
-    bn::RealImage image = bn::renderSoftShadows(scene, setup, options);    // 1 spp, frame 0
+    bn::RealImage image = bn::renderSoftShadows(scene, setup, options);  // 1 spp, frame 0
     bn::Reference reference = bn::renderReference(scene, 32, 32, 1024);
     bn::ErrorStats error = bn::compareToReference(image, reference);
     // [/snippet]

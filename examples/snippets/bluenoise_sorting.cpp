@@ -9,8 +9,8 @@ int main() {
     // [snippet]
     namespace bn = prism::bluenoise;
     std::vector<std::uint32_t> seeds = bn::initialSeeds(8, 8, 1);
-    std::vector<float> values(64, 0.5f);                 // frame t's pixel values (e.g. luminance)
-    std::vector<std::uint32_t> target(64);               // the mask's values for frame t+1 on screen
+    std::vector<float> values(64, 0.5f);    // frame t's pixel values (e.g. luminance)
+    std::vector<std::uint32_t> target(64);  // the mask's values for frame t+1 on screen
     for (std::uint32_t i = 0; i < 64; ++i) target[i] = i * 0x04000000u;
     bn::sortSeedsInBlocks(values, target, 8, 8, 4, seeds);  // 4x4 blocks
     // [/snippet]

@@ -9,9 +9,9 @@ int main() {
     // [snippet]
     prism::bluenoise::VoidAndClusterOptions options;
     options.width = 24;
-    options.height = 16;      // non-square and non-power-of-two sizes are fine
-    options.sigma = 1.5;      // Gaussian energy filter, in pixels
-    options.seed = 7;         // same seed, same mask (bit for bit)
+    options.height = 16;  // non-square and non-power-of-two sizes are fine
+    options.sigma = 1.5;  // Gaussian energy filter, in pixels
+    options.seed = 7;     // same seed, same mask (bit for bit)
     prism::bluenoise::Mask mask = prism::bluenoise::generateVoidAndCluster(options);
     // [/snippet]
     // Every rank 0..N-1 once, and the same seed gives the same mask.

@@ -13,7 +13,7 @@ int main() {
     std::string directive = prism::catalog::lineDirective(12, 2, version);  // "#line 12 2"
     // [/snippet]
     const bool esOk = directive == "#line 12 2";
-    const bool oldOk = prism::catalog::lineDirective(12, 2, prism::catalog::glslVersionOf("#version 150")) ==
-                       "#line 11 2";
+    const bool oldOk =
+        prism::catalog::lineDirective(12, 2, prism::catalog::glslVersionOf("#version 150")) == "#line 11 2";
     return esOk && oldOk ? 0 : 1;
 }

@@ -1,6 +1,6 @@
 // The usage example of prism/catalog/shader_catalog.hpp, compiled and run by tests/snippets.
 // [snippet]
-#include "prism/shaders.hpp"          // generated
+#include "prism/shaders.hpp"  // generated
 // [/snippet]
 
 int main() {

@@ -7,7 +7,7 @@ using namespace prism::diffraction;
 int main() {
     // [snippet]
     Lab a = linearSrgbToLab({0.5, 0.2, 0.1}), b = linearSrgbToLab({0.5, 0.21, 0.1});
-    double dE = ciede2000(a, b);   // ~1 is a just-noticeable difference
+    double dE = ciede2000(a, b);  // ~1 is a just-noticeable difference
     // [/snippet]
     return dE > 0.3 && dE < 3.0 && ciede2000(a, a) == 0.0 ? 0 : 1;
 }

@@ -13,7 +13,7 @@ int main() {
     StamBrdf brdf(sinusoidGrating({.amplitudeNm = 60, .periods = 16}), {.tolerance = 1e-4});
     DiffractionTextures textures(buildSpectralTables(brdf, {.size = 32}));  // path (a)
     prism::gl::Program& program = diffractionPrograms().get("brdf_map", {{"DIFFRACTION_PATH", textures.variant()}});
-    textures.apply(program);   // binds units 0 and 1, sets u_diffraction*
+    textures.apply(program);  // binds units 0 and 1, sets u_diffraction*
     // [/snippet]
     prism::gl::throwIfGlError("the diffraction example");
     return !textures.integrated() && textures.bytes() > 0 ? 0 : 1;

@@ -8,8 +8,8 @@ using namespace prism::diffraction;
 int main() {
     // [snippet]
     HeightField grating = sinusoidGrating({.periodNm = 2500, .amplitudeNm = 150});
-    subtractMean(grating);                  // lowers k w h_max; |P|^2 is unchanged
-    double hMax = maxAbsHeight(grating);    // 150 nm, feeds termsForTolerance()
+    subtractMean(grating);                // lowers k w h_max; |P|^2 is unchanged
+    double hMax = maxAbsHeight(grating);  // 150 nm, feeds termsForTolerance()
     // [/snippet]
     return std::abs(hMax - 150.0) < 1e-9 ? 0 : 1;
 }

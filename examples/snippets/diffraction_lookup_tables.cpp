@@ -14,9 +14,9 @@ int main() {
     LinearRgb viaA = shadeSpectral(a, fromAngles(30, 180), fromAngles(30, 0));
     LinearRgb viaB = shadeIntegrated(b, fromAngles(30, 180), fromAngles(30, 0));  // ~ viaA
     VolumeTables c = buildVolumeTables(b, /*slices of w*/ 16);
-    LinearRgb viaC = shadeVolume(c, fromAngles(30, 180), fromAngles(30, 0));      // ~ viaB
+    LinearRgb viaC = shadeVolume(c, fromAngles(30, 180), fromAngles(30, 0));  // ~ viaB
     // [/snippet]
-    const bool ok = viaA.g > 0.0 && std::abs(viaA.g - viaB.g) <= 0.05 * viaA.g &&
-                    std::abs(viaB.g - viaC.g) <= 0.01 * viaB.g;
+    const bool ok =
+        viaA.g > 0.0 && std::abs(viaA.g - viaB.g) <= 0.05 * viaA.g && std::abs(viaB.g - viaC.g) <= 0.01 * viaB.g;
     return ok ? 0 : 1;
 }

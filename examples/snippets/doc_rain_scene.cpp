@@ -6,8 +6,8 @@ int main() {
     // [snippet]
     auto ctx = prism::gl::createContext({.majorVersion = 4, .minorVersion = 3});  // compute shaders
     prism::rain::RainSceneDesc desc = prism::rain::defaultRainScene();  // ground, sky, sun, lamp, moderate rain
-    desc.rain->wind.strength = 5.0f;                                     // m/s, random direction from the seed
-    desc.fog = prism::rain::SceneFog{};                                  // distance fog + billboards
+    desc.rain->wind.strength = 5.0f;                                    // m/s, random direction from the seed
+    desc.fog = prism::rain::SceneFog{};                                 // distance fog + billboards
     prism::rain::RainScene scene(desc);
     scene.update(1.0f / 60.0f);
     prism::image::Image8 image = scene.render(800, 800);

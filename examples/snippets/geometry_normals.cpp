@@ -12,8 +12,8 @@ int main() {
     mesh.normals.clear();
     const glm::vec3 v(0.0f);  // a zero vector: safeNormalize gives the fallback
     // [snippet]
-    NormalStats stats = computeVertexNormals(mesh);     // fills mesh.normals
-    Mesh flat = makeFlatShaded(mesh);                   // split per face, face normals
+    NormalStats stats = computeVertexNormals(mesh);      // fills mesh.normals
+    Mesh flat = makeFlatShaded(mesh);                    // split per face, face normals
     glm::vec3 n = safeNormalize(v, glm::vec3(0, 0, 1));  // unit vector or the fallback
     // [/snippet]
     (void)stats;

@@ -10,9 +10,10 @@ int main() {
     const Mesh split = splitVerticesPerFace(makeIcosphere(1.0f, 2));  // as an OBJ import gives
     const Mesh splitCube = splitVerticesPerFace(makeCube());
     // [snippet]
-    WeldResult smooth = weldVertices(split);                       // merge by position
-    WeldOptions hard; hard.creaseAngleDegrees = 30.0f;
-    WeldResult cube = weldVertices(splitCube, hard);               // keeps sharp edges
+    WeldResult smooth = weldVertices(split);  // merge by position
+    WeldOptions hard;
+    hard.creaseAngleDegrees = 30.0f;
+    WeldResult cube = weldVertices(splitCube, hard);  // keeps sharp edges
     // smooth.mesh: welded mesh with recomputed normals
     // smooth.newIndexOfOldVertex[i]: where input vertex i went
     // [/snippet]

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "prism/gl/compose.hpp"
-#include "prism/shaders.hpp"   // generated catalogue: ModuleId, kCatalog
+#include "prism/shaders.hpp"  // generated catalogue: ModuleId, kCatalog
 // [/snippet]
 
 int main() {

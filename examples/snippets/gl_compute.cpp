@@ -12,7 +12,7 @@
 int main() {
     // [snippet]
     auto context = prism::gl::createContext({.majorVersion = 4, .minorVersion = 3});
-    prism::gl::requireCompute("my effect");            // throws ComputeUnavailableError on GL < 4.3
+    prism::gl::requireCompute("my effect");               // throws ComputeUnavailableError on GL < 4.3
     auto groups = prism::gl::computeGroups(100000, 256);  // {391, 1}
     // [/snippet]
     prism::gl::ProgramSources sources{.label = "empty compute",

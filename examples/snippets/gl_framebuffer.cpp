@@ -9,14 +9,14 @@
 int main() {
     auto context = prism::gl::createContext();
     // [snippet]
-    prism::gl::Framebuffer fb(256, 256);                 // RGBA8 + depth24
-    fb.bind();                                            // binds and sets the viewport
-    fb.clear({0.1f, 0.2f, 0.3f, 1.0f});                   // colour and depth
+    prism::gl::Framebuffer fb(256, 256);  // RGBA8 + depth24
+    fb.bind();                            // binds and sets the viewport
+    fb.clear({0.1f, 0.2f, 0.3f, 1.0f});   // colour and depth
     // ... draw ...
-    prism::image::Image8 shot = fb.readImage8();                 // top row first
+    prism::image::Image8 shot = fb.readImage8();  // top row first
 
     prism::gl::Framebuffer hdr(64, 64, prism::gl::ColorFormat::Rgba32F);
-    prism::image::ImageF values = hdr.readImageF();              // unclamped floats
+    prism::image::ImageF values = hdr.readImageF();  // unclamped floats
     // [/snippet]
     const prism::image::Rgba8 expected{26, 51, 76, 255};
     const prism::image::Rgba8 got = shot.at(0, 0);

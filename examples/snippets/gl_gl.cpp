@@ -1,7 +1,7 @@
 // The usage example of prism/gl/gl.hpp, compiled and run by tests/snippets.
 // [snippet]
 #include "prism/gl/framebuffer.hpp"
-#include "prism/gl/gl.hpp"          // the glad GL 4.5 core loader header
+#include "prism/gl/gl.hpp"  // the glad GL 4.5 core loader header
 #include "prism/gl/gl_context.hpp"
 // [/snippet]
 

@@ -12,7 +12,7 @@
 static std::uint64_t example() {
     // [snippet]
     auto context = prism::gl::createContext();
-    prism::gl::Buffer buffer = prism::gl::Buffer::create();   // glGenBuffers
+    prism::gl::Buffer buffer = prism::gl::Buffer::create();  // glGenBuffers
     glBindBuffer(GL_ARRAY_BUFFER, buffer.id());
     prism::gl::VertexArray vao = prism::gl::VertexArray::create();
     float corners[] = {0.f, 0.f, 1.f, 0.f, 0.f, 1.f};

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "prism/gl/program.hpp"
-#include "prism/shaders.hpp"   // generated catalogue
+#include "prism/shaders.hpp"  // generated catalogue
 // [/snippet]
 
 int main() {

@@ -11,7 +11,7 @@ int main() {
     // [snippet]
     prism::hash::ContentHash key;
     key.add("shaders/phong.frag").add("void main() {}");  // ("ab","c") and ("a","bc") differ
-    const std::string name = key.hex();                    // 32 hex digits
+    const std::string name = key.hex();                   // 32 hex digits
     const std::uint64_t quick = prism::hash::hash64("void main() {}");
     // [/snippet]
     prism::hash::ContentHash other;

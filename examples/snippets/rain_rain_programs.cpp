@@ -9,7 +9,7 @@ int main() {
     // [snippet]
     prism::rain::RainPrograms programs;
     prism::gl::Program& p = programs.get("ground", {{"FOG", "0"}});
-    programs.used();    // {"ground (FOG=0)"}
+    programs.used();  // {"ground (FOG=0)"}
     // [/snippet]
     return p.id() != 0 && programs.used().size() == 1 ? 0 : 1;
 }

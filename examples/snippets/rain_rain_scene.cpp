@@ -9,8 +9,8 @@ int main() {
     // [snippet]
     prism::rain::RainSceneDesc desc = prism::rain::defaultRainScene();
     desc.rain->wind.strength = 5.0f;
-    prism::rain::RainScene scene(desc);     // needs a current GL context (4.3 with rain)
-    scene.update(1.0f / 60.0f);             // rain and fog billboards
+    prism::rain::RainScene scene(desc);  // needs a current GL context (4.3 with rain)
+    scene.update(1.0f / 60.0f);          // rain and fog billboards
     prism::image::Image8 image = scene.render(200, 200);
     // [/snippet]
     return image.width == 200 && scene.rain() != nullptr ? 0 : 1;

@@ -12,8 +12,8 @@ int main() {
     bool finite = true;
     auto use = [&](const glm::vec4& p) { finite = finite && std::isfinite(p.x + p.y + p.z); };
     // [snippet]
-    prism::rain::CpuRainSimulation sim(params, eye);   // seeds particleCountFor(params)
-    sim.step(1.0f / 60.0f, eye);                        // fall, wind, wrap around the camera
+    prism::rain::CpuRainSimulation sim(params, eye);  // seeds particleCountFor(params)
+    sim.step(1.0f / 60.0f, eye);                      // fall, wind, wrap around the camera
     for (const auto& p : sim.particles()) use(p.position);
     // [/snippet]
     return finite && sim.particleCount() > 0 ? 0 : 1;

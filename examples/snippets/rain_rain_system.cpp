@@ -17,9 +17,9 @@ int main() {
     // [snippet]
     prism::rain::RainPrograms programs;
     prism::rain::RainSystem rain(programs, params, camera.eye);
-    rain.update(1.0f / 60.0f, camera.eye);              // compute dispatch
+    rain.update(1.0f / 60.0f, camera.eye);  // compute dispatch
     rain.draw({.camera = camera, .aspect = 1.f, .viewportHeight = 800, .lights = lights});
-    std::vector<prism::rain::Particle> ps = rain.readParticles();   // tests
+    std::vector<prism::rain::Particle> ps = rain.readParticles();  // tests
     // [/snippet]
     return ps.size() == rain.particleCount() && !ps.empty() ? 0 : 1;
 }

@@ -19,7 +19,8 @@ int main() {
     const auto& phong = *prism::catalog::findShader(prism::shaders::kCatalog, "phong");
     prism::gl::Program& program =
         cache.get("phong", prism::render::variantFor(phong, prism::render::featuresOf(lights, false)));
-    prism::render::GpuMesh gpuMesh(prism::geometry::makeIcosphere(1.0f, 2), prism::shaders::kCatalog.contractAttributes);
+    prism::render::GpuMesh gpuMesh(prism::geometry::makeIcosphere(1.0f, 2),
+                                   prism::shaders::kCatalog.contractAttributes);
     const prism::view::Camera camera = prism::render::defaultCamera();
     const float aspect = 1.0f;
     const glm::mat4 world(1.0f);

@@ -14,7 +14,7 @@ int main() {
     job.shader = "phong";
     job.mesh = prism::render::meshForShader("phong", prism::render::namedMesh("torus"));
     prism::image::Image8 image = prism::render::renderImage8(cache, job);
-    prism::image::ImageF hdr = prism::render::renderImageF(cache, job);    // RGBA32F, for finiteness checks
+    prism::image::ImageF hdr = prism::render::renderImageF(cache, job);  // RGBA32F, for finiteness checks
     // [/snippet]
     return image.width == 512 && prism::image::countNonFinite(hdr) == 0 ? 0 : 1;
 }

@@ -12,7 +12,7 @@ int main() {
     // [snippet]
     prism::render::ProgramCache cache(prism::shaders::kCatalog);
     prism::gl::Program& p = cache.get("phong", {{"BLINN", "1"}});
-    cache.size();   // programs built so far
+    cache.size();  // programs built so far
 
     // Hot reload (prism/render/shader_watcher.hpp does this on a file edit): swap in a
     // program rebuilt from edited sources. References from get() stay valid and name

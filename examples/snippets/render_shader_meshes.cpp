@@ -6,7 +6,7 @@
 int main() {
     // [snippet]
     prism::geometry::Mesh m = prism::render::namedMesh("torus", /*subdivision*/ 3);
-    prism::geometry::Mesh ready = prism::render::meshForShader("flat", m);   // split per face, face normals
+    prism::geometry::Mesh ready = prism::render::meshForShader("flat", m);  // split per face, face normals
     // [/snippet]
     return ready.positions.size() == 3 * prism::geometry::triangleCount(m) ? 0 : 1;
 }

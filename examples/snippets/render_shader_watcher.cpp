@@ -20,8 +20,8 @@ int main() {
     prism::render::RenderJob job;
     job.shader = "phong";
     job.mesh = prism::render::meshForShader("phong", prism::render::namedMesh("torus"));
-    for (int frame = 0; frame < 3; ++frame) {           // the render loop, on the GL thread
-        for (const auto& d : watcher.poll().diagnostics) std::cerr << d;  // path:line:col: error: ...
+    for (int frame = 0; frame < 3; ++frame) {                                  // the render loop, on the GL thread
+        for (const auto& d : watcher.poll().diagnostics) std::cerr << d;       // path:line:col: error: ...
         prism::image::Image8 image = prism::render::renderImage8(cache, job);  // newest good program
     }
     // [/snippet]

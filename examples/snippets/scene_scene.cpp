@@ -8,7 +8,7 @@
 
 int main() {
     // [snippet]
-    prism::scene::Scene scene;                    // built in code instead of read from JSON
+    prism::scene::Scene scene;  // built in code instead of read from JSON
     scene.width = scene.height = 128;
     scene.lights.directional.push_back({.direction = {-0.5f, -0.6f, -0.65f}, .color = {1, 1, 1}});
     scene.fog = prism::view::Fog{.color = {0.6f, 0.65f, 0.7f}, .density = 0.1f};

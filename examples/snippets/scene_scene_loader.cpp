@@ -7,7 +7,7 @@ int main() {
     const std::string text = R"({"objects": [{"mesh": "cube", "material": {"shader": "flat"}}]})";
     // [snippet]
     prism::scene::Scene scene = prism::scene::loadScene("examples/scenes/one_light.json");
-    prism::scene::Scene same  = prism::scene::parseScene(text, "inline.json");
+    prism::scene::Scene same = prism::scene::parseScene(text, "inline.json");
     // [/snippet]
     try {
         prism::scene::parseScene(R"({"fogg": {}})", "typo.json");

@@ -14,7 +14,7 @@ int main() {
     HeightField t = loadHeightMap("terrain.png", {.cellSize = 0.25f, .heightScale = 8.0f});
     HeightField p = proceduralTerrain({.width = 512, .height = 512, .seed = 7});
     std::vector<float> k = loadPermeabilityMap("soil.png", t.width, t.height, mmPerHourToMetresPerSecond(20));
-    std::vector<float> k2 = proceduralPermeability(p, {});   // m/s per cell
+    std::vector<float> k2 = proceduralPermeability(p, {});  // m/s per cell
     // [/snippet]
     return t.width == 32 && t.height == 16 && k.size() == 32 * 16 && k2.size() == p.cellCount() ? 0 : 1;
 }

@@ -10,11 +10,11 @@ using namespace prism::water;
 int main() {
     // [snippet]
     WaterSceneDescription d;
-    d.terrain = proceduralTerrain({.width = 256, .height = 256});   // default: 512 x 512
+    d.terrain = proceduralTerrain({.width = 256, .height = 256});  // default: 512 x 512
     d.rainMmPerHour = rainRateMmPerHour(RainClass::Heavy);
     d.fog = prism::view::Fog{};
     WaterScene scene(std::move(d));
-    scene.advance(1.0);                                        // one second of rain
+    scene.advance(1.0);  // one second of rain
     auto ctx = prism::gl::createContext({.majorVersion = 4, .minorVersion = 3});
     WaterSceneRenderer renderer(scene);
     prism::image::Image8 img = renderer.renderImage(overviewCamera(scene.terrain()), 640, 480);

@@ -13,8 +13,8 @@ int main() {
     HeightField terrain = proceduralTerrain({.width = 128, .height = 128});
     CpuWaterSimulation sim(terrain, proceduralPermeability(terrain), WaterParams{});
     sim.setRainRate(mmPerHourToMetresPerSecond(rainRateMmPerHour(RainClass::Heavy)));
-    SubstepPlan plan = sim.advance(0.5);    // 0.5 s, split into plan.count substeps
-    std::vector<float> depth = sim.depth(); // metres per cell
+    SubstepPlan plan = sim.advance(0.5);     // 0.5 s, split into plan.count substeps
+    std::vector<float> depth = sim.depth();  // metres per cell
     MassLedger l = sim.ledger();             // rain in = stored + infiltrated + lost
     // [/snippet]
     return plan.count >= 1 && depth.size() == terrain.cellCount() && l.rainIn > 0.0 && l.stored <= l.rainIn ? 0 : 1;

@@ -35,8 +35,9 @@ render::RenderJob CatalogueRenderer::job(const ViewerState& state, int width, in
 std::string CatalogueRenderer::draw(ViewerState& state, int left, int width, int height) {
     const render::RenderJob j = job(state, width, height);
     if (state.meshDirty || !gpu_) {
-        gpu_.emplace(render::meshForShader(j.shader, render::namedMesh(state.catalogue.mesh, state.catalogue.subdivision)),
-                     catalog_.contractAttributes);
+        gpu_.emplace(
+            render::meshForShader(j.shader, render::namedMesh(state.catalogue.mesh, state.catalogue.subdivision)),
+            catalog_.contractAttributes);
         state.meshDirty = false;
     }
     glViewport(left, 0, j.width, j.height);

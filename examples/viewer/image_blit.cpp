@@ -31,8 +31,7 @@ void ImageBlit::draw(int left, int width, int height) const {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_.id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     // Image row 0 is the top, GL's row 0 the bottom: flip y in the destination.
-    glBlitFramebuffer(0, 0, width_, height_, left, height, left + width, 0, GL_COLOR_BUFFER_BIT,
-                      GL_LINEAR);
+    glBlitFramebuffer(0, 0, width_, height_, left, height, left + width, 0, GL_COLOR_BUFFER_BIT, GL_LINEAR);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

@@ -117,16 +117,20 @@ std::unique_ptr<prism::gl::Context> openWindow(const ViewerOptions& args, bool s
 class ViewerApp {
   public:
     ViewerApp(const ViewerOptions& args, ViewerState& state, std::optional<ViewerScript>& script)
-        : args_(args), state_(state), script_(script), context_(openWindow(args, script.has_value())),
-          window_(static_cast<GLFWwindow*>(context_->nativeWindow())), catalogueView_(cache_, kCatalog) {
+        : args_(args),
+          state_(state),
+          script_(script),
+          context_(openWindow(args, script.has_value())),
+          window_(static_cast<GLFWwindow*>(context_->nativeWindow())),
+          catalogueView_(cache_, kCatalog) {
         installKeyHandler(window_, state_, kCatalog);
         if (state_.panels) ui_.emplace(window_);  // after our key callback: ImGui chains to it
         if (args_.watch) {
             prism::render::ShaderWatchOptions watchOptions;
             watchOptions.sourceRoot = args_.sourceRoot;
             watcher_ = std::make_unique<prism::render::ShaderWatcher>(cache_, watchOptions);
-            std::cout << "viewer: watching " << watcher_->watchedFiles().size() << " files under "
-                      << args_.sourceRoot << std::endl;
+            std::cout << "viewer: watching " << watcher_->watchedFiles().size() << " files under " << args_.sourceRoot
+                      << std::endl;
         }
         std::cout << "viewer: frame time from " << (timer_.gpuTimed() ? "GL_TIME_ELAPSED queries" : "the CPU clock")
                   << std::endl;
@@ -134,8 +138,8 @@ class ViewerApp {
 
     int run() {
         const long maxFrames = args_.frames;
-        for (long frame = 0; !context_->shouldClose() && !gStopRequested && (maxFrames == 0 || frame < maxFrames) &&
-                             !scriptDone_;
+        for (long frame = 0;
+             !context_->shouldClose() && !gStopRequested && (maxFrames == 0 || frame < maxFrames) && !scriptDone_;
              ++frame) {
             if (const auto exit = runFrame(frame)) return *exit;
         }
@@ -263,8 +267,8 @@ class ViewerApp {
         const std::string why = referenceUnavailable(job, state_.catalogue.mesh, job.variant);
         const auto& c = state_.catalogue;
         const std::string signature = program + c.mesh + std::to_string(c.subdivision) +
-                                      std::to_string(c.yaw + 7 * c.pitch) + why +
-                                      std::to_string(c.material.shininess) + std::to_string(c.material.specular);
+                                      std::to_string(c.yaw + 7 * c.pitch) + why + std::to_string(c.material.shininess) +
+                                      std::to_string(c.material.specular);
         if (signature != referenceSignature_ || frame % 30 == 0) {
             setReferenceText(why.empty() ? reference_.measure(cache_, job, catalogueView_.mesh()) : why);
             referenceSignature_ = signature;

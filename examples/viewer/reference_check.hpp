@@ -1,9 +1,10 @@
 // The live accuracy readout of the catalogue view: the exact sphere (the double-precision
 // CPU reference of prism/reference/sphere_reference.hpp, as in docs/tradeoffs.md) rendered
 // ONCE per camera, lights and material, and the view's current shader, variant and mesh
-// rendered off-screen at the same size and compared with it (prism/reference/image_metrics.hpp): mean and max channel error in
-// 8-bit units over the pixels either covers. Only for the classic shaders (flat, smooth,
-// gouraud, phong without BLINN) on the sphere and icosphere meshes, which the reference models.
+// rendered off-screen at the same size and compared with it
+// (prism/reference/image_metrics.hpp): mean and max channel error in 8-bit units over the
+// pixels either covers. Only for the classic shaders (flat, smooth, gouraud, phong without
+// BLINN) on the sphere and icosphere meshes, which the reference models.
 //
 //     ReferenceCheck check;
 //     std::string text = check.measure(cache, job, gpuMesh);  // "... mean 0.07 max 161 in 8-bit units; ..."

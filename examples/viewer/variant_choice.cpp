@@ -56,16 +56,17 @@ std::string whyNotAVariant(const catalog::Shader& shader, const render::FeatureS
         std::string known;
         if (!found) {
             for (const auto& a : shader.axes) known += (known.empty() ? "" : ", ") + std::string(a.name);
-            return std::string(shader.name) + " has no variant axis '" + axis + "' (its axes: " +
-                   (known.empty() ? "none" : known) + ")";
+            return std::string(shader.name) + " has no variant axis '" + axis +
+                   "' (its axes: " + (known.empty() ? "none" : known) + ")";
         }
         bool valid = false;
         for (const auto& v : found->values) {
             valid = valid || v == value;
             known += (known.empty() ? "" : ", ") + std::string(v);
         }
-        if (!valid) return axis + "=" + value + " is not a value of " + std::string(shader.name) + "'s axis " + axis +
-                           " (values: " + known + ")";
+        if (!valid)
+            return axis + "=" + value + " is not a value of " + std::string(shader.name) + "'s axis " + axis +
+                   " (values: " + known + ")";
     }
     if (!variantOrNull(shader, render::variantFor(shader, features, picks)))
         return std::string(shader.name) + " has no generated variant " +

@@ -109,9 +109,12 @@ void setMaterial(ViewerState& state, const std::string& name, const std::string&
         if (objects.empty()) throw std::invalid_argument(name + " needs a scene object");
         m = &objects.front().material;
     }
-    if (name == "material.shininess") m->shininess = static_cast<float>(number(name, value));
-    else if (name == "material.specular") m->specular = static_cast<float>(number(name, value));
-    else unknownParameter(name);
+    if (name == "material.shininess")
+        m->shininess = static_cast<float>(number(name, value));
+    else if (name == "material.specular")
+        m->specular = static_cast<float>(number(name, value));
+    else
+        unknownParameter(name);
 }
 
 // Distance fog of the catalogue view and of the open scene, and the scene's fog billboards.
@@ -119,8 +122,10 @@ void setFog(ViewerState& state, const std::string& name, const std::string& valu
     if (name == "fog.billboards") {
         auto& s = openSceneOf(state, name);
         const double o = number(name, value);
-        if (o <= 0) s.fogBillboards.reset();
-        else s.fogBillboards = static_cast<float>(std::min(o, 1.0));
+        if (o <= 0)
+            s.fogBillboards.reset();
+        else
+            s.fogBillboards = static_cast<float>(std::min(o, 1.0));
         return;
     }
     if (name != "fog.density") unknownParameter(name);
@@ -134,8 +139,10 @@ void setFog(ViewerState& state, const std::string& name, const std::string& valu
     }
     if (state.scene.open) {
         auto& s = state.scene.scene;
-        if (d <= 0) s.fog.reset();
-        else s.fog = c.fog;
+        if (d <= 0)
+            s.fog.reset();
+        else
+            s.fog = c.fog;
         state.scene.dirty = true;
     }
 }
@@ -144,8 +151,10 @@ void setFog(ViewerState& state, const std::string& name, const std::string& valu
 void setRain(ViewerState& state, const std::string& name, const std::string& value) {
     auto& s = openSceneOf(state, name);
     if (name == "rain.enabled") {
-        if (!flag(name, value)) s.rain.reset();
-        else if (!s.rain) s.rain = scene::RainSettings{};
+        if (!flag(name, value))
+            s.rain.reset();
+        else if (!s.rain)
+            s.rain = scene::RainSettings{};
         return;
     }
     if (name == "rain.intensity") {
@@ -231,8 +240,12 @@ void setCatalogueView(ViewerState& state, const std::string& name, const std::st
 void setParameter(ViewerState& state, const std::string& name, const std::string& value) {
     using Setter = void (*)(ViewerState&, const std::string&, const std::string&);
     static const std::pair<const char*, Setter> groups[] = {
-        {"lights.", setDirectionalLights}, {"material.", setMaterial}, {"fog.", setFog},
-        {"rain.", setRain},                {"water.", setWater},       {"bluenoise.", setBlueNoise},
+        {"lights.", setDirectionalLights},
+        {"material.", setMaterial},
+        {"fog.", setFog},
+        {"rain.", setRain},
+        {"water.", setWater},
+        {"bluenoise.", setBlueNoise},
     };
     for (const auto& [prefix, set] : groups)
         if (name.rfind(prefix, 0) == 0) return set(state, name, value);

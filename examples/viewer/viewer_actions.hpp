@@ -15,10 +15,10 @@ namespace prism::viewer {
 
 void selectShader(ViewerState& state, const catalog::Catalog& catalog, const std::string& shader);
 void nextShader(ViewerState& state, const catalog::Catalog& catalog);  // key S
-void nextMesh(ViewerState& state);                                    // key M
+void nextMesh(ViewerState& state);                                     // key M
 void pickAxis(ViewerState& state, const std::string& axis, const std::string& value);
-void openScene(ViewerState& state, const std::string& path);          // throws on a bad file
-void closeScene(ViewerState& state);                                  // back to the catalogue view
+void openScene(ViewerState& state, const std::string& path);  // throws on a bad file
+void closeScene(ViewerState& state);                          // back to the catalogue view
 
 // Named parameters, as --script's `set NAME VALUE` and the panels use them:
 //   mesh NAME, subdivision N, lights.directional N, material.shininess X, material.specular X

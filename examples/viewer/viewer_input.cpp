@@ -20,27 +20,13 @@ namespace {
 void pressKey(ViewerState& s, const catalog::Catalog& catalog, GLFWwindow* window, int key) {
     auto& c = s.catalogue;
     switch (key) {
-        case GLFW_KEY_ESCAPE:
-            glfwSetWindowShouldClose(window, GLFW_TRUE);
-            break;
-        case GLFW_KEY_LEFT:
-            c.yaw -= 0.1f;
-            break;
-        case GLFW_KEY_RIGHT:
-            c.yaw += 0.1f;
-            break;
-        case GLFW_KEY_UP:
-            c.pitch -= 0.1f;
-            break;
-        case GLFW_KEY_DOWN:
-            c.pitch += 0.1f;
-            break;
-        case GLFW_KEY_S:
-            nextShader(s, catalog);
-            break;
-        case GLFW_KEY_M:
-            nextMesh(s);
-            break;
+        case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(window, GLFW_TRUE); break;
+        case GLFW_KEY_LEFT: c.yaw -= 0.1f; break;
+        case GLFW_KEY_RIGHT: c.yaw += 0.1f; break;
+        case GLFW_KEY_UP: c.pitch -= 0.1f; break;
+        case GLFW_KEY_DOWN: c.pitch += 0.1f; break;
+        case GLFW_KEY_S: nextShader(s, catalog); break;
+        case GLFW_KEY_M: nextMesh(s); break;
         case GLFW_KEY_EQUAL:
         case GLFW_KEY_KP_ADD:
             if (c.subdivision < 6) setParameter(s, "subdivision", std::to_string(c.subdivision + 1));
@@ -49,8 +35,7 @@ void pressKey(ViewerState& s, const catalog::Catalog& catalog, GLFWwindow* windo
         case GLFW_KEY_KP_SUBTRACT:
             if (c.subdivision > 0) setParameter(s, "subdivision", std::to_string(c.subdivision - 1));
             break;
-        default:
-            break;
+        default: break;
     }
 }
 
@@ -79,12 +64,14 @@ void installKeyHandler(GLFWwindow* window, ViewerState& state, const catalog::Ca
 }
 
 // Applies one script event; the `expect` text is returned for the check after the frame.
-std::string applyEvent(ViewerState& state, const catalog::Catalog& catalog, GLFWwindow* window, const ViewerScript& script,
-                       const ScriptEvent& e) {
+std::string applyEvent(ViewerState& state, const catalog::Catalog& catalog, GLFWwindow* window,
+                       const ViewerScript& script, const ScriptEvent& e) {
     std::cout << "viewer: script line " << e.line << ": " << e.command << " " << e.argument
               << (e.value.empty() ? "" : " " + e.value) << std::endl;
-    if (e.command == "key") pressKey(state, catalog, window, keyNamed(e.argument));
-    else if (e.command == "shader") selectShader(state, catalog, e.argument);
+    if (e.command == "key")
+        pressKey(state, catalog, window, keyNamed(e.argument));
+    else if (e.command == "shader")
+        selectShader(state, catalog, e.argument);
     else if (e.command == "variant") {
         const auto eq = e.argument.find('=');
         if (eq == std::string::npos) throw std::invalid_argument("variant wants AXIS=VALUE");
@@ -96,10 +83,14 @@ std::string applyEvent(ViewerState& state, const catalog::Catalog& catalog, GLFW
         if (!why.empty()) throw std::invalid_argument(why);
         pickAxis(state, e.argument.substr(0, eq), e.argument.substr(eq + 1));
     } else if (e.command == "scene") {
-        if (e.argument == "none") closeScene(state);
-        else openScene(state, script.resolve(e.argument));
-    } else if (e.command == "set") setParameter(state, e.argument, e.value);
-    else if (e.command == "expect") return e.argument;
+        if (e.argument == "none")
+            closeScene(state);
+        else
+            openScene(state, script.resolve(e.argument));
+    } else if (e.command == "set")
+        setParameter(state, e.argument, e.value);
+    else if (e.command == "expect")
+        return e.argument;
     return {};
 }
 

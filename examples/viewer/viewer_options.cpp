@@ -10,24 +10,23 @@ namespace prism::viewer {
 std::optional<ViewerOptions> parseViewerOptions(int argc, char** argv, int& exitCode) {
     ViewerOptions o;
     o.sourceRoot = PRISM_SOURCE_DIR;
-    CLI::App app{"viewer: an interactive window over the Prism catalogue and scenes, with panels for every "
-                 "system (run under xvfb-run -a on a headless machine)",
-                 "viewer"};
+    CLI::App app{
+        "viewer: an interactive window over the Prism catalogue and scenes, with panels for every "
+        "system (run under xvfb-run -a on a headless machine)",
+        "viewer"};
     app.set_version_flag("--version", std::string("viewer (Prism) ") + PRISM_VERSION);
     app.add_option("--scene", o.scene, "open a scene JSON file (docs/scenes.md) instead of the catalogue view")
         ->check(CLI::ExistingFile);
     app.add_option("--shader", o.shader, "catalogue shader of the catalogue view")->capture_default_str();
     app.add_option("--variant", o.variant, "variant axis value AXIS=VALUE (repeatable), e.g. BLINN=1");
-    app.add_option("--mesh", o.mesh, "built-in mesh (sphere, icosphere, torus, cube, trefoil)")
-        ->capture_default_str();
+    app.add_option("--mesh", o.mesh, "built-in mesh (sphere, icosphere, torus, cube, trefoil)")->capture_default_str();
     app.add_option("--subdivision", o.subdivision, "mesh subdivision level")
         ->check(CLI::Range(0u, 6u))
         ->capture_default_str();
     app.add_option("--frames", o.frames, "quit after N frames (0: run until the window closes)")
         ->check(CLI::NonNegativeNumber);
     app.add_option("--screenshot", o.screenshot, "write the last frame to this PNG and exit");
-    app.add_option("--script", o.script,
-                   "play key and parameter events from FILE, one line per frame (docs/viewer.md)")
+    app.add_option("--script", o.script, "play key and parameter events from FILE, one line per frame (docs/viewer.md)")
         ->check(CLI::ExistingFile);
     app.add_flag("--watch", o.watch, "hot reload: rebuild edited shaders and modules in process");
     app.add_option("--source-root", o.sourceRoot, "the tree --watch watches")->capture_default_str();

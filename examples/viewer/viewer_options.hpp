@@ -14,17 +14,17 @@
 namespace prism::viewer {
 
 struct ViewerOptions {
-    std::string scene;         // --scene FILE.json: open a scene instead of the catalogue view
+    std::string scene;  // --scene FILE.json: open a scene instead of the catalogue view
     std::string shader = "phong";
     std::vector<std::string> variant;  // --variant AXIS=VALUE (repeatable)
     std::string mesh = "sphere";
     unsigned subdivision = 3;
-    long frames = 0;           // 0: until the window closes
-    std::string screenshot;    // PNG of the last frame
-    std::string script;        // --script FILE of key and parameter events, one per frame
+    long frames = 0;         // 0: until the window closes
+    std::string screenshot;  // PNG of the last frame
+    std::string script;      // --script FILE of key and parameter events, one per frame
     bool watch = false;
     std::string sourceRoot;
-    bool panels = true;        // --no-panels hides the ImGui panels
+    bool panels = true;  // --no-panels hides the ImGui panels
     int width = 1100;
     int height = 760;
 };

@@ -30,8 +30,8 @@ ViewerScript ViewerScript::load(const std::string& path) {
         } else if (e.command == "expect") {
             std::getline(words >> std::ws, e.argument);
             if (e.argument.empty()) fail("'expect' wants the text of the program in use");
-        } else if (e.command == "key" || e.command == "shader" || e.command == "variant" ||
-                   e.command == "scene" || e.command == "wait") {
+        } else if (e.command == "key" || e.command == "shader" || e.command == "variant" || e.command == "scene" ||
+                   e.command == "wait") {
             if (!(words >> e.argument)) fail("'" + e.command + "' wants an argument");
             if (e.command == "wait" && e.argument.find_first_not_of("0123456789") != std::string::npos)
                 fail("'wait' wants a frame count");

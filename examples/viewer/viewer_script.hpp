@@ -24,7 +24,7 @@ struct ScriptEvent {
     int line = 0;
     std::string command;  // key, shader, variant, scene, set, wait, expect
     std::string argument;
-    std::string value;    // set's value
+    std::string value;  // set's value
 };
 
 class ViewerScript {

@@ -27,18 +27,18 @@ struct SceneView {
     bool open = false;
     std::string file;
     scene::Scene scene;
-    bool dirty = true;         // parameters changed: render the scene again
+    bool dirty = true;  // parameters changed: render the scene again
     bool waterRunning = false;
     double waterStepSeconds = 5.0;  // simulated seconds added per frame while running
     double waterStartSeconds = 60.0;
 };
 
 struct Readouts {
-    std::string program;       // "<shader> <variant>" of the catalogue view, or the scene's draws
+    std::string program;  // "<shader> <variant>" of the catalogue view, or the scene's draws
     double frameMs = 0.0;
-    bool gpuTimed = false;     // frameMs from GL_TIME_ELAPSED (else CPU wall time)
-    bool referenceOn = false;  // the exact-sphere toggle
-    std::string referenceText; // "mean 1.23 max 17 (8-bit units)" or why there is none
+    bool gpuTimed = false;       // frameMs from GL_TIME_ELAPSED (else CPU wall time)
+    bool referenceOn = false;    // the exact-sphere toggle
+    std::string referenceText;   // "mean 1.23 max 17 (8-bit units)" or why there is none
     double sceneRenderMs = 0.0;  // the last full render of the open scene (CPU wall time)
 };
 

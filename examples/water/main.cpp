@@ -74,11 +74,13 @@ std::string misplacedFlag(const CLI::App& app, const Options& o) {
     if (o.window) {
         for (const char* f : {"--out", "--steps", "--sequence"})
             if (given(f)) return std::string(f) + " does not apply to --window";
-        if (given("--dt") && o.frames == 0) return "--dt with --window needs --frames (without it, time follows the clock)";
+        if (given("--dt") && o.frames == 0)
+            return "--dt with --window needs --frames (without it, time follows the clock)";
     } else if (given("--frames")) {
         return "--frames needs --window";
     }
-    if (given("--heightmap") && given("--grid")) return "--grid makes a procedural terrain; it does not apply to --heightmap";
+    if (given("--heightmap") && given("--grid"))
+        return "--grid makes a procedural terrain; it does not apply to --heightmap";
     if (!given("--heightmap") && given("--height-scale")) return "--height-scale needs --heightmap";
     if (!given("--permeability") && given("--permeability-max")) return "--permeability-max needs --permeability";
     if (given("--fog-billboards") && !(o.fog > 0.0f) && !o.window)
@@ -179,9 +181,9 @@ class FogBillboardLayer {
   public:
     FogBillboardLayer(const WaterScene& scene, const prism::view::Fog& distanceFog, float strength,
                       const glm::vec3& eye)
-        : fog_(prism::rain::fogOverGround(distanceFog, strength,
-                                          *std::min_element(scene.terrain().heights.begin(),
-                                                            scene.terrain().heights.end()))),
+        : fog_(prism::rain::fogOverGround(
+              distanceFog, strength,
+              *std::min_element(scene.terrain().heights.begin(), scene.terrain().heights.end()))),
           system_(std::make_unique<prism::rain::FogSystem>(programs_, fog_, eye)) {}
     // Draws into the bound framebuffer, over the water scene drawn there with its depth.
     void draw(const prism::view::Camera& camera, int width, int height, float dt, float timeSeconds) {
@@ -289,41 +291,22 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
     if (action == GLFW_RELEASE) return;
     auto& s = *static_cast<ViewState*>(glfwGetWindowUserPointer(window));
     switch (key) {
-        case GLFW_KEY_ESCAPE:
-            glfwSetWindowShouldClose(window, GLFW_TRUE);
-            break;
-        case GLFW_KEY_LEFT:
-            s.yaw -= 0.1f;
-            break;
-        case GLFW_KEY_RIGHT:
-            s.yaw += 0.1f;
-            break;
-        case GLFW_KEY_UP:
-            s.pitch = std::min(1.45f, s.pitch + 0.05f);
-            break;
-        case GLFW_KEY_DOWN:
-            s.pitch = std::max(0.05f, s.pitch - 0.05f);
-            break;
+        case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(window, GLFW_TRUE); break;
+        case GLFW_KEY_LEFT: s.yaw -= 0.1f; break;
+        case GLFW_KEY_RIGHT: s.yaw += 0.1f; break;
+        case GLFW_KEY_UP: s.pitch = std::min(1.45f, s.pitch + 0.05f); break;
+        case GLFW_KEY_DOWN: s.pitch = std::max(0.05f, s.pitch - 0.05f); break;
         case GLFW_KEY_EQUAL:
-        case GLFW_KEY_KP_ADD:
-            s.zoom *= 0.9f;
-            break;
+        case GLFW_KEY_KP_ADD: s.zoom *= 0.9f; break;
         case GLFW_KEY_MINUS:
-        case GLFW_KEY_KP_SUBTRACT:
-            s.zoom *= 1.1f;
-            break;
+        case GLFW_KEY_KP_SUBTRACT: s.zoom *= 1.1f; break;
         case GLFW_KEY_R:
             s.rainIndex = (s.rainIndex + 1) % 7;
             s.rainChanged = true;
             break;
-        case GLFW_KEY_F:
-            s.fogToggled = true;
-            break;
-        case GLFW_KEY_SPACE:
-            s.paused = !s.paused;
-            break;
-        default:
-            break;
+        case GLFW_KEY_F: s.fogToggled = true; break;
+        case GLFW_KEY_SPACE: s.paused = !s.paused; break;
+        default: break;
     }
 }
 

@@ -69,8 +69,7 @@ void addOptions(CLI::App& app, Options& o, std::vector<std::string>& defines, st
     app.add_flag("--check", o.checkOnly, "validate only: no header (--emit-glsl, --depfile, --stamp still written)");
     app.add_option("-D", defines, "define a macro for every stage: NAME[=VALUE]")->allow_extra_args(false);
     app.add_option("--glsl-version", o.glslVersion, "default #version when a shader has none")->capture_default_str();
-    app.add_option("--namespace", o.nameSpace, "C++ namespace of the generated code (needs -o)")
-        ->capture_default_str();
+    app.add_option("--namespace", o.nameSpace, "C++ namespace of the generated code (needs -o)")->capture_default_str();
     app.add_option("--contract", o.contracts, "binding contract JSON (attributes and uniforms the runtime provides)")
         ->allow_extra_args(false);
     app.add_option("--variant", o.variantFilters,

@@ -26,10 +26,10 @@ struct Options {
     int glslVersion = 330;
     std::string glslProfile = "core";
     ErrorFormat errorFormat = ErrorFormat::Gcc;
-    int jobs = 0;  // 0 = hardware concurrency
-    bool printStats = false;  // --stats: how many programs were validated, shared, or found in the cache
-    bool checkOnly = false;  // --check: no header; --emit-glsl, --depfile, --stamp are still written
-    bool revalidate = false;  // --revalidate: no clean-check shortcut (clean_check.hpp)
+    int jobs = 0;                   // 0 = hardware concurrency
+    bool printStats = false;        // --stats: how many programs were validated, shared, or found in the cache
+    bool checkOnly = false;         // --check: no header; --emit-glsl, --depfile, --stamp are still written
+    bool revalidate = false;        // --revalidate: no clean-check shortcut (clean_check.hpp)
     bool noVariantSharing = false;  // --no-variant-sharing: every variant runs the preprocessor (the reference)
 };
 

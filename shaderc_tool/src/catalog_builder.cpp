@@ -144,8 +144,8 @@ ModuleIndex indexModules(const Options& o, const std::vector<ShaderInput>& shade
         const ModuleFile& file = files[fileIndex];
         reportScan(scans[n], identifier, used.contains(file.canonical), sink);
         index.byCanonical[file.canonical] = static_cast<std::uint32_t>(index.modules.size());
-        index.modules.push_back({identifier, shownPath(file.path, o), scans[n].module.description,
-                                 scans[n].module.text, {}, file.path});
+        index.modules.push_back(
+            {identifier, shownPath(file.path, o), scans[n].module.description, scans[n].module.text, {}, file.path});
         includes.push_back(scans[n].module.includes);
     }
     for (std::size_t i = 0; i < index.modules.size(); ++i)
@@ -353,7 +353,7 @@ std::string fingerprint(const ResolvedCatalog& rc) {
     mix(PRISM_VERSION);
     mix(d.nameSpace);
     mix(d.versionDirective);
-    mix(d.sourcesBlock);      // so a header with a stale record is rewritten
+    mix(d.sourcesBlock);  // so a header with a stale record is rewritten
     for (const auto& s : d.shaders) {
         mix(s.name);
         for (const auto& a : s.axes) {

@@ -22,9 +22,9 @@ struct ResolvedCatalog {
     std::vector<std::string> filesRead;                             // for the depfile (display paths)
     std::vector<std::vector<std::vector<ResolvedStage>>> resolved;  // [shader][variant][stage]
     std::vector<std::vector<std::string>> stagePaths;               // [shader][stage]
-    std::size_t preprocessorRuns = 0;  // runs of glslang's preprocessor (variant_resolution.hpp)
-    double builtInsMs = 0;             // glslang's built-in tables, timed apart under --stats
-    double resolveMs = 0;              // the whole resolution, wall clock
+    std::size_t preprocessorRuns = 0;     // runs of glslang's preprocessor (variant_resolution.hpp)
+    double builtInsMs = 0;                // glslang's built-in tables, timed apart under --stats
+    double resolveMs = 0;                 // the whole resolution, wall clock
     std::vector<Diagnostic> diagnostics;  // the resolution's, in order (repeats dropped)
 };
 

@@ -20,7 +20,7 @@ std::string codeSignature(std::string_view text) {
         const char next = i + 1 < text.size() ? text[i + 1] : '\0';
         if (inBlockComment) {
             if (c == '*' && next == '/') {  // the whole comment, newlines included, is one blank, as
-                inBlockComment = false;      // for the preprocessor: a directive goes on after it
+                inBlockComment = false;     // for the preprocessor: a directive goes on after it
                 ++i;
                 addBlank();
             }

@@ -90,8 +90,8 @@ std::optional<json> parseContractJson(const std::string& path, const std::string
     } catch (const json::exception& e) {  // e.g. out_of_range 406: a number too large for a double
         std::string what = e.what();
         auto pos = what.find("] ");
-        out.push_back(makeError(path, 0, 0,
-                                "malformed contract JSON: " + (pos == std::string::npos ? what : what.substr(pos + 2))));
+        out.push_back(makeError(
+            path, 0, 0, "malformed contract JSON: " + (pos == std::string::npos ? what : what.substr(pos + 2))));
     }
     return std::nullopt;
 }

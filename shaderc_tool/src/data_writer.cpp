@@ -17,14 +17,10 @@ namespace {
 
 std::string_view stageEnum(catalog::Stage s) {
     switch (s) {
-        case catalog::Stage::Vertex:
-            return "Vertex";
-        case catalog::Stage::Geometry:
-            return "Geometry";
-        case catalog::Stage::Fragment:
-            return "Fragment";
-        case catalog::Stage::Compute:
-            return "Compute";
+        case catalog::Stage::Vertex: return "Vertex";
+        case catalog::Stage::Geometry: return "Geometry";
+        case catalog::Stage::Fragment: return "Fragment";
+        case catalog::Stage::Compute: return "Compute";
     }
     return "Vertex";
 }
@@ -177,8 +173,8 @@ class DataWriter {
         auto contractUniforms = arrays_.array("prism::catalog::Uniform", "contract_uniforms", uniforms, false);
 
         std::ostringstream out;
-        out << format::kBannerStart << PRISM_VERSION << format::kBannerEnd
-            << format::kFingerprintLine << c_.fingerprint << "\n"
+        out << format::kBannerStart << PRISM_VERSION << format::kBannerEnd << format::kFingerprintLine << c_.fingerprint
+            << "\n"
             << "// The data of " << headerFileName << ": each text piece once (pool), stages as lists of pieces.\n"
             << "// Layout and use: docs/shaderc.md; types: <prism/catalog/shader_catalog.hpp>.\n"
             << "#include \"" << headerFileName << "\"\n\n"
@@ -214,7 +210,8 @@ class DataWriter {
         }
         auto stageArray = arrays_.array("prism::catalog::StageSource", prefix + "_stages", stages, false);
         std::vector<std::string> defines, attributes, uniforms;
-        for (const auto& [n, val] : v.defines) defines.push_back("{" + quotedLiteral(n) + ", " + quotedLiteral(val) + "}");
+        for (const auto& [n, val] : v.defines)
+            defines.push_back("{" + quotedLiteral(n) + ", " + quotedLiteral(val) + "}");
         for (const auto& a : v.reflection.attributes)
             attributes.push_back("{" + quotedLiteral(a.name) + ", " + hexLiteral(a.glType) + ", " +
                                  std::to_string(a.location) + "}");

@@ -10,17 +10,10 @@ std::string escapeDepfilePath(const std::string& path) {
     out.reserve(path.size());
     for (char c : path) {
         switch (c) {
-            case ' ':
-                out += "\\ ";
-                break;
-            case '$':
-                out += "$$";
-                break;
-            case '#':
-                out += "\\#";
-                break;
-            default:
-                out += c;
+            case ' ': out += "\\ "; break;
+            case '$': out += "$$"; break;
+            case '#': out += "\\#"; break;
+            default: out += c;
         }
     }
     return out;

@@ -9,12 +9,9 @@ namespace {
 
 std::string_view severityWord(Severity s) {
     switch (s) {
-        case Severity::Error:
-            return "error";
-        case Severity::Warning:
-            return "warning";
-        case Severity::Note:
-            return "note";
+        case Severity::Error: return "error";
+        case Severity::Warning: return "warning";
+        case Severity::Note: return "note";
     }
     return "error";
 }

@@ -33,7 +33,9 @@ std::string withoutComments(std::string_view text) {
 
 std::vector<std::string> functionNamesIn(std::string_view glsl) {
     static const std::regex function(
-        R"(^[ \t]*(?:(?:highp|mediump|lowp|precise|invariant)[ \t]+)*[A-Za-z_]\w*(?:[ \t]*\[[^\]]*\])?[ \t]+([A-Za-z_]\w*)[ \t]*\()");
+        R"(^[ \t]*(?:(?:highp|mediump|lowp|precise|invariant)[ \t]+)*)"       // qualifiers
+        R"([A-Za-z_]\w*(?:[ \t]*\[[^\]]*\])?[ \t]+([A-Za-z_]\w*)[ \t]*\()");  // type, name, '('
+
     static const std::set<std::string> notTypes = {"return", "else", "if", "while", "for", "switch", "case", "do"};
     std::set<std::string> names;
     const std::string text = withoutComments(glsl);

@@ -2,7 +2,6 @@
 // glslang_preprocessor.hpp).
 #include "glslang_preprocessor.hpp"
 
-
 #include <memory>
 #include <mutex>
 #include <unordered_map>
@@ -264,9 +263,9 @@ class RecordingIncluder final : public glslang::TShader::Includer {
         auto names = chainNames(stack_.size());
         names.erase(names.begin(), names.begin() + static_cast<std::ptrdiff_t>(openAt));
         names.push_back(found.display);
-        Diagnostic error = makeError(includer.display, lineNumber, column,
-                                     "include cycle: " + describeChain(names) +
-                                         "; add an include guard or #pragma once, or break the cycle");
+        Diagnostic error = makeError(
+            includer.display, lineNumber, column,
+            "include cycle: " + describeChain(names) + "; add an include guard or #pragma once, or break the cycle");
         error.includedFrom = includer.chain;
         if (flags.guard.empty()) {
             run_.diagnostics.push_back(std::move(error));
@@ -356,8 +355,10 @@ class RecordingIncluder final : public glslang::TShader::Includer {
             at = end + 1;
         }
         for (std::size_t seen = 0; at < text.size() && seen < count; ++at) {
-            if (text[at] == '\n') ++seen;
-            else text[at] = ' ';
+            if (text[at] == '\n')
+                ++seen;
+            else
+                text[at] = ' ';
         }
     }
 
@@ -365,7 +366,7 @@ class RecordingIncluder final : public glslang::TShader::Includer {
     const SourceReader& reader_;
     PreprocessRun& run_;
     MacroSizeTable macroSizes_;
-    std::map<std::uint32_t, int> openIncludeLine_;           // file -> line of its #include now open
+    std::map<std::uint32_t, int> openIncludeLine_;  // file -> line of its #include now open
     std::set<std::pair<std::uint32_t, int>> limitLinesReported_;
     std::deque<std::string> texts_;   // glslang's text of each entered file (stable addresses)
     std::deque<std::string> probes_;  // guard probes

@@ -50,9 +50,10 @@ std::optional<FoundFile> findInclude(const IncludeTarget& target, const std::vec
 std::string missingIncludeMessage(const IncludeTarget& target, const std::vector<SearchDir>& dirs) {
     const std::string written = target.angled ? "<" + target.name + ">" : "\"" + target.name + "\"";
     const std::string hint = closestName(target.name, includeCandidates(target, dirs));
-    std::string message = "cannot find include " + written +
-                          (hint.empty() ? "" : " (did you mean " + (target.angled ? "<" + hint + ">" : "\"" + hint + "\"") + "?)") +
-                          "; searched: ";
+    std::string message =
+        "cannot find include " + written +
+        (hint.empty() ? "" : " (did you mean " + (target.angled ? "<" + hint + ">" : "\"" + hint + "\"") + "?)") +
+        "; searched: ";
     if (dirs.empty()) message += "no directories (<...> and \"/...\" search only -I directories and --base-dir)";
     for (std::size_t i = 0; i < dirs.size(); ++i)
         message +=

@@ -37,7 +37,6 @@ std::string sourcesBlock(const SourcesRecord& record);
 // The files (paths to read them by) when `dataText` records sources whose fingerprint
 // is still the same; nullopt when anything differs or there is no record.
 std::optional<std::vector<std::string>> unchangedSources(const Options& options, const std::string& dataText,
-                                                         const SourceReader& reader,
-                                                         ContentKey key = ContentKey::Text);
+                                                         const SourceReader& reader, ContentKey key = ContentKey::Text);
 
 }  // namespace prism::shaderc

@@ -23,18 +23,12 @@ std::string typeSpelling(const glslang::TType& t) {
     }
     int n = t.getVectorSize();
     switch (t.getBasicType()) {
-        case EbtFloat:
-            return vectorName("float", "", n);
-        case EbtDouble:
-            return vectorName("double", "d", n);
-        case EbtInt:
-            return vectorName("int", "i", n);
-        case EbtUint:
-            return vectorName("uint", "u", n);
-        case EbtBool:
-            return vectorName("bool", "b", n);
-        default:
-            return std::string(t.getBasicTypeString().c_str());
+        case EbtFloat: return vectorName("float", "", n);
+        case EbtDouble: return vectorName("double", "d", n);
+        case EbtInt: return vectorName("int", "i", n);
+        case EbtUint: return vectorName("uint", "u", n);
+        case EbtBool: return vectorName("bool", "b", n);
+        default: return std::string(t.getBasicTypeString().c_str());
     }
 }
 
@@ -59,20 +53,11 @@ class LinkerObjectCollector : public glslang::TIntermTraverser {
         if (name.rfind("gl_", 0) == 0) return;
         InterfaceVariable v;
         switch (q.storage) {
-            case EvqVaryingIn:
-                v.storage = StorageKind::In;
-                break;
-            case EvqVaryingOut:
-                v.storage = StorageKind::Out;
-                break;
-            case EvqUniform:
-                v.storage = StorageKind::Uniform;
-                break;
-            case EvqBuffer:
-                v.storage = StorageKind::Buffer;
-                break;
-            default:
-                return;
+            case EvqVaryingIn: v.storage = StorageKind::In; break;
+            case EvqVaryingOut: v.storage = StorageKind::Out; break;
+            case EvqUniform: v.storage = StorageKind::Uniform; break;
+            case EvqBuffer: v.storage = StorageKind::Buffer; break;
+            default: return;
         }
         v.isBlock = type.getBasicType() == EbtBlock;
         v.name = v.isBlock ? std::string(type.getTypeName().c_str()) : name;
@@ -111,12 +96,9 @@ std::string glslTypeWithArray(const InterfaceVariable& v) {
 
 std::string_view interpolationName(Interpolation i) {
     switch (i) {
-        case Interpolation::Smooth:
-            return "smooth";
-        case Interpolation::Flat:
-            return "flat";
-        case Interpolation::NoPerspective:
-            return "noperspective";
+        case Interpolation::Smooth: return "smooth";
+        case Interpolation::Flat: return "flat";
+        case Interpolation::NoPerspective: return "noperspective";
     }
     return "smooth";
 }

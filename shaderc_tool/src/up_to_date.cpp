@@ -31,8 +31,7 @@ std::string readRecord(const std::string& path) {
     in.seekg(size - kTail);
     std::string tail(static_cast<std::size_t>(kTail), '\0');
     in.read(tail.data(), kTail);
-    return tail.find("\n" + std::string(format::kSourcesRecordStart)) != std::string::npos ? tail
-                                                                                          : readWholeFile(path);
+    return tail.find("\n" + std::string(format::kSourcesRecordStart)) != std::string::npos ? tail : readWholeFile(path);
 }
 
 // Records 1 and 3 belong to runs that write a header and nothing else.

@@ -23,8 +23,13 @@ json toJson(const Diagnostic& d) {
     for (const auto& s : d.includedFrom) sites.push_back({s.file, s.line});
     json notes = json::array();
     for (const auto& n : d.notes) notes.push_back(toJson(n));
-    return {{"severity", static_cast<int>(d.severity)}, {"file", d.file}, {"line", d.line}, {"column", d.column},
-            {"message", d.message}, {"includedFrom", sites}, {"notes", notes}};
+    return {{"severity", static_cast<int>(d.severity)},
+            {"file", d.file},
+            {"line", d.line},
+            {"column", d.column},
+            {"message", d.message},
+            {"includedFrom", sites},
+            {"notes", notes}};
 }
 
 Diagnostic diagnosticFrom(const json& j) {
@@ -34,7 +39,8 @@ Diagnostic diagnosticFrom(const json& j) {
     d.line = j.at("line").get<int>();
     d.column = j.at("column").get<int>();
     d.message = j.at("message").get<std::string>();
-    for (const auto& s : j.at("includedFrom")) d.includedFrom.push_back({s.at(0).get<std::string>(), s.at(1).get<int>()});
+    for (const auto& s : j.at("includedFrom"))
+        d.includedFrom.push_back({s.at(0).get<std::string>(), s.at(1).get<int>()});
     for (const auto& n : j.at("notes")) d.notes.push_back(diagnosticFrom(n));
     return d;
 }
@@ -44,8 +50,8 @@ json toJson(const std::string& text, const ValidatedVariant& v) {
     for (const auto& a : v.reflection.attributes) attributes.push_back({a.name, a.glType, a.location});
     for (const auto& u : v.reflection.uniforms) uniforms.push_back({u.name, u.glType, u.arraySize});
     for (const auto& d : v.diagnostics) diagnostics.push_back(toJson(d));
-    return {{"text", text},          {"ok", v.ok},           {"attributes", attributes},
-            {"uniforms", uniforms}, {"diagnostics", diagnostics}};
+    return {
+        {"text", text}, {"ok", v.ok}, {"attributes", attributes}, {"uniforms", uniforms}, {"diagnostics", diagnostics}};
 }
 
 ValidatedVariant resultFrom(const json& j) {
@@ -53,7 +59,8 @@ ValidatedVariant resultFrom(const json& j) {
     v.ok = j.at("ok").get<bool>();
     for (const auto& d : j.at("diagnostics")) v.diagnostics.push_back(diagnosticFrom(d));
     for (const auto& a : j.at("attributes"))
-        v.reflection.attributes.push_back({a.at(0).get<std::string>(), a.at(1).get<std::uint32_t>(), a.at(2).get<int>()});
+        v.reflection.attributes.push_back(
+            {a.at(0).get<std::string>(), a.at(1).get<std::uint32_t>(), a.at(2).get<int>()});
     for (const auto& u : j.at("uniforms"))
         v.reflection.uniforms.push_back({u.at(0).get<std::string>(), u.at(1).get<std::uint32_t>(), u.at(2).get<int>()});
     return v;

@@ -30,8 +30,8 @@ using DefineList = std::vector<std::pair<std::string, std::string>>;
 // What a key needs from the files a run read and from its text below the define block
 // (`defineCount` #define lines): the same for every variant sharing that run.
 struct ValidationKeyBasis {
-    std::string body;                 // hash of the body's signature
-    std::vector<std::string> met;     // those of `names` that the files meet (all when a file pastes tokens)
+    std::string body;              // hash of the body's signature
+    std::vector<std::string> met;  // those of `names` that the files meet (all when a file pastes tokens)
 };
 ValidationKeyBasis validationKeyBasis(const ResolvedStage& stage, std::size_t defineCount,
                                       const std::vector<std::string>& names, const SourceReader& reader);

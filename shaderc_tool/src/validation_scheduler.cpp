@@ -88,8 +88,9 @@ std::vector<Program> keyPrograms(const ResolvedCatalog& rc, const Contract& cont
     std::vector<Program> programs;
     for (std::size_t s = 0; s < rc.data.shaders.size(); ++s)
         for (std::size_t v = 0; v < rc.data.shaders[s].variants.size(); ++v) programs.push_back({s, v, {}});
-    runPool(programs.size(), jobs,
-            [&](std::size_t i) { programs[i].key = programKey(rc, contract, programs[i].shader, programs[i].variant); });
+    runPool(programs.size(), jobs, [&](std::size_t i) {
+        programs[i].key = programKey(rc, contract, programs[i].shader, programs[i].variant);
+    });
     return programs;
 }
 

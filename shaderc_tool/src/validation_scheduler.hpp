@@ -23,10 +23,10 @@
 namespace prism::shaderc {
 
 struct ValidationStats {
-    std::size_t programs = 0;   // variants in the catalogue
-    std::size_t distinct = 0;   // distinct token keys among them
-    std::size_t fromCache = 0;  // distinct keys answered by the cache
-    std::size_t validated = 0;  // glslang validations run (distinct keys + programs re-run for their own lines)
+    std::size_t programs = 0;        // variants in the catalogue
+    std::size_t distinct = 0;        // distinct token keys among them
+    std::size_t fromCache = 0;       // distinct keys answered by the cache
+    std::size_t validated = 0;       // glslang validations run (distinct keys + programs re-run for their own lines)
     std::size_t stagesCompiled = 0;  // distinct stages parsed for them (shared by programs)
     double ms = 0;                   // wall clock
 };

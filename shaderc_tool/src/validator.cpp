@@ -23,14 +23,10 @@ namespace {
 
 EShLanguage glslangStage(catalog::Stage s) {
     switch (s) {
-        case catalog::Stage::Vertex:
-            return EShLangVertex;
-        case catalog::Stage::Geometry:
-            return EShLangGeometry;
-        case catalog::Stage::Fragment:
-            return EShLangFragment;
-        case catalog::Stage::Compute:
-            return EShLangCompute;
+        case catalog::Stage::Vertex: return EShLangVertex;
+        case catalog::Stage::Geometry: return EShLangGeometry;
+        case catalog::Stage::Fragment: return EShLangFragment;
+        case catalog::Stage::Compute: return EShLangCompute;
     }
     return EShLangVertex;
 }

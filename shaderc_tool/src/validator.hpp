@@ -41,7 +41,7 @@ ValidatedVariant validateProgram(const std::vector<StageToValidate>& stages, con
 // compiled from.
 struct CompiledStage;
 std::shared_ptr<CompiledStage> compileStage(const StageToValidate& stage);  // thread-safe
-bool compiledCleanly(const CompiledStage& stage);                          // parsed without any message
+bool compiledCleanly(const CompiledStage& stage);                           // parsed without any message
 
 // validateProgram with the stages compiled before, possibly shared with other programs
 // (each stage's lock is held while it is linked and read). glslang's link keeps state

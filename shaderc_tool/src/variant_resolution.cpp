@@ -72,7 +72,8 @@ ResolveResult withDefines(const ResolveResult& from, const ResolveOptions& fromO
     std::size_t end = 0;
     for (std::size_t line = 0; line < 1 + fromOptions.defines.size(); ++line) end = r.stage.text.find('\n', end) + 1;
     std::string head = r.stage.text.substr(0, r.stage.text.find('\n') + 1);  // the #version line
-    for (const auto& [name, value] : options.defines) head += "#define " + name + (value.empty() ? "" : " " + value) + "\n";
+    for (const auto& [name, value] : options.defines)
+        head += "#define " + name + (value.empty() ? "" : " " + value) + "\n";
     r.stage.text = head + r.stage.text.substr(end);
     r.stage.shared = true;
     return r;
@@ -140,7 +141,7 @@ std::vector<std::string> groupOf(const Resolution& r, const VariantChoice& choic
 // One round: shares what can be shared, and returns the (variant, stage) runs to make:
 // one per group (every one without sharing).
 std::vector<std::pair<std::size_t, std::size_t>> planRound(Resolution& r, const std::vector<VariantChoice>& choices,
-                                                            int round) {
+                                                           int round) {
     std::vector<std::pair<std::size_t, std::size_t>> toRun;
     for (std::size_t st = 0; st < r.reps.size(); ++st) {
         std::set<std::vector<std::string>> groupsTaken;

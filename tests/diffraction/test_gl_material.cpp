@@ -36,9 +36,10 @@ class DiffractionMaterialGl : public prism::test::GlTest {
         material_.color = {0.5f, 0.6f, 0.7f, 1.0f};
     }
 
-    prism::image::ImageF render(const DiffractionTextures& textures, const prism::view::Lights& lights, int directionalSlots) {
+    prism::image::ImageF render(const DiffractionTextures& textures, const prism::view::Lights& lights,
+                                int directionalSlots) {
         const prism::render::GpuMesh plate(prism::geometry::makeGrid(8.0f, 8.0f, 4, 4),
-                                   prism::shaders::kCatalog.contractAttributes);
+                                           prism::shaders::kCatalog.contractAttributes);
         prism::gl::Framebuffer target(kSize, kSize, prism::gl::ColorFormat::Rgba32F);
         target.clear({0, 0, 0, 0});
         prism::gl::Program& program =
@@ -104,7 +105,7 @@ TEST_F(DiffractionMaterialGl, DirectionalLightsAddUpAndAmbientRemains) {
     second.directional = {b};
     both.directional = {a, b};
     const prism::image::ImageF imageNone = render(textures, none, 2), imageA = render(textures, first, 2),
-                        imageB = render(textures, second, 2), imageBoth = render(textures, both, 2);
+                               imageB = render(textures, second, 2), imageBoth = render(textures, both, 2);
     double lit = 0.0;
     for (int y = 0; y < kSize; ++y) {
         for (int x = 0; x < kSize; ++x) {

@@ -57,7 +57,6 @@ class DiffractionGl : public prism::test::GlTest {
         EXPECT_GT(maxValue, 0.0);
         return maxError / maxValue;
     }
-
 };
 
 }  // namespace

@@ -42,8 +42,8 @@ TEST(DiffractionMaterial, DefaultsAndPathA) {
 
 TEST(DiffractionMaterial, DefaultPathIsTheVolume) {
     const DiffractionMaterial m = parseDiffractionMaterial(
-        json::parse(
-            R"({"height_field": {"type": "sinusoid", "amplitude_nm": 60, "periods": 4}, "table_size": 16, "w_slices": 4})"),
+        json::parse(R"({"height_field": {"type": "sinusoid", "amplitude_nm": 60, "periods": 4},)"
+                    R"( "table_size": 16, "w_slices": 4})"),
         "", ".");
     EXPECT_EQ(m.path, 'c');
     const MaterialTables tables = buildMaterialTables(m, makeBrdf(m));

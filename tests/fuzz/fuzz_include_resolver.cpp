@@ -21,7 +21,8 @@ const MemoryReader& baseModules() {
     static const MemoryReader files{
         {"lib/plain.glsl", "// A plain module.\nfloat plain(float x) { return x * 2.0; }\n"},
         {"lib/guarded.glsl",
-         "#ifndef GUARDED_GLSL\n#define GUARDED_GLSL\n#define GUARD_VALUE 3\nfloat guarded() { return 1.0; }\n#endif\n"},
+         "#ifndef GUARDED_GLSL\n#define GUARDED_GLSL\n#define GUARD_VALUE 3\nfloat guarded() { return 1.0; "
+         "}\n#endif\n"},
         {"lib/once.glsl", "#pragma once\n#include \"plain.glsl\"\nfloat once() { return plain(1.0); }\n"},
         {"lib/left.glsl", "#include \"base.glsl\"\nfloat left() { return base(); }\n"},
         {"lib/right.glsl", "#include <base.glsl>\nfloat right() { return base(); }\n"},

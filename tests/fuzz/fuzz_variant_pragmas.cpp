@@ -19,8 +19,9 @@ using namespace prism::shaderc;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const auto parts = prism::fuzz::splitParts(prism::fuzz::text(data, size), "\n//--filters\n", 2);
-    MemoryReader files{{"main.frag", parts[0]},
-                       {"lib/lights.glsl", "#pragma prism variant DIRECTIONAL_LIGHTS 0 1 2 4\n#pragma prism variant FOG\n"}};
+    MemoryReader files{
+        {"main.frag", parts[0]},
+        {"lib/lights.glsl", "#pragma prism variant DIRECTIONAL_LIGHTS 0 1 2 4\n#pragma prism variant FOG\n"}};
     ResolveOptions options;
     options.includeDirs = {"lib"};
     const ResolveResult stage = resolveStage("main.frag", options, files);

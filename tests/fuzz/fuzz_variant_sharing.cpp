@@ -24,10 +24,12 @@ MemoryReader withBaseModules() {
     return MemoryReader{
         {"lib/values.glsl", "// The values of K.\n#define ONE 1\n#define TWO 2\n"},
         {"lib/x.glsl", "// Taken when USE_X.\nfloat x() { return 1.0; }\n"},
-        {"lib/chain.glsl", "// A condition that defines what another tests.\n#if A == 1\n#define USE_X\n#endif\n"
-                           "#ifdef USE_X\n#include \"x.glsl\"\n#endif\n"},
-        {"lib/guarded.glsl", "#ifndef GUARDED\n#define GUARDED\n#if B > 1\n#include \"values.glsl\"\n#endif\n"
-                             "float g() { return float(B); }\n#endif\n"},
+        {"lib/chain.glsl",
+         "// A condition that defines what another tests.\n#if A == 1\n#define USE_X\n#endif\n"
+         "#ifdef USE_X\n#include \"x.glsl\"\n#endif\n"},
+        {"lib/guarded.glsl",
+         "#ifndef GUARDED\n#define GUARDED\n#if B > 1\n#include \"values.glsl\"\n#endif\n"
+         "float g() { return float(B); }\n#endif\n"},
         {"lib/once.glsl", "#pragma once\n#pragma prism variant A 0 1\nfloat once() { return float(A); }\n"},
     };
 }

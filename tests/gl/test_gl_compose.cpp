@@ -150,7 +150,8 @@ TEST_F(ComposeGl, ComposedDiamondRenders) {
     EXPECT_EQ(glGetAttribLocation(program.id(), "a_position"), 0);  // contract binding applied
     prism::gl::Framebuffer fb(prism::test::kSize, prism::test::kSize);
     prism::test::drawTriangle(fb, program);
-    EXPECT_EQ(fb.readImage8().at(prism::test::kSize / 2, prism::test::kSize / 2), (prism::image::Rgba8{64, 128, 0, 255}));
+    EXPECT_EQ(fb.readImage8().at(prism::test::kSize / 2, prism::test::kSize / 2),
+              (prism::image::Rgba8{64, 128, 0, 255}));
 }
 
 // Both the #line semantics of the driver and the files table are checked here: an
@@ -212,13 +213,15 @@ TEST_F(ComposeGl, MisspelledAttributeIsAnErrorAtTheModuleLineWithASuggestion) {
 
 // A varying declared vec3 in one stage and vec4 in the next names both stages.
 TEST_F(ComposeGl, VaryingTypeMismatchNamesBothStages) {
-    const ComposeStage stages[] = {
-        {cat::Stage::Vertex, {},
-         "in vec2 a_position;\nout vec3 v_tint;\n"
-         "void main() { v_tint = vec3(1.0); gl_Position = vec4(a_position, 0.0, 1.0); }\n",
-         "app/tint.vert"},
-        {cat::Stage::Fragment, {}, "in vec4 v_tint;\nout vec4 fragColor;\nvoid main() { fragColor = v_tint; }\n",
-         "app/tint.frag"}};
+    const ComposeStage stages[] = {{cat::Stage::Vertex,
+                                    {},
+                                    "in vec2 a_position;\nout vec3 v_tint;\n"
+                                    "void main() { v_tint = vec3(1.0); gl_Position = vec4(a_position, 0.0, 1.0); }\n",
+                                    "app/tint.vert"},
+                                   {cat::Stage::Fragment,
+                                    {},
+                                    "in vec4 v_tint;\nout vec4 fragColor;\nvoid main() { fragColor = v_tint; }\n",
+                                    "app/tint.frag"}};
     try {
         prism::gl::composeProgram(kCatalog, stages, "tint");
         FAIL() << "a vec3/vec4 varying mismatch composed";
@@ -244,28 +247,32 @@ const char* kLibraryContract = R"({"attributes": [{"name": "a_position", "type":
 TEST_F(ComposeGl, ModuleLibraryFromStringsComposesAndRenders) {
     const auto library = prism::gl::ModuleLibrary::fromStrings(
         {{"lib/halve.glsl", "// Provides halve().\nfloat halve(float x) { return 0.5 * x; }\n"},
-         {"lib/tint.glsl", "// Provides tint().\n#include \"halve.glsl\"\nuniform float u_gain;\n"
-                           "vec4 tint() { return vec4(halve(u_gain), 1.0, 0.0, 1.0); }\n"}},
+         {"lib/tint.glsl",
+          "// Provides tint().\n#include \"halve.glsl\"\nuniform float u_gain;\n"
+          "vec4 tint() { return vec4(halve(u_gain), 1.0, 0.0, 1.0); }\n"}},
         kLibraryContract);
     EXPECT_EQ(library.catalog().modules[library.id("tint")].description, "Provides tint().");
-    const ComposeStage stages[] = {
-        {cat::Stage::Vertex, {}, kVertexSource, "app/lib.vert"},
-        {cat::Stage::Fragment, {library.id("tint")}, "out vec4 fragColor;\nvoid main() { fragColor = tint(); }\n",
-         "app/lib.frag"}};
+    const ComposeStage stages[] = {{cat::Stage::Vertex, {}, kVertexSource, "app/lib.vert"},
+                                   {cat::Stage::Fragment,
+                                    {library.id("tint")},
+                                    "out vec4 fragColor;\nvoid main() { fragColor = tint(); }\n",
+                                    "app/lib.frag"}};
     prism::gl::Program program = prism::gl::composeProgram(library.catalog(), stages, "library");
     program.set("u_gain", 1.0f);
     prism::gl::Framebuffer fb(prism::test::kSize, prism::test::kSize);
     prism::test::drawTriangle(fb, program);
-    EXPECT_EQ(fb.readImage8().at(prism::test::kSize / 2, prism::test::kSize / 2), (prism::image::Rgba8{128, 255, 0, 255}));
+    EXPECT_EQ(fb.readImage8().at(prism::test::kSize / 2, prism::test::kSize / 2),
+              (prism::image::Rgba8{128, 255, 0, 255}));
 }
 
 TEST_F(ComposeGl, ModuleLibraryUniformOutsideTheContractIsAnError) {
     const auto library = prism::gl::ModuleLibrary::fromStrings(
         {{"lib/gain.glsl", "// gain\nuniform float u_gian;\nfloat gain() { return u_gian; }\n"}}, kLibraryContract);
-    const ComposeStage stages[] = {
-        {cat::Stage::Vertex, {}, kVertexSource, "app/lib.vert"},
-        {cat::Stage::Fragment, {library.id("gain")}, "out vec4 fragColor;\nvoid main() { fragColor = vec4(gain()); }\n",
-         "app/lib.frag"}};
+    const ComposeStage stages[] = {{cat::Stage::Vertex, {}, kVertexSource, "app/lib.vert"},
+                                   {cat::Stage::Fragment,
+                                    {library.id("gain")},
+                                    "out vec4 fragColor;\nvoid main() { fragColor = vec4(gain()); }\n",
+                                    "app/lib.frag"}};
     try {
         prism::gl::composeProgram(library.catalog(), stages, "gain");
         FAIL() << "u_gian, which the runtime never provides, composed";
@@ -277,7 +284,8 @@ TEST_F(ComposeGl, ModuleLibraryUniformOutsideTheContractIsAnError) {
 
 TEST(ModuleLibrary, ErrorsNameTheFileAndLine) {
     try {
-        prism::gl::ModuleLibrary::fromStrings({{"lib/a.glsl", "// a\n\n#include \"missing.glsl\"\n"}}, kLibraryContract);
+        prism::gl::ModuleLibrary::fromStrings({{"lib/a.glsl", "// a\n\n#include \"missing.glsl\"\n"}},
+                                              kLibraryContract);
         FAIL() << "a missing include was accepted";
     } catch (const CompositionError& e) {
         EXPECT_NE(std::string(e.what()).find("lib/a.glsl:3:"), std::string::npos) << e.what();

@@ -152,7 +152,8 @@ TEST(ContextSwitching, TwoBackendsInOneProcessEachRenderAfterMakeCurrent) {
         ctx->makeCurrent();
         prism::gl::Framebuffer fb(4, 4);
         fb.clear({0.f, 1.f, 0.f, 1.f});
-        EXPECT_EQ(fb.readImage8().at(2, 2), (prism::image::Rgba8{0, 255, 0, 255})) << prism::gl::backendName(ctx->backend());
+        EXPECT_EQ(fb.readImage8().at(2, 2), (prism::image::Rgba8{0, 255, 0, 255}))
+            << prism::gl::backendName(ctx->backend());
     }
 }
 

@@ -55,8 +55,8 @@ TEST(DrawText, Metrics) {
 
 TEST(ContactSheet, LayoutAndLabels) {
     const std::vector<prism::image::Image8> images = {prism::image::Image8(10, 8, {255, 0, 0, 255}),
-                                               prism::image::Image8(10, 8, {0, 255, 0, 255}),
-                                               prism::image::Image8(10, 8, {0, 0, 255, 255})};
+                                                      prism::image::Image8(10, 8, {0, 255, 0, 255}),
+                                                      prism::image::Image8(10, 8, {0, 0, 255, 255})};
     const std::vector<std::string> labels = {"A", "B"};
     prism::image::ContactSheetStyle style;
     style.labelScale = 1;
@@ -77,7 +77,7 @@ TEST(ContactSheet, LayoutAndLabels) {
 
 TEST(ContactSheet, LongLabelIsShortenedToItsCell) {
     const std::vector<prism::image::Image8> images = {prism::image::Image8(20, 4, {255, 255, 255, 255}),
-                                               prism::image::Image8(20, 4, {255, 255, 255, 255})};
+                                                      prism::image::Image8(20, 4, {255, 255, 255, 255})};
     const std::vector<std::string> labels = {"A VERY LONG LABEL", "X"};
     const prism::image::Image8 sheet = prism::image::composeContactSheet(images, labels, 2);
     // Nothing of label 0 may spill into cell 1's column range (x >= 4 + 24).

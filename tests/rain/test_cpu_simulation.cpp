@@ -212,7 +212,8 @@ TEST(CpuRain, WindShearIsZeroAtEyeHeight) {
         total += histogram[static_cast<std::size_t>(b)];
     }
     EXPECT_LT(std::abs(weighted / total), 0.5) << "histogram centre of mass along the wind";
-    std::cout << "slab: " << inSlab << " drops, inner centroid (" << mean.x << ", " << mean.y << ") m, histogram centre " << weighted / total << " m\n";
+    std::cout << "slab: " << inSlab << " drops, inner centroid (" << mean.x << ", " << mean.y
+              << ") m, histogram centre " << weighted / total << " m\n";
 }
 
 // The cylinder's bottom reaches the ground: with the eye 9 m above terrain at 0 m (the

@@ -33,8 +33,7 @@ TEST(RainClassTable, EveryRowIsItsSourceInchesPerHourTimes2_54) {
     EXPECT_FLOAT_EQ(rainClassInfo(RainClass::Moderate).printedIntensity, 1.381f);
     EXPECT_NEAR(rainClassInfo(RainClass::Heavy).intensity, 1.524f, 1e-6f);
     // Moderate is no longer "almost heavy": heavy is 4x moderate, as 0.60 / 0.15.
-    EXPECT_NEAR(rainClassInfo(RainClass::Heavy).intensity / rainClassInfo(RainClass::Moderate).intensity, 4.0f,
-                1e-5f);
+    EXPECT_NEAR(rainClassInfo(RainClass::Heavy).intensity / rainClassInfo(RainClass::Moderate).intensity, 4.0f, 1e-5f);
 }
 
 // The thesis converts five rows correctly (to its printed precision) and misprints one.
@@ -53,9 +52,9 @@ TEST(RainClassTable, ThePrintedIntensityDiffersFromTheSourceOnlyForModerate) {
 // half the drops their intensity needs (the source's drop counts are per size class), so
 // they are checked to disagree, which keeps the row set of the first check honest.
 double intensityFromDropsCmPerHour(const RainClassInfo& c) {
-    const double d = c.dropDiameterMm * 1e-3;                           // m
-    const double volume = 3.14159265358979323846 / 6.0 * d * d * d;    // m^3 per drop
-    return c.dropsPerSquareMetreSecond * volume * 3600.0 * 100.0;       // m/s -> cm/h
+    const double d = c.dropDiameterMm * 1e-3;                        // m
+    const double volume = 3.14159265358979323846 / 6.0 * d * d * d;  // m^3 per drop
+    return c.dropsPerSquareMetreSecond * volume * 3600.0 * 100.0;    // m/s -> cm/h
 }
 
 TEST(RainClassTable, IntensityMatchesDropFluxTimesDropVolumeWhereTheColumnsAgree) {

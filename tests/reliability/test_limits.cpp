@@ -18,7 +18,9 @@
 
 namespace {
 
-std::string nested(int depth) { return std::string(static_cast<std::size_t>(depth), '[') + std::string(static_cast<std::size_t>(depth), ']'); }
+std::string nested(int depth) {
+    return std::string(static_cast<std::size_t>(depth), '[') + std::string(static_cast<std::size_t>(depth), ']');
+}
 
 std::string sceneError(const std::string& text) {
     try {
@@ -95,8 +97,9 @@ TEST(VariantLimit, SixtyFourBooleanAxesAreAnErrorNamingTheLimitAtOnce) {
 
 TEST(SceneBudgetLimits, ImageSide16384) {
     EXPECT_EQ(sceneError(R"({"image": {"width": 16384, "height": 16384}})"), "");
-    EXPECT_NE(sceneError(R"({"image": {"width": 16385}})").find("/image/width: expected a whole number from 1 to 16384"),
-              std::string::npos);
+    EXPECT_NE(
+        sceneError(R"({"image": {"width": 16385}})").find("/image/width: expected a whole number from 1 to 16384"),
+        std::string::npos);
 }
 
 TEST(SceneBudgetLimits, RainParticleBudget2To24) {

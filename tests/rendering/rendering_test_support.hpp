@@ -23,11 +23,11 @@ namespace prism::rendering_test {
 // One catalogue shader as the tests see it. `label` names it in test output and is the
 // directory of its golden images (tests/golden/<label>/).
 struct ShaderSpec {
-    std::string label;      // "phong-blinn"
-    std::string shader;     // "phong"
+    std::string label;              // "phong-blinn"
+    std::string shader;             // "phong"
     render::VariantValues variant;  // {{"BLINN", "1"}}
-    bool lit = true;        // false: unicolor writes the material colour
-    bool specular = true;   // false: flat and smooth are diffuse only
+    bool lit = true;                // false: unicolor writes the material colour
+    bool specular = true;           // false: flat and smooth are diffuse only
 };
 
 // unicolor, flat, smooth, gouraud, phong, phong-blinn.

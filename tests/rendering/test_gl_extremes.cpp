@@ -152,10 +152,11 @@ float brightestRedInColumns(const image::ImageF& image, int x0, int x1) {
 }
 
 // Every shader's image of `scene` is the same as of `reference` within kSameImage.
-void expectSameImages(const std::map<std::string, image::ImageF>& scene, const std::map<std::string, image::ImageF>& reference) {
+void expectSameImages(const std::map<std::string, image::ImageF>& scene,
+                      const std::map<std::string, image::ImageF>& reference) {
     for (const auto& [label, image] : scene) {
-        const image::ImageComparison cmp =
-            image::compareImages(image::toImage8(image), image::toImage8(reference.at(label)), kSameImage.maxChannelDiff);
+        const image::ImageComparison cmp = image::compareImages(
+            image::toImage8(image), image::toImage8(reference.at(label)), kSameImage.maxChannelDiff);
         EXPECT_TRUE(image::passes(cmp, kSameImage)) << label << ": " << image::describe(cmp, kSameImage);
     }
 }

@@ -213,7 +213,8 @@ class GoldenMutation : public test::GlTest {
     // against it (so a failing mutant is due to the mutation, not a stale golden).
     image::Image8 goldenThatPasses(const GoldenCase& c) {
         const image::Image8 golden = image::readPng(c.goldenPath());
-        const image::ImageComparison base = image::compareImages(renderGoldenCase(c), golden, kGoldenThresholds.maxChannelDiff);
+        const image::ImageComparison base =
+            image::compareImages(renderGoldenCase(c), golden, kGoldenThresholds.maxChannelDiff);
         EXPECT_TRUE(image::passes(base, kGoldenThresholds)) << "baseline " << image::describe(base, kGoldenThresholds);
         return golden;
     }
@@ -234,7 +235,8 @@ TEST_F(GoldenMutation, PhongShininess32RenderedAt40FailsAgainstGolden) {
     const image::Image8 golden = goldenThatPasses(original);
     GoldenCase mutant = original;
     mutant.shininess = 40.0f;
-    const image::ImageComparison cmp = image::compareImages(renderGoldenCase(mutant), golden, kGoldenThresholds.maxChannelDiff);
+    const image::ImageComparison cmp =
+        image::compareImages(renderGoldenCase(mutant), golden, kGoldenThresholds.maxChannelDiff);
     EXPECT_FALSE(reportMutant("phong sphere shininess 32 -> 40", cmp));
 }
 
@@ -243,7 +245,8 @@ TEST_F(GoldenMutation, PhongLightMovedFromUpperLeftToUpperRightFailsAgainstGolde
     const image::Image8 golden = goldenThatPasses(original);
     GoldenCase mutant = original;
     mutant.light = kLightUpperRight;
-    const image::ImageComparison cmp = image::compareImages(renderGoldenCase(mutant), golden, kGoldenThresholds.maxChannelDiff);
+    const image::ImageComparison cmp =
+        image::compareImages(renderGoldenCase(mutant), golden, kGoldenThresholds.maxChannelDiff);
     EXPECT_FALSE(reportMutant("phong sphere light upper-left -> upper-right", cmp));
 }
 
@@ -255,7 +258,8 @@ TEST_F(GoldenMutation, PhongLightTurnedByFiveDegreesFailsAgainstGolden) {
     GoldenCase mutant = original;
     mutant.light.direction = glm::vec3(glm::rotate(glm::mat4(1.0f), glm::radians(5.0f), glm::vec3(0, 1, 0)) *
                                        glm::vec4(original.light.direction, 0.0f));
-    const image::ImageComparison cmp = image::compareImages(renderGoldenCase(mutant), golden, kGoldenThresholds.maxChannelDiff);
+    const image::ImageComparison cmp =
+        image::compareImages(renderGoldenCase(mutant), golden, kGoldenThresholds.maxChannelDiff);
     EXPECT_FALSE(reportMutant("phong sphere key light turned 5 degrees", cmp));
 }
 
@@ -265,7 +269,8 @@ TEST_F(GoldenMutation, GouraudDiffersFromPhongGoldenBeyondThresholds) {
         const image::Image8 golden = goldenThatPasses(phong);
         GoldenCase gouraud = phong;
         gouraud.shaderLabel = "gouraud";
-        const image::ImageComparison cmp = image::compareImages(renderGoldenCase(gouraud), golden, kGoldenThresholds.maxChannelDiff);
+        const image::ImageComparison cmp =
+            image::compareImages(renderGoldenCase(gouraud), golden, kGoldenThresholds.maxChannelDiff);
         EXPECT_FALSE(reportMutant("gouraud instead of phong, " + phong.name(), cmp));
     }
 }
@@ -275,7 +280,8 @@ TEST_F(GoldenMutation, BlinnDiffersFromPhongGoldenBeyondThresholds) {
     const image::Image8 golden = goldenThatPasses(phong);
     GoldenCase blinn = phong;
     blinn.shaderLabel = "phong-blinn";
-    const image::ImageComparison cmp = image::compareImages(renderGoldenCase(blinn), golden, kGoldenThresholds.maxChannelDiff);
+    const image::ImageComparison cmp =
+        image::compareImages(renderGoldenCase(blinn), golden, kGoldenThresholds.maxChannelDiff);
     EXPECT_FALSE(reportMutant("phong BLINN=1 instead of BLINN=0, " + phong.name(), cmp));
 }
 

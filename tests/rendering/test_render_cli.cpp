@@ -177,7 +177,8 @@ TEST(PrismRenderCli, SuccessfulRenderWritesPngOfRequestedSize) {
     const image::Image8 image = image::readPng(out);
     EXPECT_EQ(image.width, 96);
     EXPECT_EQ(image.height, 64);
-    EXPECT_GT(coveredPixels(image, render::RenderJob{}.background), image.pixelCount() / 20) << "the image is (almost) blank";
+    EXPECT_GT(coveredPixels(image, render::RenderJob{}.background), image.pixelCount() / 20)
+        << "the image is (almost) blank";
 }
 
 TEST(PrismRenderCli, CheckFiniteWithOutWritesPng) {
@@ -211,7 +212,8 @@ TEST(PrismRenderCliStochastic, SamplerFlagOverridesTheSceneAndMatchesItsGolden) 
     const fs::path dir = testDir();
     for (const char* sampler : {"white", "bluenoise", "sorted"}) {
         const fs::path out = dir / (std::string(sampler) + ".png");
-        const auto r = runPrismRender({"--scene", kSoftShadows, "--sampler", sampler, "--spp", "1", "--out", out.string()}, dir);
+        const auto r =
+            runPrismRender({"--scene", kSoftShadows, "--sampler", sampler, "--spp", "1", "--out", out.string()}, dir);
         ASSERT_EQ(r.exitCode, 0) << r.err;
         EXPECT_NE(r.out.find(std::string(sampler) + ", 1 spp, frame 0"), std::string::npos) << r.out;
         const image::Image8 image = image::readPng(out);
@@ -266,7 +268,7 @@ struct StochasticUsage {
     std::vector<std::string> args;  // after --out
     std::string expected;           // in stderr
     std::string testName;
-    bool scene = true;              // with --scene soft_shadows.json (else one_light.json)
+    bool scene = true;  // with --scene soft_shadows.json (else one_light.json)
 };
 
 class PrismRenderCliStochasticUsage : public ::testing::TestWithParam<StochasticUsage> {};
@@ -312,9 +314,9 @@ TEST(PrismRenderCliSceneFlags, SizeOverridesTheScenesImageSize) {
     const fs::path dir = testDir();
     for (const std::string scene : {"one_light", "soft_shadows"}) {
         const fs::path out = dir / (scene + ".png");
-        const auto r = runPrismRender(
-            {"--scene", std::string(PRISM_SCENES_DIR) + "/" + scene + ".json", "--size", "80x48", "--out", out.string()},
-            dir);
+        const auto r = runPrismRender({"--scene", std::string(PRISM_SCENES_DIR) + "/" + scene + ".json", "--size",
+                                       "80x48", "--out", out.string()},
+                                      dir);
         ASSERT_EQ(r.exitCode, 0) << scene << ": " << r.err;
         const image::Image8 image = image::readPng(out);
         EXPECT_EQ(image.width, 80) << scene;
@@ -356,9 +358,9 @@ TEST(PrismRenderCliSceneFlags, FlagsTheSceneWouldIgnoreAreUsageErrors) {
 TEST(PrismRenderCli, SubdivForAMeshWithoutLevelsIsAUsageError) {
     for (const std::string mesh : {"cube", "trefoil"}) {
         const fs::path dir = testDir();
-        const auto r = runPrismRender(
-            {"--shader", "phong", "--mesh", mesh, "--subdiv", "2", "--size", "32x32", "--out", (dir / "out.png").string()},
-            dir);
+        const auto r = runPrismRender({"--shader", "phong", "--mesh", mesh, "--subdiv", "2", "--size", "32x32", "--out",
+                                       (dir / "out.png").string()},
+                                      dir);
         EXPECT_EQ(r.exitCode, kExitBadInput) << mesh << ": " << r.err;
         EXPECT_NE(r.err.find("--subdiv: mesh " + mesh + " has no subdivision levels"), std::string::npos) << r.err;
         EXPECT_TRUE(imagesIn(dir).empty());

@@ -5,8 +5,15 @@
 #include <GL/osmesa.h>
 #include <stdlib.h>
 int main(void) {
-    const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                           OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
+    const int attribs[] = {OSMESA_FORMAT,
+                           OSMESA_RGBA,
+                           OSMESA_PROFILE,
+                           OSMESA_CORE_PROFILE,
+                           OSMESA_CONTEXT_MAJOR_VERSION,
+                           3,
+                           OSMESA_CONTEXT_MINOR_VERSION,
+                           3,
+                           0};
     OSMesaContext c = OSMesaCreateContextAttribs(attribs, NULL);
     unsigned char* buf = calloc(64 * 64, 4);
     OSMesaMakeCurrent(c, buf, GL_UNSIGNED_BYTE, 64, 64);

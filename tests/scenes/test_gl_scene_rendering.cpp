@@ -235,8 +235,10 @@ TEST_F(SceneRendering, RainReachesTheTerrainInTheWaterScene) {
         if (gx < 0.0f || gz < 0.0f || gx > static_cast<float>(t.width - 1) || gz > static_cast<float>(t.height - 1))
             continue;
         const float ground = t.at(static_cast<int>(gx + 0.5f), static_cast<int>(gz + 0.5f));
-        if (q.position.y < ground) ++belowTerrain;
-        else if (q.position.y < ground + 0.5f) ++onTerrain;
+        if (q.position.y < ground)
+            ++belowTerrain;
+        else if (q.position.y < ground + 0.5f)
+            ++onTerrain;
     }
     EXPECT_GT(onTerrain, 100) << "drops within 0.5 m above the terrain";
     EXPECT_GT(belowTerrain, 0) << "the cylinder reaches the lowest ground, so some drops pass under higher ground";
@@ -263,9 +265,9 @@ TEST_F(SceneRendering, DiffractionObjectBuildsOnlyItsPathsTables) {
     EXPECT_EQ(renderer.diffractionProgramsBuilt(), 1u);
     EXPECT_EQ(renderer.programs().size(), 0u) << "no classic program for a diffraction-only scene";
     ASSERT_EQ(renderer.lastFrame().variants.size(), 1u);
-    EXPECT_EQ(
-        renderer.lastFrame().variants[0].rfind("diffraction FOG=0,DIRECTIONAL_LIGHTS=1,POINT_LIGHTS=0,DIFFRACTION_PATH=1", 0),
-        0u)
+    EXPECT_EQ(renderer.lastFrame().variants[0].rfind(
+                  "diffraction FOG=0,DIRECTIONAL_LIGHTS=1,POINT_LIGHTS=0,DIFFRACTION_PATH=1", 0),
+              0u)
         << renderer.lastFrame().variants[0];
     EXPECT_EQ(renderer.lastFrame().diffractionTableBytes, std::size_t{9} * 64 * 64 * 3 * sizeof(float));
     m.path = 'a';
@@ -455,9 +457,11 @@ TEST_F(StochasticScene, AccumulatedFramesConvergeTowardsTheReference) {
         st.sampler = *prism::scene::parseStochasticSampler(sampler);
         st.frame = 0;
         st.frames = 1;
-        const auto one = prism::bluenoise::compareToReference(prism::scene::renderStochasticValues(st, w, h), reference);
+        const auto one =
+            prism::bluenoise::compareToReference(prism::scene::renderStochasticValues(st, w, h), reference);
         st.frames = 16;
-        const auto many = prism::bluenoise::compareToReference(prism::scene::renderStochasticValues(st, w, h), reference);
+        const auto many =
+            prism::bluenoise::compareToReference(prism::scene::renderStochasticValues(st, w, h), reference);
         EXPECT_LT(many.rms, 0.6 * one.rms) << sampler;
         if (st.sampler == prism::bluenoise::SamplerKind::White) blurred[0] = one.blurredRms;
         if (st.sampler == prism::bluenoise::SamplerKind::BlueNoise) blurred[1] = one.blurredRms;

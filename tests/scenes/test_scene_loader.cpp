@@ -249,10 +249,12 @@ TEST(SceneLoader, StochasticErrorsNameTheJsonPath) {
     EXPECT_NE(errorOf(R"({"stochastic": {"spheres": [{"center": [0, 0, 5], "radius": 0.2}]}})")
                   .find("/stochastic/spheres/0/center/2"),
               std::string::npos);
-    EXPECT_NE(errorOf(R"({"stochastic": {"light": {"heigth": 2}}})").find("/stochastic/light/heigth: expected no such key"),
-              std::string::npos);
+    EXPECT_NE(
+        errorOf(R"({"stochastic": {"light": {"heigth": 2}}})").find("/stochastic/light/heigth: expected no such key"),
+        std::string::npos);
     EXPECT_NE(errorOf(R"({"stochastic": {"effect": "ao"}})").find("/stochastic/effect"), std::string::npos);
-    EXPECT_NE(errorOf(R"({"stochastic": {"block": 5}})").find("/stochastic/block: expected 4, 8 or 16"), std::string::npos);
+    EXPECT_NE(errorOf(R"({"stochastic": {"block": 5}})").find("/stochastic/block: expected 4, 8 or 16"),
+              std::string::npos);
     EXPECT_NE(errorOf(R"({"stochastic": {"mask": {"size": 0}}})").find("/stochastic/mask/size"), std::string::npos);
     EXPECT_NE(errorOf(R"({"stochastic": 3})").find("/stochastic: expected an object"), std::string::npos);
 }
@@ -263,6 +265,7 @@ TEST(SceneLoader, NumberPastFloatRangeIsAnError) {
     EXPECT_NE(errorOf(R"({"camera": {"eye": [0, 1, 4e94]}})").find("scene.json: /camera/eye/2: expected a number in"),
               std::string::npos)
         << errorOf(R"({"camera": {"eye": [0, 1, 4e94]}})");
-    EXPECT_NE(errorOf(R"({"objects": [{"mesh": "sphere", "scale": -1e39}]})").find("/objects/0/scale"), std::string::npos);
+    EXPECT_NE(errorOf(R"({"objects": [{"mesh": "sphere", "scale": -1e39}]})").find("/objects/0/scale"),
+              std::string::npos);
     EXPECT_NO_THROW(prism::scene::parseScene(R"({"camera": {"eye": [0, 1, 3e38]}})", "scene.json"));
 }

@@ -105,8 +105,9 @@ TEST(CliHonesty, CheckWithEmitGlslEmitsAndChecks) {
 TEST(CliHonesty, EachWarningIsPrintedOnce) {
     ScratchDir dir("cli-warn-once");
     dir.write("m/nocomment.glsl", "vec3 f() { return vec3(1.0); }\n");
-    dir.write("m/broken.glsl", "// Provides: g(), which includes a file that is not there.\n"
-                               "#include \"not_there.glsl\"\nvec3 g() { return vec3(1.0); }\n");
+    dir.write("m/broken.glsl",
+              "// Provides: g(), which includes a file that is not there.\n"
+              "#include \"not_there.glsl\"\nvec3 g() { return vec3(1.0); }\n");
     for (std::string s : {"a", "b"}) {
         dir.write("s/" + s + ".vert", "#version 330 core\nvoid main() { gl_Position = vec4(0.0); }\n");
         dir.write("s/" + s + ".frag", "#version 330 core\n#pragma prism variant FOG\n#include \"" +
@@ -118,7 +119,8 @@ TEST(CliHonesty, EachWarningIsPrintedOnce) {
     EXPECT_EQ(occurrences(good.output, "module has no leading comment"), 1u) << good.output;
 
     dir.write("s/c.vert", "#version 330 core\nvoid main() { gl_Position = vec4(0.0); }\n");
-    dir.write("s/c.frag", "#version 330 core\n#include \"broken.glsl\"\nout vec4 o;\nvoid main() { o = vec4(g(), 1.0); }\n");
+    dir.write("s/c.frag",
+              "#version 330 core\n#include \"broken.glsl\"\nout vec4 o;\nvoid main() { o = vec4(g(), 1.0); }\n");
     auto bad = runShaderc("--check -I m s", dir.str());
     EXPECT_EQ(bad.exitCode, 1) << bad.output;
     EXPECT_EQ(occurrences(bad.output, "module has no leading comment"), 1u) << bad.output;

@@ -130,7 +130,8 @@ TEST(Contract, UniformOfWrongType) {
 // an empty type string skipped the GLSL type check, and names were never checked.
 TEST(Contract, EmptyTypeAndNonIdentifierNamesAreErrors) {
     MemoryReader files{{"c.json", R"({"attributes": [{"name": "a_x", "type": "", "location": 0}],
-                                      "uniforms": [{"name": "u_a:b", "type": "float"}, {"name": "", "type": "vec3"}]})"}};
+                                      "uniforms": [{"name": "u_a:b", "type": "float"},
+                                                   {"name": "", "type": "vec3"}]})"}};
     auto r = loadContracts({"c.json"}, files);
     std::string all;
     for (const auto& d : r.diagnostics) all += formatDiagnostic(d, ErrorFormat::Gcc);
@@ -149,7 +150,8 @@ TEST(Contract, LocationPastIntRangeIsAnError) {
     for (const auto& d : r.diagnostics) all += formatDiagnostic(d, ErrorFormat::Gcc);
     EXPECT_NE(all.find("/attributes/0/location: expected a non-negative integer up to 2147483647"), std::string::npos)
         << all;
-    EXPECT_NE(all.find("/uniforms/0/array: expected a non-negative integer up to 2147483647"), std::string::npos) << all;
+    EXPECT_NE(all.find("/uniforms/0/array: expected a non-negative integer up to 2147483647"), std::string::npos)
+        << all;
 }
 
 // Issue 22, item 4: names far from every contract name are the shader's own. A lygia-style

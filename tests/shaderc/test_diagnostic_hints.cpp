@@ -20,8 +20,8 @@ void writeShader(const ScratchDir& dir, const std::string& fragmentBody) {
               "vec3 tint(vec3 c) { return c * 0.5; }\n"
               "float lightng(float x) { return x; }\n");
     dir.write("s/a.vert", "#version 330 core\nvoid main() { gl_Position = vec4(0.0); }\n");
-    dir.write("s/a.frag", "#version 330 core\n#include \"util.glsl\"\nout vec4 o;\nvoid main() {\n" + fragmentBody +
-                              "}\n");
+    dir.write("s/a.frag",
+              "#version 330 core\n#include \"util.glsl\"\nout vec4 o;\nvoid main() {\n" + fragmentBody + "}\n");
 }
 
 }  // namespace
@@ -68,8 +68,9 @@ TEST(DiagnosticHints, DidYouMeanForAMissingInclude) {
     ScratchDir dir("diag-include");
     writeShader(dir, "    o = vec4(1.0);\n");
     dir.write("m/color/space.glsl", "// Provides: nothing much.\n");
-    dir.write("s/a.frag", "#version 330 core\n#include \"utl.glsl\"\n#include <color/spce.glsl>\nout vec4 o;\n"
-                          "void main() { o = vec4(1.0); }\n");
+    dir.write("s/a.frag",
+              "#version 330 core\n#include \"utl.glsl\"\n#include <color/spce.glsl>\nout vec4 o;\n"
+              "void main() { o = vec4(1.0); }\n");
     auto run = runShaderc("--check -I m s", dir.str());
     EXPECT_EQ(run.exitCode, 1);
     EXPECT_NE(run.output.find("s/a.frag:2:10: error: cannot find include \"utl.glsl\" (did you mean \"util.glsl\"?)"),
@@ -86,6 +87,6 @@ TEST(DiagnosticHints, FunctionNamesAndClosestName) {
         "    return sqrt(x);\n}\nvoid main() {\n    if (x) foo();\n}\n/* float hidden(\n*/\n");
     EXPECT_EQ(names, (std::vector<std::string>{"lightng", "main", "tint"}));
     EXPECT_EQ(prism::shaderc::closestName("tnt", {"tint", "main"}), "tint");
-    EXPECT_EQ(prism::shaderc::closestName("abc", {"xyz"}), "");  // too far
+    EXPECT_EQ(prism::shaderc::closestName("abc", {"xyz"}), "");    // too far
     EXPECT_EQ(prism::shaderc::closestName("tint", {"tint"}), "");  // never the name itself
 }

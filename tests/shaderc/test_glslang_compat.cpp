@@ -72,7 +72,8 @@ std::string glslangFlags(const CompatCase& c, bool withDefines) {
 // Runs both sides of one case and compares them; returns glslang's active code.
 std::string expectSameAsGlslang(const CompatCase& c) {
     SCOPED_TRACE(c.name);
-    const auto original = prism::test::runShell("glslangValidator -E" + glslangFlags(c, true) + " " + quoted(c.stage.string()));
+    const auto original =
+        prism::test::runShell("glslangValidator -E" + glslangFlags(c, true) + " " + quoted(c.stage.string()));
     EXPECT_EQ(original.exitCode, 0) << "glslang rejects the fixture itself:\n" << original.output;
 
     ResolveOptions options;
@@ -110,7 +111,8 @@ CompatCase fixture(const std::string& name, const std::string& stage, std::vecto
 
 TEST(GlslangCompat, GlslangValidatorIsInstalled) {
     // Not a skip: without the reference compiler these tests would prove nothing.
-    ASSERT_EQ(prism::test::runShell("glslangValidator --version").exitCode, 0) << "install glslang-tools (scripts/setup.sh)";
+    ASSERT_EQ(prism::test::runShell("glslangValidator --version").exitCode, 0)
+        << "install glslang-tools (scripts/setup.sh)";
 }
 
 TEST(GlslangCompat, RelativeIncludesGuardsAndDefaults) {
@@ -147,8 +149,8 @@ TEST(GlslangCompat, FunctionLikeMacros32BitArithmeticPredefinedMacrosAndComments
 TEST(GlslangCompat, UnusedBrokenModuleDoesNotMatter) {
     expectSameAsGlslang(fixture("unused", "unused_broken/shaders/main.frag", {"unused_broken/modules"}));
     // The module really is broken, as glslang sees it.
-    const auto broken =
-        prism::test::runShell("glslangValidator -E " + quoted((kCompat / "unused_broken/modules/broken.glsl").string()));
+    const auto broken = prism::test::runShell("glslangValidator -E " +
+                                              quoted((kCompat / "unused_broken/modules/broken.glsl").string()));
     EXPECT_NE(broken.exitCode, 0) << broken.output;
 }
 

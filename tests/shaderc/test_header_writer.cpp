@@ -97,8 +97,9 @@ std::size_t occurrences(const std::string& text, const std::string& what) {
 // Item 2 of issue 10: a module body used by several variants and by the module table is
 // stored once; the header holds no GLSL at all.
 TEST(DataWriter, ModuleTextIsStoredOnce) {
-    const std::string body = "// Provides: shade(), a distinctive module body of some length.\n"
-                             "vec3 shade(vec3 c) { return c * 0.5; }\n";
+    const std::string body =
+        "// Provides: shade(), a distinctive module body of some length.\n"
+        "vec3 shade(vec3 c) { return c * 0.5; }\n";
     auto c = twoVariantCatalogue(body);
     const auto data = writeData(c, "x.hpp", "h");
     EXPECT_EQ(occurrences(data, "vec3 shade(vec3 c)"), 1u) << data;

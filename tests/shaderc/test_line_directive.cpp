@@ -70,7 +70,8 @@ TEST(LineDirective, GlslEs300StageThroughTheTool) {
               "    float y = x;\n"
               "    return y * SCALE;\n"
               "}\n");
-    dir.write("s/es.vert", "#version 300 es\nin vec3 a_position;\nvoid main() { gl_Position = vec4(a_position, 1.0); }\n");
+    dir.write("s/es.vert",
+              "#version 300 es\nin vec3 a_position;\nvoid main() { gl_Position = vec4(a_position, 1.0); }\n");
     dir.write("s/es.frag",
               "#version 300 es\nprecision mediump float;\n#define SCALE 2.0\n#include \"shade.glsl\"\n"
               "out vec4 o;\nvoid main() { o = vec4(shade(0.5)); }\n");

@@ -76,9 +76,10 @@ TEST(PreprocessorLimits, DoublingMacroChainInCode) {
 // they are checked again once it is (and blanked before glslang reaches them).
 TEST(PreprocessorLimits, DoublingMacroChainDefinedInAnInclude) {
     const auto start = std::chrono::steady_clock::now();
-    MemoryReader reader{{"main.frag", "#version 330 core\n#include \"mid.glsl\"\nfloat y = float(M22);\nvoid main() {}\n"},
-                        {"mid.glsl", "#include \"chain.glsl\"\nfloat x = float(M22);\n"},
-                        {"chain.glsl", doublingChain(22)}};
+    MemoryReader reader{
+        {"main.frag", "#version 330 core\n#include \"mid.glsl\"\nfloat y = float(M22);\nvoid main() {}\n"},
+        {"mid.glsl", "#include \"chain.glsl\"\nfloat x = float(M22);\n"},
+        {"chain.glsl", doublingChain(22)}};
     const auto result = resolveStage("main.frag", {}, reader);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     EXPECT_FALSE(result.ok);

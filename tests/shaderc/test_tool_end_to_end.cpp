@@ -312,7 +312,8 @@ TEST(GoldenHeader, TwoCheckoutsGiveByteIdenticalHeaders) {
         std::vector<fs::path> glsl;
         for (const auto& e : fs::directory_iterator(roots[i] + "/glsl")) glsl.push_back(e.path().filename());
         std::sort(glsl.begin(), glsl.end());
-        for (const auto& f : glsl) outputs[i] += "\n==== " + f.string() + "\n" + readFile(roots[i] + "/glsl/" + f.string());
+        for (const auto& f : glsl)
+            outputs[i] += "\n==== " + f.string() + "\n" + readFile(roots[i] + "/glsl/" + f.string());
         EXPECT_GT(glsl.size(), 100u);
         EXPECT_EQ(outputs[i].find(roots[i]), std::string::npos) << "an absolute path is embedded";
     }

@@ -22,7 +22,8 @@ namespace {
 
 // "validated V of N programs (S shared a token stream, C from the cache)" -> {V, N, S, C}.
 std::array<int, 4> statsOf(const std::string& output) {
-    static const std::regex line(R"(validated (\d+) of (\d+) programs \((\d+) shared a token stream, (\d+) from the cache;)");
+    static const std::regex line(
+        R"(validated (\d+) of (\d+) programs \((\d+) shared a token stream, (\d+) from the cache;)");
     std::smatch m;
     if (!std::regex_search(output, m, line)) return {-1, -1, -1, -1};
     return {std::stoi(m[1]), std::stoi(m[2]), std::stoi(m[3]), std::stoi(m[4])};
@@ -35,8 +36,8 @@ void writeTwoShaders(const ScratchDir& dir) {
     for (std::string s : {"a", "b"}) {
         dir.write("s/" + s + ".vert", "#version 330 core\nvoid main() { gl_Position = vec4(0.0); }\n");
         dir.write("s/" + s + ".frag", "#version 330 core\n#include \"" + std::string(s == "a" ? "one" : "two") +
-                                          ".glsl\"\nout vec4 o;\nvoid main() { o = vec4(" +
-                                          (s == "a" ? "one" : "two") + "()); }\n");
+                                          ".glsl\"\nout vec4 o;\nvoid main() { o = vec4(" + (s == "a" ? "one" : "two") +
+                                          "()); }\n");
     }
 }
 
@@ -55,13 +56,15 @@ TEST(ValidationSchedule, SameTokenStreamIsValidatedOnce) {
     ScratchDir dir("sched-dedupe");
     // UNUSED is an axis no line tests: both variants are one token stream.
     dir.write("s/a.vert", "#version 330 core\nvoid main() { gl_Position = vec4(0.0); }\n");
-    dir.write("s/a.frag", "#version 330 core\n#pragma prism variant UNUSED\nout vec4 o;\nvoid main() { o = vec4(1.0); }\n");
+    dir.write("s/a.frag",
+              "#version 330 core\n#pragma prism variant UNUSED\nout vec4 o;\nvoid main() { o = vec4(1.0); }\n");
     auto run = runShaderc("--check --revalidate --stats s", dir.str());
     ASSERT_EQ(run.exitCode, 0) << run.output;
     EXPECT_EQ(statsOf(run.output), (std::array<int, 4>{1, 2, 1, 0})) << run.output;
     // An axis a line tests makes two token streams.
-    dir.write("s/a.frag", "#version 330 core\n#pragma prism variant USED\nout vec4 o;\n"
-                          "void main() { o = vec4(USED == 1 ? 1.0 : 0.5); }\n");
+    dir.write("s/a.frag",
+              "#version 330 core\n#pragma prism variant USED\nout vec4 o;\n"
+              "void main() { o = vec4(USED == 1 ? 1.0 : 0.5); }\n");
     auto used = runShaderc("--check --revalidate --stats s", dir.str());
     ASSERT_EQ(used.exitCode, 0) << used.output;
     EXPECT_EQ(statsOf(used.output), (std::array<int, 4>{2, 2, 0, 0})) << used.output;
@@ -133,7 +136,8 @@ TEST(ValidationSchedule, DefaultCacheLivesNextToTheStampNeverInTheWorkingDirecto
     auto restamped = runShaderc("--check --revalidate --stats --stamp build/shaders.stamp -I m s", dir.str());
     EXPECT_EQ(statsOf(restamped.output)[3], 2) << restamped.output;
 
-    auto off = runShaderc("--check --revalidate --stats --cache-dir none --stamp other/shaders.stamp -I m s", dir.str());
+    auto off =
+        runShaderc("--check --revalidate --stats --cache-dir none --stamp other/shaders.stamp -I m s", dir.str());
     ASSERT_EQ(off.exitCode, 0) << off.output;
     EXPECT_FALSE(fs::exists(dir.path() / "other/prism-shaderc-cache"));
 }
@@ -143,16 +147,16 @@ TEST(ValidationSchedule, ConcurrentWritersAndTornEntriesLeaveAValidCache) {
     writeTwoShaders(dir);
     for (int shader = 0; shader < 6; ++shader)  // more programs to race on
         for (std::string stage : {"vert", "frag"})
-            dir.write("s/c" + std::to_string(shader) + "." + stage,
-                      stage == "vert" ? "#version 330 core\nvoid main() { gl_Position = vec4(" +
-                                            std::to_string(shader) + ".0); }\n"
-                                      : "#version 330 core\nout vec4 o;\nvoid main() { o = vec4(" +
-                                            std::to_string(shader) + ".0); }\n");
+            dir.write(
+                "s/c" + std::to_string(shader) + "." + stage,
+                stage == "vert"
+                    ? "#version 330 core\nvoid main() { gl_Position = vec4(" + std::to_string(shader) + ".0); }\n"
+                    : "#version 330 core\nout vec4 o;\nvoid main() { o = vec4(" + std::to_string(shader) + ".0); }\n");
     const std::string exe = PRISM_SHADERC_EXE;
     std::string parallel = "cd '" + dir.str() + "' && (";
     for (int i = 0; i < 4; ++i)
-        parallel += "'" + exe + "' --check --revalidate --stats -j 2 --cache-dir build/cache -I m s > run" + std::to_string(i) +
-                    ".log 2>&1 & ";
+        parallel += "'" + exe + "' --check --revalidate --stats -j 2 --cache-dir build/cache -I m s > run" +
+                    std::to_string(i) + ".log 2>&1 & ";
     parallel += "wait)";
     ASSERT_EQ(std::system(parallel.c_str()), 0);
     for (int i = 0; i < 4; ++i) {

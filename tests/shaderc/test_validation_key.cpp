@@ -27,11 +27,13 @@ std::string keyOf(const std::string& body, const std::string& file, const Define
     return validationKey(stageOf(body, defines), defines, reader);
 }
 
-const std::string kFile = "#pragma prism variant UNUSED\n// UNUSED in a comment\nout vec4 o;\nvoid main() { o = vec4(FOG); }\n";
+const std::string kFile =
+    "#pragma prism variant UNUSED\n// UNUSED in a comment\nout vec4 o;\nvoid main() { o = vec4(FOG); }\n";
 const std::string kBody = "#line 1 0\n\n\nout vec4 o;\nvoid main() { o = vec4(FOG); }\n";
 
 TEST(ValidationKey, CommentsLayoutAndLineMarkersDoNotCount) {
-    const std::string moved = "#line 7 0\n// a comment\n  out  vec4   o;\n\n#line 12 0\nvoid main() { o = vec4(FOG); /* x */ }\n";
+    const std::string moved =
+        "#line 7 0\n// a comment\n  out  vec4   o;\n\n#line 12 0\nvoid main() { o = vec4(FOG); /* x */ }\n";
     EXPECT_EQ(keyOf(kBody, kFile), keyOf(moved, kFile));
 }
 
@@ -61,7 +63,8 @@ TEST(ValidationKey, LineMacroMakesLayoutCount) {
 // Only the flattener's own markers (`#line N` or `#line N S`) are left out: a malformed
 // #line is an error glslang must see.
 TEST(ValidationKey, OtherLineDirectivesCount) {
-    EXPECT_NE(keyOf(kBody, kFile), keyOf("#line 1 0\n#line oops\n\nout vec4 o;\nvoid main() { o = vec4(FOG); }\n", kFile));
+    EXPECT_NE(keyOf(kBody, kFile),
+              keyOf("#line 1 0\n#line oops\n\nout vec4 o;\nvoid main() { o = vec4(FOG); }\n", kFile));
     EXPECT_NE(keyOf(kBody, kFile), keyOf("#line 1 0 3\n\n\nout vec4 o;\nvoid main() { o = vec4(FOG); }\n", kFile));
 }
 

@@ -51,8 +51,9 @@ TEST(VariantSharing, AMacroMetOnlyUnderAnotherAxisStillCounts) {
     // B is declared in the vertex stage; in the fragment stage it is met only inside
     // a_on.glsl, which only A=1 includes.
     dir.write("s/a.vert", "#version 330 core\n#pragma prism variant B\nvoid main() { gl_Position = vec4(0.0); }\n");
-    dir.write("s/a.frag", "#version 330 core\n#pragma prism variant A\n#if A\n#include \"a_on.glsl\"\n#endif\n"
-                          "out vec4 o;\nvoid main() { o = vec4(1.0); }\n");
+    dir.write("s/a.frag",
+              "#version 330 core\n#pragma prism variant A\n#if A\n#include \"a_on.glsl\"\n#endif\n"
+              "out vec4 o;\nvoid main() { o = vec4(1.0); }\n");
     dir.write("s/a_on.glsl", "// Provides: the A part.\n#if B\n#include \"b_on.glsl\"\n#endif\n");
     dir.write("s/b_on.glsl", "// Provides: the B part.\nfloat bPart() { return 2.0; }\n");
     auto run = runShaderc("--check --emit-glsl out --cache-dir none s", dir.str());
@@ -79,9 +80,11 @@ TEST(VariantSharing, AMacroMetOnlyUnderAnotherAxisStillCounts) {
 // the two variants must not share one).
 TEST(VariantSharing, TokenPastingDisablesSharing) {
     ScratchDir dir("variant-sharing-paste");
-    dir.write("s/a.vert", "#version 330 core\n#pragma prism variant MYAXIS\nvoid main() { gl_Position = vec4(0.0); }\n");
-    dir.write("s/a.frag", "#version 330 core\n#define CAT(x, y) x##y\nout vec4 o;\n"
-                          "void main() { o = vec4(float(CAT(MY, AXIS))); }\n");
+    dir.write("s/a.vert",
+              "#version 330 core\n#pragma prism variant MYAXIS\nvoid main() { gl_Position = vec4(0.0); }\n");
+    dir.write("s/a.frag",
+              "#version 330 core\n#define CAT(x, y) x##y\nout vec4 o;\n"
+              "void main() { o = vec4(float(CAT(MY, AXIS))); }\n");
     auto run = runShaderc("--check --stats --emit-glsl out --cache-dir none s", dir.str());
     ASSERT_EQ(run.exitCode, 0) << run.output;
     EXPECT_NE(run.output.find("validated 2 of 2 programs (0 shared a token stream"), std::string::npos) << run.output;
@@ -94,18 +97,22 @@ TEST(VariantSharing, TokenPastingDisablesSharing) {
 // byte-identical, with fewer glslang runs.
 TEST(VariantSharing, RoundaboutStructuresMatchEveryVariantsOwnRun) {
     ScratchDir dir("variant-sharing-roundabout");
-    dir.write("s/a.vert", "#version 330 core\n#pragma prism variant K ONE TWO\n#include \"m/values.glsl\"\n"
-                          "void main() { gl_Position = vec4(float(K)); }\n");
-    dir.write("s/a.frag", "#version 330 core\n#pragma prism variant Q 0 1 2\n#pragma prism variant CODE\n"
-                          "#pragma prism variant D\n#include \"m/chain.glsl\"\n#include \"m/guarded.glsl\"\n"
-                          "out vec4 o;\nvoid main() { o = vec4(chain() + guarded() + float(CODE)); }\n");
+    dir.write("s/a.vert",
+              "#version 330 core\n#pragma prism variant K ONE TWO\n#include \"m/values.glsl\"\n"
+              "void main() { gl_Position = vec4(float(K)); }\n");
+    dir.write("s/a.frag",
+              "#version 330 core\n#pragma prism variant Q 0 1 2\n#pragma prism variant CODE\n"
+              "#pragma prism variant D\n#include \"m/chain.glsl\"\n#include \"m/guarded.glsl\"\n"
+              "out vec4 o;\nvoid main() { o = vec4(chain() + guarded() + float(CODE)); }\n");
     dir.write("s/m/values.glsl", "// Provides: the values of K.\n#define ONE 1\n#define TWO 2\n");
-    dir.write("s/m/chain.glsl", "// Provides: chain().\n#if Q == 1\n#define USE_X\n#endif\n#ifdef USE_X\n"
-                                "#include \"x.glsl\"\n#else\nfloat chain() { return 0.0; }\n#endif\n");
+    dir.write("s/m/chain.glsl",
+              "// Provides: chain().\n#if Q == 1\n#define USE_X\n#endif\n#ifdef USE_X\n"
+              "#include \"x.glsl\"\n#else\nfloat chain() { return 0.0; }\n#endif\n");
     dir.write("s/m/x.glsl", "// Provides: the X chain.\nfloat chain() { return 1.0; }\n");
-    dir.write("s/m/guarded.glsl", "// Provides: guarded().\n#ifndef GUARDED\n#define GUARDED\n#if D\n"
-                                  "#include \"d.glsl\"\n#endif\nfloat guarded() {\n#if D\n  return d();\n#else\n"
-                                  "  return 0.0;\n#endif\n}\n#endif\n");
+    dir.write("s/m/guarded.glsl",
+              "// Provides: guarded().\n#ifndef GUARDED\n#define GUARDED\n#if D\n"
+              "#include \"d.glsl\"\n#endif\nfloat guarded() {\n#if D\n  return d();\n#else\n"
+              "  return 0.0;\n#endif\n}\n#endif\n");
     dir.write("s/m/d.glsl", "// Provides: d().\nfloat d() { return 2.0; }\n");
     const std::string args = "--check --stats --cache-dir none s --emit-glsl ";
     auto shared = runShaderc(args + "shared", dir.str());
@@ -136,14 +143,16 @@ TEST(VariantSharing, AnAxisValueNamingAMacroIsCheckedInItsOwnRun) {
         chain += "#define M" + std::to_string(i) + " M" + std::to_string(i - 1) + " + M" + std::to_string(i - 1) + "\n";
     chain += "#define SMALL 1\n#define HUGE M22\n";
     dir.write("s/m/values.glsl", chain);
-    dir.write("s/a.vert", "#version 330 core\n#pragma prism variant E SMALL HUGE\n#include \"m/values.glsl\"\n"
-                          "void main() { gl_Position = vec4(float(E)); }\n");
+    dir.write("s/a.vert",
+              "#version 330 core\n#pragma prism variant E SMALL HUGE\n#include \"m/values.glsl\"\n"
+              "void main() { gl_Position = vec4(float(E)); }\n");
     dir.write("s/a.frag", "#version 330 core\nout vec4 o;\nvoid main() { o = vec4(1.0); }\n");
     for (const bool share : {true, false}) {
         const std::string sharing = share ? "" : "--no-variant-sharing ";
         auto run = runShaderc(sharing + "--check --cache-dir none s", dir.str());
         EXPECT_EQ(run.exitCode, 1) << "sharing " << share << ":\n" << run.output;
         EXPECT_NE(run.output.find("expand to more than 1,000,000 tokens"), std::string::npos)
-            << "sharing " << share << ":\n" << run.output;
+            << "sharing " << share << ":\n"
+            << run.output;
     }
 }

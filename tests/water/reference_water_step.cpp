@@ -72,7 +72,8 @@ inline float edgeVelocity(const StepConstants& k, float q0, float sa, float sb, 
 
 }  // namespace
 
-ReferenceWaterSimulation::ReferenceWaterSimulation(HeightField terrain, std::vector<float> permeability, WaterParams params)
+ReferenceWaterSimulation::ReferenceWaterSimulation(HeightField terrain, std::vector<float> permeability,
+                                                   WaterParams params)
     : WaterSimulation(std::move(terrain), std::move(permeability), params) {
     std::vector<glm::vec2> zero(cellCount(), glm::vec2(0.0f));
     resetState(zero);

@@ -173,8 +173,10 @@ BankScene bankScene(float bank, float crest) {
     BankScene s{flatTerrain(24, 3, 0.0f), std::vector<float>(72, 0.0f)};
     for (int z = 0; z < 3; ++z)
         for (int x = 0; x < 24; ++x) {
-            if (x >= 12) s.terrain.heights[s.terrain.index(x, z)] = bank;
-            else s.depth[s.terrain.index(x, z)] = 0.2f + (x >= 8 ? crest : 0.0f);
+            if (x >= 12)
+                s.terrain.heights[s.terrain.index(x, z)] = bank;
+            else
+                s.depth[s.terrain.index(x, z)] = 0.2f + (x >= 8 ? crest : 0.0f);
         }
     return s;
 }
@@ -276,7 +278,6 @@ TEST(WaterStep, GaussianKernelIsNormalisedAndSmoothingConservesMass) {
     EXPECT_LT(variance(sim.depth()), 0.1 * before);
     EXPECT_LT(sim.ledger().relativeError(), 1e-7);
 }
-
 
 }  // namespace
 }  // namespace prism::water

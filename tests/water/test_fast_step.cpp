@@ -29,20 +29,20 @@ bool sameBits(const std::vector<glm::vec2>& a, const std::vector<glm::vec2>& b) 
 }
 
 std::string name(const Case& c, int threads) {
-    return std::to_string(c.width) + "x" + std::to_string(c.height) + (c.border == BorderMode::Open ? " open" : " closed") +
-           " kernel " + std::to_string(c.kernel) + " permeability " + std::to_string(c.permeabilityMmPerHour) +
-           " threads " + std::to_string(threads);
+    return std::to_string(c.width) + "x" + std::to_string(c.height) +
+           (c.border == BorderMode::Open ? " open" : " closed") + " kernel " + std::to_string(c.kernel) +
+           " permeability " + std::to_string(c.permeabilityMmPerHour) + " threads " + std::to_string(threads);
 }
 
 TEST(FastCpuStep, IsBitIdenticalToTheFirstStepForEveryThreadCount) {
     const Case cases[] = {
-        {160, 130, BorderMode::Open, 5, 6.0, 20.0},  {131, 140, BorderMode::Closed, 15, 0.0, 20.0},
-        {144, 129, BorderMode::Open, 1, 1e4, 1.0},   {200, 128, BorderMode::Closed, 3, 12.0, 50.0},
-        {9, 300, BorderMode::Open, 15, 6.0, 20.0},   {300, 3, BorderMode::Closed, 5, 6.0, 20.0},
+        {160, 130, BorderMode::Open, 5, 6.0, 20.0}, {131, 140, BorderMode::Closed, 15, 0.0, 20.0},
+        {144, 129, BorderMode::Open, 1, 1e4, 1.0},  {200, 128, BorderMode::Closed, 3, 12.0, 50.0},
+        {9, 300, BorderMode::Open, 15, 6.0, 20.0},  {300, 3, BorderMode::Closed, 5, 6.0, 20.0},
     };
     for (const Case& c : cases) {
-        const HeightField terrain = proceduralTerrain(
-            {.width = c.width, .height = c.height, .cellSize = 0.25f, .relief = 3.0f, .seed = 5});
+        const HeightField terrain =
+            proceduralTerrain({.width = c.width, .height = c.height, .cellSize = 0.25f, .relief = 3.0f, .seed = 5});
         PermeabilityOptions soil;
         soil.soilMmPerHour = c.permeabilityMmPerHour;
         soil.clayMmPerHour = std::min(soil.clayMmPerHour, c.permeabilityMmPerHour);

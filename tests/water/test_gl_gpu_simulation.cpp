@@ -107,8 +107,8 @@ TEST_P(GpuCpuAgreement, DepthsAndVelocitiesMatch) {
     const Agreement depth = compare(cpu.depthPairs(), gpu.depthPairs());
     const Agreement velocity = compare(cpu.edgeVelocities(), gpu.edgeVelocities());
     std::cout << "[agreement] " << c.name << ": " << depth.identical << "/" << depth.cells
-              << " depths bit-identical, max |cpu - gpu| = " << depth.maxAbs << " m; velocities "
-              << velocity.identical << "/" << velocity.cells << " identical\n";
+              << " depths bit-identical, max |cpu - gpu| = " << depth.maxAbs << " m; velocities " << velocity.identical
+              << "/" << velocity.cells << " identical\n";
     EXPECT_TRUE(depth.within) << "max depth difference " << depth.maxAbs;
     EXPECT_LE(velocity.maxAbs, 1e-5f);
     const MassLedger lc = cpu.ledger(), lg = gpu.ledger();
@@ -158,8 +158,8 @@ TEST_F(WaterGlTest, TheFastestBackendIsMeasuredOnceAndIsTheFaster) {
     EXPECT_FALSE(first.fromCache);
     EXPECT_GT(first.cpuMsPerSubstep, 0.0);
     ASSERT_GT(first.gpuMsPerSubstep, 0.0) << "the test context has GL 4.3 compute shaders";
-    EXPECT_EQ(first.backend, first.gpuMsPerSubstep < first.cpuMsPerSubstep ? SimulationBackend::Gpu
-                                                                             : SimulationBackend::Cpu);
+    EXPECT_EQ(first.backend,
+              first.gpuMsPerSubstep < first.cpuMsPerSubstep ? SimulationBackend::Gpu : SimulationBackend::Cpu);
     std::cout << "[backend] " << first.renderer << " 96x80: cpu " << first.cpuMsPerSubstep << " ms, gpu "
               << first.gpuMsPerSubstep << " ms per substep -> "
               << (first.backend == SimulationBackend::Gpu ? "gpu" : "cpu") << "\n";

@@ -26,12 +26,13 @@ WaterSceneDescription smallScene(bool water, double rainMmPerHour) {
 }
 
 // Whether the renderer's cache already holds `shader` with these extra axis values.
-bool hasProgram(WaterSceneRenderer& r, const WaterScene& scene, const char* shader, const render::VariantValues& values) {
+bool hasProgram(WaterSceneRenderer& r, const WaterScene& scene, const char* shader,
+                const render::VariantValues& values) {
     render::ProgramCache& cache = r.programCache();
     const std::size_t before = cache.size();
     const auto& d = scene.description();
     cache.get(shader, render::variantFor(*catalog::findShader(water_shaders::kCatalog, shader),
-                                 render::featuresOf(d.lights, d.fog.has_value()), values));
+                                         render::featuresOf(d.lights, d.fog.has_value()), values));
     return cache.size() == before;
 }
 

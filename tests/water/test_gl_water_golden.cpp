@@ -74,7 +74,8 @@ void expectMatchesGolden(const std::string& name, const image::Image8& actual) {
     }
     ASSERT_TRUE(fs::exists(goldenPath(name)))
         << "no golden image " << goldenPath(name).string() << "; create it with PRISM_UPDATE_GOLDENS=1";
-    const image::ImageComparison cmp = image::compareImages(actual, image::readPng(goldenPath(name)), kGoldenThresholds.maxChannelDiff);
+    const image::ImageComparison cmp =
+        image::compareImages(actual, image::readPng(goldenPath(name)), kGoldenThresholds.maxChannelDiff);
     const bool ok = image::passes(cmp, kGoldenThresholds);
     std::string saved;
     if (!ok || envFlag("PRISM_SAVE_ACTUAL")) {
@@ -143,8 +144,8 @@ TEST_F(WaterGlTest, GoldenCatchesAChangedFresnelF0) {
     simulatePuddles(scene);
     WaterSceneRenderer renderer(scene);
     const image::Image8 mutant = renderer.renderImage(groundCamera(scene.terrain()), kSize, kSize);
-    const image::ImageComparison cmp = image::compareImages(mutant, image::readPng(goldenPath("puddles-ground-cloudburst-120x2s")),
-                                              kGoldenThresholds.maxChannelDiff);
+    const image::ImageComparison cmp = image::compareImages(
+        mutant, image::readPng(goldenPath("puddles-ground-cloudburst-120x2s")), kGoldenThresholds.maxChannelDiff);
     std::cout << "[mutation] F0 0.02 -> 0.2: " << image::describe(cmp, kGoldenThresholds) << "\n";
     EXPECT_FALSE(image::passes(cmp, kGoldenThresholds));
 }

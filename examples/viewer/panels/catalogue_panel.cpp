@@ -48,8 +48,7 @@ void drawCataloguePanel(ViewerState& state, const catalog::Catalog& catalog, std
             for (const auto& v : axis.values) {
                 const std::string option(v);
                 const bool valid = isValidChoice(*shader, current, axis.name, v);
-                if (ImGui::Selectable(option.c_str(), option == value,
-                                      valid ? 0 : ImGuiSelectableFlags_Disabled))
+                if (ImGui::Selectable(option.c_str(), option == value, valid ? 0 : ImGuiSelectableFlags_Disabled))
                     pickAxis(state, name, option);
             }
             ImGui::EndCombo();

@@ -17,16 +17,16 @@ bool panelHeader(const char* label, const ViewerState& state, bool appliesToView
     return ImGui::CollapsingHeader(label);
 }
 
-void drawControlPanels(ViewerState& state, const catalog::Catalog& catalog,
-                       const std::vector<std::string>& sceneFiles, std::size_t programsCached) {
+void drawControlPanels(ViewerState& state, const catalog::Catalog& catalog, const std::vector<std::string>& sceneFiles,
+                       std::size_t programsCached) {
     const std::string view = state.scene.open ? state.scene.file : "catalogue";
     state.panelsRelayout = view != state.panelsView;
     state.panelsView = view;
     const ImGuiIO& io = ImGui::GetIO();
     ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(kPanelWidth, io.DisplaySize.y), ImGuiCond_Always);
-    ImGui::Begin("Prism viewer", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                                              ImGuiWindowFlags_NoCollapse);
+    ImGui::Begin("Prism viewer", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
     ImGui::PushItemWidth(-140.0f);
     drawScenePanel(state, sceneFiles);
     drawCataloguePanel(state, catalog, programsCached);

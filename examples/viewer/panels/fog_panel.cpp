@@ -10,7 +10,8 @@
 namespace prism::viewer {
 
 void drawFogPanel(ViewerState& state) {
-    if (!panelHeader("Fog", state, state.scene.open && (state.scene.scene.fog || state.scene.scene.fogBillboards))) return;
+    if (!panelHeader("Fog", state, state.scene.open && (state.scene.scene.fog || state.scene.scene.fogBillboards)))
+        return;
     const auto& fog = state.scene.open ? state.scene.scene.fog : state.catalogue.fog;
     float density = fog ? fog->density : 0.0f;
     if (ImGui::SliderFloat("density", &density, 0.0f, 1.0f, "%.3f"))

@@ -32,14 +32,14 @@ void drawMaterialPanel(ViewerState& state) {
     auto& objects = state.scene.scene.objects;
     view::Lights& lights = state.scene.open ? state.scene.scene.lights : state.catalogue.lights;
     view::Material* material = !state.scene.open ? &state.catalogue.material
-                               : objects.empty()  ? nullptr
-                                                  : &objects.front().material;
+                               : objects.empty() ? nullptr
+                                                 : &objects.front().material;
     if (state.scene.open) ImGui::TextDisabled("the scene's lights and its first object");
     bool changed = false;
     if (material) {
         changed |= ImGui::ColorEdit3("colour", &material->color.r, ImGuiColorEditFlags_NoInputs);
-        changed |= ImGui::SliderFloat("shininess", &material->shininess, 1.0f, 256.0f, "%.0f",
-                                      ImGuiSliderFlags_Logarithmic);
+        changed |=
+            ImGui::SliderFloat("shininess", &material->shininess, 1.0f, 256.0f, "%.0f", ImGuiSliderFlags_Logarithmic);
         changed |= ImGui::SliderFloat("specular", &material->specular, 0.0f, 1.0f);
     }
     changed |= ImGui::ColorEdit3("ambient", &lights.ambient.r, ImGuiColorEditFlags_NoInputs);

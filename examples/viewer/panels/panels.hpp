@@ -17,8 +17,8 @@ namespace prism::viewer {
 
 inline constexpr float kPanelWidth = 330.0f;  // the controls column on the left
 
-void drawControlPanels(ViewerState& state, const catalog::Catalog& catalog,
-                       const std::vector<std::string>& sceneFiles, std::size_t programsCached);
+void drawControlPanels(ViewerState& state, const catalog::Catalog& catalog, const std::vector<std::string>& sceneFiles,
+                       std::size_t programsCached);
 void drawCataloguePanel(ViewerState& state, const catalog::Catalog& catalog, std::size_t programsCached);
 void drawMaterialPanel(ViewerState& state);
 void drawScenePanel(ViewerState& state, const std::vector<std::string>& sceneFiles);

@@ -22,8 +22,11 @@ constexpr Define kV1[] = {{"BLINN", "0"}, {"DIRECTIONAL_LIGHTS", "1"}};
 constexpr Define kV2[] = {{"BLINN", "0"}, {"DIRECTIONAL_LIGHTS", "2"}};
 constexpr Define kV3[] = {{"BLINN", "1"}, {"DIRECTIONAL_LIGHTS", "0"}};
 constexpr Define kV4[] = {{"BLINN", "1"}, {"DIRECTIONAL_LIGHTS", "1"}};
-constexpr Variant kVariants[] = {{"a", kV0, {}, {}, {}}, {"b", kV1, {}, {}, {}}, {"c", kV2, {}, {}, {}},
-                                 {"d", kV3, {}, {}, {}}, {"e", kV4, {}, {}, {}}};
+constexpr Variant kVariants[] = {{"a", kV0, {}, {}, {}},
+                                 {"b", kV1, {}, {}, {}},
+                                 {"c", kV2, {}, {}, {}},
+                                 {"d", kV3, {}, {}, {}},
+                                 {"e", kV4, {}, {}, {}}};
 constexpr Shader kShader{"test", kAxes, kVariants, {}};
 
 using prism::render::FeatureSet;

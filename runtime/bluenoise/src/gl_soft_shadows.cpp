@@ -40,8 +40,7 @@ class UintTexture {
 }  // namespace
 
 struct GlSoftShadows::Resources {
-    Resources(int w, int h) : framebuffer(w, h, gl::ColorFormat::Rgba32F), programs(bluenoise_shaders::kCatalog) {
-    }
+    Resources(int w, int h) : framebuffer(w, h, gl::ColorFormat::Rgba32F), programs(bluenoise_shaders::kCatalog) {}
     gl::Framebuffer framebuffer;
     render::ProgramCache programs;
     UintTexture mask, seeds, stack;

@@ -102,14 +102,10 @@ class Annealer {
 
 double temperature(const RetargetOptions& o, double t0, double epoch) {
     switch (o.schedule) {
-        case CoolingSchedule::Hajek:
-            return t0 * std::log(2.0) / std::log(2.0 + epoch);
-        case CoolingSchedule::Linear:
-            return std::max(0.0, t0 * (1.0 - epoch / o.epochs));
-        case CoolingSchedule::Exponential:
-            return t0 * std::pow(o.alpha, epoch);
-        case CoolingSchedule::Inverse:
-            return t0 / (1.0 + o.alpha * epoch);
+        case CoolingSchedule::Hajek: return t0 * std::log(2.0) / std::log(2.0 + epoch);
+        case CoolingSchedule::Linear: return std::max(0.0, t0 * (1.0 - epoch / o.epochs));
+        case CoolingSchedule::Exponential: return t0 * std::pow(o.alpha, epoch);
+        case CoolingSchedule::Inverse: return t0 / (1.0 + o.alpha * epoch);
     }
     return 0.0;
 }
@@ -152,14 +148,10 @@ CoolingSchedule parseCoolingSchedule(const std::string& name) {
 
 const char* coolingScheduleName(CoolingSchedule s) {
     switch (s) {
-        case CoolingSchedule::Hajek:
-            return "hajek";
-        case CoolingSchedule::Linear:
-            return "linear";
-        case CoolingSchedule::Exponential:
-            return "exponential";
-        case CoolingSchedule::Inverse:
-            return "inverse";
+        case CoolingSchedule::Hajek: return "hajek";
+        case CoolingSchedule::Linear: return "linear";
+        case CoolingSchedule::Exponential: return "exponential";
+        case CoolingSchedule::Inverse: return "inverse";
     }
     return "?";
 }

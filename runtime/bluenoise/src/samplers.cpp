@@ -74,14 +74,10 @@ std::uint32_t stackSample(const SamplerTables& t, std::uint32_t x, std::uint32_t
 std::uint32_t sample(SamplerKind kind, const SamplerTables& t, std::uint32_t x, std::uint32_t y, std::uint32_t frame,
                      std::uint32_t dim) {
     switch (kind) {
-        case SamplerKind::White:
-            return whiteSample(x, y, frame, dim);
-        case SamplerKind::BlueNoise:
-            return blueNoiseSample(t, x, y, frame, dim);
-        case SamplerKind::Sorted:
-            return sortedSample(t, x, y, frame, dim);
-        case SamplerKind::Stack:
-            return stackSample(t, x, y, frame, dim);
+        case SamplerKind::White: return whiteSample(x, y, frame, dim);
+        case SamplerKind::BlueNoise: return blueNoiseSample(t, x, y, frame, dim);
+        case SamplerKind::Sorted: return sortedSample(t, x, y, frame, dim);
+        case SamplerKind::Stack: return stackSample(t, x, y, frame, dim);
     }
     return 0;
 }

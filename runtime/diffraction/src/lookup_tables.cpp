@@ -26,8 +26,7 @@ void forEachRowBand(int rows, RowBand rowBand) {
     }
     std::vector<std::thread> workers;
     workers.reserve(static_cast<std::size_t>(threads - 1));
-    for (int t = 1; t < threads; ++t)
-        workers.emplace_back(rowBand, rows * t / threads, rows * (t + 1) / threads);
+    for (int t = 1; t < threads; ++t) workers.emplace_back(rowBand, rows * t / threads, rows * (t + 1) / threads);
     rowBand(0, rows / threads);
     for (auto& w : workers) w.join();
 }
@@ -144,7 +143,8 @@ IntegratedTables buildIntegratedTables(const SpectralTables& a) {
                 }
                 for (int s = 0; s < layers; ++s) {
                     float* texel = &t.texels[s * layer + (static_cast<std::size_t>(j) * t.size + i) * 3];
-                    for (int c = 0; c < 3; ++c) texel[c] = static_cast<float>(sums[static_cast<std::size_t>(s) * 3 + c]);
+                    for (int c = 0; c < 3; ++c)
+                        texel[c] = static_cast<float>(sums[static_cast<std::size_t>(s) * 3 + c]);
                 }
             }
         }

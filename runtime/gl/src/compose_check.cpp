@@ -14,12 +14,13 @@ namespace prism::gl::detail {
 namespace {
 
 // GLSL type names the contract may use, for turning GL enums back into names.
-constexpr const char* kGlslTypes[] = {
-    "float",        "vec2",          "vec3",        "vec4",           "int",           "ivec2",     "ivec3",
-    "ivec4",        "uint",          "uvec2",       "uvec3",          "uvec4",         "bool",      "bvec2",
-    "bvec3",        "bvec4",         "mat2",        "mat3",           "mat4",          "mat2x3",    "mat2x4",
-    "mat3x2",       "mat3x4",        "mat4x2",      "mat4x3",         "sampler2D",     "sampler3D", "samplerCube",
-    "sampler2DArray", "sampler2DShadow", "isampler2D", "usampler2D",  "samplerBuffer", "image2D"};
+constexpr const char* kGlslTypes[] = {"float",      "vec2",       "vec3",          "vec4",           "int",
+                                      "ivec2",      "ivec3",      "ivec4",         "uint",           "uvec2",
+                                      "uvec3",      "uvec4",      "bool",          "bvec2",          "bvec3",
+                                      "bvec4",      "mat2",       "mat3",          "mat4",           "mat2x3",
+                                      "mat2x4",     "mat3x2",     "mat3x4",        "mat4x2",         "mat4x3",
+                                      "sampler2D",  "sampler3D",  "samplerCube",   "sampler2DArray", "sampler2DShadow",
+                                      "isampler2D", "usampler2D", "samplerBuffer", "image2D"};
 
 std::string glslTypeName(std::uint32_t glType) {
     for (const char* name : kGlslTypes)

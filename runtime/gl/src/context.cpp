@@ -29,12 +29,9 @@ void checkOptions(const ContextOptions& o) {
 
 std::string_view backendName(Backend backend) {
     switch (backend) {
-        case Backend::Egl:
-            return "egl";
-        case Backend::OsMesa:
-            return "osmesa";
-        case Backend::Glfw:
-            return "glfw";
+        case Backend::Egl: return "egl";
+        case Backend::OsMesa: return "osmesa";
+        case Backend::Glfw: return "glfw";
     }
     return "?";
 }
@@ -58,19 +55,15 @@ std::optional<Backend> backendFromEnvironment() {
 bool isBackendCompiledIn(Backend backend) {
     switch (backend) {
 #ifdef PRISM_GL_HAVE_EGL
-        case Backend::Egl:
-            return true;
+        case Backend::Egl: return true;
 #endif
 #ifdef PRISM_GL_HAVE_OSMESA
-        case Backend::OsMesa:
-            return true;
+        case Backend::OsMesa: return true;
 #endif
 #ifdef PRISM_GL_HAVE_GLFW
-        case Backend::Glfw:
-            return true;
+        case Backend::Glfw: return true;
 #endif
-        default:
-            return false;
+        default: return false;
     }
 }
 

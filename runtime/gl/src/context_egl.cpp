@@ -22,36 +22,21 @@ namespace {
 
 std::string eglErrorName(EGLint e) {
     switch (e) {
-        case EGL_SUCCESS:
-            return "EGL_SUCCESS";
-        case EGL_NOT_INITIALIZED:
-            return "EGL_NOT_INITIALIZED";
-        case EGL_BAD_ACCESS:
-            return "EGL_BAD_ACCESS";
-        case EGL_BAD_ALLOC:
-            return "EGL_BAD_ALLOC";
-        case EGL_BAD_ATTRIBUTE:
-            return "EGL_BAD_ATTRIBUTE";
-        case EGL_BAD_CONFIG:
-            return "EGL_BAD_CONFIG";
-        case EGL_BAD_CONTEXT:
-            return "EGL_BAD_CONTEXT";
-        case EGL_BAD_CURRENT_SURFACE:
-            return "EGL_BAD_CURRENT_SURFACE";
-        case EGL_BAD_DISPLAY:
-            return "EGL_BAD_DISPLAY";
-        case EGL_BAD_MATCH:
-            return "EGL_BAD_MATCH";
-        case EGL_BAD_NATIVE_PIXMAP:
-            return "EGL_BAD_NATIVE_PIXMAP";
-        case EGL_BAD_NATIVE_WINDOW:
-            return "EGL_BAD_NATIVE_WINDOW";
-        case EGL_BAD_PARAMETER:
-            return "EGL_BAD_PARAMETER";
-        case EGL_BAD_SURFACE:
-            return "EGL_BAD_SURFACE";
-        case EGL_CONTEXT_LOST:
-            return "EGL_CONTEXT_LOST";
+        case EGL_SUCCESS: return "EGL_SUCCESS";
+        case EGL_NOT_INITIALIZED: return "EGL_NOT_INITIALIZED";
+        case EGL_BAD_ACCESS: return "EGL_BAD_ACCESS";
+        case EGL_BAD_ALLOC: return "EGL_BAD_ALLOC";
+        case EGL_BAD_ATTRIBUTE: return "EGL_BAD_ATTRIBUTE";
+        case EGL_BAD_CONFIG: return "EGL_BAD_CONFIG";
+        case EGL_BAD_CONTEXT: return "EGL_BAD_CONTEXT";
+        case EGL_BAD_CURRENT_SURFACE: return "EGL_BAD_CURRENT_SURFACE";
+        case EGL_BAD_DISPLAY: return "EGL_BAD_DISPLAY";
+        case EGL_BAD_MATCH: return "EGL_BAD_MATCH";
+        case EGL_BAD_NATIVE_PIXMAP: return "EGL_BAD_NATIVE_PIXMAP";
+        case EGL_BAD_NATIVE_WINDOW: return "EGL_BAD_NATIVE_WINDOW";
+        case EGL_BAD_PARAMETER: return "EGL_BAD_PARAMETER";
+        case EGL_BAD_SURFACE: return "EGL_BAD_SURFACE";
+        case EGL_CONTEXT_LOST: return "EGL_CONTEXT_LOST";
         default: {
             char hex[32];
             std::snprintf(hex, sizeof hex, "EGL error 0x%x", static_cast<unsigned>(e));
@@ -118,11 +103,10 @@ EGLDisplay acquireDisplay() {
     if (platform == "device" || (platform.empty() && !haveSurfaceless)) {
         EGLDisplay display = initialiseFirstDevice(clientExtensions, getPlatformDisplay);
         if (display == EGL_NO_DISPLAY)
-            throw ContextError(
-                "prism: EGL backend: no EGL device initialised and Mesa's surfaceless platform is " +
-                std::string(haveSurfaceless ? "not chosen" : "missing") + " (client extensions: " +
-                std::string(clientExtensions ? clientExtensions : "none") +
-                "); install Mesa's EGL (libegl1-mesa-dev, libegl-mesa0) or use PRISM_GL_BACKEND=osmesa");
+            throw ContextError("prism: EGL backend: no EGL device initialised and Mesa's surfaceless platform is " +
+                               std::string(haveSurfaceless ? "not chosen" : "missing") +
+                               " (client extensions: " + std::string(clientExtensions ? clientExtensions : "none") +
+                               "); install Mesa's EGL (libegl1-mesa-dev, libegl-mesa0) or use PRISM_GL_BACKEND=osmesa");
         gDisplay = display;
         gDisplayUsers = 1;
         return display;

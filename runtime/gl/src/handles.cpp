@@ -13,8 +13,8 @@ constexpr int kKinds = static_cast<int>(ObjectKind::Count);
 std::array<std::atomic<std::uint64_t>, kKinds> g_created{}, g_live{};
 
 const char* kindName(ObjectKind kind) {
-    constexpr const char* names[] = {"buffer", "texture", "vertex array", "framebuffer",
-                                     "renderbuffer", "shader", "program", "query"};
+    constexpr const char* names[] = {"buffer",       "texture", "vertex array", "framebuffer",
+                                     "renderbuffer", "shader",  "program",      "query"};
     return names[static_cast<int>(kind)];
 }
 

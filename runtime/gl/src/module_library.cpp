@@ -41,8 +41,8 @@ namespace {
 }
 
 std::unique_ptr<ModuleLibrary::Storage> build(const std::vector<std::string>& moduleFiles,
-                                               const std::vector<std::string>& contractFiles,
-                                               const shaderc::SourceReader& reader, std::string versionDirective) {
+                                              const std::vector<std::string>& contractFiles,
+                                              const shaderc::SourceReader& reader, std::string versionDirective) {
     auto s = std::make_unique<ModuleLibrary::Storage>();
     const auto contract = shaderc::loadContracts(contractFiles, reader);
     if (contract.ioError || !contract.diagnostics.empty()) fail("the contract could not be read", contract.diagnostics);

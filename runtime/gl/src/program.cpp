@@ -22,28 +22,20 @@ WarningHandler defaultHandler() {
 
 GLenum shaderType(catalog::Stage stage) {
     switch (stage) {
-        case catalog::Stage::Vertex:
-            return GL_VERTEX_SHADER;
-        case catalog::Stage::Geometry:
-            return GL_GEOMETRY_SHADER;
-        case catalog::Stage::Fragment:
-            return GL_FRAGMENT_SHADER;
-        case catalog::Stage::Compute:
-            return GL_COMPUTE_SHADER;
+        case catalog::Stage::Vertex: return GL_VERTEX_SHADER;
+        case catalog::Stage::Geometry: return GL_GEOMETRY_SHADER;
+        case catalog::Stage::Fragment: return GL_FRAGMENT_SHADER;
+        case catalog::Stage::Compute: return GL_COMPUTE_SHADER;
     }
     return GL_VERTEX_SHADER;
 }
 
 std::string_view stageWord(catalog::Stage stage) {
     switch (stage) {
-        case catalog::Stage::Vertex:
-            return "vertex";
-        case catalog::Stage::Geometry:
-            return "geometry";
-        case catalog::Stage::Fragment:
-            return "fragment";
-        case catalog::Stage::Compute:
-            return "compute";
+        case catalog::Stage::Vertex: return "vertex";
+        case catalog::Stage::Geometry: return "geometry";
+        case catalog::Stage::Fragment: return "fragment";
+        case catalog::Stage::Compute: return "compute";
     }
     return "?";
 }

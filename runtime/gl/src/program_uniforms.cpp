@@ -67,102 +67,63 @@ bool isSampler(std::uint32_t t) {
         case GL_UNSIGNED_INT_SAMPLER_2D_MULTISAMPLE:
         case GL_UNSIGNED_INT_SAMPLER_2D_MULTISAMPLE_ARRAY:
         case GL_UNSIGNED_INT_SAMPLER_BUFFER:
-        case GL_UNSIGNED_INT_SAMPLER_2D_RECT:
-            return true;
-        default:
-            return false;
+        case GL_UNSIGNED_INT_SAMPLER_2D_RECT: return true;
+        default: return false;
     }
 }
 
 bool fits(Kind kind, std::uint32_t t) {
     if (t == 0) return true;  // type unknown: nothing to check
     switch (kind) {
-        case Kind::Float:
-            return t == GL_FLOAT;
-        case Kind::Int:
-            return t == GL_INT || t == GL_BOOL || isSampler(t);
-        case Kind::Unsigned:
-            return t == GL_UNSIGNED_INT || t == GL_BOOL;
-        case Kind::Bool:
-            return t == GL_BOOL || t == GL_INT || t == GL_UNSIGNED_INT;
-        case Kind::Vec2:
-            return t == GL_FLOAT_VEC2;
-        case Kind::Vec3:
-            return t == GL_FLOAT_VEC3;
-        case Kind::Vec4:
-            return t == GL_FLOAT_VEC4;
-        case Kind::IVec2:
-            return t == GL_INT_VEC2 || t == GL_BOOL_VEC2;
-        case Kind::IVec3:
-            return t == GL_INT_VEC3 || t == GL_BOOL_VEC3;
-        case Kind::IVec4:
-            return t == GL_INT_VEC4 || t == GL_BOOL_VEC4;
-        case Kind::Mat3:
-            return t == GL_FLOAT_MAT3;
-        case Kind::Mat4:
-            return t == GL_FLOAT_MAT4;
+        case Kind::Float: return t == GL_FLOAT;
+        case Kind::Int: return t == GL_INT || t == GL_BOOL || isSampler(t);
+        case Kind::Unsigned: return t == GL_UNSIGNED_INT || t == GL_BOOL;
+        case Kind::Bool: return t == GL_BOOL || t == GL_INT || t == GL_UNSIGNED_INT;
+        case Kind::Vec2: return t == GL_FLOAT_VEC2;
+        case Kind::Vec3: return t == GL_FLOAT_VEC3;
+        case Kind::Vec4: return t == GL_FLOAT_VEC4;
+        case Kind::IVec2: return t == GL_INT_VEC2 || t == GL_BOOL_VEC2;
+        case Kind::IVec3: return t == GL_INT_VEC3 || t == GL_BOOL_VEC3;
+        case Kind::IVec4: return t == GL_INT_VEC4 || t == GL_BOOL_VEC4;
+        case Kind::Mat3: return t == GL_FLOAT_MAT3;
+        case Kind::Mat4: return t == GL_FLOAT_MAT4;
     }
     return false;
 }
 
 std::string_view kindName(Kind kind) {
     switch (kind) {
-        case Kind::Float:
-            return "float";
-        case Kind::Int:
-            return "int";
-        case Kind::Unsigned:
-            return "unsigned";
-        case Kind::Bool:
-            return "bool";
-        case Kind::Vec2:
-            return "vec2";
-        case Kind::Vec3:
-            return "vec3";
-        case Kind::Vec4:
-            return "vec4";
-        case Kind::IVec2:
-            return "ivec2";
-        case Kind::IVec3:
-            return "ivec3";
-        case Kind::IVec4:
-            return "ivec4";
-        case Kind::Mat3:
-            return "mat3";
-        case Kind::Mat4:
-            return "mat4";
+        case Kind::Float: return "float";
+        case Kind::Int: return "int";
+        case Kind::Unsigned: return "unsigned";
+        case Kind::Bool: return "bool";
+        case Kind::Vec2: return "vec2";
+        case Kind::Vec3: return "vec3";
+        case Kind::Vec4: return "vec4";
+        case Kind::IVec2: return "ivec2";
+        case Kind::IVec3: return "ivec3";
+        case Kind::IVec4: return "ivec4";
+        case Kind::Mat3: return "mat3";
+        case Kind::Mat4: return "mat4";
     }
     return "?";
 }
 
 std::string glslTypeName(std::uint32_t t) {
     switch (t) {
-        case GL_FLOAT:
-            return "float";
-        case GL_FLOAT_VEC2:
-            return "vec2";
-        case GL_FLOAT_VEC3:
-            return "vec3";
-        case GL_FLOAT_VEC4:
-            return "vec4";
-        case GL_INT:
-            return "int";
-        case GL_INT_VEC2:
-            return "ivec2";
-        case GL_INT_VEC3:
-            return "ivec3";
-        case GL_INT_VEC4:
-            return "ivec4";
-        case GL_UNSIGNED_INT:
-            return "uint";
-        case GL_BOOL:
-            return "bool";
-        case GL_FLOAT_MAT2:
-            return "mat2";
-        case GL_FLOAT_MAT3:
-            return "mat3";
-        case GL_FLOAT_MAT4:
-            return "mat4";
+        case GL_FLOAT: return "float";
+        case GL_FLOAT_VEC2: return "vec2";
+        case GL_FLOAT_VEC3: return "vec3";
+        case GL_FLOAT_VEC4: return "vec4";
+        case GL_INT: return "int";
+        case GL_INT_VEC2: return "ivec2";
+        case GL_INT_VEC3: return "ivec3";
+        case GL_INT_VEC4: return "ivec4";
+        case GL_UNSIGNED_INT: return "uint";
+        case GL_BOOL: return "bool";
+        case GL_FLOAT_MAT2: return "mat2";
+        case GL_FLOAT_MAT3: return "mat3";
+        case GL_FLOAT_MAT4: return "mat4";
         default: {
             if (isSampler(t)) return "a sampler";
             char text[32];

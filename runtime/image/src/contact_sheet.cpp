@@ -41,8 +41,8 @@ std::string fitted(std::string_view text, int maxWidth, int scale) {
     std::string out;
     for (std::size_t start = 0;;) {
         const std::size_t end = text.find('\n', start);
-        out += fittedLine(text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start), maxWidth,
-                          scale);
+        out += fittedLine(text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start),
+                          maxWidth, scale);
         if (end == std::string_view::npos) return out;
         out += '\n';
         start = end + 1;

@@ -22,7 +22,6 @@ std::string quoted(const std::filesystem::path& p) {
     return out;
 }
 
-
 }  // namespace
 
 void writePng(const std::filesystem::path& path, const Image8& image) {

@@ -167,12 +167,9 @@ float shearHeight(const RainParams& p, const glm::vec3& eye) {
 
 std::string_view techniqueName(StreakTechnique t) {
     switch (t) {
-        case StreakTechnique::GeometryShader:
-            return "gs-quads";
-        case StreakTechnique::Instanced:
-            return "instanced-quads";
-        case StreakTechnique::PointSprites:
-            return "point-sprites";
+        case StreakTechnique::GeometryShader: return "gs-quads";
+        case StreakTechnique::Instanced: return "instanced-quads";
+        case StreakTechnique::PointSprites: return "point-sprites";
     }
     return "?";
 }

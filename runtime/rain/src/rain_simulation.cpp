@@ -49,8 +49,7 @@ glm::vec2 foldIntoCylinder(glm::vec2 xz, glm::vec2 seedXZ, float radius) {
 }
 
 Particle seedParticle(std::uint32_t index, std::uint32_t seed, const glm::vec3& center, const glm::vec2& cylinder,
-                      const glm::vec2& lod, float fallSpeed, float jitter, const glm::vec3& wind,
-                      float shearHeight) {
+                      const glm::vec2& lod, float fallSpeed, float jitter, const glm::vec3& wind, float shearHeight) {
     const float R = cylinder.x;
     const float H = cylinder.y;
     const int rings = static_cast<int>(lod.x);
@@ -132,8 +131,8 @@ void CpuRainSimulation::resize(std::uint32_t count) {
     const glm::vec2 cylinder(params_.radius, params_.height);
     const glm::vec2 lod(static_cast<float>(params_.lodRings), params_.lodFalloff);
     for (std::uint32_t i = count_; i < count; ++i)
-        particles_[i] = seedParticle(i, params_.seed, center_, cylinder, lod, rate_.fallSpeed, params_.jitter, wind_,
-                                     shearHeight_);
+        particles_[i] =
+            seedParticle(i, params_.seed, center_, cylinder, lod, rate_.fallSpeed, params_.jitter, wind_, shearHeight_);
     count_ = count;
 }
 

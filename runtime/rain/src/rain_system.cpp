@@ -27,12 +27,9 @@ render::VariantValues fogVariant(const view::Fog* fog) {
 
 std::string_view techniqueShader(StreakTechnique t) {
     switch (t) {
-        case StreakTechnique::GeometryShader:
-            return "rain_streaks";
-        case StreakTechnique::Instanced:
-            return "rain_instanced";
-        case StreakTechnique::PointSprites:
-            return "rain_points";
+        case StreakTechnique::GeometryShader: return "rain_streaks";
+        case StreakTechnique::Instanced: return "rain_instanced";
+        case StreakTechnique::PointSprites: return "rain_points";
     }
     return "rain_streaks";
 }
@@ -204,9 +201,7 @@ void RainSystem::draw(const RainDrawInputs& in) {
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     glBindVertexArray(vao.id());
     switch (in.technique) {
-        case StreakTechnique::GeometryShader:
-            glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count_));
-            break;
+        case StreakTechnique::GeometryShader: glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count_)); break;
         case StreakTechnique::Instanced:
             glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(count_));
             break;

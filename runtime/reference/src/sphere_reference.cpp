@@ -97,8 +97,9 @@ SphereReference renderSphereReference(const SphereScene& scene, bool withSpecula
     out.radiance.assign(static_cast<std::size_t>(scene.width) * static_cast<std::size_t>(scene.height),
                         scene.background);
     out.covered.assign(out.radiance.size(), 0);
-    out.image = image::Image8(scene.width, scene.height,
-                       {toUnorm8(scene.background.r), toUnorm8(scene.background.g), toUnorm8(scene.background.b), 0});
+    out.image =
+        image::Image8(scene.width, scene.height,
+                      {toUnorm8(scene.background.r), toUnorm8(scene.background.g), toUnorm8(scene.background.b), 0});
 
     for (int y = 0; y < scene.height; ++y) {
         const double ndcY = 1.0 - 2.0 * (y + 0.5) / scene.height;

@@ -40,8 +40,8 @@ void setLightArray(gl::Program& p, std::string_view countName, std::string_view 
 
 }  // namespace
 
-void setFrameUniforms(gl::Program& p, const view::Camera& camera, float aspect, const view::Lights& lights, const glm::mat4& world,
-                      const view::Material& material, const view::Fog* fog) {
+void setFrameUniforms(gl::Program& p, const view::Camera& camera, float aspect, const view::Lights& lights,
+                      const glm::mat4& world, const view::Material& material, const view::Fog* fog) {
     const glm::mat4 view = camera.view();
     setIfPresent(p, "u_world", world);
     setIfPresent(p, "u_view", view);

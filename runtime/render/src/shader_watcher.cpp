@@ -150,7 +150,8 @@ void ShaderWatcher::rebuild(const std::string& shader, const std::string& varian
     for (const auto& stage : variant->stages) {
         const auto* stageFile = catalog::findSourceFile(stage, 0);
         if (!stageFile) return;
-        request.stages.push_back({stage.stage, normalised(fs::path(options_.sourceRoot) / std::string(stageFile->path))});
+        request.stages.push_back(
+            {stage.stage, normalised(fs::path(options_.sourceRoot) / std::string(stageFile->path))});
     }
 
     auto outcome = rebuilder_->rebuild(request);

@@ -207,8 +207,7 @@ RainSettings readRain(const Reader& r, const json& j) {
         s.intensityClass = *cls;
     }
     if (j.contains("rateMmPerHour"))
-        s.rateMillimetresPerHour =
-            r.number(j["rateMmPerHour"], "/rain/rateMmPerHour", 0.0, water::kMaxRainMmPerHour);
+        s.rateMillimetresPerHour = r.number(j["rateMmPerHour"], "/rain/rateMmPerHour", 0.0, water::kMaxRainMmPerHour);
     if (j.contains("wind")) s.wind = r.vec3(j["wind"], "/rain/wind");
     if (j.contains("seed")) s.seed = r.whole(j["seed"], "/rain/seed", 0, 0xffffffffu);
     if (j.contains("radius")) s.cylinderRadius = static_cast<float>(r.number(j["radius"], "/rain/radius", 0.1, 1e4));
@@ -224,7 +223,8 @@ WaterSettings readWater(const Reader& r, const json& j) {
     if (j.contains("grid")) s.gridSize = r.whole(j["grid"], "/water/grid", 1, 2048);
     if (j.contains("cellSize")) s.cellSize = static_cast<float>(r.number(j["cellSize"], "/water/cellSize", 1e-3, 1e3));
     if (j.contains("rainMmPerHour"))
-        s.rainRateMillimetresPerHour = r.number(j["rainMmPerHour"], "/water/rainMmPerHour", 0.0, water::kMaxRainMmPerHour);
+        s.rainRateMillimetresPerHour =
+            r.number(j["rainMmPerHour"], "/water/rainMmPerHour", 0.0, water::kMaxRainMmPerHour);
     if (j.contains("seconds")) s.seconds = r.number(j["seconds"], "/water/seconds", 0.0, 86400.0);
     if (j.contains("soilMmPerHour"))
         s.soilMillimetresPerHour = r.number(j["soilMmPerHour"], "/water/soilMmPerHour", 0.0, 1e6);
@@ -248,18 +248,19 @@ bluenoise::SamplerKind samplerNamed(const Reader& r, const json& j, const std::s
 
 StochasticSettings readStochastic(const Reader& r, const json& j) {
     r.object(j, "/stochastic",
-             {"effect", "sampler", "spp", "frame", "frames", "light", "spheres", "extent", "mask", "block", "retargetEpochs"});
+             {"effect", "sampler", "spp", "frame", "frames", "light", "spheres", "extent", "mask", "block",
+              "retargetEpochs"});
     StochasticSettings s;
     if (j.contains("effect") && r.string(j["effect"], "/stochastic/effect") != "softShadows")
         r.fail("/stochastic/effect", "\"softShadows\" (the only effect so far)");
     if (j.contains("sampler")) s.sampler = samplerNamed(r, j["sampler"], "/stochastic/sampler");
     if (j.contains("spp")) s.spp = static_cast<int>(r.whole(j["spp"], "/stochastic/spp", 1, kMaxStochasticSpp));
-    if (j.contains("frame")) s.frame = static_cast<int>(r.whole(j["frame"], "/stochastic/frame", 0, kMaxStochasticFrame));
+    if (j.contains("frame"))
+        s.frame = static_cast<int>(r.whole(j["frame"], "/stochastic/frame", 0, kMaxStochasticFrame));
     if (j.contains("frames"))
         s.frames = static_cast<int>(r.whole(j["frames"], "/stochastic/frames", 1, kMaxStochasticFrames));
     if (s.frame > 0 && s.frames > 1) r.fail("/stochastic/frames", "either frame or frames > 1, not both");
-    if (j.contains("extent"))
-        s.light.extent = r.number(j["extent"], "/stochastic/extent", 1e-3, 1e4);
+    if (j.contains("extent")) s.light.extent = r.number(j["extent"], "/stochastic/extent", 1e-3, 1e4);
     if (j.contains("light")) {
         const json& l = j["light"];
         r.object(l, "/stochastic/light", {"height", "halfLength", "halfWidth", "radiance"});
@@ -325,8 +326,9 @@ constexpr int kMaxJsonDepth = 64;
 Scene parseScene(const std::string& text, const std::string& fileName) {
     if (const auto deep = io::firstTooDeep(text, kMaxJsonDepth)) {
         auto [line, col] = lineColumn(text, *deep + 1);
-        throw SceneError(fileName + ":" + std::to_string(line) + ":" + std::to_string(col) + ": JSON nested more than " +
-                         std::to_string(kMaxJsonDepth) + " levels deep (the limit); a scene needs 4");
+        throw SceneError(fileName + ":" + std::to_string(line) + ":" + std::to_string(col) +
+                         ": JSON nested more than " + std::to_string(kMaxJsonDepth) +
+                         " levels deep (the limit); a scene needs 4");
     }
     json j;
     try {

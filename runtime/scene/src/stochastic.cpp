@@ -72,7 +72,8 @@ image::Image8 renderStochastic(const StochasticSettings& s, int width, int heigh
         for (int x = 0; x < width; ++x) {
             const double v = values.values[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
                                            static_cast<std::size_t>(x)];
-            const auto g = static_cast<std::uint8_t>(std::lround(std::clamp(std::isfinite(v) ? v : 0.0, 0.0, 1.0) * 255.0));
+            const auto g =
+                static_cast<std::uint8_t>(std::lround(std::clamp(std::isfinite(v) ? v : 0.0, 0.0, 1.0) * 255.0));
             out.set(x, y, {g, g, g, 255});
         }
     return out;

@@ -178,12 +178,12 @@ int CpuWaterSimulation::bytesPerCellPerSubstep(bool smoothing) {
     // 4-byte arrays. A pass that writes water reads hi, lo and the terrain and writes hi,
     // lo, surface and available water: 28 bytes, besides the arrays of its own.
     constexpr int kWater = 12 + 16;
-    constexpr int kRain = 4 + kWater;        // + permeability
-    constexpr int kFlowOut = 8 + 8;          // surface, available -> amount, code
-    constexpr int kGather = 8 + kWater;      // + amount, code
-    constexpr int kVelocity = 8 + 8 + 8;     // surface, available; q east and south read and written
-    constexpr int kApply = 8 + kWater;       // + q east and south
-    constexpr int kSmoothing = 8 + kWater;   // + surface, available
+    constexpr int kRain = 4 + kWater;       // + permeability
+    constexpr int kFlowOut = 8 + 8;         // surface, available -> amount, code
+    constexpr int kGather = 8 + kWater;     // + amount, code
+    constexpr int kVelocity = 8 + 8 + 8;    // surface, available; q east and south read and written
+    constexpr int kApply = 8 + kWater;      // + q east and south
+    constexpr int kSmoothing = 8 + kWater;  // + surface, available
     return kRain + kFlowOut + kGather + kVelocity + kApply + (smoothing ? kSmoothing : 0);
 }
 

@@ -215,11 +215,11 @@ void writeGreyPng(const std::filesystem::path& path, const GreyImage& image) {
 
 HeightField loadHeightMap(const std::filesystem::path& path, const HeightMapOptions& o) {
     if (!(o.cellSize > 0.0f) || !(o.cellSize <= kMaxCellSize))
-        fail(path, "the cell size must be a finite number in (0, " + std::to_string(kMaxCellSize) +
-                       "] m (got " + std::to_string(o.cellSize) + ")");
+        fail(path, "the cell size must be a finite number in (0, " + std::to_string(kMaxCellSize) + "] m (got " +
+                       std::to_string(o.cellSize) + ")");
     if (!(std::abs(o.heightScale) <= kMaxHeight))
-        fail(path, "the height scale must be a finite number of metres with |scale| <= " +
-                       std::to_string(kMaxHeight) + " (got " + std::to_string(o.heightScale) + ")");
+        fail(path, "the height scale must be a finite number of metres with |scale| <= " + std::to_string(kMaxHeight) +
+                       " (got " + std::to_string(o.heightScale) + ")");
     if (!std::isfinite(o.baseHeight))
         fail(path, "the base height must be a finite number of metres (got " + std::to_string(o.baseHeight) + ")");
     const GreyImage img = readGreyPng(path);
@@ -229,8 +229,7 @@ HeightField loadHeightMap(const std::filesystem::path& path, const HeightMapOpti
     f.cellSize = o.cellSize;
     f.heights.resize(img.values.size());
     const double scale = static_cast<double>(o.heightScale) / img.maxValue();
-    for (std::size_t i = 0; i < img.values.size(); ++i)
-        f.heights[i] = static_cast<float>(img.values[i] * scale);
+    for (std::size_t i = 0; i < img.values.size(); ++i) f.heights[i] = static_cast<float>(img.values[i] * scale);
     f.origin = o.baseHeight;  // kept apart: heights stay small, where fp32 resolves them finely
     return f;
 }

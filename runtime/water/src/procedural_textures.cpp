@@ -32,24 +32,12 @@ glm::vec3 skyDirection(int face, int s, int t, int size) {
     const float tc = 2.0f * (static_cast<float>(t) + 0.5f) / static_cast<float>(size) - 1.0f;
     glm::vec3 d;
     switch (face) {
-        case 0:
-            d = {1.0f, -tc, -sc};
-            break;
-        case 1:
-            d = {-1.0f, -tc, sc};
-            break;
-        case 2:
-            d = {sc, 1.0f, tc};
-            break;
-        case 3:
-            d = {sc, -1.0f, -tc};
-            break;
-        case 4:
-            d = {sc, -tc, 1.0f};
-            break;
-        default:
-            d = {-sc, -tc, -1.0f};
-            break;
+        case 0: d = {1.0f, -tc, -sc}; break;
+        case 1: d = {-1.0f, -tc, sc}; break;
+        case 2: d = {sc, 1.0f, tc}; break;
+        case 3: d = {sc, -1.0f, -tc}; break;
+        case 4: d = {sc, -tc, 1.0f}; break;
+        default: d = {-sc, -tc, -1.0f}; break;
     }
     return d / std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
 }

@@ -21,8 +21,7 @@ double parseRainRateMmPerHour(std::string_view text) {
     if (ec == std::errc() && ptr == end && std::isfinite(value) && value >= 0.0 && value <= kMaxRainMmPerHour)
         return value;
     throw std::invalid_argument("rain '" + std::string(text) + "' is neither a rain class (" + rain::rainClassNames() +
-                                ", none) nor a number of mm/h in [0, " + std::to_string(int(kMaxRainMmPerHour)) +
-                                "]");
+                                ", none) nor a number of mm/h in [0, " + std::to_string(int(kMaxRainMmPerHour)) + "]");
 }
 
 }  // namespace prism::water

@@ -31,7 +31,8 @@ void WaterScene::advance(double dt) {
 
 glm::mat4 WaterScene::world() const {
     const HeightField& t = description_.terrain;
-    return glm::translate(glm::mat4(1.0f), glm::vec3(-0.5f * t.sizeX(), static_cast<float>(t.origin), -0.5f * t.sizeZ()));
+    return glm::translate(glm::mat4(1.0f),
+                          glm::vec3(-0.5f * t.sizeX(), static_cast<float>(t.origin), -0.5f * t.sizeZ()));
 }
 
 namespace {

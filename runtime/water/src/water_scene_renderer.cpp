@@ -198,7 +198,8 @@ struct WaterSceneRenderer::Impl {
 
     void frameUniforms(gl::Program& p, const view::Camera& camera, float aspect) {
         const auto& d = scene.description();
-        render::setFrameUniforms(p, camera, aspect, d.lights, scene.world(), view::Material{}, d.fog ? &*d.fog : nullptr);
+        render::setFrameUniforms(p, camera, aspect, d.lights, scene.world(), view::Material{},
+                                 d.fog ? &*d.fog : nullptr);
         setIfPresent(p, "u_skyFogDistance", 2.0f * sceneExtent(scene.terrain()));
         setIfPresent(p, "u_cameraPosition", camera.eye);
     }

@@ -37,7 +37,8 @@ void validate(const WaterParams& p) {
     if (!(p.smoothingSigma > 0.0f) || !finite(p.smoothingSigma)) bad("smoothingSigma must be > 0 (cells)");
     if (!(p.smoothingRate >= 0.0f) || !finite(p.smoothingRate)) bad("smoothingRate must be >= 0 (1/s)");
     if (p.maxSubsteps < 1) bad("maxSubsteps must be >= 1");
-    if (p.threads < 0 || p.threads > 64) bad("threads must be in 0..64 (0: all cores; got " + std::to_string(p.threads) + ")");
+    if (p.threads < 0 || p.threads > 64)
+        bad("threads must be in 0..64 (0: all cores; got " + std::to_string(p.threads) + ")");
 }
 
 double maxStableDt(const WaterParams& p, float cellSize) {
@@ -118,8 +119,8 @@ WaterSimulation::WaterSimulation(HeightField terrain, std::vector<float> permeab
     validate(params_);
     // A whole-metre local origin at or below the lowest point: heights in [0, relief + 1).
     // A terrain already there (lowest point in [0, 1) m) is left bit for bit as it is.
-    const double shift = std::floor(static_cast<double>(*std::min_element(terrain_.heights.begin(),
-                                                                           terrain_.heights.end())));
+    const double shift =
+        std::floor(static_cast<double>(*std::min_element(terrain_.heights.begin(), terrain_.heights.end())));
     if (shift != 0.0) {
         for (float& h : terrain_.heights) h = static_cast<float>(static_cast<double>(h) - shift);
         terrain_.origin += shift;
@@ -200,12 +201,9 @@ MassLedger WaterSimulation::ledger() const {
 
 std::string_view simulationBackendName(SimulationBackend backend) {
     switch (backend) {
-        case SimulationBackend::Cpu:
-            return "cpu";
-        case SimulationBackend::Gpu:
-            return "gpu";
-        case SimulationBackend::Fastest:
-            return "fastest";
+        case SimulationBackend::Cpu: return "cpu";
+        case SimulationBackend::Gpu: return "gpu";
+        case SimulationBackend::Fastest: return "fastest";
     }
     return "?";
 }

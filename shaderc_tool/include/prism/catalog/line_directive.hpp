@@ -35,9 +35,10 @@ constexpr GlslVersionTag glslVersionOf(std::string_view directive) {
         tag.number = tag.number * 10 + (directive[p++] - '0');
     while (p < directive.size() && (directive[p] == ' ' || directive[p] == '\t')) ++p;
     const std::string_view profile = directive.substr(p);
-    tag.es = tag.number == 100 || (profile.size() >= 2 && profile.substr(0, 2) == "es" &&
-                                   (profile.size() == 2 || profile[2] == ' ' || profile[2] == '\t' ||
-                                    profile[2] == '\r' || profile[2] == '\n'));
+    tag.es =
+        tag.number == 100 ||
+        (profile.size() >= 2 && profile.substr(0, 2) == "es" &&
+         (profile.size() == 2 || profile[2] == ' ' || profile[2] == '\t' || profile[2] == '\r' || profile[2] == '\n'));
     return tag;
 }
 

@@ -16,7 +16,7 @@
 //
 // Usage (snippet: examples/snippets/catalog_shader_catalog.cpp):
 //
-//     #include "prism/shaders.hpp"          // generated
+//     #include "prism/shaders.hpp"  // generated
 //     const auto& s = prism::shaders::shaderInfo(prism::shaders::ShaderId::phong);
 //     // A misspelled axis or value throws VariantLookupError naming it and the known ones;
 //     // nullptr means known values whose combination was not generated (VARIANTS).
@@ -42,14 +42,10 @@ enum class Stage : std::uint8_t { Vertex, Geometry, Fragment, Compute };
 
 constexpr std::string_view stageName(Stage s) {
     switch (s) {
-        case Stage::Vertex:
-            return "vert";
-        case Stage::Geometry:
-            return "geom";
-        case Stage::Fragment:
-            return "frag";
-        case Stage::Compute:
-            return "comp";
+        case Stage::Vertex: return "vert";
+        case Stage::Geometry: return "geom";
+        case Stage::Fragment: return "frag";
+        case Stage::Compute: return "comp";
     }
     return "?";
 }

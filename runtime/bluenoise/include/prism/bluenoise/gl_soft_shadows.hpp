@@ -14,7 +14,7 @@
 //     options.sampler = bn::SamplerKind::BlueNoise;
 //     bn::GlSoftShadows gpu(32, 32);
 //     bn::RealImage image = gpu.render(bn::SoftShadowScene::classic(), setup, options);
-//     double ms = gpu.lastFrameMilliseconds();   // GPU draw + readback of the last frame
+//     double ms = gpu.lastFrameMilliseconds();  // GPU draw + readback of the last frame
 //
 // The mask, seeds and stack go to R32UI textures (units 0, 1 and 2), the frame is drawn into an
 // RGBA32F framebuffer and read back; the sorted sampler's sorting and retargeting run on

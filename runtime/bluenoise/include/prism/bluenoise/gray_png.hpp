@@ -4,7 +4,7 @@
 //
 //     #include "prism/bluenoise/gray_png.hpp"
 //     prism::bluenoise::GrayImage image{4, 4, 16, std::vector<std::uint16_t>(16, 40000)};
-//     prism::bluenoise::writeGrayPng("out/mask.png", image);      // temp file + rename
+//     prism::bluenoise::writeGrayPng("out/mask.png", image);  // temp file + rename
 //     prism::bluenoise::GrayImage back = prism::bluenoise::readGrayPng("out/mask.png");
 //     prism::bluenoise::writeFileAtomically("out/spectrum.svg", "<svg/>");
 //

@@ -3,11 +3,11 @@
 // Usage (snippet: examples/snippets/bluenoise_metrics.cpp):
 //
 //     #include "prism/bluenoise/metrics.hpp"
-//     prism::bluenoise::GrayImage image{2, 1, 8, {0, 255}};        // width, height, bits, values
-//     bool uniform = prism::bluenoise::histogramUniform(image);      // levels as even as N allows
-//     double lf = prism::bluenoise::lowFrequencyPowerRatio(image);   // white noise ~ 1, blue << 1
-//     double fast = prism::bluenoise::filteredErrorSigma1(image);    // white noise ~ 0.114
-//     double aniso = prism::bluenoise::anisotropyDb(image);          // white noise ~ 0 dB
+//     prism::bluenoise::GrayImage image{2, 1, 8, {0, 255}};         // width, height, bits, values
+//     bool uniform = prism::bluenoise::histogramUniform(image);     // levels as even as N allows
+//     double lf = prism::bluenoise::lowFrequencyPowerRatio(image);  // white noise ~ 1, blue << 1
+//     double fast = prism::bluenoise::filteredErrorSigma1(image);   // white noise ~ 0.114
+//     double aniso = prism::bluenoise::anisotropyDb(image);         // white noise ~ 0 dB
 //     std::vector<prism::bluenoise::SpectrumRing> rings = prism::bluenoise::radialPowerSpectrum(image);
 //
 // Definitions (docs/bluenoise.md):

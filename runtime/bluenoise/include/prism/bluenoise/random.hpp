@@ -3,11 +3,11 @@
 // Usage (snippet: examples/snippets/bluenoise_random.cpp):
 //
 //     #include "prism/bluenoise/random.hpp"
-//     std::uint32_t h = prism::bluenoise::pcgHash(42u);          // same bits as GLSL prism_bn_pcg(42u)
-//     prism::bluenoise::SplitMix64 rng(7);                       // deterministic per seed
+//     std::uint32_t h = prism::bluenoise::pcgHash(42u);  // same bits as GLSL prism_bn_pcg(42u)
+//     prism::bluenoise::SplitMix64 rng(7);               // deterministic per seed
 //     std::uint64_t a = rng.next();
-//     double u = rng.uniform();                                  // in [0, 1)
-//     float f = prism::bluenoise::toUnitFloat(h);                // top 24 bits / 2^24, exact in float
+//     double u = rng.uniform();                    // in [0, 1)
+//     float f = prism::bluenoise::toUnitFloat(h);  // top 24 bits / 2^24, exact in float
 //
 // pcgHash is the "PCG hash" of Jarzynski & Olano (JCGT 2020): one LCG step followed by
 // the PCG RXS-M-XS output permutation, on 32-bit unsigned integers that wrap, so GLSL

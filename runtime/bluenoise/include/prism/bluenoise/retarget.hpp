@@ -7,9 +7,9 @@
 //     #include "prism/bluenoise/void_and_cluster.hpp"
 //     namespace bn = prism::bluenoise;
 //     bn::Mask mask = bn::generateVoidAndCluster({.width = 16, .height = 16});
-//     bn::RetargetOptions options;                       // radius 6, sigma_i 2.1, sigma_s 1
+//     bn::RetargetOptions options;  // radius 6, sigma_i 2.1, sigma_s 1
 //     options.schedule = bn::CoolingSchedule::Exponential;
-//     options.epochs = 32;                               // of W*H proposed swaps
+//     options.epochs = 32;                                                      // of W*H proposed swaps
 //     bn::frameShift(mask.width, mask.height, options.shiftX, options.shiftY);  // towards the next frame's mask
 //     bn::RetargetResult r = bn::computeRetarget(mask, options);
 //     bool cached = false;
@@ -66,7 +66,7 @@ struct RetargetResult {
     RetargetPermutation permutation;
     double initialEnergy = 0.0, finalEnergy = 0.0;  // blue + target parts
     double initialTarget = 0.0, finalTarget = 0.0;  // the target part alone
-    std::uint64_t moves = 0, accepted = 0;  // allowed proposals (of epochs * W * H), swaps made
+    std::uint64_t moves = 0, accepted = 0;          // allowed proposals (of epochs * W * H), swaps made
 };
 
 // The R2 step between consecutive frames for a mask of this size (what applyRetarget's

@@ -7,9 +7,9 @@
 //     namespace bn = prism::bluenoise;
 //     bn::Mask mask = bn::generateVoidAndCluster({.width = 16, .height = 16});
 //     bn::SamplerTables tables = bn::SamplerTables::fromMask(mask);
-//     std::uint32_t w = bn::sample(bn::SamplerKind::White, tables, 10, 20, 7, 0);      // pixel (10, 20), frame 7, dim 0
+//     std::uint32_t w = bn::sample(bn::SamplerKind::White, tables, 10, 20, 7, 0);  // pixel (10, 20), frame 7, dim 0
 //     std::uint32_t b = bn::sample(bn::SamplerKind::BlueNoise, tables, 10, 20, 7, 1);
-//     float u = bn::toUnitFloat(b);                                                    // [0, 1)
+//     float u = bn::toUnitFloat(b);  // [0, 1)
 //
 // - White: pcgHash(pcgHash(pcgHash(pcgHash(x) + y) + frame) + dim).
 // - BlueNoise: the mask (as a 32-bit fraction) at the pixel shifted by dimension dim's

@@ -11,15 +11,15 @@
 //     bn::RenderOptions options;
 //     options.width = options.height = 32;
 //     options.sampler = bn::SamplerKind::BlueNoise;
-//     bn::RealImage image = bn::renderSoftShadows(scene, setup, options);    // 1 spp, frame 0
+//     bn::RealImage image = bn::renderSoftShadows(scene, setup, options);  // 1 spp, frame 0
 //     bn::Reference reference = bn::renderReference(scene, 32, 32, 1024);
 //     bn::ErrorStats error = bn::compareToReference(image, reference);
 //
 // Pixel (x, y) sees the ground point ((x + 0.5) / W * 2e - e, e - (y + 0.5) / H * 2e), e =
 // scene.extent. Its value is the light's irradiance there, sum of V(p, q) L cos cos / r^2
 // over light points q, relative to the unoccluded irradiance below the light's centre
-// (not clamped: a clamp per frame would bias the accumulated mean; clamp for display). Sample i of frame t uses sampler frame t * spp + i, dimension 0
-// along the light's long side and dimension 1 across.
+// (not clamped: a clamp per frame would bias the accumulated mean; clamp for display).
+// Sample i of frame t uses sampler frame t * spp + i, dimension 0 along the light's long side and dimension 1 across.
 // The sorted sampler runs the temporal pipeline of Heitz & Belcour (sorting.hpp): after
 // each frame t the seeds are sorted in blocks against the mask shifted by t times the R2
 // frame step (thesis Algorithm 6) and retargeted towards frame t+1's shift (retarget.hpp);

@@ -5,9 +5,9 @@
 //     #include "prism/bluenoise/void_and_cluster.hpp"
 //     prism::bluenoise::VoidAndClusterOptions options;
 //     options.width = 24;
-//     options.height = 16;      // non-square and non-power-of-two sizes are fine
-//     options.sigma = 1.5;      // Gaussian energy filter, in pixels
-//     options.seed = 7;         // same seed, same mask (bit for bit)
+//     options.height = 16;  // non-square and non-power-of-two sizes are fine
+//     options.sigma = 1.5;  // Gaussian energy filter, in pixels
+//     options.seed = 7;     // same seed, same mask (bit for bit)
 //     prism::bluenoise::Mask mask = prism::bluenoise::generateVoidAndCluster(options);
 //
 // The energy of a pixel is the sum over "on" pixels of exp(-d^2 / (2 sigma^2)), d the

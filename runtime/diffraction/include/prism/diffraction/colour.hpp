@@ -6,10 +6,10 @@
 //
 //     #include "prism/diffraction/colour.hpp"
 //     using namespace prism::diffraction;
-//     std::vector<SpectralWeight> grid = spectralWeights(5);        // 81 wavelengths
-//     Xyz white{};                                                  // a flat reflectance of 1
-//     for (const SpectralWeight& s : grid) white = white + s.xyz;   // = D65 white, Y = 1
-//     LinearRgb rgb = xyzToLinearSrgb(white);                       // ~ (1, 1, 1)
+//     std::vector<SpectralWeight> grid = spectralWeights(5);       // 81 wavelengths
+//     Xyz white{};                                                 // a flat reflectance of 1
+//     for (const SpectralWeight& s : grid) white = white + s.xyz;  // = D65 white, Y = 1
+//     LinearRgb rgb = xyzToLinearSrgb(white);                      // ~ (1, 1, 1)
 //
 // A spectral reflectance rho(lambda) lit by D65 has XYZ = sum_i rho(lambda_i) * grid[i].xyz:
 // each weight is D65(lambda) cmf(lambda) dlambda / sum(D65 ybar dlambda), so white has Y = 1.

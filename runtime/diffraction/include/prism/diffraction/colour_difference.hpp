@@ -6,7 +6,7 @@
 //     #include "prism/diffraction/colour_difference.hpp"
 //     using namespace prism::diffraction;
 //     Lab a = linearSrgbToLab({0.5, 0.2, 0.1}), b = linearSrgbToLab({0.5, 0.21, 0.1});
-//     double dE = ciede2000(a, b);   // ~1 is a just-noticeable difference
+//     double dE = ciede2000(a, b);  // ~1 is a just-noticeable difference
 #pragma once
 
 #include "prism/diffraction/colour.hpp"

@@ -10,7 +10,7 @@
 //     StamBrdf brdf(sinusoidGrating({.amplitudeNm = 60, .periods = 16}), {.tolerance = 1e-4});
 //     DiffractionTextures textures(buildSpectralTables(brdf, {.size = 32}));  // path (a)
 //     prism::gl::Program& program = diffractionPrograms().get("brdf_map", {{"DIFFRACTION_PATH", textures.variant()}});
-//     textures.apply(program);   // binds units 0 and 1, sets u_diffraction*
+//     textures.apply(program);  // binds units 0 and 1, sets u_diffraction*
 //
 // Needs a current context for its whole life; move-only.
 #pragma once

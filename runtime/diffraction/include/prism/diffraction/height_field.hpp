@@ -8,8 +8,8 @@
 //     #include "prism/diffraction/height_field.hpp"
 //     using namespace prism::diffraction;
 //     HeightField grating = sinusoidGrating({.periodNm = 2500, .amplitudeNm = 150});
-//     subtractMean(grating);                  // lowers k w h_max; |P|^2 is unchanged
-//     double hMax = maxAbsHeight(grating);    // 150 nm, feeds termsForTolerance()
+//     subtractMean(grating);                // lowers k w h_max; |P|^2 is unchanged
+//     double hMax = maxAbsHeight(grating);  // 150 nm, feeds termsForTolerance()
 //
 // One-row fields (the gratings) are constant along y.
 #pragma once

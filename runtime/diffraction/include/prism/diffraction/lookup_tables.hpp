@@ -22,7 +22,7 @@
 //     LinearRgb viaA = shadeSpectral(a, fromAngles(30, 180), fromAngles(30, 0));
 //     LinearRgb viaB = shadeIntegrated(b, fromAngles(30, 180), fromAngles(30, 0));  // ~ viaA
 //     VolumeTables c = buildVolumeTables(b, /*slices of w*/ 16);
-//     LinearRgb viaC = shadeVolume(c, fromAngles(30, 180), fromAngles(30, 0));      // ~ viaB
+//     LinearRgb viaC = shadeVolume(c, fromAngles(30, 180), fromAngles(30, 0));  // ~ viaB
 #pragma once
 
 #include <cstddef>

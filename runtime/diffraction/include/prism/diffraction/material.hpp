@@ -10,8 +10,8 @@
 //     nlohmann::json j = nlohmann::json::parse(R"({"height_field": {"type": "sinusoid", "period_nm": 2500,
 //         "amplitude_nm": 60, "periods": 8}, "path": "b", "table_size": 64, "wavelength_step_nm": 20})");
 //     DiffractionMaterial m = parseDiffractionMaterial(j, "/objects/0/material/diffraction", ".");
-//     StamBrdf brdf = makeBrdf(m);               // N from the height range and m.tolerance
-//     MaterialTables tables = buildMaterialTables(m, brdf);   // only path b's 2N + 1 layers
+//     StamBrdf brdf = makeBrdf(m);                           // N from the height range and m.tolerance
+//     MaterialTables tables = buildMaterialTables(m, brdf);  // only path b's 2N + 1 layers
 //
 // Keys (all optional except height_field.type; docs/diffraction.md, "Material parameters"):
 //   height_field: {type: sinusoid|blazed, period_nm, amplitude_nm, periods, samples_per_period}

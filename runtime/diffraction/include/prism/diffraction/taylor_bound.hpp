@@ -7,8 +7,8 @@
 //     #include "prism/diffraction/taylor_bound.hpp"
 //     using namespace prism::diffraction;
 //     double x = taylorArgument(/*h_max nm*/ 150, /*lambda_min nm*/ 380);  // 4.96
-//     int n = termsForTolerance(150, 380, 1e-6);                          // smallest N with bound <= 1e-6
-//     double e = taylorErrorBound(x, n);                                  // <= 1e-6
+//     int n = termsForTolerance(150, 380, 1e-6);                           // smallest N with bound <= 1e-6
+//     double e = taylorErrorBound(x, n);                                   // <= 1e-6
 #pragma once
 
 #include <stdexcept>

@@ -13,7 +13,8 @@
 //     prism::geometry::Mesh mesh = prism::geometry::makeIcosphere(1.0f, 3);
 //     std::size_t triangles = prism::geometry::triangleCount(mesh);
 //     prism::geometry::Bounds box = prism::geometry::computeBounds(mesh);
-//     if (auto problem = prism::geometry::findMeshProblem(mesh)) { /* report *problem */ }
+//     if (auto problem = prism::geometry::findMeshProblem(mesh)) { /* report *problem */
+//     }
 //     prism::geometry::Mesh split = prism::geometry::splitVerticesPerFace(mesh);  // as OBJ import gives
 //
 // Nothing here needs a GL context.

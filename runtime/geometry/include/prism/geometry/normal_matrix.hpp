@@ -4,8 +4,8 @@
 // Usage (snippet: examples/snippets/geometry_normal_matrix.cpp):
 //
 //     #include "prism/geometry/normal_matrix.hpp"
-//     glm::mat3 n = prism::geometry::normalMatrix(world);            // upload as u_normal
-//     glm::vec3 nw = prism::geometry::transformNormal(n, normal);   // unit, never NaN
+//     glm::mat3 n = prism::geometry::normalMatrix(world);          // upload as u_normal
+//     glm::vec3 nw = prism::geometry::transformNormal(n, normal);  // unit, never NaN
 //
 // Normals transform with the inverse-transpose of the upper 3x3 block A of the world
 // matrix (translation does not matter). We compute it through the cofactor matrix

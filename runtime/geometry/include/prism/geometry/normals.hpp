@@ -4,8 +4,8 @@
 //
 //     #include "prism/geometry/normals.hpp"
 //     using namespace prism::geometry;
-//     NormalStats stats = computeVertexNormals(mesh);     // fills mesh.normals
-//     Mesh flat = makeFlatShaded(mesh);                   // split per face, face normals
+//     NormalStats stats = computeVertexNormals(mesh);      // fills mesh.normals
+//     Mesh flat = makeFlatShaded(mesh);                    // split per face, face normals
 //     glm::vec3 n = safeNormalize(v, glm::vec3(0, 0, 1));  // unit vector or the fallback
 //
 // Area weighting: a vertex normal is the sum of the *unnormalised* cross products

@@ -7,11 +7,16 @@
 //
 //     #include "prism/geometry/obj_loader.hpp"
 //     using namespace prism::geometry;
-//     Mesh split = loadObj("monkey.obj");                 // one vertex per face corner
-//     ObjLoadOptions smooth; smooth.weld = true;           // merge by position
-//     smooth.creaseAngleDegrees = 60.0f;                   // but keep sharp edges
+//     Mesh split = loadObj("monkey.obj");  // one vertex per face corner
+//     ObjLoadOptions smooth;
+//     smooth.weld = true;                 // merge by position
+//     smooth.creaseAngleDegrees = 60.0f;  // but keep sharp edges
 //     Mesh mesh = loadObj("monkey.obj", smooth);
-//     try { loadObj(path); } catch (const ObjLoadError& e) { std::cerr << e.what(); }
+//     try {
+//         loadObj(path);
+//     } catch (const ObjLoadError& e) {
+//         std::cerr << e.what();
+//     }
 //
 // What you get: every polygon triangulated (quads along the shorter diagonal), all
 // shapes/groups merged into one mesh, vertices split per face corner (as in the file),

@@ -6,12 +6,12 @@
 //
 //     #include "prism/geometry/procedural_meshes.hpp"
 //     using namespace prism::geometry;
-//     Mesh cube   = makeCube();                      // 24 vertices, flat faces, uvs
-//     Mesh sphere = makeUvSphere(1.0f, 16, 32);      // rings x segments, uvs
-//     Mesh ico    = makeIcosphere(1.0f, 3);          // 10 * 4^3 + 2 shared vertices
-//     Mesh torus  = makeTorus(1.0f, 0.35f, 48, 24);  // uvs
-//     Mesh grid   = makeGrid(2.0f, 2.0f, 8, 8);      // XZ plane facing +Y, uvs
-//     Mesh knot   = makeTrefoilKnot();               // ribbed tube: concave grooves
+//     Mesh cube = makeCube();                       // 24 vertices, flat faces, uvs
+//     Mesh sphere = makeUvSphere(1.0f, 16, 32);     // rings x segments, uvs
+//     Mesh ico = makeIcosphere(1.0f, 3);            // 10 * 4^3 + 2 shared vertices
+//     Mesh torus = makeTorus(1.0f, 0.35f, 48, 24);  // uvs
+//     Mesh grid = makeGrid(2.0f, 2.0f, 8, 8);       // XZ plane facing +Y, uvs
+//     Mesh knot = makeTrefoilKnot();                // ribbed tube: concave grooves
 //
 // Sizes and counts are validated: a non-finite or non-positive size or a count below
 // the minimum throws std::invalid_argument naming the parameter.

@@ -5,9 +5,10 @@
 //
 //     #include "prism/geometry/weld.hpp"
 //     using namespace prism::geometry;
-//     WeldResult smooth = weldVertices(split);                       // merge by position
-//     WeldOptions hard; hard.creaseAngleDegrees = 30.0f;
-//     WeldResult cube = weldVertices(splitCube, hard);               // keeps sharp edges
+//     WeldResult smooth = weldVertices(split);  // merge by position
+//     WeldOptions hard;
+//     hard.creaseAngleDegrees = 30.0f;
+//     WeldResult cube = weldVertices(splitCube, hard);  // keeps sharp edges
 //     // smooth.mesh: welded mesh with recomputed normals
 //     // smooth.newIndexOfOldVertex[i]: where input vertex i went
 //

@@ -8,7 +8,7 @@
 //     #include <vector>
 //
 //     #include "prism/gl/compose.hpp"
-//     #include "prism/shaders.hpp"   // generated catalogue: ModuleId, kCatalog
+//     #include "prism/shaders.hpp"  // generated catalogue: ModuleId, kCatalog
 //     using prism::shaders::ModuleId;
 //     std::vector<prism::gl::ComposeStage> stages{
 //         {.stage = prism::catalog::Stage::Vertex,

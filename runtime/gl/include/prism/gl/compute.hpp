@@ -10,7 +10,7 @@
 //     #include "prism/gl/gl.hpp"
 //     #include "prism/gl/gl_context.hpp"
 //     auto context = prism::gl::createContext({.majorVersion = 4, .minorVersion = 3});
-//     prism::gl::requireCompute("my effect");            // throws ComputeUnavailableError on GL < 4.3
+//     prism::gl::requireCompute("my effect");               // throws ComputeUnavailableError on GL < 4.3
 //     auto groups = prism::gl::computeGroups(100000, 256);  // {391, 1}
 //     // with a compute program in use and its buffers bound:
 //     std::uint64_t before = prism::gl::computeDispatches();

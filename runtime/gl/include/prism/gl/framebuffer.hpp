@@ -4,14 +4,14 @@
 // Usage (snippet: examples/snippets/gl_framebuffer.cpp):
 //
 //     #include "prism/gl/framebuffer.hpp"
-//     prism::gl::Framebuffer fb(256, 256);                 // RGBA8 + depth24
-//     fb.bind();                                            // binds and sets the viewport
-//     fb.clear({0.1f, 0.2f, 0.3f, 1.0f});                   // colour and depth
+//     prism::gl::Framebuffer fb(256, 256);  // RGBA8 + depth24
+//     fb.bind();                            // binds and sets the viewport
+//     fb.clear({0.1f, 0.2f, 0.3f, 1.0f});   // colour and depth
 //     // ... draw ...
-//     prism::image::Image8 shot = fb.readImage8();                 // top row first
+//     prism::image::Image8 shot = fb.readImage8();  // top row first
 //
 //     prism::gl::Framebuffer hdr(64, 64, prism::gl::ColorFormat::Rgba32F);
-//     prism::image::ImageF values = hdr.readImageF();              // unclamped floats
+//     prism::image::ImageF values = hdr.readImageF();  // unclamped floats
 //
 // Needs a current context (see prism/gl/gl_context.hpp) for its whole life; the GL
 // objects are deleted in the destructor. Move-only. Construction throws

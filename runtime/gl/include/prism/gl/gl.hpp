@@ -3,7 +3,7 @@
 // Usage (snippet: examples/snippets/gl_gl.cpp):
 //
 //     #include "prism/gl/framebuffer.hpp"
-//     #include "prism/gl/gl.hpp"          // the glad GL 4.5 core loader header
+//     #include "prism/gl/gl.hpp"  // the glad GL 4.5 core loader header
 //     #include "prism/gl/gl_context.hpp"
 //     auto ctx = prism::gl::createContext();  // makes the context current and loads GL
 //     prism::gl::Framebuffer target(64, 64);  // EGL surfaceless has no default framebuffer

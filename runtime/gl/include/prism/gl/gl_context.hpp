@@ -5,14 +5,14 @@
 //     #include <iostream>
 //
 //     #include "prism/gl/gl_context.hpp"
-//     auto ctx = prism::gl::createContext();                         // EGL, else OSMesa
-//     std::cout << ctx->info().renderer << "\n";                    // "llvmpipe (LLVM 15.0.6, 256 bits)"
+//     auto ctx = prism::gl::createContext();      // EGL, else OSMesa
+//     std::cout << ctx->info().renderer << "\n";  // "llvmpipe (LLVM 15.0.6, 256 bits)"
 //     try {
 //         auto win = prism::gl::createContext(prism::gl::Backend::Glfw, {.width = 800, .height = 600});
-//     } catch (const prism::gl::ContextError& e) {                  // no display: run under xvfb-run
+//     } catch (const prism::gl::ContextError& e) {  // no display: run under xvfb-run
 //         std::cerr << e.what() << "\n";
 //     }
-//     ctx->makeCurrent();   // before GL calls when several contexts exist; reloads GL if needed
+//     ctx->makeCurrent();  // before GL calls when several contexts exist; reloads GL if needed
 //
 // Backends:
 //   Egl     EGL on Mesa's surfaceless platform: no display, no window; render into a

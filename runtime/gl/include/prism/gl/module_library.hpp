@@ -50,7 +50,8 @@ class ModuleLibrary {
     static ModuleLibrary fromStrings(std::span<const std::pair<std::string, std::string>> modules,
                                      std::string_view contractJson, std::string versionDirective = "#version 330 core");
     static ModuleLibrary fromStrings(std::initializer_list<std::pair<std::string, std::string>> modules,
-                                     std::string_view contractJson, std::string versionDirective = "#version 330 core") {
+                                     std::string_view contractJson,
+                                     std::string versionDirective = "#version 330 core") {
         return fromStrings(std::span<const std::pair<std::string, std::string>>(modules.begin(), modules.size()),
                            contractJson, std::move(versionDirective));
     }

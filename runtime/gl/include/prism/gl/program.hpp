@@ -6,7 +6,7 @@
 //     #include <vector>
 //
 //     #include "prism/gl/program.hpp"
-//     #include "prism/shaders.hpp"   // generated catalogue
+//     #include "prism/shaders.hpp"  // generated catalogue
 //     const auto& phong = prism::shaders::shaderInfo(prism::shaders::ShaderId::phong);
 //     const auto* variant = prism::catalog::findVariant(phong, {{"FOG", "1"}, {"DIRECTIONAL_LIGHTS", "4"}});
 //     if (variant == nullptr) return 1;  // not generated; a misspelled axis or value throws instead

@@ -3,15 +3,15 @@
 // Usage (snippet: examples/snippets/image_image.cpp):
 //
 //     #include "prism/image/image.hpp"
-//     prism::image::Image8 img(64, 32, {255, 0, 0, 255});   // 64x32, opaque red
-//     img.set(3, 4, {0, 0, 255, 255});               // x = 3, y = 4 (4th row from the top)
+//     prism::image::Image8 img(64, 32, {255, 0, 0, 255});  // 64x32, opaque red
+//     img.set(3, 4, {0, 0, 255, 255});                     // x = 3, y = 4 (4th row from the top)
 //     prism::image::Rgba8 p = img.at(3, 4);
-//     std::uint8_t* raw = img.data.data();           // width*height*4 bytes, row-major
+//     std::uint8_t* raw = img.data.data();  // width*height*4 bytes, row-major
 //
-//     prism::image::ImageF hdr(8, 8);                       // float RGBA, zero-filled
+//     prism::image::ImageF hdr(8, 8);  // float RGBA, zero-filled
 //     hdr.set(0, 0, {1.5f, 0.f, 0.f, 1.f});
-//     std::size_t bad = prism::image::countNonFinite(hdr);  // pixels holding NaN or infinity
-//     prism::image::Image8 ldr = prism::image::toImage8(hdr);      // clamped to [0,1], NaN -> 0
+//     std::size_t bad = prism::image::countNonFinite(hdr);     // pixels holding NaN or infinity
+//     prism::image::Image8 ldr = prism::image::toImage8(hdr);  // clamped to [0,1], NaN -> 0
 //
 // Both image types are plain values (copyable, comparable with ==). Coordinates outside
 // the image are a programming error: at()/set() check them and throw std::out_of_range.

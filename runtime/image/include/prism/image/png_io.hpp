@@ -3,7 +3,7 @@
 // Usage (snippet: examples/snippets/image_png_io.cpp):
 //
 //     #include "prism/image/png_io.hpp"
-//     prism::image::writePng("out/phong.png", image);        // atomic: temp file + rename
+//     prism::image::writePng("out/phong.png", image);  // atomic: temp file + rename
 //     prism::image::Image8 golden = prism::image::readPng("tests/golden/phong.png");
 //
 // writePng creates missing parent directories and never leaves a half-written file

@@ -7,8 +7,8 @@
 // Usage (snippet: examples/snippets/rain_fog_billboards.cpp):
 //
 //     #include "prism/rain/fog_billboards.hpp"
-//     prism::rain::SceneFog fog;                 // distance fog + billboards
-//     fog.billboards.strength = 0.5f;            // 0: distance fog only, no billboards
+//     prism::rain::SceneFog fog;       // distance fog + billboards
+//     fog.billboards.strength = 0.5f;  // 0: distance fog only, no billboards
 //     prism::rain::FogNoiseArray noise = prism::rain::generateFogNoise(64, 16, 7);
 //     prism::rain::FogBillboardSimulation sim(fog.billboards, eye);
 //     sim.step(dt, eye, wind);

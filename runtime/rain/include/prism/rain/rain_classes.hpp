@@ -5,9 +5,9 @@
 //
 //     #include "prism/rain/rain_classes.hpp"
 //     const prism::rain::RainClassInfo& heavy = prism::rain::rainClassInfo(prism::rain::RainClass::Heavy);
-//     float cmPerHour = heavy.intensity;                                   // 1.524
+//     float cmPerHour = heavy.intensity;                                                    // 1.524
 //     double mmPerHour = prism::rain::rainRateMmPerHour(prism::rain::RainClass::Moderate);  // 3.81
-//     auto c = prism::rain::parseRainClass("Cloudburst");                  // RainClass::Cloudburst
+//     auto c = prism::rain::parseRainClass("Cloudburst");                                   // RainClass::Cloudburst
 //
 // Correction: the thesis prints the intensities in cm/h, but its source lists them in
 // inches per hour (0.01, 0.04, 0.15, 0.60, 1.60, 4.00 in/h). The thesis converted five rows

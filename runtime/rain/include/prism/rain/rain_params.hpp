@@ -5,11 +5,11 @@
 // Usage (snippet: examples/snippets/rain_rain_params.cpp):
 //
 //     #include "prism/rain/rain_params.hpp"
-//     prism::rain::RainParams p;                                   // moderate rain
+//     prism::rain::RainParams p;  // moderate rain
 //     p.intensity = prism::rain::rainClassInfo(prism::rain::RainClass::Heavy).intensity;
-//     p.wind.strength = 4.0f;                                      // m/s, random direction
-//     prism::rain::validate(p);                                    // throws RainParameterError
-//     std::uint32_t n = prism::rain::particleCountFor(p);          // 41,933 (heavy, defaults)
+//     p.wind.strength = 4.0f;                              // m/s, random direction
+//     prism::rain::validate(p);                            // throws RainParameterError
+//     std::uint32_t n = prism::rain::particleCountFor(p);  // 41,933 (heavy, defaults)
 //
 // Particle count (docs/rain.md): a rain of intensity I has a drop flux N(I) (drops per m^2
 // per second) falling at v(I) m/s, so the air holds N/v drops per m^3. The cylinder's

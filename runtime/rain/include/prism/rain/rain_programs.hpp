@@ -9,7 +9,7 @@
 //     #include "prism/rain/rain_programs.hpp"
 //     prism::rain::RainPrograms programs;
 //     prism::gl::Program& p = programs.get("ground", {{"FOG", "0"}});
-//     programs.used();    // {"ground (FOG=0)"}
+//     programs.used();  // {"ground (FOG=0)"}
 //
 // Programs are built on first use (needs a current context).
 #pragma once

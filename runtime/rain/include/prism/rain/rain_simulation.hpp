@@ -6,8 +6,8 @@
 // Usage (snippet: examples/snippets/rain_rain_simulation.cpp):
 //
 //     #include "prism/rain/rain_simulation.hpp"
-//     prism::rain::CpuRainSimulation sim(params, eye);   // seeds particleCountFor(params)
-//     sim.step(1.0f / 60.0f, eye);                        // fall, wind, wrap around the camera
+//     prism::rain::CpuRainSimulation sim(params, eye);  // seeds particleCountFor(params)
+//     sim.step(1.0f / 60.0f, eye);                      // fall, wind, wrap around the camera
 //     for (const auto& p : sim.particles()) use(p.position);
 //
 // Model (docs/rain.md): a drop falls at its terminal speed (constant per drop: the
@@ -64,15 +64,14 @@ struct StepInputs {
     glm::vec3 center{0.0f};    // cylinder centre (cylinderCenter(params, eye))
     glm::vec2 cylinder{1.0f};  // radius, height
     glm::vec3 wind{0.0f};
-    float fallSpeed = 0.0f;  // the intensity's fall speed (respawned drops use it)
+    float fallSpeed = 0.0f;    // the intensity's fall speed (respawned drops use it)
     float shearHeight = 0.0f;  // height above the centre where the wind shear is zero (the eye's)
-    float dt = 0.0f;         // already clamped
+    float dt = 0.0f;           // already clamped
 };
 
 glm::vec2 foldIntoCylinder(glm::vec2 xz, glm::vec2 seedXZ, float radius);
 Particle seedParticle(std::uint32_t index, std::uint32_t seed, const glm::vec3& center, const glm::vec2& cylinder,
-                      const glm::vec2& lod, float fallSpeed, float jitter, const glm::vec3& wind,
-                      float shearHeight);
+                      const glm::vec2& lod, float fallSpeed, float jitter, const glm::vec3& wind, float shearHeight);
 Particle stepParticle(Particle p, const StepInputs& in);
 
 // Which level-of-detail ring a seed offset lies in (0 = innermost), for tests.

@@ -9,9 +9,9 @@
 //     #include "prism/rain/rain_system.hpp"
 //     prism::rain::RainPrograms programs;
 //     prism::rain::RainSystem rain(programs, params, camera.eye);
-//     rain.update(1.0f / 60.0f, camera.eye);              // compute dispatch
+//     rain.update(1.0f / 60.0f, camera.eye);  // compute dispatch
 //     rain.draw({.camera = camera, .aspect = 1.f, .viewportHeight = 800, .lights = lights});
-//     std::vector<prism::rain::Particle> ps = rain.readParticles();   // tests
+//     std::vector<prism::rain::Particle> ps = rain.readParticles();  // tests
 //
 // Needs a current GL >= 4.3 context (compute shaders) for its whole life; throws
 // gl::ComputeUnavailableError otherwise. Memory: 48 bytes per particle (the simulation
@@ -37,7 +37,7 @@
 namespace prism::rain {
 
 // StreakTechnique, techniqueName and parseTechnique: prism/rain/rain_params.hpp.
-std::string_view techniqueShader(StreakTechnique t);                   // rain_streaks, rain_instanced, rain_points
+std::string_view techniqueShader(StreakTechnique t);  // rain_streaks, rain_instanced, rain_points
 
 // The rain scene's lights: ambient, a directional sun and a lamp with falloff
 // (modules/rain/drop_lights.glsl).

@@ -5,7 +5,7 @@
 // Usage (snippet: examples/snippets/rain_random.cpp):
 //
 //     #include "prism/rain/random.hpp"
-//     std::uint32_t h = prism::rain::pcgHash(42u);                 // PCG output permutation
+//     std::uint32_t h = prism::rain::pcgHash(42u);                  // PCG output permutation
 //     float u = prism::rain::rainUniform(seed, particle, channel);  // [0, 1), 24-bit steps
 //
 // pcgHash is the "pcg" hash of Jarzynski & Olano, "Hash Functions for GPU Rendering"

@@ -66,7 +66,7 @@ struct SphereReference {
     int height = 0;
     std::vector<glm::dvec3> radiance;   // unclamped shade() per pixel (background where missed)
     std::vector<std::uint8_t> covered;  // 1 where the ray hits the sphere
-    image::Image8 image;                       // radiance in 8 bits; alpha 255 covered, 0 background
+    image::Image8 image;                // radiance in 8 bits; alpha 255 covered, 0 background
     std::size_t clampedPixels = 0;      // covered pixels with a channel above 1 before clamping
 };
 

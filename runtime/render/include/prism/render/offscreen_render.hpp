@@ -11,7 +11,7 @@
 //     job.shader = "phong";
 //     job.mesh = prism::render::meshForShader("phong", prism::render::namedMesh("torus"));
 //     prism::image::Image8 image = prism::render::renderImage8(cache, job);
-//     prism::image::ImageF hdr = prism::render::renderImageF(cache, job);    // RGBA32F, for finiteness checks
+//     prism::image::ImageF hdr = prism::render::renderImageF(cache, job);  // RGBA32F, for finiteness checks
 //
 // The mesh is framed by the default camera (eye at (0, 0.6, 3.2) looking at the origin)
 // with the default lights unless the job says otherwise. Needs a current context.

@@ -8,7 +8,7 @@
 //     #include "prism/shaders.hpp"
 //     prism::render::ProgramCache cache(prism::shaders::kCatalog);
 //     prism::gl::Program& p = cache.get("phong", {{"BLINN", "1"}});
-//     cache.size();   // programs built so far
+//     cache.size();  // programs built so far
 //
 //     // Hot reload (prism/render/shader_watcher.hpp does this on a file edit): swap in a
 //     // program rebuilt from edited sources. References from get() stay valid and name

@@ -4,7 +4,7 @@
 //
 //     #include "prism/render/shader_meshes.hpp"
 //     prism::geometry::Mesh m = prism::render::namedMesh("torus", /*subdivision*/ 3);
-//     prism::geometry::Mesh ready = prism::render::meshForShader("flat", m);   // split per face, face normals
+//     prism::geometry::Mesh ready = prism::render::meshForShader("flat", m);  // split per face, face normals
 //
 // The flat shader needs face normals on vertices split per face (the NORMAL_FACE
 // module of the FUDGE shader thesis's appendix); every other shader gets area-weighted vertex normals (computed when

@@ -13,8 +13,8 @@
 //     prism::render::RenderJob job;
 //     job.shader = "phong";
 //     job.mesh = prism::render::meshForShader("phong", prism::render::namedMesh("torus"));
-//     for (int frame = 0; frame < 3; ++frame) {           // the render loop, on the GL thread
-//         for (const auto& d : watcher.poll().diagnostics) std::cerr << d;  // path:line:col: error: ...
+//     for (int frame = 0; frame < 3; ++frame) {                                  // the render loop, on the GL thread
+//         for (const auto& d : watcher.poll().diagnostics) std::cerr << d;       // path:line:col: error: ...
 //         prism::image::Image8 image = prism::render::renderImage8(cache, job);  // newest good program
 //     }
 //
@@ -24,8 +24,8 @@
 //   (default: contract.json in the first module dir).
 // - Files are polled: size and modification time first, then a content hash, so saving
 //   a file unchanged reloads nothing. A file modified in the last 2 s is hashed at every
-//   check (file times tick coarsely, so a second same-size edit may keep the mtime). A shader depends on every file its variants
-//   include; a contract change affects every shader.
+//   check (file times tick coarsely, so a second same-size edit may keep the mtime). A
+//   shader depends on every file its variants include; a contract change affects every shader.
 // - Only variants that have a program in the cache are rebuilt (a variant built later
 //   from the stale catalogue is rebuilt on the next poll).
 // - On any error (missing include, glslang, interface or contract check, driver link)
@@ -60,7 +60,7 @@ struct ShaderWatchOptions {
 };
 
 struct WatchPollResult {
-    bool checked = false;                  // false: called again within pollInterval
+    bool checked = false;                   // false: called again within pollInterval
     std::vector<std::string> changedFiles;  // whose content changed since the last check
     std::vector<std::string> reloaded;      // "shader (variant)" now running rebuilt programs
     std::vector<std::string> diagnostics;   // errors of this poll's rebuilds, one text each
@@ -103,11 +103,11 @@ class ShaderWatcher {
     ProgramCache& cache_;
     ShaderWatchOptions options_;
     std::unique_ptr<detail::ShaderRebuilder> rebuilder_;
-    std::map<std::string, FileState> files_;                    // watched path -> last state
+    std::map<std::string, FileState> files_;                     // watched path -> last state
     std::map<std::string, std::set<std::string>> dependencies_;  // shader -> files
     std::set<std::string> editedShaders_;                        // catalogue text is stale
     std::set<VariantKey> current_;                               // rebuilt since the last edit
-    std::map<VariantKey, std::vector<std::string>> errors_;     // failing variants
+    std::map<VariantKey, std::vector<std::string>> errors_;      // failing variants
     std::vector<std::string> contractErrors_;
     std::chrono::steady_clock::time_point lastCheck_{};
 };

@@ -6,7 +6,7 @@
 // Usage (snippet: examples/snippets/scene_scene.cpp):
 //
 //     #include "prism/scene/scene.hpp"
-//     prism::scene::Scene scene;                    // built in code instead of read from JSON
+//     prism::scene::Scene scene;  // built in code instead of read from JSON
 //     scene.width = scene.height = 128;
 //     scene.lights.directional.push_back({.direction = {-0.5f, -0.6f, -0.65f}, .color = {1, 1, 1}});
 //     scene.fog = prism::view::Fog{.color = {0.6f, 0.65f, 0.7f}, .density = 0.1f};
@@ -53,7 +53,7 @@ struct SceneObject {
 // Rain as a scene asks for it: an intensity class (the seed's Table 2) or a rate.
 struct RainSettings {
     rain::RainClass intensityClass = rain::RainClass::Moderate;  // "intensity": drizzle .. cloudburst
-    std::optional<double> rateMillimetresPerHour;  // overrides the class when given
+    std::optional<double> rateMillimetresPerHour;                // overrides the class when given
     glm::vec3 wind{0.0f};
     unsigned seed = 1;
     float cylinderRadius = 20.0f;
@@ -93,7 +93,7 @@ struct StochasticSettings {
     int spp = 1;
     int frame = 0;
     int frames = 1;
-    int maskSize = 64;       // void-and-cluster mask, maskSize^2
+    int maskSize = 64;  // void-and-cluster mask, maskSize^2
     unsigned maskSeed = 0;
     int block = 8;           // sorting block size of the sorted sampler
     int retargetEpochs = 8;  // annealing epochs of the sorted sampler's retarget permutation

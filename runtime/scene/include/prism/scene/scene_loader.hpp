@@ -8,7 +8,7 @@
 //
 //     #include "prism/scene/scene_loader.hpp"
 //     prism::scene::Scene scene = prism::scene::loadScene("examples/scenes/one_light.json");
-//     prism::scene::Scene same  = prism::scene::parseScene(text, "inline.json");
+//     prism::scene::Scene same = prism::scene::parseScene(text, "inline.json");
 #pragma once
 
 #include <stdexcept>

@@ -17,8 +17,8 @@
 //     #include "prism/shaders.hpp"
 //     prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
 //     prism::image::Image8 image = renderer.render(prism::scene::loadScene("examples/scenes/one_light.json"));
-//     std::size_t built = renderer.programs().size();                        // programs built so far
-//     const std::vector<std::string>& drawn = renderer.lastFrame().variants;  // "phong DIRECTIONAL_LIGHTS=1,..." per draw
+//     std::size_t built = renderer.programs().size();                         // programs built so far
+//     const std::vector<std::string>& drawn = renderer.lastFrame().variants;  // "phong FOG=1,..." per draw
 //
 // Needs a current context.
 #pragma once
@@ -57,7 +57,7 @@ float lowestPoint(const water::HeightField& terrain);
 
 struct SceneFrameInfo {
     std::size_t draws = 0;
-    std::vector<std::string> variants;  // "<shader> <variant name>" of each draw, in order
+    std::vector<std::string> variants;      // "<shader> <variant name>" of each draw, in order
     std::size_t diffractionTableBytes = 0;  // GPU memory of this frame's diffraction tables
 };
 
@@ -109,7 +109,7 @@ class SceneRenderer {
     std::size_t terrainsBuilt_ = 0;
     std::unique_ptr<render::ProgramCache> diffractionPrograms_;  // created with the first diffraction object
     std::size_t diffractionTablesBuilt_ = 0;
-    struct DiffractionTableSet;  // a material, its N and its uploaded tables
+    struct DiffractionTableSet;                                            // a material, its N and its uploaded tables
     std::vector<std::unique_ptr<DiffractionTableSet>> diffractionTables_;  // most recent last
 };
 

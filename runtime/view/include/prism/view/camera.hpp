@@ -5,8 +5,8 @@
 //
 //     #include "prism/view/camera.hpp"
 //     prism::view::Camera cam{.eye = {0, 0, 3}, .target = {0, 0, 0}};
-//     glm::mat4 view = cam.view();                 // world -> eye
-//     glm::mat4 proj = cam.projection(16.f / 9.f); // eye -> clip
+//     glm::mat4 view = cam.view();                  // world -> eye
+//     glm::mat4 proj = cam.projection(16.f / 9.f);  // eye -> clip
 //
 // view() picks another up axis when `up` is parallel to the viewing direction, so a
 // camera looking straight down still works. projection() throws std::invalid_argument

@@ -9,7 +9,7 @@
 //     HeightField t = loadHeightMap("terrain.png", {.cellSize = 0.25f, .heightScale = 8.0f});
 //     HeightField p = proceduralTerrain({.width = 512, .height = 512, .seed = 7});
 //     std::vector<float> k = loadPermeabilityMap("soil.png", t.width, t.height, mmPerHourToMetresPerSecond(20));
-//     std::vector<float> k2 = proceduralPermeability(p, {});   // m/s per cell
+//     std::vector<float> k2 = proceduralPermeability(p, {});  // m/s per cell
 //
 // Grid layout: row-major, x across, z down; cell (x, z) is pixel (x, z) of the PNG
 // (row 0 = top row) and sits at local position (x h, height, z h). Maps may be

@@ -6,7 +6,7 @@
 // Usage (snippet: examples/snippets/water_rain_rates.cpp):
 //
 //     #include "prism/water/rain_rates.hpp"
-//     double mmh = prism::water::rainRateMmPerHour(prism::water::RainClass::Heavy);   // 15.2
+//     double mmh = prism::water::rainRateMmPerHour(prism::water::RainClass::Heavy);  // 15.2
 //     double ms = prism::water::mmPerHourToMetresPerSecond(mmh);                     // 4.22e-6
 //     double r = prism::water::parseRainRateMmPerHour("cloudburst");                 // 101.6
 //     double c = prism::water::parseRainRateMmPerHour("12.5");                       // 12.5 (mm/h)

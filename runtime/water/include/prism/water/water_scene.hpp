@@ -9,11 +9,11 @@
 //     #include "prism/water/water_scene.hpp"
 //     using namespace prism::water;
 //     WaterSceneDescription d;
-//     d.terrain = proceduralTerrain({.width = 256, .height = 256});   // default: 512 x 512
+//     d.terrain = proceduralTerrain({.width = 256, .height = 256});  // default: 512 x 512
 //     d.rainMmPerHour = rainRateMmPerHour(RainClass::Heavy);
 //     d.fog = prism::view::Fog{};
 //     WaterScene scene(std::move(d));
-//     scene.advance(1.0);                                        // one second of rain
+//     scene.advance(1.0);  // one second of rain
 //     auto ctx = prism::gl::createContext({.majorVersion = 4, .minorVersion = 3});
 //     WaterSceneRenderer renderer(scene);
 //     prism::image::Image8 img = renderer.renderImage(overviewCamera(scene.terrain()), 640, 480);
@@ -50,10 +50,10 @@ struct WaterLook {
 };
 
 struct WaterSceneDescription {
-    HeightField terrain;              // empty: proceduralTerrain() (the default 512x512 water map)
-    std::vector<float> permeability;  // m/s per cell; empty: proceduralPermeability(terrain)
-    bool water = true;                // false: terrain and sky only
-    double rainMmPerHour = 0.0;       // constant rain rate (see rain_rates.hpp for classes)
+    HeightField terrain;                                 // empty: proceduralTerrain() (the default 512x512 water map)
+    std::vector<float> permeability;                     // m/s per cell; empty: proceduralPermeability(terrain)
+    bool water = true;                                   // false: terrain and sky only
+    double rainMmPerHour = 0.0;                          // constant rain rate (see rain_rates.hpp for classes)
     SimulationBackend backend = SimulationBackend::Cpu;  // Fastest: measured once (backend_choice.hpp)
     WaterParams params;
     view::Lights lights = defaultSun();

@@ -10,8 +10,8 @@
 //     HeightField terrain = proceduralTerrain({.width = 128, .height = 128});
 //     CpuWaterSimulation sim(terrain, proceduralPermeability(terrain), WaterParams{});
 //     sim.setRainRate(mmPerHourToMetresPerSecond(rainRateMmPerHour(RainClass::Heavy)));
-//     SubstepPlan plan = sim.advance(0.5);    // 0.5 s, split into plan.count substeps
-//     std::vector<float> depth = sim.depth(); // metres per cell
+//     SubstepPlan plan = sim.advance(0.5);     // 0.5 s, split into plan.count substeps
+//     std::vector<float> depth = sim.depth();  // metres per cell
 //     MassLedger l = sim.ledger();             // rain in = stored + infiltrated + lost
 //
 // One substep of length dt, in this order (the step is written in flux form: every
@@ -62,7 +62,7 @@ namespace prism::water {
 // Which implementation runs the step: the CPU reference, the compute shaders, or the faster
 // of the two on the current renderer, measured once (prism/water/backend_choice.hpp).
 enum class SimulationBackend { Cpu, Gpu, Fastest };
-std::string_view simulationBackendName(SimulationBackend backend);            // "cpu", "gpu", "fastest"
+std::string_view simulationBackendName(SimulationBackend backend);               // "cpu", "gpu", "fastest"
 std::optional<SimulationBackend> parseSimulationBackend(std::string_view name);  // one of those names
 
 enum class BorderMode {
@@ -88,8 +88,8 @@ struct WaterParams {
     float smoothingSigma = 1.0f;    // cells
     float smoothingRate = 1.0f;     // 1/s: strength per substep = min(1, rate dt)
     BorderMode border = BorderMode::Open;
-    int threads = 0;  // CPU step: row bands on this many threads, 0 = all cores (1..64); the
-                      // result is the same for every count (grids under 128^2 use one)
+    int threads = 0;                         // CPU step: row bands on this many threads, 0 = all cores (1..64); the
+                                             // result is the same for every count (grids under 128^2 use one)
     long maxSubsteps = kDefaultMaxSubsteps;  // advance() refuses a dt needing more
 };
 
