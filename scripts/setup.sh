@@ -16,6 +16,7 @@ PACKAGES=(
   universal-ctags  # scripts/check_function_length.py (tests/architecture)
   xvfb xauth
   clang-14 libclang-rt-14-dev
+  clang-format-14  # scripts/check_format.py (tests/format): the format is clang-format 14's
   chromium fonts-dejavu-core  # the browser test tier (tests/report, label browser)
 )
 
