@@ -257,7 +257,7 @@ TEST_F(ComposeGl, ModuleLibraryFromStringsComposesAndRenders) {
                                     {library.id("tint")},
                                     "out vec4 fragColor;\nvoid main() { fragColor = tint(); }\n",
                                     "app/lib.frag"}};
-    prism::gl::Program program = prism::gl::composeProgram(library.catalog(), stages, "library");
+    prism::gl::Program program = prism::gl::composeProgram(library, stages, "library");
     program.set("u_gain", 1.0f);
     prism::gl::Framebuffer fb(prism::test::kSize, prism::test::kSize);
     prism::test::drawTriangle(fb, program);
@@ -274,7 +274,7 @@ TEST_F(ComposeGl, ModuleLibraryUniformOutsideTheContractIsAnError) {
                                     "out vec4 fragColor;\nvoid main() { fragColor = vec4(gain()); }\n",
                                     "app/lib.frag"}};
     try {
-        prism::gl::composeProgram(library.catalog(), stages, "gain");
+        prism::gl::composeProgram(library, stages, "gain");
         FAIL() << "u_gian, which the runtime never provides, composed";
     } catch (const CompositionError& e) {
         EXPECT_NE(std::string(e.what()).find("lib/gain.glsl:2:"), std::string::npos) << e.what();

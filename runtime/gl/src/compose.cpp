@@ -6,6 +6,7 @@
 #include <prism/catalog/line_directive.hpp>
 
 #include "compose_check.hpp"
+#include "prism/gl/module_library.hpp"
 
 namespace prism::gl {
 namespace {
@@ -132,16 +133,31 @@ ProgramSources composeSources(const catalog::Catalog& catalog, std::span<const C
     return out;
 }
 
-Program composeProgram(const catalog::Catalog& catalog, std::span<const ComposeStage> stages, std::string label,
-                       std::span<const catalog::Define> defines) {
+namespace {
+
+Program checkedProgram(const catalog::Catalog& catalog, std::span<const ComposeStage> stages, std::string label,
+                       std::span<const catalog::Define> defines, std::span<const std::string> contractFiles) {
     ProgramSources sources = composeSources(catalog, stages, std::move(label), defines);
-    const std::vector<std::string> problems = detail::checkComposedSources(catalog, sources);
+    const std::vector<std::string> problems = detail::checkComposedSources(catalog, sources, contractFiles);
     if (!problems.empty()) {
         std::string message = "prism compose: " + sources.label + " failed the build step's checks:";
         for (const auto& p : problems) message += "\n" + p;
         throw CompositionError(message, problems);
     }
     return Program(std::move(sources));
+}
+
+}  // namespace
+
+Program composeProgram(const catalog::Catalog& catalog, std::span<const ComposeStage> stages, std::string label,
+                       std::span<const catalog::Define> defines) {
+    const std::string generated[] = {"the catalogue's binding contract (prism-shaderc --contract)"};
+    return checkedProgram(catalog, stages, std::move(label), defines, generated);
+}
+
+Program composeProgram(const ModuleLibrary& library, std::span<const ComposeStage> stages, std::string label,
+                       std::span<const catalog::Define> defines) {
+    return checkedProgram(library.catalog(), stages, std::move(label), defines, library.contractFiles());
 }
 
 }  // namespace prism::gl

@@ -52,6 +52,8 @@
 
 namespace prism::gl {
 
+class ModuleLibrary;
+
 // A composition problem. `diagnostics` holds one GCC-style line per problem found by the
 // build step's checks (`path:line:col: error: message`), empty for errors found before them.
 class CompositionError : public std::runtime_error {
@@ -85,6 +87,9 @@ ProgramSources composeSources(const catalog::Catalog& catalog, std::span<const C
 // error with "did you mean"); throws CompositionError listing every diagnostic, at each
 // module's own file:line. Then links with the driver (ShaderBuildError on failure).
 Program composeProgram(const catalog::Catalog& catalog, std::span<const ComposeStage> stages,
+                       std::string label = "composed", std::span<const catalog::Define> defines = {});
+// The same for a library read at run time: its contract errors name its contract files.
+Program composeProgram(const ModuleLibrary& library, std::span<const ComposeStage> stages,
                        std::string label = "composed", std::span<const catalog::Define> defines = {});
 
 }  // namespace prism::gl
