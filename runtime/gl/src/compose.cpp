@@ -6,6 +6,7 @@
 #include <prism/catalog/line_directive.hpp>
 
 #include "compose_check.hpp"
+#include "compose_includes.hpp"
 #include "prism/gl/module_library.hpp"
 
 namespace prism::gl {
@@ -56,24 +57,29 @@ bool isDirective(std::string_view line, std::string_view name) {
            (t.size() == name.size() || !std::isalnum(static_cast<unsigned char>(t[name.size()])));
 }
 
-// The user's source with #version lines blanked; throws on #include.
-std::string userText(std::string_view source, const std::string& name) {
-    std::string out;
-    std::size_t start = 0, lineNumber = 1;
+// The user's source with its #version and #include lines blanked (line numbers kept; the
+// includes join the modules) and its first #version line, as the build step keeps it.
+struct UserText {
+    std::string text;
+    std::string version;  // "" when the source has none
+    bool includes = false;
+};
+
+UserText userText(std::string_view source) {
+    UserText out;
+    std::size_t start = 0;
     while (start <= source.size()) {
         std::size_t end = source.find('\n', start);
         if (end == std::string_view::npos) end = source.size();
         const std::string_view line = source.substr(start, end - start);
-        if (isDirective(line, "include"))
-            throw CompositionError(name + ":" + std::to_string(lineNumber) +
-                                   ": #include is not resolved at run time; list the module's id in "
-                                   "ComposeStage::modules instead");
-        if (!isDirective(line, "version")) out.append(line);
-        if (end < source.size()) out += '\n';
+        const bool version = isDirective(line, "version"), include = isDirective(line, "include");
+        if (version && out.version.empty()) out.version = trimmedStart(line);
+        out.includes = out.includes || include;
+        if (!version && !include) out.text.append(line);
+        if (end < source.size()) out.text += '\n';
         start = end + 1;
-        ++lineNumber;
     }
-    if (!out.empty() && out.back() != '\n') out += '\n';
+    if (!out.text.empty() && out.text.back() != '\n') out.text += '\n';
     return out;
 }
 
@@ -92,11 +98,17 @@ StageText composeStage(const catalog::Catalog& catalog, const ComposeStage& stag
     text.stage = stage.stage;
     const std::string userName =
         stage.sourceName.empty() ? "<composed " + std::string(catalog::stageName(stage.stage)) + ">" : stage.sourceName;
+    const UserText user = userText(stage.source);
+    std::vector<std::uint32_t> modules = stage.modules;
+    if (user.includes)
+        for (std::uint32_t id : detail::includedModules(catalog, userName, stage.source, defines))
+            modules.push_back(id);
+    const std::string versionLine = user.version.empty() ? std::string(versionDirectiveOf(catalog)) : user.version;
     // Each file starts at its line 1 (the `#line` rule: prism/catalog/line_directive.hpp).
-    const auto version = catalog::glslVersionOf(versionDirectiveOf(catalog));
+    const auto version = catalog::glslVersionOf(versionLine);
 
     std::string& src = text.source;
-    src.append(versionDirectiveOf(catalog));
+    src.append(versionLine);
     src += '\n';
     for (const auto& d : defines) {
         src += "#define ";
@@ -110,7 +122,7 @@ StageText composeStage(const catalog::Catalog& catalog, const ComposeStage& stag
     text.files.push_back({0, userName});
 
     std::uint32_t number = 1;
-    for (std::uint32_t id : moduleOrder(catalog, stage.modules)) {
+    for (std::uint32_t id : moduleOrder(catalog, modules)) {
         const catalog::Module& m = catalog.modules[id];
         src += catalog::lineDirective(1, number, version) + '\n';
         std::string body = catalog::joinChunks(m.chunks);
@@ -120,7 +132,7 @@ StageText composeStage(const catalog::Catalog& catalog, const ComposeStage& stag
         ++number;
     }
     src += catalog::lineDirective(1, 0, version) + '\n';
-    src += userText(stage.source, userName);
+    src += user.text;
     return text;
 }
 

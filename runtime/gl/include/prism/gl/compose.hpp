@@ -24,7 +24,7 @@
 //
 // Each stage's source is laid out as
 //
-//     #version 330 core          <- the catalogue's versionDirective
+//     #version 330 core          <- your source's #version, else the catalogue's versionDirective
 //     #define NAME VALUE         <- the optional defines, in order
 //     #line 1 1                  <- module 1 (dependencies first), its text from line 1
 //     ...
@@ -35,9 +35,12 @@
 // is your code, 1..k the modules; the files table maps them to paths for errors.
 // Modules come in dependency order (dependencies before dependants, otherwise in the
 // order asked for); each module appears once however often it is reached (diamonds).
-// A `#version` line in your source is blanked (line numbers kept); an `#include` line
-// throws CompositionError (list the module in `modules` instead), as do unknown
-// module ids and dependency cycles.
+// Your source is read as the build step reads a stage (prism/shaderc/build_step.hpp): its
+// first `#version` line replaces the catalogue's, and each active `#include` is found in
+// the build step's search order (your file's folder, then the modules' roots) and must be
+// a module of the catalogue, which then joins `modules`; both lines are blanked (line
+// numbers kept). A missing include throws CompositionError with the build step's
+// `path:line:col: error: ...` diagnostic, as do unknown module ids and dependency cycles.
 #pragma once
 
 #include <cstdint>
@@ -66,7 +69,7 @@ class CompositionError : public std::runtime_error {
 struct ComposeStage {
     catalog::Stage stage = catalog::Stage::Vertex;
     std::vector<std::uint32_t> modules;  // ModuleId values wanted directly
-    std::string source;                  // your GLSL for this stage, without #version
+    std::string source;                  // your GLSL for this stage; #version and #include as in a stage file
     std::string sourceName;              // its path in error messages; default "<composed vert>"
 };
 
