@@ -119,8 +119,7 @@ ModuleScan scanModule(const std::string& path, const ResolveSettings& settings, 
     ModuleScan out;
     out.ok = r.ok;
     out.messages = messagesOf(r.diagnostics);
-    out.module = {std::move(r.module.path), std::move(r.module.canonical), std::move(r.module.text),
-                  std::move(r.module.description), std::move(r.module.includes)};
+    out.module = std::move(r.module);
     return out;
 }
 

@@ -75,7 +75,13 @@ TEST(ComposeOrder, CycleAndUnknownIdAreErrors) {
         prism::gl::moduleOrder(kCatalog, loop);
         FAIL() << "a dependency cycle was accepted";
     } catch (const CompositionError& e) {
-        EXPECT_NE(std::string(e.what()).find("loop_a -> loop_b -> loop_a"), std::string::npos) << e.what();
+        // The build step's message, at the module that closes the cycle (it once was a bare
+        // "module dependency cycle: loop_a -> loop_b -> loop_a" with no file and no hint).
+        ASSERT_EQ(e.diagnostics.size(), 1u) << e.what();
+        EXPECT_EQ(e.diagnostics.front(),
+                  "modules/loop_b.glsl: error: include cycle: modules/loop_a.glsl -> modules/loop_b.glsl -> "
+                  "modules/loop_a.glsl; add an include guard or #pragma once, or break the cycle\n")
+            << e.what();
     }
     const std::uint32_t unknown[] = {42};
     try {

@@ -25,16 +25,28 @@ const catalog::Module& moduleAt(const catalog::Catalog& c, std::uint32_t id) {
     return c.modules[id];
 }
 
+std::string_view shownPath(const catalog::Module& m) {
+    return m.path.empty() ? m.name : m.path;
+}
+
+// The build step's include cycle error, at the module whose dependency closes the cycle (a
+// catalogue keeps no line numbers of its modules' #includes).
+CompositionError cycleError(const catalog::Catalog& c, const std::vector<std::uint32_t>& cycle) {
+    std::string chain;
+    for (std::uint32_t id : cycle) chain += std::string(shownPath(c.modules[id])) + " -> ";
+    chain += shownPath(c.modules[cycle.front()]);
+    const shaderc::Message message =
+        shaderc::errorAt(std::string(shownPath(c.modules[cycle.back()])), 0, 0,
+                         "include cycle: " + chain + "; add an include guard or #pragma once, or break the cycle");
+    return detail::compositionError("prism compose: module dependency cycle", std::span(&message, 1));
+}
+
 void visit(const catalog::Catalog& c, std::uint32_t id, std::vector<std::uint32_t>& path, std::vector<char>& done,
            std::vector<std::uint32_t>& out) {
     const catalog::Module& m = moduleAt(c, id);
     if (done[id]) return;
     for (std::size_t i = 0; i < path.size(); ++i)
-        if (path[i] == id) {
-            std::string chain;
-            for (std::size_t j = i; j < path.size(); ++j) chain += std::string(c.modules[path[j]].name) + " -> ";
-            throw CompositionError("prism compose: module dependency cycle: " + chain + std::string(m.name));
-        }
+        if (path[i] == id) throw cycleError(c, {path.begin() + static_cast<std::ptrdiff_t>(i), path.end()});
     path.push_back(id);
     for (std::uint32_t dep : m.dependencies) visit(c, dep, path, done, out);
     path.pop_back();

@@ -59,4 +59,14 @@ std::vector<std::string> checkComposedSources(const catalog::Catalog& catalog, c
     return out;
 }
 
+CompositionError compositionError(const std::string& heading, std::span<const shaderc::Message> messages) {
+    std::vector<std::string> lines;
+    std::string text = heading;
+    for (const auto& m : messages) {
+        lines.push_back(m.text);
+        text += "\n" + m.text;
+    }
+    return CompositionError(text, std::move(lines));
+}
+
 }  // namespace prism::gl::detail

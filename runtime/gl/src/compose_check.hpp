@@ -8,7 +8,9 @@
 #include <vector>
 
 #include "prism/catalog/shader_catalog.hpp"
+#include "prism/gl/compose.hpp"
 #include "prism/gl/program.hpp"
+#include "prism/shaderc/build_step.hpp"
 
 namespace prism::gl::detail {
 
@@ -17,5 +19,9 @@ namespace prism::gl::detail {
 // `contractFiles` name the catalogue's contract in its diagnostics.
 std::vector<std::string> checkComposedSources(const catalog::Catalog& catalog, const ProgramSources& sources,
                                               std::span<const std::string> contractFiles);
+
+// `heading` and then the build step's messages, each also one of its diagnostics: how
+// composition and module libraries report what the build step's stages found.
+CompositionError compositionError(const std::string& heading, std::span<const shaderc::Message> messages);
 
 }  // namespace prism::gl::detail

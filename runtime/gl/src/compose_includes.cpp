@@ -7,8 +7,7 @@
 #include <filesystem>
 #include <utility>
 
-#include "prism/gl/compose.hpp"
-#include "prism/shaderc/build_step.hpp"
+#include "compose_check.hpp"
 
 namespace prism::gl::detail {
 namespace {
@@ -26,13 +25,7 @@ std::string rootOf(const catalog::Module& m) {
 }
 
 [[noreturn]] void fail(const std::string& sourceName, const std::vector<sc::Message>& messages) {
-    std::vector<std::string> lines;
-    std::string text = "prism compose: " + sourceName + ": an #include could not be resolved";
-    for (const auto& m : messages) {
-        lines.push_back(m.text);
-        text += "\n" + m.text;
-    }
-    throw CompositionError(text, std::move(lines));
+    throw compositionError("prism compose: " + sourceName + ": an #include could not be resolved", messages);
 }
 
 }  // namespace

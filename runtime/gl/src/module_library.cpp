@@ -8,6 +8,7 @@
 #include <functional>
 #include <map>
 
+#include "compose_check.hpp"
 #include "prism/catalog/did_you_mean.hpp"
 #include "prism/gl/compose.hpp"
 #include "prism/shaderc/build_step.hpp"
@@ -33,13 +34,7 @@ namespace {
 namespace sc = prism::shaderc;
 
 [[noreturn]] void fail(const std::string& what, const std::vector<sc::Message>& messages) {
-    std::vector<std::string> lines;
-    std::string message = "prism module library: " + what;
-    for (const auto& m : messages) {
-        lines.push_back(m.text);
-        message += "\n" + m.text;
-    }
-    throw CompositionError(message, lines);
+    throw detail::compositionError("prism module library: " + what, messages);
 }
 
 std::string folderOf(const std::string& path) {
