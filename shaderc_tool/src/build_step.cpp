@@ -57,6 +57,7 @@ ResolvedStage internalOf(const FlatStage& r) {
 Contract internalOf(const BindingContract& c) {
     Contract out;
     out.files = c.files;
+    out.builtIn = c.builtIn;
     for (const auto& a : c.attributes) out.attributes.push_back({a.name, a.type, a.location});
     for (const auto& u : c.uniforms) out.uniforms.push_back({u.name, u.type, u.array});
     return out;
@@ -95,6 +96,7 @@ ContractLoad loadContract(std::span<const std::string> paths, const Files& files
     out.messages = messagesOf(loaded.diagnostics);
     out.ok = !loaded.ioError && !hasError(out.messages);
     out.contract.files = loaded.contract.files;
+    out.contract.builtIn = loaded.contract.builtIn;
     for (const auto& a : loaded.contract.attributes)
         out.contract.attributes.push_back({a.name, a.type, glTypeOf(a.type), a.location, 0});
     for (const auto& u : loaded.contract.uniforms)

@@ -69,6 +69,7 @@ struct BindingContract {
     std::vector<std::string> files;
     std::vector<ContractName> attributes;
     std::vector<ContractName> uniforms;
+    bool builtIn = false;  // Prism's own, loaded from no paths: a near miss is then a warning
 };
 struct ContractLoad {
     BindingContract contract;
