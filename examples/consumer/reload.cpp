@@ -1,7 +1,7 @@
 // Example consumer of hot reload against an installed Prism: watches what the lit_shaders
 // catalogue was built from (the consumer's stage files and tint.glsl, and the installed
 // prefix's modules, from lit_shaders_sources.hpp), edits the module named on the command
-// line (tests/integration/installed_reload.sh names the prefix's material.glsl), and
+// line (tests/integration/installed_runtime.sh names the prefix's material.glsl), and
 // checks that the next frame draws with the rebuilt program: unicolor red turns blue.
 //
 //     prism_consumer_reload MATERIAL_GLSL_TO_EDIT
