@@ -234,6 +234,24 @@ TEST_F(ComposeGl, MisspelledAttributeIsAnErrorAtTheModuleLineWithASuggestion) {
     }
 }
 
+// With the source tree recorded beside a catalogue, a contract error names the contract
+// files (without it, the catalogue's contract has no file to name).
+TEST_F(ComposeGl, ContractErrorNamesTheSourceTreesContractFiles) {
+    const std::string_view contracts[] = {"modules/contract.json"};
+    const cat::SourceTree tree{"test", "", {}, contracts, {}};
+    const ComposeStage stages[] = {
+        {cat::Stage::Vertex, {0}, "void main() { gl_Position = misspelledPosition(); }\n", "app/misspelled.vert"},
+        {cat::Stage::Fragment, {}, "out vec4 fragColor;\nvoid main() { fragColor = vec4(1.0); }\n", "app/plain.frag"}};
+    try {
+        prism::gl::composeProgram(kMisspelledCatalog, tree, stages, "misspelled");
+        FAIL() << "a_positon, which the runtime never provides, linked silently";
+    } catch (const CompositionError& e) {
+        ASSERT_FALSE(e.diagnostics.empty()) << e.what();
+        EXPECT_NE(e.diagnostics.front().find("not in the binding contract (modules/contract.json)"), std::string::npos)
+            << e.what();
+    }
+}
+
 // A varying declared vec3 in one stage and vec4 in the next names both stages.
 TEST_F(ComposeGl, VaryingTypeMismatchNamesBothStages) {
     const ComposeStage stages[] = {{cat::Stage::Vertex,

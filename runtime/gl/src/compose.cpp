@@ -179,6 +179,13 @@ Program composeProgram(const catalog::Catalog& catalog, std::span<const ComposeS
     return checkedProgram(catalog, stages, std::move(label), defines, generated);
 }
 
+Program composeProgram(const catalog::Catalog& catalog, const catalog::SourceTree& tree,
+                       std::span<const ComposeStage> stages, std::string label,
+                       std::span<const catalog::Define> defines) {
+    const std::vector<std::string> files(tree.contractFiles.begin(), tree.contractFiles.end());
+    return checkedProgram(catalog, stages, std::move(label), defines, files);
+}
+
 Program composeProgram(const ModuleLibrary& library, std::span<const ComposeStage> stages, std::string label,
                        std::span<const catalog::Define> defines) {
     return checkedProgram(library.catalog(), stages, std::move(label), defines, library.contractFiles());

@@ -52,6 +52,7 @@
 
 #include "prism/gl/program.hpp"
 #include "prism/catalog/shader_catalog.hpp"
+#include "prism/catalog/source_tree.hpp"
 
 namespace prism::gl {
 
@@ -91,6 +92,11 @@ ProgramSources composeSources(const catalog::Catalog& catalog, std::span<const C
 // module's own file:line. Then links with the driver (ShaderBuildError on failure).
 Program composeProgram(const catalog::Catalog& catalog, std::span<const ComposeStage> stages,
                        std::string label = "composed", std::span<const catalog::Define> defines = {});
+// The same for a generated catalogue with the source tree prism_add_shaders() recorded
+// beside it (`<ns>::kSourceTree`): its contract errors name the tree's contract files.
+Program composeProgram(const catalog::Catalog& catalog, const catalog::SourceTree& tree,
+                       std::span<const ComposeStage> stages, std::string label = "composed",
+                       std::span<const catalog::Define> defines = {});
 // The same for a library read at run time: its contract errors name its contract files.
 Program composeProgram(const ModuleLibrary& library, std::span<const ComposeStage> stages,
                        std::string label = "composed", std::span<const catalog::Define> defines = {});
