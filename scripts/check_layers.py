@@ -6,13 +6,15 @@ Reads the link graph CMake writes at configure time (<build>/prism_link_graph.tx
 points upward: a library may link only libraries of its own layer or of layers below
 (cpu < gl < render < systems < scenes < apps). CPU-layer libraries therefore link no GL.
 It also checks that no header or source of a library includes a header of a library it
-does not link (include path = library), that no code in runtime/ or apps/ creates or
-deletes a GL object except through prism/gl/handles.hpp, and draws the graph as
-docs/architecture.svg.
+does not link (include path = library), that no file of runtime/, apps/ or examples/
+includes a private header of the shader tool (shaderc_tool/src/; the tool's public API is
+prism/shaderc/), that no code in runtime/ or apps/ creates or deletes a GL object except
+through prism/gl/handles.hpp, and draws the graph as docs/architecture.svg.
 
     python3 scripts/check_layers.py build                 # check; exit 1 on a violation
     python3 scripts/check_layers.py build --write-svg     # also rewrite docs/architecture.svg
     python3 scripts/check_layers.py build --check-svg     # fail when the SVG is out of date
+    python3 scripts/check_layers.py --private-includes TREE  # only the shaderc_tool/src rule, on TREE
 """
 import html
 import os
@@ -28,8 +30,10 @@ INCLUDE_DIR_OWNERS = {
     "catalog": ["prism_catalog"], "geometry": ["prism_geometry"], "image": ["prism_image"],
     "view": ["prism_view"], "gl": ["prism_gl"], "render": ["prism_render"],
     "rain": ["prism_rain_core", "prism_rain"], "water": ["prism_water_core", "prism_water"],
-    "scene": ["prism_scene_core", "prism_scene"],
+    "scene": ["prism_scene_core", "prism_scene"], "shaderc": ["prism_shaderc_lib"],
 }
+# Code that must reach the shader tool only through its public API, prism/shaderc/.
+TOOL_CLIENT_FOLDERS = ["runtime", "apps", "examples"]
 # Source folders of each library, for the include check.
 LIBRARY_SOURCES = {
     "prism_image": ["runtime/image"], "prism_view": ["runtime/view"], "prism_geometry": ["runtime/geometry"],
@@ -98,6 +102,33 @@ def include_errors(graph):
     return errors
 
 
+def private_include_errors(root):
+    """No file under TOOL_CLIENT_FOLDERS includes a header of shaderc_tool/src/, by path or by
+    bare name (a name found there and not beside the including file)."""
+    private_dir = os.path.join(root, "shaderc_tool", "src")
+    include_re = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
+    errors = []
+    for top in TOOL_CLIENT_FOLDERS:
+        for dirpath, _, files in os.walk(os.path.join(root, top)):
+            for name in files:
+                if not name.endswith((".cpp", ".hpp", ".h")):
+                    continue
+                path = os.path.join(dirpath, name)
+                for number, line in enumerate(open(path, encoding="utf-8"), 1):
+                    m = include_re.match(line)
+                    if not m:
+                        continue
+                    target = m.group(1)
+                    by_path = "shaderc_tool/src/" in target
+                    by_name = (os.path.exists(os.path.join(private_dir, target))
+                               and not os.path.exists(os.path.join(dirpath, target)))
+                    if by_path or by_name:
+                        rel = os.path.relpath(path, root)
+                        errors.append(f"{rel}:{number}: error: includes \"{target}\", a private header of the shader "
+                                      f"tool (shaderc_tool/src/); use its public API, prism/shaderc/build_step.hpp")
+    return errors
+
+
 def raw_gl_object_errors():
     """Every GL object in runtime/ and apps/ is owned through prism/gl/handles.hpp: no raw
     glGen*/glDelete*/glCreateShader/glCreateProgram outside runtime/gl/src/handles.cpp."""
@@ -162,8 +193,13 @@ def draw_svg(graph):
 def main(argv):
     if len(argv) < 2:
         sys.exit(__doc__)
+    if argv[1] == "--private-includes" and len(argv) == 3:
+        errors = private_include_errors(argv[2])
+        for e in errors:
+            print(e, file=sys.stderr)
+        return 1 if errors else 0
     graph = read_graph(argv[1])
-    errors = upward_edges(graph) + include_errors(graph) + raw_gl_object_errors()
+    errors = upward_edges(graph) + include_errors(graph) + private_include_errors(ROOT) + raw_gl_object_errors()
     svg = draw_svg(graph)
     if "--write-svg" in argv:
         open(SVG_PATH, "w").write(svg)

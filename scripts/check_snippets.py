@@ -3,7 +3,7 @@
 
 Every code example in docs/*.md and README.md that follows a marker, and the usage example
 at the top of every public header (runtime/*/include/prism/**/*.hpp,
-shaderc_tool/include/prism/{catalog,io,hash}/*.hpp), is a copy of a file under examples/snippets/
+shaderc_tool/include/prism/{catalog,io,hash,shaderc}/*.hpp), is a copy of a file under examples/snippets/
 that tests/snippets builds and runs. This script checks that the copies are exact.
 
 Markers:
@@ -32,7 +32,8 @@ import tempfile
 
 SNIPPET_DIR = "examples/snippets"
 HEADER_GLOBS = ["runtime/*/include/prism/**/*.hpp", "shaderc_tool/include/prism/catalog/*.hpp",
-                "shaderc_tool/include/prism/io/*.hpp", "shaderc_tool/include/prism/hash/*.hpp"]
+                "shaderc_tool/include/prism/io/*.hpp", "shaderc_tool/include/prism/hash/*.hpp",
+                "shaderc_tool/include/prism/shaderc/*.hpp"]
 DOC_GLOBS = ["docs/*.md", "README.md"]
 FULLY_CHECKED_DOCS = ["docs/runtime.md"]  # here every ```cpp / ```cmake block needs a marker
 MD_MARKER = re.compile(r"^<!-- snippet: (\S+) -->\s*$")

@@ -20,7 +20,7 @@ int main() {
          .modules = {library.id("tint")},
          .source = "out vec4 frag;\nvoid main() { frag = vec4(tint(vec3(1.0)), 1.0); }\n",
          .sourceName = "app/tinted.frag"}};
-    prism::gl::Program program = prism::gl::composeProgram(library.catalog(), stages, "tinted");
+    prism::gl::Program program = prism::gl::composeProgram(library, stages, "tinted");
     // [/snippet]
     return program.id() != 0 ? 0 : 1;
 }

@@ -19,6 +19,7 @@
 
 #include "diagnostics.hpp"
 #include "glslang_preprocessor.hpp"
+#include "prism/shaderc/build_step.hpp"
 #include "source_reader.hpp"
 
 namespace prism::shaderc {
@@ -61,14 +62,9 @@ ResolveResult resolveStage(const std::string& stagePath, const ResolveOptions& o
 // A module as the catalogue stores it: its own text with #include, #version and
 // #pragma once lines blanked (so line numbers stay true), its leading comment as the
 // description, and the files its active includes name (display paths) in order, as
-// glslang's preprocessor sees the module on its own with the -D macros.
-struct ModuleSource {
-    std::string path;
-    std::string canonical;
-    std::string text;
-    std::string description;
-    std::vector<std::string> includes;
-};
+// glslang's preprocessor sees the module on its own with the -D macros. The public API's
+// ModuleText (prism/shaderc/build_step.hpp).
+using ModuleSource = ModuleText;
 
 struct ModuleScanResult {
     bool ok = false;

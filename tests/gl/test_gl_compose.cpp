@@ -75,7 +75,13 @@ TEST(ComposeOrder, CycleAndUnknownIdAreErrors) {
         prism::gl::moduleOrder(kCatalog, loop);
         FAIL() << "a dependency cycle was accepted";
     } catch (const CompositionError& e) {
-        EXPECT_NE(std::string(e.what()).find("loop_a -> loop_b -> loop_a"), std::string::npos) << e.what();
+        // The build step's message, at the module that closes the cycle (it once was a bare
+        // "module dependency cycle: loop_a -> loop_b -> loop_a" with no file and no hint).
+        ASSERT_EQ(e.diagnostics.size(), 1u) << e.what();
+        EXPECT_EQ(e.diagnostics.front(),
+                  "modules/loop_b.glsl: error: include cycle: modules/loop_a.glsl -> modules/loop_b.glsl -> "
+                  "modules/loop_a.glsl; add an include guard or #pragma once, or break the cycle\n")
+            << e.what();
     }
     const std::uint32_t unknown[] = {42};
     try {
@@ -122,18 +128,35 @@ TEST(ComposeLayout, LineDirectivesFollowTheVersionsRule) {
     EXPECT_NE(oldText.source.find("#line 0 0\n"), std::string::npos) << oldText.source;
 }
 
-TEST(ComposeLayout, UserVersionLineIsBlankedAndIncludeRefused) {
-    const ComposeStage withVersion{cat::Stage::Fragment, {}, "#version 450\nvoid f() {}\n", "u.frag"};
+// The user's source is read as the build step reads a stage file: its #version is kept
+// (it once was replaced by the catalogue's, hiding a stage that needs 450), and its
+// #include lines are found in the build step's search order and join the modules.
+TEST(ComposeLayout, UserVersionLineIsKept) {
+    const ComposeStage withVersion{cat::Stage::Fragment, {0}, "#version 450\nvoid f() {}\n", "u.frag"};
     const auto text = prism::gl::composeStage(kCatalog, withVersion);
+    EXPECT_EQ(text.source.rfind("#version 450\n#line 1 1\n// base\n", 0), 0u) << text.source;
     EXPECT_EQ(occurrences(text.source, "#version"), 1u);
     EXPECT_NE(text.source.find("#line 1 0\n\nvoid f() {}\n"), std::string::npos) << text.source;
+}
 
+TEST(ComposeLayout, UserIncludeJoinsTheModules) {
+    const ComposeStage withInclude{cat::Stage::Fragment, {}, "void f() {}\n  #include \"top.glsl\"\n", "app/u.frag"};
+    const auto text = prism::gl::composeStage(kCatalog, withInclude);
+    ASSERT_EQ(text.files.size(), 5u) << text.source;  // top and its dependencies, first
+    EXPECT_EQ(text.files[4].path, "modules/top.glsl");
+    EXPECT_NE(text.source.find("#line 1 0\nvoid f() {}\n\n"), std::string::npos) << text.source;
+    EXPECT_EQ(text.source.find("#include", text.source.find("#line 1 0")), std::string::npos) << text.source;
+}
+
+TEST(ComposeLayout, MissingUserIncludeIsTheBuildStepsError) {
     const ComposeStage withInclude{cat::Stage::Fragment, {}, "void f() {}\n  #include \"lights.glsl\"\n", "u.frag"};
     try {
         prism::gl::composeStage(kCatalog, withInclude);
-        FAIL() << "#include in user code was accepted";
+        FAIL() << "an #include of no module was accepted";
     } catch (const CompositionError& e) {
-        EXPECT_NE(std::string(e.what()).find("u.frag:2: #include"), std::string::npos) << e.what();
+        ASSERT_FALSE(e.diagnostics.empty()) << e.what();
+        EXPECT_EQ(e.diagnostics.front().rfind("u.frag:2:12: error: ", 0), 0u) << e.what();
+        EXPECT_NE(e.diagnostics.front().find("lights.glsl"), std::string::npos) << e.what();
     }
 }
 
@@ -211,6 +234,24 @@ TEST_F(ComposeGl, MisspelledAttributeIsAnErrorAtTheModuleLineWithASuggestion) {
     }
 }
 
+// With the source tree recorded beside a catalogue, a contract error names the contract
+// files (without it, the catalogue's contract has no file to name).
+TEST_F(ComposeGl, ContractErrorNamesTheSourceTreesContractFiles) {
+    const std::string_view contracts[] = {"modules/contract.json"};
+    const cat::SourceTree tree{"test", "", {}, contracts, {}};
+    const ComposeStage stages[] = {
+        {cat::Stage::Vertex, {0}, "void main() { gl_Position = misspelledPosition(); }\n", "app/misspelled.vert"},
+        {cat::Stage::Fragment, {}, "out vec4 fragColor;\nvoid main() { fragColor = vec4(1.0); }\n", "app/plain.frag"}};
+    try {
+        prism::gl::composeProgram(kMisspelledCatalog, tree, stages, "misspelled");
+        FAIL() << "a_positon, which the runtime never provides, linked silently";
+    } catch (const CompositionError& e) {
+        ASSERT_FALSE(e.diagnostics.empty()) << e.what();
+        EXPECT_NE(e.diagnostics.front().find("not in the binding contract (modules/contract.json)"), std::string::npos)
+            << e.what();
+    }
+}
+
 // A varying declared vec3 in one stage and vec4 in the next names both stages.
 TEST_F(ComposeGl, VaryingTypeMismatchNamesBothStages) {
     const ComposeStage stages[] = {{cat::Stage::Vertex,
@@ -257,7 +298,7 @@ TEST_F(ComposeGl, ModuleLibraryFromStringsComposesAndRenders) {
                                     {library.id("tint")},
                                     "out vec4 fragColor;\nvoid main() { fragColor = tint(); }\n",
                                     "app/lib.frag"}};
-    prism::gl::Program program = prism::gl::composeProgram(library.catalog(), stages, "library");
+    prism::gl::Program program = prism::gl::composeProgram(library, stages, "library");
     program.set("u_gain", 1.0f);
     prism::gl::Framebuffer fb(prism::test::kSize, prism::test::kSize);
     prism::test::drawTriangle(fb, program);
@@ -274,7 +315,7 @@ TEST_F(ComposeGl, ModuleLibraryUniformOutsideTheContractIsAnError) {
                                     "out vec4 fragColor;\nvoid main() { fragColor = vec4(gain()); }\n",
                                     "app/lib.frag"}};
     try {
-        prism::gl::composeProgram(library.catalog(), stages, "gain");
+        prism::gl::composeProgram(library, stages, "gain");
         FAIL() << "u_gian, which the runtime never provides, composed";
     } catch (const CompositionError& e) {
         EXPECT_NE(std::string(e.what()).find("lib/gain.glsl:2:"), std::string::npos) << e.what();
@@ -302,6 +343,49 @@ TEST(ModuleLibrary, ErrorsNameTheFileAndLine) {
         FAIL() << "an unknown module name was accepted";
     } catch (const CompositionError& e) {
         EXPECT_NE(std::string(e.what()).find("did you mean 'tint'"), std::string::npos) << e.what();
+    }
+}
+
+// Module ids are the build step's: the path under the include directory, mangled (they
+// once were the file's stem, so toon/quantize.glsl was "quantize").
+TEST(ModuleLibrary, IdsAreTheBuildSteps) {
+    const std::string includeDirs[] = {"modules"};
+    const auto library = prism::gl::ModuleLibrary::fromStrings(
+        {{"modules/toon/quantize.glsl", "// q\nfloat quantize(float x) { return floor(x); }\n"},
+         {"modules/plain.glsl", "// p\n"}},
+        kLibraryContract, "#version 330 core", includeDirs);
+    EXPECT_EQ(library.catalog().modules[library.id("toon__quantize")].path, "modules/toon/quantize.glsl");
+    EXPECT_EQ(library.catalog().modules[library.id("plain")].path, "modules/plain.glsl");
+    EXPECT_THROW(library.id("quantize"), CompositionError);
+}
+
+// Without include directories each file's folder is its root: two util.glsl are one id.
+TEST(ModuleLibrary, TwoFilesWithOneIdAreAnErrorNamingBoth) {
+    try {
+        prism::gl::ModuleLibrary::fromStrings({{"a/util.glsl", "// a\n"}, {"b/util.glsl", "// b\n"}}, kLibraryContract);
+        FAIL() << "a/util.glsl and b/util.glsl both loaded as 'util'";
+    } catch (const CompositionError& e) {
+        ASSERT_EQ(e.diagnostics.size(), 1u) << e.what();
+        EXPECT_EQ(e.diagnostics.front().rfind("b/util.glsl: error: module id 'util' is also a/util.glsl's", 0), 0u)
+            << e.what();
+    }
+}
+
+// A cycle is the build step's error: at the #include that closes it, with the chain and
+// the guard hint (it once was "module dependency cycle: cyc_a -> cyc_b -> cyc_a").
+TEST(ModuleLibrary, IncludeCycleIsTheBuildStepsError) {
+    try {
+        prism::gl::ModuleLibrary::fromStrings(
+            {{"lib/cyc_a.glsl", "#include \"cyc_b.glsl\"\n"}, {"lib/cyc_b.glsl", "// b\n#include \"cyc_a.glsl\"\n"}},
+            kLibraryContract);
+        FAIL() << "an include cycle loaded";
+    } catch (const CompositionError& e) {
+        ASSERT_FALSE(e.diagnostics.empty()) << e.what();
+        EXPECT_EQ(e.diagnostics.front().rfind("lib/cyc_b.glsl:2:10: error: include cycle: lib/cyc_a.glsl -> "
+                                              "lib/cyc_b.glsl -> lib/cyc_a.glsl; add an include guard",
+                                              0),
+                  0u)
+            << e.what();
     }
 }
 

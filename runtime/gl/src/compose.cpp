@@ -6,6 +6,8 @@
 #include <prism/catalog/line_directive.hpp>
 
 #include "compose_check.hpp"
+#include "compose_includes.hpp"
+#include "prism/gl/module_library.hpp"
 
 namespace prism::gl {
 namespace {
@@ -23,16 +25,28 @@ const catalog::Module& moduleAt(const catalog::Catalog& c, std::uint32_t id) {
     return c.modules[id];
 }
 
+std::string_view shownPath(const catalog::Module& m) {
+    return m.path.empty() ? m.name : m.path;
+}
+
+// The build step's include cycle error, at the module whose dependency closes the cycle (a
+// catalogue keeps no line numbers of its modules' #includes).
+CompositionError cycleError(const catalog::Catalog& c, const std::vector<std::uint32_t>& cycle) {
+    std::string chain;
+    for (std::uint32_t id : cycle) chain += std::string(shownPath(c.modules[id])) + " -> ";
+    chain += shownPath(c.modules[cycle.front()]);
+    const shaderc::Message message =
+        shaderc::errorAt(std::string(shownPath(c.modules[cycle.back()])), 0, 0,
+                         "include cycle: " + chain + "; add an include guard or #pragma once, or break the cycle");
+    return detail::compositionError("prism compose: module dependency cycle", std::span(&message, 1));
+}
+
 void visit(const catalog::Catalog& c, std::uint32_t id, std::vector<std::uint32_t>& path, std::vector<char>& done,
            std::vector<std::uint32_t>& out) {
     const catalog::Module& m = moduleAt(c, id);
     if (done[id]) return;
     for (std::size_t i = 0; i < path.size(); ++i)
-        if (path[i] == id) {
-            std::string chain;
-            for (std::size_t j = i; j < path.size(); ++j) chain += std::string(c.modules[path[j]].name) + " -> ";
-            throw CompositionError("prism compose: module dependency cycle: " + chain + std::string(m.name));
-        }
+        if (path[i] == id) throw cycleError(c, {path.begin() + static_cast<std::ptrdiff_t>(i), path.end()});
     path.push_back(id);
     for (std::uint32_t dep : m.dependencies) visit(c, dep, path, done, out);
     path.pop_back();
@@ -55,24 +69,29 @@ bool isDirective(std::string_view line, std::string_view name) {
            (t.size() == name.size() || !std::isalnum(static_cast<unsigned char>(t[name.size()])));
 }
 
-// The user's source with #version lines blanked; throws on #include.
-std::string userText(std::string_view source, const std::string& name) {
-    std::string out;
-    std::size_t start = 0, lineNumber = 1;
+// The user's source with its #version and #include lines blanked (line numbers kept; the
+// includes join the modules) and its first #version line, as the build step keeps it.
+struct UserText {
+    std::string text;
+    std::string version;  // "" when the source has none
+    bool includes = false;
+};
+
+UserText userText(std::string_view source) {
+    UserText out;
+    std::size_t start = 0;
     while (start <= source.size()) {
         std::size_t end = source.find('\n', start);
         if (end == std::string_view::npos) end = source.size();
         const std::string_view line = source.substr(start, end - start);
-        if (isDirective(line, "include"))
-            throw CompositionError(name + ":" + std::to_string(lineNumber) +
-                                   ": #include is not resolved at run time; list the module's id in "
-                                   "ComposeStage::modules instead");
-        if (!isDirective(line, "version")) out.append(line);
-        if (end < source.size()) out += '\n';
+        const bool version = isDirective(line, "version"), include = isDirective(line, "include");
+        if (version && out.version.empty()) out.version = trimmedStart(line);
+        out.includes = out.includes || include;
+        if (!version && !include) out.text.append(line);
+        if (end < source.size()) out.text += '\n';
         start = end + 1;
-        ++lineNumber;
     }
-    if (!out.empty() && out.back() != '\n') out += '\n';
+    if (!out.text.empty() && out.text.back() != '\n') out.text += '\n';
     return out;
 }
 
@@ -91,11 +110,17 @@ StageText composeStage(const catalog::Catalog& catalog, const ComposeStage& stag
     text.stage = stage.stage;
     const std::string userName =
         stage.sourceName.empty() ? "<composed " + std::string(catalog::stageName(stage.stage)) + ">" : stage.sourceName;
+    const UserText user = userText(stage.source);
+    std::vector<std::uint32_t> modules = stage.modules;
+    if (user.includes)
+        for (std::uint32_t id : detail::includedModules(catalog, userName, stage.source, defines))
+            modules.push_back(id);
+    const std::string versionLine = user.version.empty() ? std::string(versionDirectiveOf(catalog)) : user.version;
     // Each file starts at its line 1 (the `#line` rule: prism/catalog/line_directive.hpp).
-    const auto version = catalog::glslVersionOf(versionDirectiveOf(catalog));
+    const auto version = catalog::glslVersionOf(versionLine);
 
     std::string& src = text.source;
-    src.append(versionDirectiveOf(catalog));
+    src.append(versionLine);
     src += '\n';
     for (const auto& d : defines) {
         src += "#define ";
@@ -109,7 +134,7 @@ StageText composeStage(const catalog::Catalog& catalog, const ComposeStage& stag
     text.files.push_back({0, userName});
 
     std::uint32_t number = 1;
-    for (std::uint32_t id : moduleOrder(catalog, stage.modules)) {
+    for (std::uint32_t id : moduleOrder(catalog, modules)) {
         const catalog::Module& m = catalog.modules[id];
         src += catalog::lineDirective(1, number, version) + '\n';
         std::string body = catalog::joinChunks(m.chunks);
@@ -119,7 +144,7 @@ StageText composeStage(const catalog::Catalog& catalog, const ComposeStage& stag
         ++number;
     }
     src += catalog::lineDirective(1, 0, version) + '\n';
-    src += userText(stage.source, userName);
+    src += user.text;
     return text;
 }
 
@@ -132,16 +157,38 @@ ProgramSources composeSources(const catalog::Catalog& catalog, std::span<const C
     return out;
 }
 
-Program composeProgram(const catalog::Catalog& catalog, std::span<const ComposeStage> stages, std::string label,
-                       std::span<const catalog::Define> defines) {
+namespace {
+
+Program checkedProgram(const catalog::Catalog& catalog, std::span<const ComposeStage> stages, std::string label,
+                       std::span<const catalog::Define> defines, std::span<const std::string> contractFiles) {
     ProgramSources sources = composeSources(catalog, stages, std::move(label), defines);
-    const std::vector<std::string> problems = detail::checkComposedSources(catalog, sources);
+    const std::vector<std::string> problems = detail::checkComposedSources(catalog, sources, contractFiles);
     if (!problems.empty()) {
         std::string message = "prism compose: " + sources.label + " failed the build step's checks:";
         for (const auto& p : problems) message += "\n" + p;
         throw CompositionError(message, problems);
     }
     return Program(std::move(sources));
+}
+
+}  // namespace
+
+Program composeProgram(const catalog::Catalog& catalog, std::span<const ComposeStage> stages, std::string label,
+                       std::span<const catalog::Define> defines) {
+    const std::string generated[] = {"the catalogue's binding contract (prism-shaderc --contract)"};
+    return checkedProgram(catalog, stages, std::move(label), defines, generated);
+}
+
+Program composeProgram(const catalog::Catalog& catalog, const catalog::SourceTree& tree,
+                       std::span<const ComposeStage> stages, std::string label,
+                       std::span<const catalog::Define> defines) {
+    const std::vector<std::string> files(tree.contractFiles.begin(), tree.contractFiles.end());
+    return checkedProgram(catalog, stages, std::move(label), defines, files);
+}
+
+Program composeProgram(const ModuleLibrary& library, std::span<const ComposeStage> stages, std::string label,
+                       std::span<const catalog::Define> defines) {
+    return checkedProgram(library.catalog(), stages, std::move(label), defines, library.contractFiles());
 }
 
 }  // namespace prism::gl

@@ -1,14 +1,9 @@
-// Checks a composed program with prism-shaderc's own stages (see compose_check.hpp): the
-// catalogue's contract is turned back into the tool's Contract, each composed stage into
-// a resolved stage with its line table, and validateProgram() does the rest.
+// Checks a composed program with prism-shaderc's own stages (prism/shaderc/build_step.hpp):
+// the catalogue's contract is turned back into the build step's contract, each composed
+// stage into a flattened stage with its files table, and checkProgram() does the rest.
 #include "compose_check.hpp"
 
-#include <cctype>
-#include <mutex>
-
-#include "contract.hpp"
-#include "diagnostics.hpp"
-#include "validator.hpp"
+#include "prism/shaderc/build_step.hpp"
 
 namespace prism::gl::detail {
 namespace {
@@ -28,63 +23,50 @@ std::string glslTypeName(std::uint32_t glType) {
     return "float";
 }
 
-shaderc::Contract contractOf(const catalog::Catalog& c) {
-    shaderc::Contract contract;
-    contract.files.push_back("<the catalogue's contract>");
+shaderc::BindingContract contractOf(const catalog::Catalog& c, std::span<const std::string> files) {
+    shaderc::BindingContract contract;
+    contract.files.assign(files.begin(), files.end());
     for (const auto& a : c.contractAttributes)
-        contract.attributes.push_back({std::string(a.name), glslTypeName(a.glType), a.location});
+        contract.attributes.push_back({std::string(a.name), glslTypeName(a.glType), a.glType, a.location, 0});
     for (const auto& u : c.contractUniforms)
-        contract.uniforms.push_back({std::string(u.name), glslTypeName(u.glType), u.arraySize > 1 ? u.arraySize : 0});
+        contract.uniforms.push_back(
+            {std::string(u.name), glslTypeName(u.glType), u.glType, 0, u.arraySize > 1 ? u.arraySize : 0});
     return contract;
-}
-
-int versionNumberOf(const std::string& source) {
-    std::size_t p = source.find("#version");
-    if (p == std::string::npos) return 110;
-    p = source.find_first_of("0123456789", p);
-    int v = 0;
-    while (p < source.size() && std::isdigit(static_cast<unsigned char>(source[p]))) v = v * 10 + (source[p++] - '0');
-    return v;
-}
-
-std::string firstLine(const std::string& s) {
-    return s.substr(0, s.find('\n'));
-}
-
-void initializeOnce() {
-    static std::once_flag once;
-    std::call_once(once, [] { shaderc::initializeValidator(); });
 }
 
 }  // namespace
 
-std::vector<std::string> checkComposedSources(const catalog::Catalog& catalog, const ProgramSources& sources) {
-    initializeOnce();
-    std::vector<shaderc::StageToValidate> stages;
+std::vector<std::string> checkComposedSources(const catalog::Catalog& catalog, const ProgramSources& sources,
+                                              std::span<const std::string> contractFiles) {
+    static const shaderc::Validator validator;  // glslang's state, for the process
+    std::vector<shaderc::StageToCheck> stages;
     for (const auto& s : sources.stages) {
-        shaderc::StageToValidate v;
+        shaderc::StageToCheck v;
         v.stage = s.stage;
         v.path = s.files.empty() ? sources.label : s.files.front().path;
         v.resolved.text = s.source;
-        v.resolved.versionDirective = firstLine(s.source);
-        v.resolved.versionNumber = versionNumberOf(s.source);
         for (const auto& f : s.files) {
-            shaderc::ResolvedFile file;
-            file.number = f.number;
-            file.path = f.path;
-            file.canonical = f.path;
-            v.resolved.files.push_back(std::move(file));
+            if (v.resolved.files.size() <= f.number) v.resolved.files.resize(f.number + 1);
+            v.resolved.files[f.number] = f.path;
         }
         stages.push_back(std::move(v));
     }
-    const shaderc::ValidatedVariant result = shaderc::validateProgram(stages, contractOf(catalog));
-    bool anyError = false;
-    for (const auto& d : result.diagnostics) anyError = anyError || d.severity == shaderc::Severity::Error;
+    const shaderc::ProgramCheck result = shaderc::checkProgram(stages, contractOf(catalog, contractFiles));
     std::vector<std::string> out;
-    if (!anyError && result.ok) return out;
-    for (const auto& d : result.diagnostics) out.push_back(shaderc::formatDiagnostic(d, shaderc::ErrorFormat::Gcc));
+    if (result.ok) return out;
+    for (const auto& m : result.messages) out.push_back(m.text);
     if (out.empty()) out.push_back(sources.label + ": error: the composed program failed validation");
     return out;
+}
+
+CompositionError compositionError(const std::string& heading, std::span<const shaderc::Message> messages) {
+    std::vector<std::string> lines;
+    std::string text = heading;
+    for (const auto& m : messages) {
+        lines.push_back(m.text);
+        text += "\n" + m.text;
+    }
+    return CompositionError(text, std::move(lines));
 }
 
 }  // namespace prism::gl::detail

@@ -24,7 +24,7 @@
 //
 // Each stage's source is laid out as
 //
-//     #version 330 core          <- the catalogue's versionDirective
+//     #version 330 core          <- your source's #version, else the catalogue's versionDirective
 //     #define NAME VALUE         <- the optional defines, in order
 //     #line 1 1                  <- module 1 (dependencies first), its text from line 1
 //     ...
@@ -35,9 +35,12 @@
 // is your code, 1..k the modules; the files table maps them to paths for errors.
 // Modules come in dependency order (dependencies before dependants, otherwise in the
 // order asked for); each module appears once however often it is reached (diamonds).
-// A `#version` line in your source is blanked (line numbers kept); an `#include` line
-// throws CompositionError (list the module in `modules` instead), as do unknown
-// module ids and dependency cycles.
+// Your source is read as the build step reads a stage (prism/shaderc/build_step.hpp): its
+// first `#version` line replaces the catalogue's, and each active `#include` is found in
+// the build step's search order (your file's folder, then the modules' roots) and must be
+// a module of the catalogue, which then joins `modules`; both lines are blanked (line
+// numbers kept). A missing include throws CompositionError with the build step's
+// `path:line:col: error: ...` diagnostic, as do unknown module ids and dependency cycles.
 #pragma once
 
 #include <cstdint>
@@ -49,8 +52,11 @@
 
 #include "prism/gl/program.hpp"
 #include "prism/catalog/shader_catalog.hpp"
+#include "prism/catalog/source_tree.hpp"
 
 namespace prism::gl {
+
+class ModuleLibrary;
 
 // A composition problem. `diagnostics` holds one GCC-style line per problem found by the
 // build step's checks (`path:line:col: error: message`), empty for errors found before them.
@@ -64,7 +70,7 @@ class CompositionError : public std::runtime_error {
 struct ComposeStage {
     catalog::Stage stage = catalog::Stage::Vertex;
     std::vector<std::uint32_t> modules;  // ModuleId values wanted directly
-    std::string source;                  // your GLSL for this stage, without #version
+    std::string source;                  // your GLSL for this stage; #version and #include as in a stage file
     std::string sourceName;              // its path in error messages; default "<composed vert>"
 };
 
@@ -85,6 +91,14 @@ ProgramSources composeSources(const catalog::Catalog& catalog, std::span<const C
 // error with "did you mean"); throws CompositionError listing every diagnostic, at each
 // module's own file:line. Then links with the driver (ShaderBuildError on failure).
 Program composeProgram(const catalog::Catalog& catalog, std::span<const ComposeStage> stages,
+                       std::string label = "composed", std::span<const catalog::Define> defines = {});
+// The same for a generated catalogue with the source tree prism_add_shaders() recorded
+// beside it (`<ns>::kSourceTree`): its contract errors name the tree's contract files.
+Program composeProgram(const catalog::Catalog& catalog, const catalog::SourceTree& tree,
+                       std::span<const ComposeStage> stages, std::string label = "composed",
+                       std::span<const catalog::Define> defines = {});
+// The same for a library read at run time: its contract errors name its contract files.
+Program composeProgram(const ModuleLibrary& library, std::span<const ComposeStage> stages,
                        std::string label = "composed", std::span<const catalog::Define> defines = {});
 
 }  // namespace prism::gl

@@ -3,8 +3,6 @@
 // tool's own stages (prism_shaderc_lib), so includes, descriptions and contract errors work
 // exactly as in the build step. catalog() can be passed to composeProgram().
 //
-// Usage:
-//
 // Usage (snippet: examples/snippets/gl_module_library.cpp):
 //
 //     #include "prism/gl/compose.hpp"
@@ -21,12 +19,15 @@
 //          .modules = {library.id("tint")},
 //          .source = "out vec4 frag;\nvoid main() { frag = vec4(tint(vec3(1.0)), 1.0); }\n",
 //          .sourceName = "app/tinted.frag"}};
-//     prism::gl::Program program = prism::gl::composeProgram(library.catalog(), stages, "tinted");
+//     prism::gl::Program program = prism::gl::composeProgram(library, stages, "tinted");
 //
-// Module ids are the file names without extension ("lib/tint.glsl" is "tint"). A module
-// may #include another module of the library; the include is resolved like the tool does.
-// Errors (unreadable file, missing include, bad contract JSON) throw CompositionError
-// with `path:line:col: error: ...` diagnostics.
+// Module ids are the build step's (prism::shaderc::moduleId): the path under the first
+// include directory holding it, mangled ("modules/toon/quantize.glsl" under "modules" is
+// "toon__quantize"); without include directories each file's own folder is its root
+// ("lib/tint.glsl" is "tint"), and two files with one id are an error naming both. A
+// module may #include another module of the library, found in the build step's search
+// order. Errors (unreadable file, missing include, an unguarded include cycle, bad
+// contract JSON) throw CompositionError with `path:line:col: error: ...` diagnostics.
 #pragma once
 
 #include <cstdint>
@@ -43,17 +44,20 @@ namespace prism::gl {
 
 class ModuleLibrary {
   public:
-    // Module files on disk (each file's directory is an include directory) and contract files.
+    // Module files on disk and contract files; `includeDirs` are prism-shaderc's -I (the
+    // roots of module ids), by default each module's own folder.
     static ModuleLibrary fromFiles(std::span<const std::string> moduleFiles, std::span<const std::string> contractFiles,
-                                   std::string versionDirective = "#version 330 core");
+                                   std::string versionDirective = "#version 330 core",
+                                   std::span<const std::string> includeDirs = {});
     // Modules as (path, text) pairs and one contract as JSON text.
     static ModuleLibrary fromStrings(std::span<const std::pair<std::string, std::string>> modules,
-                                     std::string_view contractJson, std::string versionDirective = "#version 330 core");
+                                     std::string_view contractJson, std::string versionDirective = "#version 330 core",
+                                     std::span<const std::string> includeDirs = {});
     static ModuleLibrary fromStrings(std::initializer_list<std::pair<std::string, std::string>> modules,
-                                     std::string_view contractJson,
-                                     std::string versionDirective = "#version 330 core") {
+                                     std::string_view contractJson, std::string versionDirective = "#version 330 core",
+                                     std::span<const std::string> includeDirs = {}) {
         return fromStrings(std::span<const std::pair<std::string, std::string>>(modules.begin(), modules.size()),
-                           contractJson, std::move(versionDirective));
+                           contractJson, std::move(versionDirective), includeDirs);
     }
 
     ModuleLibrary(ModuleLibrary&&) noexcept;
@@ -62,6 +66,8 @@ class ModuleLibrary {
 
     // A catalogue view (no shaders) of the modules and contract; valid while this object lives.
     const catalog::Catalog& catalog() const;
+    // The contract's files, which composition's contract errors name.
+    std::span<const std::string> contractFiles() const;
     // The id of a module by name; throws CompositionError listing the names (with "did you mean").
     std::uint32_t id(std::string_view name) const;
 

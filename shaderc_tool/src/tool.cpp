@@ -1,5 +1,5 @@
-// prism-shaderc: the build-time GLSL toolchain. main() only sequences the stages, each a
-// function of its own file that returns its result with its diagnostics, which main()
+// prism-shaderc's command line (prism/shaderc/tool.hpp). runTool() only sequences the stages, each a
+// function of its own file that returns its result with its diagnostics, which runTool()
 // gathers and prints once, at the end:
 //   1 args.hpp                 the command line
 //   2 up_to_date.hpp           nothing changed? (asked again after stage 4)
@@ -8,6 +8,8 @@
 //   5 validation_scheduler.hpp glslang, interface and contract checks, reflection
 //   6 outputs.hpp              header and data file, --emit-glsl, depfile and stamp
 // Exit status: 0 success, 1 shader errors, 2 usage or I/O errors.
+#include "prism/shaderc/tool.hpp"
+
 #include <iostream>
 
 #include "args.hpp"
@@ -20,8 +22,7 @@
 #include "up_to_date.hpp"
 #include "validation_scheduler.hpp"
 
-using namespace prism::shaderc;
-
+namespace prism::shaderc {
 namespace {
 
 constexpr int kExitOk = 0, kExitShaderErrors = 1, kExitUsageOrIo = 2;
@@ -34,7 +35,7 @@ int exitStatus(const std::string& ioError) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int runTool(int argc, char** argv) {
     const auto args = parseArgs(argc, argv);
     if (!args.options) return args.exitCode;
     const Options& o = *args.options;
@@ -70,3 +71,5 @@ int main(int argc, char** argv) {
     if (const int status = exitStatus(writeOutputs(o, catalog)); status != kExitOk) return status;
     return exitStatus(writeBuildSystemFiles(o, catalog.filesRead));
 }
+
+}  // namespace prism::shaderc
