@@ -146,6 +146,7 @@ std::string withoutFirstIndex(const std::string& name) {
 void Program::addUniform(const std::string& reflectedName, std::uint32_t glType, int arraySize) {
     const std::string base = withoutFirstIndex(reflectedName);
     const bool isArray = arraySize > 1 || base != reflectedName;
+    declared_.push_back({base, glType});
     if (!isArray) {
         uniforms_[base] = {glGetUniformLocation(program_.id(), base.c_str()), glType, 1};
         return;
@@ -160,6 +161,7 @@ void Program::addUniform(const std::string& reflectedName, std::uint32_t glType,
 
 void Program::buildUniformTable(const std::optional<std::vector<UniformDecl>>& reflected) {
     uniforms_.clear();
+    declared_.clear();
     if (reflected) {
         for (const auto& u : *reflected) addUniform(u.name, u.glType, u.arraySize);
         return;
@@ -212,6 +214,7 @@ const Program::UniformSlot* Program::prepare(std::string_view name, SetterKind k
                                 ": set() of " + std::to_string(count) + " elements into uniform '" + std::string(name) +
                                 "', which has room for " + std::to_string(slot->elements));
     use();
+    setSinceLink_.emplace(name.substr(0, name.back() == ']' ? name.rfind('[') : name.size()));
     return slot;
 }
 
