@@ -87,6 +87,7 @@ RealImage GlSoftShadows::render(const SoftShadowScene& scene, StochasticSetup& s
         gl_->seeds.upload(1, tables.seedWidth, tables.seedHeight, tables.seeds);
         program.use();
         program.set(soft_shadows::u_frame, static_cast<unsigned>(frame));
+        program.reportUnsetUniforms();
         gl_->framebuffer.bind();
         glBindVertexArray(gl_->vao.id());
         glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -5,8 +5,8 @@
 #include <atomic>
 #include <cctype>
 
-#include "prism/gl/gl.hpp"
 #include "prism/gl/program.hpp"
+#include "uniform_gl_types.hpp"
 
 namespace prism::gl {
 namespace {
@@ -48,14 +48,6 @@ void collectInitialised(std::string_view source, std::set<std::string, std::less
     }
 }
 
-bool isSamplerType(std::uint32_t t) {
-    // The sampler enums of GL 4.3 core lie in these ranges (uvec2..4 sit between, 0x8DC6-8).
-    return (t >= GL_SAMPLER_1D && t <= GL_SAMPLER_2D_RECT_SHADOW) ||
-           (t >= GL_SAMPLER_1D_ARRAY && t <= GL_SAMPLER_CUBE_SHADOW) ||
-           (t >= GL_INT_SAMPLER_1D && t <= GL_UNSIGNED_INT_SAMPLER_BUFFER) ||
-           (t >= GL_SAMPLER_2D_MULTISAMPLE && t <= GL_UNSIGNED_INT_SAMPLER_2D_MULTISAMPLE_ARRAY);
-}
-
 }  // namespace
 
 void setDefaultUnsetUniformCheck(bool on) {
@@ -80,7 +72,7 @@ bool Program::compiledIn(std::string_view name) {
 std::vector<std::string> Program::unsetUniforms() const {
     std::vector<std::string> out;
     for (const auto& u : declared_) {
-        if (isSamplerType(u.glType) || initialised_.count(u.name) || setSinceLink_.count(u.name)) continue;
+        if (detail::isSamplerType(u.glType) || initialised_.count(u.name) || setSinceLink_.count(u.name)) continue;
         if (auto it = uniforms_.find(u.name); it == uniforms_.end() || it->second.location < 0) continue;
         out.push_back(u.name);
     }

@@ -73,6 +73,7 @@ void FogSystem::draw(const view::Camera& camera, float aspect, const view::Fog* 
     glDepthMask(GL_FALSE);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    p.reportUnsetUniforms();
     glBindVertexArray(vao_.id());
     glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(simulation_.billboards().size()));
     glBindVertexArray(0);

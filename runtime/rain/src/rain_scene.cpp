@@ -150,6 +150,7 @@ void RainScene::draw(int width, int height) {
     ground.set(rain_shaders::ground::u_world, glm::mat4(1.0f));
     ground.set(rain_shaders::ground::u_color, glm::vec4(desc_.ground.color, 1.0f));
     ground.set(rain_shaders::ground::u_emissive, 0.0f);
+    ground.reportUnsetUniforms();
     ground_->draw();
     if (post_) {
         // The lamp: a dark post from the ground up to a glowing bulb.

@@ -200,6 +200,7 @@ void RainSystem::draw(const RainDrawInputs& in) {
     glDepthMask(GL_FALSE);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    p.reportUnsetUniforms();
     glBindVertexArray(vao.id());
     switch (in.technique) {
         case StreakTechnique::GeometryShader: glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count_)); break;

@@ -237,6 +237,7 @@ struct WaterSceneRenderer::Impl {
         frameUniforms(sky, camera, aspect);
         sky.set(ws::skybox::u_skybox, 0);
         sky.use();
+        sky.reportUnsetUniforms();
         glBindVertexArray(skyVao);
         glDrawArrays(GL_TRIANGLES, 0, 36);
     }
@@ -253,6 +254,7 @@ struct WaterSceneRenderer::Impl {
         terrain.set(ws::terrain::u_wetDarkening, look.wetDarkening);
         terrain.set(ws::terrain::u_wetFilmDepth, look.wetFilmDepth);
         terrain.use();
+        terrain.reportUnsetUniforms();
         glBindVertexArray(terrainVao);
         glDrawElements(GL_TRIANGLES, terrainIndexCount, GL_UNSIGNED_INT, nullptr);
     }
@@ -275,6 +277,7 @@ struct WaterSceneRenderer::Impl {
         glDepthMask(GL_FALSE);
         glDepthFunc(GL_LEQUAL);
         surface.use();
+        surface.reportUnsetUniforms();
         glBindVertexArray(waterVao);
         glDrawElements(GL_TRIANGLES, waterIndexCount, GL_UNSIGNED_INT, nullptr);
         glDepthMask(GL_TRUE);
