@@ -100,4 +100,28 @@ TEST_F(ProgramUnset, OffByDefaultSwitchSilencesTheReport) {
     EXPECT_EQ(program.unsetUniforms().size(), 2u);  // the list is there either way
 }
 
+TEST_F(ProgramUnset, IntLiteralIntoAFloatIsSetNotDropped) {
+    Program program = toonProgram();
+    std::vector<std::string> warnings;
+    program.setWarningHandler([&](std::string_view m) { warnings.emplace_back(m); });
+    program.set("u_bands", 4);  // an int literal: exact as a float
+    GLfloat bands = 0.0f;
+    glGetUniformfv(program.id(), program.uniformLocation("u_bands"), &bands);
+    EXPECT_EQ(bands, 4.0f);
+    EXPECT_TRUE(warnings.empty());
+    EXPECT_EQ(program.unsetUniforms(), std::vector<std::string>{"u_base"});
+    program.set("u_bands", (1 << 24) + 1);  // no float holds it: reported, not rounded
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("is float but set() got a int"), std::string::npos) << warnings[0];
+}
+
+TEST_F(ProgramUnset, UnknownNameSaysDidYouMean) {
+    Program program = toonProgram();
+    std::vector<std::string> warnings;
+    program.setWarningHandler([&](std::string_view m) { warnings.emplace_back(m); });
+    program.set("u_band", 4.0f);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("(did you mean 'u_bands'?)"), std::string::npos) << warnings[0];
+}
+
 }  // namespace

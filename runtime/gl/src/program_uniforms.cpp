@@ -1,6 +1,7 @@
 // A Program's uniform table (from reflection or the driver) and its checked setters:
 // unknown names and unfitting types are reported once per (program, name).
 #include <cstdio>
+#include <cstdlib>
 
 #include <glm/glm.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -196,9 +197,9 @@ const Program::UniformSlot* Program::prepare(std::string_view name, SetterKind k
     if (!slot) {
         if (reported_.emplace(name).second) {
             unknownReports_.emplace_back(name);
-            warn("set() of uniform '" + std::string(name) +
-                 "' which the program does not have (misspelt, or not used by this variant); the value is ignored. "
-                 "Reported once.");
+            warn("set() of uniform '" + std::string(name) + "' which the program does not have" +
+                 catalog::didYouMean(name, uniformNames()) +
+                 " (misspelt, or not used by this variant); the value is ignored. Reported once.");
         }
         return nullptr;
     }
@@ -223,6 +224,11 @@ void Program::set(std::string_view name, float v) {
     if (auto s = prepare(name, SetterKind::Float, 1)) glUniform1f(s->location, v);
 }
 void Program::set(std::string_view name, int v) {
+    constexpr int kExactInFloat = 1 << 24;  // every int up to here is a float without loss
+    if (const UniformSlot* slot = slotFor(name); slot && slot->glType == GL_FLOAT && std::abs(v) <= kExactInFloat) {
+        set(name, static_cast<float>(v));  // set("u_bands", 4) on a float: the literal's value, not a drop
+        return;
+    }
     if (auto s = prepare(name, SetterKind::Int, 1)) glUniform1i(s->location, v);
 }
 void Program::set(std::string_view name, unsigned v) {
@@ -283,6 +289,12 @@ void Program::set(std::string_view name, std::span<const glm::mat3> v) {
 void Program::set(std::string_view name, std::span<const glm::mat4> v) {
     if (auto s = prepare(name, SetterKind::Mat4, v.size()); s && !v.empty())
         glUniformMatrix4fv(s->location, static_cast<GLsizei>(v.size()), GL_FALSE, glm::value_ptr(v.front()));
+}
+
+std::vector<std::string> Program::uniformNames() const {
+    std::vector<std::string> names;
+    for (const auto& u : declared_) names.push_back(u.name);
+    return names;
 }
 
 bool Program::hasUniform(std::string_view name) const {

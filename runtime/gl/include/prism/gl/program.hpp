@@ -32,9 +32,16 @@
 // A uniform the program does not have, or a set() whose C++ type does not fit the
 // uniform's GLSL type, is reported ONCE per (program, name) through the warning
 // handler (stderr by default) and recorded in unknownUniformReports() /
-// typeMismatchReports(); the set is then skipped. A uniform that exists in the
-// table but was optimised away by the driver (location -1) is set silently as a
+// typeMismatchReports(); the set is then skipped (an unknown name's report says "did you
+// mean" the nearest uniform). An int into a float uniform is no mismatch: it is set as
+// the float of the same value when that is exact (|v| <= 2^24). A uniform that exists in
+// the table but was optimised away by the driver (location -1) is set silently as a
 // no-op, as GL does. Too many array elements throw std::length_error.
+//
+// Typed uniforms: set(handle, value) with the handles a generated header declares
+// (prism/catalog/uniform_handle.hpp) checks the name, the value's C++ type and, through
+// ProgramOf<Shader>, the shader at compile time; set(name, value) stays for names known
+// only at run time. unsetUniforms() lists the active uniforms never set since link.
 #pragma once
 
 #include <cstdint>
@@ -236,6 +243,7 @@ class Program {
     const UniformSlot* prepare(std::string_view name, SetterKind kind, std::size_t count);
     void warn(const std::string& message) const;
     bool compiledIn(std::string_view name);                      // false: recorded in compiledOut_
+    std::vector<std::string> uniformNames() const;               // declared_, for "did you mean"
     void startUnsetCheck(const std::vector<StageText>& stages);  // at link: initialisers, the switch
 
     struct DeclaredUniform {
