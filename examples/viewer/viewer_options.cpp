@@ -28,8 +28,10 @@ std::optional<ViewerOptions> parseViewerOptions(int argc, char** argv, int& exit
     app.add_option("--screenshot", o.screenshot, "write the last frame to this PNG and exit");
     app.add_option("--script", o.script, "play key and parameter events from FILE, one line per frame (docs/viewer.md)")
         ->check(CLI::ExistingFile);
-    app.add_flag("--watch", o.watch, "hot reload: rebuild edited shaders and modules in process");
-    app.add_option("--source-root", o.sourceRoot, "the tree --watch watches")->capture_default_str();
+    auto* watch = app.add_flag("--watch", o.watch, "hot reload: rebuild edited shaders and modules in process");
+    app.add_option("--source-root", o.sourceRoot, "the tree --watch watches (needs --watch)")
+        ->capture_default_str()
+        ->needs(watch);  // used only by --watch: alone it would be accepted and ignored
     app.add_flag("!--no-panels", o.panels, "hide the ImGui panels");
     app.add_option("--width", o.width, "window width")->check(CLI::Range(64, 8192));
     app.add_option("--height", o.height, "window height")->check(CLI::Range(64, 8192));

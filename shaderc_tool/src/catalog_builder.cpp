@@ -145,8 +145,14 @@ ModuleIndex indexModules(const Options& o, const std::vector<ShaderInput>& shade
         const ModuleFile& file = files[fileIndex];
         reportScan(scans[n], identifier, used.contains(file.canonical), sink);
         index.byCanonical[file.canonical] = static_cast<std::uint32_t>(index.modules.size());
-        index.modules.push_back(
-            {identifier, shownPath(file.path, o), scans[n].module.description, scans[n].module.text, {}, file.path});
+        const auto where = embeddedLocation(file.path, o);
+        index.modules.push_back({identifier,
+                                 where.path,
+                                 scans[n].module.description,
+                                 scans[n].module.text,
+                                 {},
+                                 file.path,
+                                 where.searchDir});
         includes.push_back(scans[n].module.includes);
     }
     for (std::size_t i = 0; i < index.modules.size(); ++i)
@@ -236,7 +242,7 @@ void resolvePlannedVariants(const Options& o, const ResolveOptions& base, std::v
 // Phase 4: one shader of the catalogue from its resolved plan, reporting its diagnostics
 // in order; false when a variant failed.
 bool assembleShader(const Options& o, const ShaderInput& shader, ShaderPlan& plan, IncludedFiles& included,
-                    std::map<std::string, std::string>& shownPaths, ResolvedCatalog& rc, DiagnosticSink& sink) {
+                    std::map<std::string, EmbeddedPath>& shownPaths, ResolvedCatalog& rc, DiagnosticSink& sink) {
     bool ok = true;
     CatalogShader cs{shader.name, plan.axes, {}, {}};
     std::vector<std::vector<ResolvedStage>> resolvedVariants;
@@ -251,7 +257,7 @@ bool assembleShader(const Options& o, const ShaderInput& shader, ShaderPlan& pla
             CatalogStage cst{shader.stages[si].stage, r.stage.text, {}};
             for (const auto& f : r.stage.files) {
                 auto shown = shownPaths.find(f.path);
-                if (shown == shownPaths.end()) shown = shownPaths.emplace(f.path, shownPath(f.path, o)).first;
+                if (shown == shownPaths.end()) shown = shownPaths.emplace(f.path, embeddedLocation(f.path, o)).first;
                 cst.files.push_back(shown->second);
                 included.add(f);
             }
@@ -334,7 +340,7 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
     for (std::size_t s = 0; s < shaders.size(); ++s)
         plans.push_back(planShader(shaders[s], baseRuns[s], filters.filters, included));
     resolvePlannedVariants(o, base, plans, baseRuns, reader);
-    std::map<std::string, std::string> shownPaths;  // every variant names the same few files
+    std::map<std::string, EmbeddedPath> shownPaths;  // every variant names the same few files
     for (std::size_t s = 0; s < shaders.size(); ++s) {
         sink.reportAll(plans[s].diagnostics);
         if (plans[s].ok) assembleShader(o, shaders[s], plans[s], included, shownPaths, rc, sink);
@@ -365,13 +371,17 @@ std::string fingerprint(const ResolvedCatalog& rc) {
         for (const auto& v : s.variants)
             for (const auto& st : v.stages) {
                 mix(st.text);
-                for (const auto& f : st.files) mix(f);
+                for (const auto& f : st.files) {
+                    mix(f.path);
+                    if (f.searchDir) mix("@I" + std::to_string(f.searchDir));  // base-dir paths: as before
+                }
             }
         for (auto m : s.modules) mix(std::to_string(m));
     }
     for (const auto& m : d.modules) {
         mix(m.identifier);
         mix(m.path);
+        if (m.searchDir) mix("@I" + std::to_string(m.searchDir));
         mix(m.description);
         mix(m.text);
         for (auto dep : m.dependencies) mix(std::to_string(dep));

@@ -11,14 +11,15 @@
 
 #include "contract.hpp"
 #include "reflection.hpp"
+#include "shown_path.hpp"
 #include "variants.hpp"
 
 namespace prism::shaderc {
 
 struct CatalogStage {
     catalog::Stage stage;
-    std::string text;                // flattened, driver-safe GLSL
-    std::vector<std::string> files;  // index = source number; paths as embedded
+    std::string text;                 // flattened, driver-safe GLSL
+    std::vector<EmbeddedPath> files;  // index = source number; paths as embedded
 };
 
 struct CatalogVariant {
@@ -42,6 +43,7 @@ struct CatalogModule {
     std::string text;                         // own text, #include/#version/#pragma once blanked
     std::vector<std::uint32_t> dependencies;  // direct includes, in order
     std::string sourcePath;                   // as read (for the depfile), not embedded
+    std::uint32_t searchDir = 0;              // what `path` is relative to (EmbeddedPath)
 };
 
 struct CatalogData {

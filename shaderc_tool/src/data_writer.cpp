@@ -25,6 +25,12 @@ std::string_view stageEnum(catalog::Stage s) {
     return "Vertex";
 }
 
+// The trailing searchDir of a SourceFile or Module row, left out when 0 (the default): files
+// under --base-dir keep the rows they always had.
+std::string searchDirField(std::uint32_t searchDir) {
+    return searchDir == 0 ? "" : ", " + std::to_string(searchDir);
+}
+
 // Distinct text pieces, each defined once as `constexpr std::string_view pN`, in order
 // of first use. Pieces over the 16 KB literal limit become several pool entries.
 class TextPool {
@@ -203,7 +209,8 @@ class DataWriter {
             auto chunks = arrays_.references(stageId + "_chunks", refs);
             std::vector<std::string> files;
             for (std::size_t n = 0; n < st.files.size(); ++n)
-                files.push_back("{" + std::to_string(n) + ", " + quotedLiteral(st.files[n]) + "}");
+                files.push_back("{" + std::to_string(n) + ", " + quotedLiteral(st.files[n].path) +
+                                searchDirField(st.files[n].searchDir) + "}");
             auto fileArray = arrays_.array("prism::catalog::SourceFile", stageId + "_files", files);
             stages.push_back("{prism::catalog::Stage::" + std::string(stageEnum(st.stage)) + ", " + chunks + ", " +
                              fileArray + "}");
@@ -263,7 +270,8 @@ class DataWriter {
             for (auto d : m.dependencies) deps.push_back(std::to_string(d));
             auto depArray = arrays_.array("std::uint32_t", "module_" + id + "_dependencies", deps);
             entries.push_back("{" + quotedLiteral(m.identifier) + ", " + quotedLiteral(m.path) + ", " +
-                              quotedLiteral(m.description) + ", " + chunks + ", " + depArray + "}");
+                              quotedLiteral(m.description) + ", " + chunks + ", " + depArray +
+                              searchDirField(m.searchDir) + "}");
         }
         tablesOut_ << "\n";
         return arrays_.array("prism::catalog::Module", "modules", entries, false);

@@ -1,5 +1,5 @@
-// embeddedPath(), shownPath(), recordedName(): how file paths appear in the generated
-// files (see source_reader.hpp and shown_path.hpp).
+// embeddedPath(), embeddedLocation(), shownPath(), recordedName(): how file paths appear
+// in the generated files (see source_reader.hpp and shown_path.hpp).
 #include <filesystem>
 
 #include "shown_path.hpp"
@@ -29,13 +29,17 @@ bool inside(const fs::path& path, const std::string& dir, std::string& relative)
 
 }  // namespace
 
-std::string shownPath(const std::string& path, const Options& o) {
+EmbeddedPath embeddedLocation(const std::string& path, const Options& o) {
     const auto abs = fs::absolute(path).lexically_normal();
     std::string rel;
-    if (inside(abs, o.baseDir, rel)) return rel;
-    for (const auto& dir : o.includeDirs)
-        if (inside(abs, dir, rel)) return rel;
-    return embeddedPath(abs.string(), o.baseDir);
+    if (inside(abs, o.baseDir, rel)) return {rel, 0};
+    for (std::size_t k = 0; k < o.includeDirs.size(); ++k)
+        if (inside(abs, o.includeDirs[k], rel)) return {rel, static_cast<std::uint32_t>(k + 1)};
+    return {embeddedPath(abs.string(), o.baseDir), 0};
+}
+
+std::string shownPath(const std::string& path, const Options& o) {
+    return embeddedLocation(path, o).path;
 }
 
 std::string recordedName(const std::string& path, const Options& o) {

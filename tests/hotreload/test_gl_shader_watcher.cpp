@@ -13,6 +13,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "prism/test/gl_test.hpp"
 #include "prism/render/offscreen_render.hpp"
@@ -71,6 +72,7 @@ class HotReload : public GlTest {
         render::ShaderWatchOptions options;
         options.sourceRoot = root_.string();
         options.pollInterval = interval;
+        options.mechanism = mechanism_;
         watcher_ = std::make_unique<render::ShaderWatcher>(*cache_, options);
         return *watcher_;
     }
@@ -83,10 +85,29 @@ class HotReload : public GlTest {
 
     fs::path root_, material_;
     std::string originalMaterial_;
+    render::WatchMechanism mechanism_ = render::WatchMechanism::Automatic;
     std::unique_ptr<render::ProgramCache> cache_;
     std::unique_ptr<render::ShaderWatcher> watcher_;
     render::RenderJob job_;
 };
+
+// The tests of change detection run once per mechanism: inotify, and the polling that
+// platforms without it use.
+class HotReloadBy : public HotReload, public ::testing::WithParamInterface<render::WatchMechanism> {
+  protected:
+    void SetUp() override {
+        mechanism_ = GetParam();
+        HotReload::SetUp();
+    }
+};
+
+std::string mechanismName(const ::testing::TestParamInfo<render::WatchMechanism>& info) {
+    return info.param == render::WatchMechanism::Inotify ? "Inotify" : "Polling";
+}
+
+INSTANTIATE_TEST_SUITE_P(Mechanisms, HotReloadBy,
+                         ::testing::Values(render::WatchMechanism::Inotify, render::WatchMechanism::Polling),
+                         mechanismName);
 
 const image::Rgba8 kRed{255, 0, 0, 255}, kBlue{0, 0, 255, 255};
 
@@ -148,7 +169,7 @@ TEST_F(HotReload, WatchesTheModulesAndStagesTheCatalogueWasBuiltFrom) {
 }
 
 // (1) A module edit is picked up, rebuilt and the new program is the one drawing.
-TEST_F(HotReload, ModuleEditIsRebuiltAndDrawn) {
+TEST_P(HotReloadBy, ModuleEditIsRebuiltAndDrawn) {
     auto& w = watcher();
     ASSERT_EQ(centre(), kRed);
     EXPECT_TRUE(w.pollNow().reloaded.empty()) << "nothing changed yet";
@@ -171,7 +192,7 @@ TEST_F(HotReload, ModuleEditIsRebuiltAndDrawn) {
 
 // File times tick coarsely (a jiffy or more): a second edit of the same size may keep the
 // first one's mtime. Simulated exactly by setting it back; the content must still count.
-TEST_F(HotReload, SameSizeEditWithTheSameMtimeIsSeen) {
+TEST_P(HotReloadBy, SameSizeEditWithTheSameMtimeIsSeen) {
     auto& w = watcher();
     ASSERT_EQ(centre(), kRed);
     editMaterial(kSwapRedAndBlue);
@@ -247,7 +268,7 @@ TEST_F(HotReload, ContractViolationKeepsTheOldProgram) {
 
 // A broken contract stops every rebuild (nothing can be checked against it) and names
 // the contract file's line; fixing it rebuilds what was edited meanwhile.
-TEST_F(HotReload, BrokenContractKeepsProgramsAndNamesTheFile) {
+TEST_P(HotReloadBy, BrokenContractKeepsProgramsAndNamesTheFile) {
     auto& w = watcher();
     ASSERT_EQ(centre(), kRed);
     const auto contract = root_ / "modules" / "contract.json";
@@ -270,7 +291,7 @@ TEST_F(HotReload, BrokenContractKeepsProgramsAndNamesTheFile) {
 }
 
 // (3) Fixing the error recovers: the fixed program is swapped in and the errors clear.
-TEST_F(HotReload, FixingTheErrorRecovers) {
+TEST_P(HotReloadBy, FixingTheErrorRecovers) {
     auto& w = watcher();
     ASSERT_EQ(centre(), kRed);
     editMaterial(kSwapRedAndBlue);
@@ -290,10 +311,93 @@ TEST_F(HotReload, FixingTheErrorRecovers) {
     EXPECT_EQ(centre(), kRed);
 }
 
+// The watcher picks inotify on Linux by itself; asking for polling gets polling.
+TEST_F(HotReload, UsesInotifyWhereThePlatformHasIt) {
+    EXPECT_EQ(watcher().mechanism(), render::WatchMechanism::Inotify);
+    mechanism_ = render::WatchMechanism::Polling;
+    EXPECT_EQ(watcher().mechanism(), render::WatchMechanism::Polling);
+}
+
+// An editor that saves by writing a new file and renaming it over the module (vim's
+// backupcopy=no, most IDEs) replaces the file: still seen, and watched after.
+TEST_P(HotReloadBy, SaveByRenameIsSeen) {
+    auto& w = watcher();
+    ASSERT_EQ(centre(), kRed);
+    const auto saved = material_.string() + ".swp";
+    writeFile(saved, originalMaterial_ + kSwapRedAndBlue);
+    fs::rename(saved, material_);
+    EXPECT_EQ(w.pollNow().reloaded.size(), 1u);
+    EXPECT_EQ(centre(), kBlue);
+    editMaterial("");
+    EXPECT_EQ(w.pollNow().reloaded.size(), 1u) << "the new file is watched too";
+    EXPECT_EQ(centre(), kRed);
+}
+
+// With inotify a check looks only at the files the kernel reported, and poll() looks at
+// every call (no interval): an edit is in use at the next frame.
+TEST_F(HotReload, InotifyPollSeesAnEditAtTheNextCall) {
+    auto& w = watcher(std::chrono::hours(1));
+    ASSERT_EQ(w.mechanism(), render::WatchMechanism::Inotify);
+    ASSERT_EQ(centre(), kRed);
+    editMaterial(kSwapRedAndBlue);
+    const auto result = w.poll();
+    EXPECT_TRUE(result.checked);
+    EXPECT_EQ(result.reloaded.size(), 1u);
+    EXPECT_EQ(centre(), kBlue);
+}
+
+// A catalogue built against modules outside its --base-dir (an installed Prism's): the
+// line tables give those modules' paths relative to their -I directory (searchDir 1), and
+// the watcher watches them there, not under the base dir (issue 22, item 3).
+TEST_P(HotReloadBy, ModuleOutsideTheBaseDirIsWatchedWhereTheBuildFoundIt) {
+    const fs::path project = root_ / "project";
+    fs::create_directories(project);
+    fs::rename(root_ / "shader_sources", project / "shader_sources");  // modules/ stays outside the project
+    std::vector<std::vector<catalog::SourceFile>> files;
+    const auto& unicolor = *catalog::findShader(shaders::kCatalog, "unicolor");
+    for (const auto& v : unicolor.variants)
+        for (const auto& st : v.stages) {
+            auto& rows = files.emplace_back(st.files.begin(), st.files.end());
+            for (auto& f : rows)
+                if (f.path.starts_with("modules/")) f = {f.number, f.path.substr(8), 1};
+        }
+    std::vector<std::vector<catalog::StageSource>> stages;
+    std::vector<catalog::Variant> variants;
+    for (std::size_t v = 0, k = 0; v < unicolor.variants.size(); ++v) {
+        auto& list = stages.emplace_back();
+        for (const auto& st : unicolor.variants[v].stages) list.push_back({st.stage, st.chunks, files[k++]});
+    }
+    for (std::size_t v = 0; v < unicolor.variants.size(); ++v) {
+        variants.push_back(unicolor.variants[v]);
+        variants.back().stages = stages[v];
+    }
+    const catalog::Shader shader{unicolor.name, unicolor.axes, variants, unicolor.modules};
+    const catalog::Catalog outside{std::span(&shader, 1), shaders::kCatalog.modules,
+                                   shaders::kCatalog.contractAttributes, shaders::kCatalog.contractUniforms,
+                                   shaders::kCatalog.versionDirective};
+    cache_ = std::make_unique<render::ProgramCache>(outside);
+    render::ShaderWatchOptions options;
+    options.sourceRoot = project.string();
+    options.moduleDirs = {(root_ / "modules").string()};
+    options.mechanism = GetParam();
+    watcher_ = std::make_unique<render::ShaderWatcher>(*cache_, options);
+    const auto watched = watcher_->watchedFiles();
+    EXPECT_NE(std::find(watched.begin(), watched.end(), material_.lexically_normal().string()), watched.end());
+    ASSERT_EQ(centre(), kRed);
+    editMaterial(kSwapRedAndBlue);
+    const auto result = watcher_->pollNow();
+    EXPECT_TRUE(result.diagnostics.empty()) << result.diagnostics.front();
+    EXPECT_EQ(result.reloaded.size(), 1u);
+    EXPECT_EQ(centre(), kBlue);
+    watcher_.reset();  // before `outside`, which both refer to
+    cache_.reset();
+}
+
 // (4) Issue 9: "a test writes a module edit and measures the time until the new program
 // is in use: under 1 s". A render loop polls at the default interval (100 ms) as the
 // viewer does; the clock runs from the write until a frame shows the new colour.
 TEST_F(HotReload, EditToNewProgramInUseUnderOneSecond) {
+    mechanism_ = render::WatchMechanism::Polling;
     auto& w = watcher(std::chrono::milliseconds(100));
     ASSERT_EQ(centre(), kRed);
     const auto start = std::chrono::steady_clock::now();

@@ -2,7 +2,8 @@
 # Integration test of prism_add_shaders()'s namespaces (issue 22, item 4), configure only:
 # a catalogue with no NAMESPACE takes its target's name as a C identifier (toon-shaders ->
 # toon_shaders), so two catalogues never share <ns>::kCatalog; a second catalogue given a
-# namespace another already has is a configure error naming both.
+# namespace another already has is a configure error naming both. And the source records
+# for hot reload (<header>_sources.hpp) hold what each catalogue was given.
 #
 # Usage: catalog_namespaces.sh --source <prism source> --work <scratch dir> [--cmake <cmake>]
 set -uo pipefail
@@ -33,6 +34,12 @@ if "$CMAKE" -S "$PROJECT" -B "$WORK/default" -DPRISM_SOURCE_DIR="$SOURCE" >"$WOR
   pass "no NAMESPACE: each catalogue takes its target's name (toon-shaders -> toon_shaders, lit_shaders)"
 else
   fail "no NAMESPACE: the target's name"; show_log "$WORK/default.log"
+fi
+
+if grep -q -- "-- source records: as given$" "$WORK/default.log"; then
+  pass "the source records (<header>_sources.hpp) hold the folders, contract and defines given"
+else
+  fail "the source records"; show_log "$WORK/default.log"
 fi
 
 if "$CMAKE" -S "$PROJECT" -B "$WORK/same" -DPRISM_SOURCE_DIR="$SOURCE" -DSECOND_WITH_SAME_NAMESPACE=ON \

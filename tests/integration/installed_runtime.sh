@@ -8,7 +8,10 @@
 # the safe defaults of prism_add_shaders() (issue 22, item 4): a catalogue with no
 # NAMESPACE links beside Prism's own into one program (prism_consumer_two_catalogues),
 # its lygia-style uniforms build without a word, and with no CONTRACT a misspelled
-# a_positon is a GCC-style warning at toon.vert with "did you mean".
+# a_positon is a GCC-style warning at toon.vert with "did you mean"; and hot reload from the
+# outside project (issue 22, item 3): prism_consumer_reload watches its lit_shaders
+# catalogue through the lit_shaders_sources.hpp that prism_add_shaders() wrote, the test
+# edits the prefix's material.glsl under it, and the next frame must use the rebuilt program.
 #
 # Usage: installed_runtime.sh --source <prism source> --build <prism build> --work <scratch dir>
 #          [--cmake <cmake>] [--jobs <n>]
@@ -72,6 +75,30 @@ check_safe_defaults() {
   fi
 }
 
+# check_reload <generator> <build dir> <log dir>: the catalogue's generated files name no
+# absolute path, its source record names the prefix's modules, and an edit of the
+# prefix's material.glsl (restored afterwards) is in the next frame.
+check_reload() {
+  local gen=$1 bld=$2 logs=$3 material=$PREFIX/share/prism/modules/material.glsl
+  local generated=$bld/lit_shaders_generated/consumer
+  if grep -q -F -e "$WORK" "$generated/lit_shaders.hpp" "$generated/lit_shaders.cpp"; then
+    fail "$gen: the catalogue's generated files name an absolute path"
+  elif grep -q -F "$PREFIX/share/prism/modules" "$generated/lit_shaders_sources.hpp" &&
+       grep -q -F '"material.glsl", 1}' "$generated/lit_shaders.cpp"; then
+    pass "$gen: lit_shaders_sources.hpp names the prefix's modules; the catalogue, no absolute path"
+  else
+    fail "$gen: the source record of lit_shaders"; show_log "$generated/lit_shaders_sources.hpp"
+  fi
+  cp "$material" "$logs/material.glsl.orig"
+  if "$bld/prism_consumer_reload" "$material" >"$logs/reload.log" 2>&1 &&
+     grep -qx "reload of an installed module: OK" "$logs/reload.log"; then
+    pass "$gen: an edit of the prefix's material.glsl is in the next frame ($(head -n 1 "$logs/reload.log"))"
+  else
+    fail "$gen: prism_consumer_reload: an edit of the prefix's material.glsl"; show_log "$logs/reload.log"
+  fi
+  cp "$logs/material.glsl.orig" "$material"
+}
+
 for gen in Ninja "Unix Makefiles"; do
   tag=${gen// /-}
   src=$WORK/$tag/consumer bld=$WORK/$tag/build
@@ -97,6 +124,7 @@ for gen in Ninja "Unix Makefiles"; do
     fail "$gen: prism_consumer_render against the golden"; show_log "$WORK/$tag/run.log"
   fi
   check_safe_defaults "$gen" "$src" "$bld" "$WORK/$tag"
+  check_reload "$gen" "$bld" "$WORK/$tag"
 done
 echo "installed_runtime: $FAILURES failed check(s)"
 [ "$FAILURES" -eq 0 ]

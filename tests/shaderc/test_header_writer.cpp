@@ -74,7 +74,7 @@ CatalogData twoVariantCatalogue(const std::string& moduleBody) {
         variant.stages.push_back({prism::catalog::Stage::Fragment,
                                   "#version 330 core\n#define N " + std::to_string(v) + "\n#line 1 0\n" +
                                       "// the stage\n#line 1 1\n" + moduleBody + "#line 3 0\nvoid main() {}\n",
-                                  {"lit.frag", "modules/shade.glsl"}});
+                                  {{"lit.frag"}, {"modules/shade.glsl"}}});
         s.variants.push_back(variant);
     }
     c.shaders.push_back(s);

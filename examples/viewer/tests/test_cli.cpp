@@ -1,7 +1,7 @@
 // The viewer's command line without a display (CTest unsets DISPLAY): --help and --version
 // exit 0 and print the usage and the version; bad values, a missing scene, an axis or axis
-// value the shader lacks, a stray argument and a misspelled option are usage errors (exit 2,
-// a "viewer: error:" line). One test per case (prism/test/cli_case.hpp).
+// value the shader lacks, a stray argument, a misspelled option and --source-root without
+// --watch are usage errors (exit 2, a "viewer: error:" line). One test per case (prism/test/cli_case.hpp).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -61,6 +61,15 @@ std::vector<prism::test::CliCase> cases() {
         usageError("rejects_stray_argument", {"extra"}),
         usageError("rejects_unknown_axis_value", {"--variant", "BLINN=7"}),
         usageError("rejects_axis_the_shader_lacks", {"--shader", "gouraud", "--variant", "BLINN=1"}),
+        {.name = "rejects_source_root_without_watch",
+         .program = "viewer",
+         .args = {"--source-root", "/tmp"},
+         .exitCode = 2,
+         .errText = "",
+         .files = {},
+         .needs = "",
+         .outRegex = "",
+         .errRegex = "viewer: error: --source-root requires --watch"},
     };
     return cases;
 }

@@ -1,11 +1,14 @@
-// Polls a catalogue's source files and swaps rebuilt programs into the cache (see
-// prism/render/shader_watcher.hpp); the rebuild itself is in shader_rebuild.cpp.
+// Watches a catalogue's source files and swaps rebuilt programs into the cache (see
+// prism/render/shader_watcher.hpp); the change notification is in file_events.cpp, the
+// rebuild itself in shader_rebuild.cpp.
 #include "prism/render/shader_watcher.hpp"
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
+#include "file_events.hpp"
 #include "prism/hash/content_hash.hpp"
 #include "shader_rebuild.hpp"
 
@@ -42,13 +45,23 @@ std::string driverDiagnostic(const std::string& what) {
 
 }  // namespace
 
+ShaderWatchOptions ShaderWatchOptions::from(const catalog::SourceTree& sources) {
+    ShaderWatchOptions options;
+    options.sourceRoot = std::string(sources.baseDir);
+    options.moduleDirs.assign(sources.moduleDirs.begin(), sources.moduleDirs.end());
+    options.contractFiles.assign(sources.contractFiles.begin(), sources.contractFiles.end());
+    for (const auto& d : sources.defines) options.defines.emplace_back(d.name, d.value);
+    options.builtInContract = options.contractFiles.empty();
+    return options;
+}
+
 ShaderWatcher::ShaderWatcher(ProgramCache& cache, ShaderWatchOptions options)
-    : cache_(cache), options_(std::move(options)) {
+    : cache_(cache), options_(std::move(options)), events_(detail::makeFileEvents(options_.mechanism)) {
     const fs::path root = options_.sourceRoot.empty() ? fs::current_path() : fs::path(options_.sourceRoot);
     options_.sourceRoot = normalised(root);
     if (options_.moduleDirs.empty()) options_.moduleDirs.push_back(normalised(root / "modules"));
     for (auto& dir : options_.moduleDirs) dir = normalised(root / dir);  // relative dirs: under the root
-    if (options_.contractFiles.empty())
+    if (options_.contractFiles.empty() && !options_.builtInContract)
         options_.contractFiles.push_back(normalised(fs::path(options_.moduleDirs.front()) / "contract.json"));
     for (auto& file : options_.contractFiles) file = normalised(root / file);
 
@@ -59,7 +72,7 @@ ShaderWatcher::ShaderWatcher(ProgramCache& cache, ShaderWatchOptions options)
         auto& deps = dependencies_[std::string(shader.name)];
         for (const auto& variant : shader.variants)
             for (const auto& stage : variant.stages)
-                for (const auto& file : stage.files) deps.insert(normalised(root / std::string(file.path)));
+                for (const auto& file : stage.files) deps.insert(locate(file));
         for (const auto& file : deps) watch(file);
     }
     lastCheck_ = std::chrono::steady_clock::now();
@@ -67,8 +80,24 @@ ShaderWatcher::ShaderWatcher(ProgramCache& cache, ShaderWatchOptions options)
 
 ShaderWatcher::~ShaderWatcher() = default;
 
+WatchMechanism ShaderWatcher::mechanism() const {
+    return events_->mechanism();
+}
+
+std::string ShaderWatcher::locate(const catalog::SourceFile& file) const {
+    if (file.searchDir == 0) return normalised(fs::path(options_.sourceRoot) / std::string(file.path));
+    if (file.searchDir > options_.moduleDirs.size())
+        throw std::invalid_argument("prism: hot reload: the catalogue read " + std::string(file.path) +
+                                    " from -I directory " + std::to_string(file.searchDir) + ", but the options give " +
+                                    std::to_string(options_.moduleDirs.size()) +
+                                    " moduleDirs; give the build step's -I directories in order "
+                                    "(ShaderWatchOptions::from(<ns>::kSourceTree) does)");
+    return normalised(fs::path(options_.moduleDirs[file.searchDir - 1]) / std::string(file.path));
+}
+
 void ShaderWatcher::watch(const std::string& path) {
     if (files_.count(path)) return;
+    events_->add(path);  // first: an edit from here on is reported
     FileState state;
     refresh(path, state);
     files_.emplace(path, state);
@@ -98,7 +127,8 @@ bool ShaderWatcher::refresh(const std::string& path, FileState& state) {
 }
 
 WatchPollResult ShaderWatcher::poll() {
-    if (std::chrono::steady_clock::now() - lastCheck_ < options_.pollInterval) return {};
+    const bool polling = events_->mechanism() == WatchMechanism::Polling;
+    if (polling && std::chrono::steady_clock::now() - lastCheck_ < options_.pollInterval) return {};
     return pollNow();
 }
 
@@ -106,8 +136,9 @@ WatchPollResult ShaderWatcher::pollNow() {
     WatchPollResult result;
     result.checked = true;
     lastCheck_ = std::chrono::steady_clock::now();
+    const auto touched = events_->touched();  // nullopt: look at every file
     for (auto& [path, state] : files_)
-        if (refresh(path, state)) result.changedFiles.push_back(path);
+        if ((!touched || touched->count(path)) && refresh(path, state)) result.changedFiles.push_back(path);
 
     std::set<std::string> seenDiagnostics;
     bool contractChanged = false;
@@ -150,8 +181,7 @@ void ShaderWatcher::rebuild(const std::string& shader, const std::string& varian
     for (const auto& stage : variant->stages) {
         const auto* stageFile = catalog::findSourceFile(stage, 0);
         if (!stageFile) return;
-        request.stages.push_back(
-            {stage.stage, normalised(fs::path(options_.sourceRoot) / std::string(stageFile->path))});
+        request.stages.push_back({stage.stage, locate(*stageFile)});
     }
 
     auto outcome = rebuilder_->rebuild(request);

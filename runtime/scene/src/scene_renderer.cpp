@@ -204,8 +204,7 @@ void SceneRenderer::drawDiffraction(const Scene& scene, const SceneObject& objec
     program.set(diffraction_shaders::diffraction::u_diffractionRadial, m.radialTangent ? 1.0f : 0.0f);
     textures->apply(program);
     program.use();
-    program.reportUnsetUniforms();
-    mesh.draw();
+    mesh.draw(program);
     ++lastFrame_.draws;
     lastFrame_.variants.push_back(
         "diffraction " + std::string(diffractionPrograms_->variantOf("diffraction", variant).name) + " (path " +
@@ -264,8 +263,7 @@ void SceneRenderer::drawObjects(const Scene& scene) {
         program.use();
         render::setFrameUniforms(program, scene.camera, aspect, scene.lights, object.world, object.material,
                                  scene.fog ? &*scene.fog : nullptr);
-        program.reportUnsetUniforms();
-        mesh.draw();
+        mesh.draw(program);
         ++lastFrame_.draws;
         lastFrame_.variants.push_back(object.shader + " " +
                                       std::string(programs_.variantOf(object.shader, variant).name));

@@ -52,9 +52,14 @@ constexpr std::string_view stageName(Stage s) {
 
 // One row of a line table: `#line L <number>` in an embedded source means line L
 // of `path`. Source number 0 is always the stage file itself.
+// `path` is relative to prism-shaderc's --base-dir, or, for a file found through an -I
+// directory outside it (an installed Prism's modules), to that directory: `searchDir`
+// says which (0: the base dir; k: the k-th -I directory, from 1). Paths so stay free of
+// where the checkout lies; hot reload (prism/render/shader_watcher.hpp) joins them back.
 struct SourceFile {
     std::uint32_t number;
     std::string_view path;
+    std::uint32_t searchDir = 0;
 };
 
 // One stage of one variant: driver-safe GLSL (version on line 1, integer #line only)
@@ -110,13 +115,15 @@ struct Shader {
 
 // A reusable GLSL module (what SHADER_MODULE is in the FUDGE shader thesis §7.1). `chunks` hold the module's own
 // text with its #include, #version and #pragma once lines blanked (line numbers kept);
-// `dependencies` are its direct includes (ModuleId values) in include order.
+// `dependencies` are its direct includes (ModuleId values) in include order. `path` and
+// `searchDir` are as in SourceFile.
 struct Module {
     std::string_view name;
     std::string_view path;
     std::string_view description;
     std::span<const std::string_view> chunks;
     std::span<const std::uint32_t> dependencies;
+    std::uint32_t searchDir = 0;
 };
 
 // A whole generated catalogue.

@@ -18,14 +18,19 @@
 //         prism::image::Image8 image = prism::render::renderImage8(cache, job);  // newest good program
 //     }
 //
+// - A catalogue of your own: ShaderWatchOptions::from(<ns>::kSourceTree), from the
+//   <header>_sources.hpp that prism_add_shaders() writes (docs/hot-reload.md).
 // - The catalogue stores paths relative to prism-shaderc's --base-dir (the source tree
-//   for Prism's own catalogue): `sourceRoot` is that directory. `moduleDirs` are the -I
-//   directories (default: sourceRoot/modules) and `contractFiles` the --contract files
-//   (default: contract.json in the first module dir).
-// - Files are polled: size and modification time first, then a content hash, so saving
-//   a file unchanged reloads nothing. A file modified in the last 2 s is hashed at every
-//   check (file times tick coarsely, so a second same-size edit may keep the mtime). A
-//   shader depends on every file its variants include; a contract change affects every shader.
+//   for Prism's own catalogue), or to the -I directory a file outside it was found in
+//   (catalog::SourceFile::searchDir): `sourceRoot` is the base dir, `moduleDirs` the -I
+//   directories in order (default: sourceRoot/modules) and `contractFiles` the --contract
+//   files (default: contract.json in the first module dir).
+// - Changes: inotify on the files' folders where the platform has it, else polling every
+//   pollInterval (ShaderWatchOptions::mechanism, chosen at construction). Either way a
+//   file counts as changed when its size, time and content hash say so, so saving a file
+//   unchanged reloads nothing; a file modified in the last 2 s is hashed at every look
+//   (file times tick coarsely, so a second same-size edit may keep the mtime). A shader
+//   depends on every file its variants include; a contract change affects every shader.
 // - Only variants that have a program in the cache are rebuilt (a variant built later
 //   from the stale catalogue is rebuilt on the next poll).
 // - On any error (missing include, glslang, interface or contract check, driver link)
@@ -43,20 +48,32 @@
 #include <utility>
 #include <vector>
 
+#include "prism/catalog/source_tree.hpp"
 #include "prism/render/program_cache.hpp"
 
 namespace prism::render {
 
 namespace detail {
 class ShaderRebuilder;
-}
+class FileEvents;
+}  // namespace detail
+
+// How a watcher learns of edits. Automatic: Inotify where the platform has it, else Polling.
+enum class WatchMechanism { Automatic, Inotify, Polling };
 
 struct ShaderWatchOptions {
-    std::string sourceRoot;                  // the catalogue's base dir
-    std::vector<std::string> moduleDirs;     // default {sourceRoot/modules}
-    std::vector<std::string> contractFiles;  // default {moduleDirs[0]/contract.json}
-    std::chrono::milliseconds pollInterval{100};
+    std::string sourceRoot;                       // the catalogue's base dir
+    std::vector<std::string> moduleDirs;          // default {sourceRoot/modules}
+    std::vector<std::string> contractFiles;       // default {moduleDirs[0]/contract.json}, unless:
+    bool builtInContract = false;                 // no contract files: Prism's built-in one, as --contract left out
+    std::chrono::milliseconds pollInterval{100};  // Polling: the least time between looks
     std::vector<std::pair<std::string, std::string>> defines;  // prism-shaderc -D, if it had any
+    WatchMechanism mechanism = WatchMechanism::Automatic;
+
+    // Everything prism_add_shaders() recorded for a catalogue (its generated
+    // <header>_sources.hpp): base dir, -I dirs, contract files (none: the built-in
+    // contract) and defines.
+    static ShaderWatchOptions from(const catalog::SourceTree& sources);
 };
 
 struct WatchPollResult {
@@ -73,7 +90,8 @@ class ShaderWatcher {
     ShaderWatcher(const ShaderWatcher&) = delete;
     ShaderWatcher& operator=(const ShaderWatcher&) = delete;
 
-    // Checks the files when pollInterval has passed since the last check.
+    // Checks the files: at every call with inotify, else when pollInterval has passed
+    // since the last check.
     WatchPollResult poll();
     // Checks the files now.
     WatchPollResult pollNow();
@@ -84,6 +102,8 @@ class ShaderWatcher {
     std::vector<std::string> watchedFiles() const;
     // options.sourceRoot, absolute and normalised (diagnostics name files under it).
     const std::string& sourceRoot() const { return options_.sourceRoot; }
+    // Inotify or Polling: the mechanism in use.
+    WatchMechanism mechanism() const;
 
   private:
     struct FileState {
@@ -95,6 +115,7 @@ class ShaderWatcher {
     };
     using VariantKey = std::pair<std::string, std::string>;  // shader, variant name
 
+    std::string locate(const catalog::SourceFile& file) const;  // where the build step read it
     void watch(const std::string& path);
     bool refresh(const std::string& path, FileState& state);  // true when the content changed
     void rebuild(const std::string& shader, const std::string& variant, WatchPollResult& result,
@@ -103,6 +124,7 @@ class ShaderWatcher {
     ProgramCache& cache_;
     ShaderWatchOptions options_;
     std::unique_ptr<detail::ShaderRebuilder> rebuilder_;
+    std::unique_ptr<detail::FileEvents> events_;
     std::map<std::string, FileState> files_;                     // watched path -> last state
     std::map<std::string, std::set<std::string>> dependencies_;  // shader -> files
     std::set<std::string> editedShaders_;                        // catalogue text is stale

@@ -10,14 +10,13 @@
 #include "prism/gl/program.hpp"
 #include "prism/render/gpu_mesh.hpp"
 #include "prism/shaders.hpp"
+#include "prism/test/gl_test.hpp"
 #include "rendering_test_support.hpp"
 
 namespace {
 
 using namespace prism;
-using rendering_test::RenderingTest;
-
-class MeshAttributes : public RenderingTest {};
+class MeshAttributes : public prism::test::GlTest {};
 
 // A program from raw sources, its attributes bound at the contract's locations as the
 // runtime binds a catalogue variant's.
