@@ -25,6 +25,7 @@
 #include "imgui_layer.hpp"
 #include "panels/panels.hpp"
 #include "prism/gl/gl_context.hpp"
+#include "prism/gl/program.hpp"
 #include "prism/image/png_io.hpp"
 #include "prism/rain/rain_classes.hpp"
 #include "prism/render/shader_watcher.hpp"
@@ -328,6 +329,7 @@ int main(int argc, char** argv) {
     }
     std::signal(SIGINT, onStopSignal);
     std::signal(SIGTERM, onStopSignal);
+    prism::gl::setDefaultUnsetUniformCheck(true);  // a forgotten uniform is reported where it would show
     try {
         ViewerApp app(*args, state, script);
         return app.run();

@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "generated_format.hpp"
 #include "include_resolver.hpp"
 #include "job_pool.hpp"
 #include "module_naming.hpp"
@@ -357,6 +358,7 @@ std::string fingerprint(const ResolvedCatalog& rc) {
     const auto mix = [&](std::string_view part) { h.add(part); };
     const auto& d = rc.data;
     mix(PRISM_VERSION);
+    mix(format::kLayoutVersion);
     mix(d.nameSpace);
     mix(d.versionDirective);
     mix(d.sourcesBlock);  // so a header with a stale record is rewritten

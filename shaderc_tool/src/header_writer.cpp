@@ -28,6 +28,96 @@ const std::set<std::string>& cppKeywords() {
     return words;
 }
 
+// What a uniform handle's type says (prism/catalog/uniform_handle.hpp) for a reflected GL type.
+std::string_view handleType(std::uint32_t glType) {
+    switch (glType) {
+        case 0x1406: return "Float";
+        case 0x8B50: return "Vec2";
+        case 0x8B51: return "Vec3";
+        case 0x8B52: return "Vec4";
+        case 0x1404: return "Int";
+        case 0x8B53: return "IVec2";
+        case 0x8B54: return "IVec3";
+        case 0x8B55: return "IVec4";
+        case 0x1405: return "UInt";
+        case 0x8B56: return "Bool";
+        case 0x8B5B: return "Mat3";
+        case 0x8B5C: return "Mat4";
+        default: break;
+    }
+    const bool sampler = (glType >= 0x8B5D && glType <= 0x8B64) || (glType >= 0x8DC0 && glType <= 0x8DC5) ||
+                         (glType >= 0x8DC9 && glType <= 0x8DD8) || (glType >= 0x9108 && glType <= 0x910D);
+    return sampler ? "Sampler" : "Other";
+}
+
+struct HandleDecl {
+    std::string_view type;
+    int length = 1;
+    bool conflicting = false;  // variants disagree on the type: no handle
+};
+
+// Every plain uniform (no struct member) of any variant of `s`, by name.
+std::map<std::string, HandleDecl> uniformUnion(const CatalogShader& s) {
+    std::map<std::string, HandleDecl> out;
+    for (const auto& v : s.variants)
+        for (const auto& u : v.reflection.uniforms) {
+            if (u.name.find_first_of(".[") != std::string::npos) continue;
+            auto [it, added] = out.try_emplace(u.name, HandleDecl{handleType(u.glType), u.arraySize});
+            if (!added && it->second.type != handleType(u.glType)) it->second.conflicting = true;
+            it->second.length = std::max(it->second.length, u.arraySize);
+        }
+    return out;
+}
+
+// A shader's namespace name: its identifier, unless that is a name the header declares itself.
+std::string shaderNamespace(const std::string& shaderName) {
+    static const std::set<std::string> taken = {"ShaderId",         "ModuleId",         "kShaderCount", "kModuleCount",
+                                                "kShaderNames",     "kModuleNames",     "kModulePaths", "kCatalog",
+                                                "shaderInfo",       "moduleInfo",       "name",         "modulePath",
+                                                "shaderIdFromName", "moduleIdFromName", "contract"};
+    std::string id = cppIdentifier(shaderName);
+    return taken.count(id) ? id + "_" : id;
+}
+
+// The identifier of uniform `name` in its shader's namespace, clear of the names declared there.
+std::string handleIdentifier(const std::string& name) {
+    const std::string id = cppIdentifier(name);
+    return id == "Shader" || id == "Uniform" || id == "Contract" ? id + "_" : id;
+}
+
+// `namespace <shader> { struct Shader {...}; <handles> }` for every shader.
+void writeUniformHandles(std::ostream& out, const CatalogData& c) {
+    out << "\n// Typed uniforms (prism/catalog/uniform_handle.hpp): <shader>::<uniform> for every uniform of any\n"
+        << "// variant, set with prism::gl::Program::set(handle, value) or prism::gl::ProgramOf<<shader>::Shader>.\n";
+    for (const auto& s : c.shaders) {
+        const std::string ns = shaderNamespace(s.name);
+        out << "namespace " << ns
+            << " {\nstruct Shader {\n    static constexpr ShaderId id = ShaderId::" << cppIdentifier(s.name)
+            << ";\n};\n"
+            << "template <prism::catalog::GlslType T, std::size_t N>\n"
+            << "using Uniform = prism::catalog::UniformHandle<T, N, Shader>;\n";
+        for (const auto& [name, decl] : uniformUnion(s)) {
+            if (decl.conflicting) continue;  // no one C++ type fits every variant
+            out << "inline constexpr Uniform<prism::catalog::GlslType::" << decl.type << ", " << decl.length << "> "
+                << handleIdentifier(name) << "{" << quotedLiteral(name) << "};\n";
+        }
+        out << "}  // namespace " << ns << "\n";
+    }
+}
+
+// `namespace contract { ... }`: a handle for every uniform of the binding contract, which
+// the runtime sets in any program that has it (a program without it ignores the set).
+void writeContractHandles(std::ostream& out, const Contract& contract) {
+    out << "\n// The binding contract's uniforms, for code that feeds every shader (what a program lacks, it skips).\n"
+        << "namespace contract {\nstruct Contract {};\n"
+        << "template <prism::catalog::GlslType T, std::size_t N>\n"
+        << "using Uniform = prism::catalog::UniformHandle<T, N, Contract>;\n";
+    for (const auto& u : contract.uniforms)
+        out << "inline constexpr Uniform<prism::catalog::GlslType::" << handleType(glTypeOf(u.type)) << ", "
+            << std::max(u.array, 1) << "> " << handleIdentifier(u.name) << "{" << quotedLiteral(u.name) << "};\n";
+    out << "}  // namespace contract\n";
+}
+
 }  // namespace
 
 std::string cppIdentifier(const std::string& name) {
@@ -82,10 +172,11 @@ std::string writeHeader(const CatalogData& c, const std::string& dataFileName) {
     out << format::kBannerStart << PRISM_VERSION << format::kBannerEnd
         << "// Declarations only; the sources, line tables and reflection are in " << dataFileName << ",\n"
         << "// which prism_add_shaders() compiles into this catalogue's target. This file changes only\n"
-        << "// when a shader or module is added, removed or renamed (docs/shaderc.md).\n"
+        << "// when a shader or module is added, removed or renamed, or a shader's uniforms change\n"
+        << "// (docs/shaderc.md).\n"
         << "#pragma once\n\n"
         << "#include <array>\n#include <cstddef>\n#include <cstdint>\n#include <optional>\n#include <string_view>\n\n"
-        << "#include <prism/catalog/shader_catalog.hpp>\n\n"
+        << "#include <prism/catalog/shader_catalog.hpp>\n#include <prism/catalog/uniform_handle.hpp>\n\n"
         << "namespace " << c.nameSpace << " {\n\n";
     out << "enum class ShaderId : std::uint32_t {\n";
     for (std::size_t i = 0; i < c.shaders.size(); ++i)
@@ -128,6 +219,8 @@ constexpr std::optional<ModuleId> moduleIdFromName(std::string_view n) {
     return std::nullopt;
 }
 )cpp";
+    writeUniformHandles(out, c);
+    writeContractHandles(out, c.contract);
     out << "\n}  // namespace " << c.nameSpace << "\n";
     return out.str();
 }

@@ -3,7 +3,8 @@
 //   - the header (-o X.hpp): a banner, `enum class ShaderId`, `enum class ModuleId`, the
 //     names and module paths as constexpr tables, and declarations of the data
 //     (`extern const prism::catalog::Catalog kCatalog;`, shaderInfo(), moduleInfo()).
-//     It changes only when a shader or module is added, removed or renamed.
+//     It changes only when a shader or module is added, removed or renamed, or a
+//     shader's uniforms change (the typed handles, prism/catalog/uniform_handle.hpp).
 //   - the data file (X.cpp, data_writer.hpp): every module text and stage body once, each
 //     stage as a list of references to them, line tables, reflection, the contract and
 //     the no-op record. A text edit changes only this file.

@@ -41,6 +41,7 @@ std::string fingerprintOf(const Options& o, const std::vector<std::string>& embe
                           ContentKey key) {
     hash::ContentHash h;
     h.add(PRISM_VERSION);
+    h.add(format::kLayoutVersion);
     if (key == ContentKey::Code) h.add("code signatures");  // never equal to a text record
     // Only the options that change the generated files, with paths as embedded (never
     // --depfile, --stamp, --emit-glsl, -j or the error format).

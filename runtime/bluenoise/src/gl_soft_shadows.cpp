@@ -17,6 +17,8 @@ namespace prism::bluenoise {
 
 namespace {
 
+namespace soft_shadows = bluenoise_shaders::soft_shadows;  // the shader's typed uniforms
+
 // A 2D R32UI texture (nearest filtering), owned through a prism::gl handle.
 class UintTexture {
   public:
@@ -58,22 +60,24 @@ RealImage GlSoftShadows::render(const SoftShadowScene& scene, StochasticSetup& s
         throw std::invalid_argument("prism::bluenoise::GlSoftShadows: options size differs from the framebuffer's");
     gl::Program& program = gl_->programs.get("soft_shadows");
     program.use();
-    program.set("u_blueNoiseMask", 0);
-    program.set("u_blueNoiseSeeds", 1);
-    program.set("u_blueNoiseStack", 2);
-    program.set("u_blueNoiseStackDepth", setup.tables.stackDepth);
-    program.set("u_blueNoiseSampler", static_cast<int>(options.sampler));
-    program.set("u_spp", options.spp);
-    program.set("u_imageSize", glm::vec2(static_cast<float>(options.width), static_cast<float>(options.height)));
-    program.set("u_extent", scene.extent);
-    program.set("u_light",
+    program.set(soft_shadows::u_blueNoiseMask, 0);
+    program.set(soft_shadows::u_blueNoiseSeeds, 1);
+    program.set(soft_shadows::u_blueNoiseStack, 2);
+    program.set(soft_shadows::u_blueNoiseStackDepth, setup.tables.stackDepth);
+    program.set(soft_shadows::u_blueNoiseSampler, static_cast<int>(options.sampler));
+    program.set(soft_shadows::u_spp, options.spp);
+    program.set(soft_shadows::u_imageSize,
+                glm::vec2(static_cast<float>(options.width), static_cast<float>(options.height)));
+    program.set(soft_shadows::u_extent, static_cast<float>(scene.extent));
+    program.set(soft_shadows::u_light,
                 glm::vec4(scene.lightHeight, scene.lightHalfLength, scene.lightHalfWidth, irradianceScale(scene)));
-    const char* names[] = {"u_sphere0", "u_sphere1", "u_sphere2"};
+    const decltype(soft_shadows::u_sphere0)* spheres[] = {&soft_shadows::u_sphere0, &soft_shadows::u_sphere1,
+                                                          &soft_shadows::u_sphere2};
     for (std::size_t i = 0; i < 3; ++i) {
         const glm::vec4 s = i < scene.spheres.size() ? glm::vec4(scene.spheres[i].x, scene.spheres[i].y,
                                                                  scene.spheres[i].z, scene.spheres[i].radius)
                                                      : glm::vec4(0.0f);
-        program.set(names[i], s);
+        program.set(*spheres[i], s);
     }
     gl_->mask.upload(0, setup.tables.maskWidth, setup.tables.maskHeight, setup.tables.mask);
     gl_->stack.upload(2, setup.tables.stackWidth, setup.tables.stackHeight * setup.tables.stackDepth,
@@ -82,7 +86,8 @@ RealImage GlSoftShadows::render(const SoftShadowScene& scene, StochasticSetup& s
         const auto start = std::chrono::steady_clock::now();
         gl_->seeds.upload(1, tables.seedWidth, tables.seedHeight, tables.seeds);
         program.use();
-        program.set("u_frame", static_cast<unsigned>(frame));
+        program.set(soft_shadows::u_frame, static_cast<unsigned>(frame));
+        program.reportUnsetUniforms();
         gl_->framebuffer.bind();
         glBindVertexArray(gl_->vao.id());
         glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -70,23 +70,23 @@ DiffractionTextures::DiffractionTextures(const VolumeTables& t)
 
 void DiffractionTextures::apply(gl::Program& program, int unit) const {
     glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
-    program.set("u_diffractionTableSize", static_cast<float>(size_));
-    program.set("u_diffractionExtent", static_cast<float>(extent_));
+    program.set(diffraction_shaders::contract::u_diffractionTableSize, static_cast<float>(size_));
+    program.set(diffraction_shaders::contract::u_diffractionExtent, static_cast<float>(extent_));
     if (path_ == 2) {
         glBindTexture(GL_TEXTURE_3D, tables_.id());
-        program.set("u_diffractionVolume", unit);
-        program.set("u_diffractionSlices", static_cast<float>(slices_));
+        program.set(diffraction_shaders::contract::u_diffractionVolume, unit);
+        program.set(diffraction_shaders::contract::u_diffractionSlices, static_cast<float>(slices_));
     } else {
         glBindTexture(GL_TEXTURE_2D_ARRAY, tables_.id());
-        program.set("u_diffractionTables", unit);
-        program.set("u_diffractionTerms", terms_);
+        program.set(diffraction_shaders::contract::u_diffractionTables, unit);
+        program.set(diffraction_shaders::contract::u_diffractionTerms, terms_);
     }
     if (path_ == 0) {
         glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit + 1));
         glBindTexture(GL_TEXTURE_2D, wavelengths_.id());
-        program.set("u_diffractionWavelengths", unit + 1);
-        program.set("u_diffractionHeightScale", static_cast<float>(heightScale_));
-        program.set("u_diffractionWavelengthCount", wavelengthCount_);
+        program.set(diffraction_shaders::contract::u_diffractionWavelengths, unit + 1);
+        program.set(diffraction_shaders::contract::u_diffractionHeightScale, static_cast<float>(heightScale_));
+        program.set(diffraction_shaders::contract::u_diffractionWavelengthCount, wavelengthCount_);
     }
     glActiveTexture(GL_TEXTURE0);
 }

@@ -192,6 +192,7 @@ void Program::build(ProgramSources sources) {
     }
     activeAttributes_ = activeAttributesOf(program);
     buildUniformTable(sources.uniforms);
+    startUnsetCheck(sources.stages);
 }
 
 }  // namespace prism::gl

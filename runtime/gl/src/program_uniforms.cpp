@@ -1,12 +1,14 @@
 // A Program's uniform table (from reflection or the driver) and its checked setters:
 // unknown names and unfitting types are reported once per (program, name).
 #include <cstdio>
+#include <cstdlib>
 
 #include <glm/glm.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "prism/gl/gl.hpp"
 #include "prism/gl/program.hpp"
+#include "uniform_gl_types.hpp"
 
 namespace prism::gl {
 
@@ -30,53 +32,11 @@ namespace {
 
 using Kind = detail::UniformSetterKind;
 
-bool isSampler(std::uint32_t t) {
-    switch (t) {
-        case GL_SAMPLER_1D:
-        case GL_SAMPLER_2D:
-        case GL_SAMPLER_3D:
-        case GL_SAMPLER_CUBE:
-        case GL_SAMPLER_1D_SHADOW:
-        case GL_SAMPLER_2D_SHADOW:
-        case GL_SAMPLER_1D_ARRAY:
-        case GL_SAMPLER_2D_ARRAY:
-        case GL_SAMPLER_1D_ARRAY_SHADOW:
-        case GL_SAMPLER_2D_ARRAY_SHADOW:
-        case GL_SAMPLER_2D_MULTISAMPLE:
-        case GL_SAMPLER_2D_MULTISAMPLE_ARRAY:
-        case GL_SAMPLER_CUBE_SHADOW:
-        case GL_SAMPLER_BUFFER:
-        case GL_SAMPLER_2D_RECT:
-        case GL_SAMPLER_2D_RECT_SHADOW:
-        case GL_INT_SAMPLER_1D:
-        case GL_INT_SAMPLER_2D:
-        case GL_INT_SAMPLER_3D:
-        case GL_INT_SAMPLER_CUBE:
-        case GL_INT_SAMPLER_1D_ARRAY:
-        case GL_INT_SAMPLER_2D_ARRAY:
-        case GL_INT_SAMPLER_2D_MULTISAMPLE:
-        case GL_INT_SAMPLER_2D_MULTISAMPLE_ARRAY:
-        case GL_INT_SAMPLER_BUFFER:
-        case GL_INT_SAMPLER_2D_RECT:
-        case GL_UNSIGNED_INT_SAMPLER_1D:
-        case GL_UNSIGNED_INT_SAMPLER_2D:
-        case GL_UNSIGNED_INT_SAMPLER_3D:
-        case GL_UNSIGNED_INT_SAMPLER_CUBE:
-        case GL_UNSIGNED_INT_SAMPLER_1D_ARRAY:
-        case GL_UNSIGNED_INT_SAMPLER_2D_ARRAY:
-        case GL_UNSIGNED_INT_SAMPLER_2D_MULTISAMPLE:
-        case GL_UNSIGNED_INT_SAMPLER_2D_MULTISAMPLE_ARRAY:
-        case GL_UNSIGNED_INT_SAMPLER_BUFFER:
-        case GL_UNSIGNED_INT_SAMPLER_2D_RECT: return true;
-        default: return false;
-    }
-}
-
 bool fits(Kind kind, std::uint32_t t) {
     if (t == 0) return true;  // type unknown: nothing to check
     switch (kind) {
         case Kind::Float: return t == GL_FLOAT;
-        case Kind::Int: return t == GL_INT || t == GL_BOOL || isSampler(t);
+        case Kind::Int: return t == GL_INT || t == GL_BOOL || detail::isSamplerType(t);
         case Kind::Unsigned: return t == GL_UNSIGNED_INT || t == GL_BOOL;
         case Kind::Bool: return t == GL_BOOL || t == GL_INT || t == GL_UNSIGNED_INT;
         case Kind::Vec2: return t == GL_FLOAT_VEC2;
@@ -125,7 +85,7 @@ std::string glslTypeName(std::uint32_t t) {
         case GL_FLOAT_MAT3: return "mat3";
         case GL_FLOAT_MAT4: return "mat4";
         default: {
-            if (isSampler(t)) return "a sampler";
+            if (detail::isSamplerType(t)) return "a sampler";
             char text[32];
             std::snprintf(text, sizeof text, "GL type 0x%04x", static_cast<unsigned>(t));
             return text;
@@ -143,9 +103,52 @@ std::string withoutFirstIndex(const std::string& name) {
 
 }  // namespace
 
+bool detail::isSamplerType(std::uint32_t t) {
+    switch (t) {
+        case GL_SAMPLER_1D:
+        case GL_SAMPLER_2D:
+        case GL_SAMPLER_3D:
+        case GL_SAMPLER_CUBE:
+        case GL_SAMPLER_1D_SHADOW:
+        case GL_SAMPLER_2D_SHADOW:
+        case GL_SAMPLER_1D_ARRAY:
+        case GL_SAMPLER_2D_ARRAY:
+        case GL_SAMPLER_1D_ARRAY_SHADOW:
+        case GL_SAMPLER_2D_ARRAY_SHADOW:
+        case GL_SAMPLER_2D_MULTISAMPLE:
+        case GL_SAMPLER_2D_MULTISAMPLE_ARRAY:
+        case GL_SAMPLER_CUBE_SHADOW:
+        case GL_SAMPLER_BUFFER:
+        case GL_SAMPLER_2D_RECT:
+        case GL_SAMPLER_2D_RECT_SHADOW:
+        case GL_INT_SAMPLER_1D:
+        case GL_INT_SAMPLER_2D:
+        case GL_INT_SAMPLER_3D:
+        case GL_INT_SAMPLER_CUBE:
+        case GL_INT_SAMPLER_1D_ARRAY:
+        case GL_INT_SAMPLER_2D_ARRAY:
+        case GL_INT_SAMPLER_2D_MULTISAMPLE:
+        case GL_INT_SAMPLER_2D_MULTISAMPLE_ARRAY:
+        case GL_INT_SAMPLER_BUFFER:
+        case GL_INT_SAMPLER_2D_RECT:
+        case GL_UNSIGNED_INT_SAMPLER_1D:
+        case GL_UNSIGNED_INT_SAMPLER_2D:
+        case GL_UNSIGNED_INT_SAMPLER_3D:
+        case GL_UNSIGNED_INT_SAMPLER_CUBE:
+        case GL_UNSIGNED_INT_SAMPLER_1D_ARRAY:
+        case GL_UNSIGNED_INT_SAMPLER_2D_ARRAY:
+        case GL_UNSIGNED_INT_SAMPLER_2D_MULTISAMPLE:
+        case GL_UNSIGNED_INT_SAMPLER_2D_MULTISAMPLE_ARRAY:
+        case GL_UNSIGNED_INT_SAMPLER_BUFFER:
+        case GL_UNSIGNED_INT_SAMPLER_2D_RECT: return true;
+        default: return false;
+    }
+}
+
 void Program::addUniform(const std::string& reflectedName, std::uint32_t glType, int arraySize) {
     const std::string base = withoutFirstIndex(reflectedName);
     const bool isArray = arraySize > 1 || base != reflectedName;
+    declared_.push_back({base, glType});
     if (!isArray) {
         uniforms_[base] = {glGetUniformLocation(program_.id(), base.c_str()), glType, 1};
         return;
@@ -160,6 +163,7 @@ void Program::addUniform(const std::string& reflectedName, std::uint32_t glType,
 
 void Program::buildUniformTable(const std::optional<std::vector<UniformDecl>>& reflected) {
     uniforms_.clear();
+    declared_.clear();
     if (reflected) {
         for (const auto& u : *reflected) addUniform(u.name, u.glType, u.arraySize);
         return;
@@ -193,9 +197,9 @@ const Program::UniformSlot* Program::prepare(std::string_view name, SetterKind k
     if (!slot) {
         if (reported_.emplace(name).second) {
             unknownReports_.emplace_back(name);
-            warn("set() of uniform '" + std::string(name) +
-                 "' which the program does not have (misspelt, or not used by this variant); the value is ignored. "
-                 "Reported once.");
+            warn("set() of uniform '" + std::string(name) + "' which the program does not have" +
+                 catalog::didYouMean(name, uniformNames()) +
+                 " (misspelt, or not used by this variant); the value is ignored. Reported once.");
         }
         return nullptr;
     }
@@ -212,6 +216,7 @@ const Program::UniformSlot* Program::prepare(std::string_view name, SetterKind k
                                 ": set() of " + std::to_string(count) + " elements into uniform '" + std::string(name) +
                                 "', which has room for " + std::to_string(slot->elements));
     use();
+    setSinceLink_.emplace(name.substr(0, name.back() == ']' ? name.rfind('[') : name.size()));
     return slot;
 }
 
@@ -219,6 +224,11 @@ void Program::set(std::string_view name, float v) {
     if (auto s = prepare(name, SetterKind::Float, 1)) glUniform1f(s->location, v);
 }
 void Program::set(std::string_view name, int v) {
+    constexpr int kExactInFloat = 1 << 24;  // every int up to here is a float without loss
+    if (const UniformSlot* slot = slotFor(name); slot && slot->glType == GL_FLOAT && std::abs(v) <= kExactInFloat) {
+        set(name, static_cast<float>(v));  // set("u_bands", 4) on a float: the literal's value, not a drop
+        return;
+    }
     if (auto s = prepare(name, SetterKind::Int, 1)) glUniform1i(s->location, v);
 }
 void Program::set(std::string_view name, unsigned v) {
@@ -279,6 +289,12 @@ void Program::set(std::string_view name, std::span<const glm::mat3> v) {
 void Program::set(std::string_view name, std::span<const glm::mat4> v) {
     if (auto s = prepare(name, SetterKind::Mat4, v.size()); s && !v.empty())
         glUniformMatrix4fv(s->location, static_cast<GLsizei>(v.size()), GL_FALSE, glm::value_ptr(v.front()));
+}
+
+std::vector<std::string> Program::uniformNames() const {
+    std::vector<std::string> names;
+    for (const auto& u : declared_) names.push_back(u.name);
+    return names;
 }
 
 bool Program::hasUniform(std::string_view name) const {

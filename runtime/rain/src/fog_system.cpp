@@ -5,6 +5,7 @@
 
 #include "prism/gl/gl.hpp"
 #include "prism/rain/rain_params.hpp"
+#include "prism/rain_shaders.hpp"
 #include "texture_arrays.hpp"
 
 namespace prism::rain {
@@ -52,19 +53,19 @@ void FogSystem::draw(const view::Camera& camera, float aspect, const view::Fog* 
     if (params_.strength <= 0.0f) return;
     gl::Program& p = programs_.get("fog_billboards", {{"FOG", distanceFog ? "1" : "0"}});
     p.use();
-    p.set("u_view", camera.view());
-    p.set("u_projection", camera.projection(aspect));
-    p.set("u_cameraPosition", camera.eye);
-    p.set("u_fogBillboardSize", params_.size);
-    p.set("u_fogStrength", params_.strength);
-    p.set("u_fogBillboardColor", params_.color);
-    p.set("u_fogGroundHeight", params_.groundHeight);
-    p.set("u_fogSoftDistance", params_.softDistance);
-    p.set("u_time", timeSeconds);
-    p.set("u_fogNoise", kNoiseTextureUnit);
+    p.set(rain_shaders::fog_billboards::u_view, camera.view());
+    p.set(rain_shaders::fog_billboards::u_projection, camera.projection(aspect));
+    p.set(rain_shaders::fog_billboards::u_cameraPosition, camera.eye);
+    p.set(rain_shaders::fog_billboards::u_fogBillboardSize, params_.size);
+    p.set(rain_shaders::fog_billboards::u_fogStrength, params_.strength);
+    p.set(rain_shaders::fog_billboards::u_fogBillboardColor, params_.color);
+    p.set(rain_shaders::fog_billboards::u_fogGroundHeight, params_.groundHeight);
+    p.set(rain_shaders::fog_billboards::u_fogSoftDistance, params_.softDistance);
+    p.set(rain_shaders::fog_billboards::u_time, timeSeconds);
+    p.set(rain_shaders::fog_billboards::u_fogNoise, kNoiseTextureUnit);
     if (distanceFog) {
-        p.set("u_fogColor", distanceFog->color);
-        p.set("u_fogDensity", distanceFog->density);
+        p.set(rain_shaders::fog_billboards::u_fogColor, distanceFog->color);
+        p.set(rain_shaders::fog_billboards::u_fogDensity, distanceFog->density);
     }
     glActiveTexture(GL_TEXTURE0 + kNoiseTextureUnit);
     glBindTexture(GL_TEXTURE_2D_ARRAY, noiseTexture_.id());
@@ -72,6 +73,7 @@ void FogSystem::draw(const view::Camera& camera, float aspect, const view::Fog* 
     glDepthMask(GL_FALSE);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    p.reportUnsetUniforms();
     glBindVertexArray(vao_.id());
     glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(simulation_.billboards().size()));
     glBindVertexArray(0);

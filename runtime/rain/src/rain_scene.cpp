@@ -10,6 +10,7 @@
 #include "prism/gl/gl.hpp"
 #include "prism/geometry/normals.hpp"
 #include "prism/geometry/procedural_meshes.hpp"
+#include "prism/rain_shaders.hpp"
 
 namespace prism::rain {
 namespace {
@@ -131,24 +132,25 @@ void RainScene::draw(int width, int height) {
     gl::Program& ground = programs_->get("ground", {{"FOG", fog ? "1" : "0"}});
     ground.use();
     const RainLights& l = desc_.lights;
-    ground.set("u_view", desc_.camera.view());
-    ground.set("u_projection", desc_.camera.projection(aspect));
-    ground.set("u_cameraPosition", desc_.camera.eye);
-    ground.set("u_ambient", l.ambient);
-    ground.set("u_sunDirection", glm::normalize(l.sun.direction));
-    ground.set("u_sunColor", l.sun.color);
-    ground.set("u_lampPosition", l.lamp.position);
-    ground.set("u_lampColor", l.lamp.color);
-    ground.set("u_lampRange", l.lampRange);
-    ground.set("u_shininess", desc_.ground.shininess);
-    ground.set("u_specular", desc_.ground.specular);
+    ground.set(rain_shaders::ground::u_view, desc_.camera.view());
+    ground.set(rain_shaders::ground::u_projection, desc_.camera.projection(aspect));
+    ground.set(rain_shaders::ground::u_cameraPosition, desc_.camera.eye);
+    ground.set(rain_shaders::ground::u_ambient, l.ambient);
+    ground.set(rain_shaders::ground::u_sunDirection, glm::normalize(l.sun.direction));
+    ground.set(rain_shaders::ground::u_sunColor, l.sun.color);
+    ground.set(rain_shaders::ground::u_lampPosition, l.lamp.position);
+    ground.set(rain_shaders::ground::u_lampColor, l.lamp.color);
+    ground.set(rain_shaders::ground::u_lampRange, l.lampRange);
+    ground.set(rain_shaders::ground::u_shininess, desc_.ground.shininess);
+    ground.set(rain_shaders::ground::u_specular, desc_.ground.specular);
     if (fog) {
-        ground.set("u_fogColor", fog->color);
-        ground.set("u_fogDensity", fog->density);
+        ground.set(rain_shaders::ground::u_fogColor, fog->color);
+        ground.set(rain_shaders::ground::u_fogDensity, fog->density);
     }
-    ground.set("u_world", glm::mat4(1.0f));
-    ground.set("u_color", glm::vec4(desc_.ground.color, 1.0f));
-    ground.set("u_emissive", 0.0f);
+    ground.set(rain_shaders::ground::u_world, glm::mat4(1.0f));
+    ground.set(rain_shaders::ground::u_color, glm::vec4(desc_.ground.color, 1.0f));
+    ground.set(rain_shaders::ground::u_emissive, 0.0f);
+    ground.reportUnsetUniforms();
     ground_->draw();
     if (post_) {
         // The lamp: a dark post from the ground up to a glowing bulb.
@@ -156,16 +158,17 @@ void RainScene::draw(int width, int height) {
         const float postHeight = std::max(lamp.y - kBulbRadius, 0.01f);
         glm::mat4 post = glm::translate(glm::mat4(1.0f), glm::vec3(lamp.x, 0.5f * postHeight, lamp.z));
         post = glm::scale(post, glm::vec3(kPostWidth, postHeight, kPostWidth));
-        ground.set("u_world", post);
-        ground.set("u_color", glm::vec4(0.08f, 0.08f, 0.09f, 1.0f));
+        ground.set(rain_shaders::ground::u_world, post);
+        ground.set(rain_shaders::ground::u_color, glm::vec4(0.08f, 0.08f, 0.09f, 1.0f));
         post_->draw();
     }
     if (bulb_) {
         const glm::vec3 lamp = l.lamp.position;
         const float m = std::max({l.lamp.color.r, l.lamp.color.g, l.lamp.color.b, 1e-6f});
-        ground.set("u_world", glm::scale(glm::translate(glm::mat4(1.0f), lamp), glm::vec3(kBulbRadius)));
-        ground.set("u_color", glm::vec4(l.lamp.color / m, 1.0f));
-        ground.set("u_emissive", 1.0f);
+        ground.set(rain_shaders::ground::u_world,
+                   glm::scale(glm::translate(glm::mat4(1.0f), lamp), glm::vec3(kBulbRadius)));
+        ground.set(rain_shaders::ground::u_color, glm::vec4(l.lamp.color / m, 1.0f));
+        ground.set(rain_shaders::ground::u_emissive, 1.0f);
         bulb_->draw();
     }
     if (fog_) fog_->draw(desc_.camera, aspect, fog, time_);

@@ -8,6 +8,7 @@
 
 #include "prism/gl/gl.hpp"
 #include "prism/rain/streak_texture.hpp"
+#include "prism/rain_shaders.hpp"
 #include "texture_arrays.hpp"
 
 namespace prism::rain {
@@ -80,16 +81,16 @@ void RainSystem::seedRange(std::uint32_t first, std::uint32_t end) {
     if (end <= first) return;
     gl::Program& init = programs_.get("rain_init");
     init.use();
-    init.set("u_cylinderCenter", center_);
-    init.set("u_cylinder", glm::vec2(params_.radius, params_.height));
-    init.set("u_lod", glm::vec2(static_cast<float>(params_.lodRings), params_.lodFalloff));
-    init.set("u_wind", wind_);
-    init.set("u_fallSpeed", rate_.fallSpeed);
-    init.set("u_jitter", params_.jitter);
-    init.set("u_rainSeed", params_.seed);
-    init.set("u_firstParticle", first);
-    init.set("u_particleCount", end);
-    init.set("u_shearHeight", shearHeight_);
+    init.set(rain_shaders::rain_init::u_cylinderCenter, center_);
+    init.set(rain_shaders::rain_init::u_cylinder, glm::vec2(params_.radius, params_.height));
+    init.set(rain_shaders::rain_init::u_lod, glm::vec2(static_cast<float>(params_.lodRings), params_.lodFalloff));
+    init.set(rain_shaders::rain_init::u_wind, wind_);
+    init.set(rain_shaders::rain_init::u_fallSpeed, rate_.fallSpeed);
+    init.set(rain_shaders::rain_init::u_jitter, params_.jitter);
+    init.set(rain_shaders::rain_init::u_rainSeed, params_.seed);
+    init.set(rain_shaders::rain_init::u_firstParticle, first);
+    init.set(rain_shaders::rain_init::u_particleCount, end);
+    init.set(rain_shaders::rain_init::u_shearHeight, shearHeight_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, particles_.id());
     gl::dispatchInvocations(end - first, kComputeGroupSize);
     glMemoryBarrier(kParticleBarriers);
@@ -105,13 +106,13 @@ void RainSystem::update(float dt, const glm::vec3& eye) {
     if (count_ == 0) return;
     gl::Program& update = programs_.get("rain_update");
     update.use();
-    update.set("u_cylinderCenter", center_);
-    update.set("u_cylinder", glm::vec2(params_.radius, params_.height));
-    update.set("u_dt", step);
-    update.set("u_wind", wind_);
-    update.set("u_fallSpeed", rate_.fallSpeed);
-    update.set("u_particleCount", count_);
-    update.set("u_shearHeight", shearHeight_);
+    update.set(rain_shaders::rain_update::u_cylinderCenter, center_);
+    update.set(rain_shaders::rain_update::u_cylinder, glm::vec2(params_.radius, params_.height));
+    update.set(rain_shaders::rain_update::u_dt, step);
+    update.set(rain_shaders::rain_update::u_wind, wind_);
+    update.set(rain_shaders::rain_update::u_fallSpeed, rate_.fallSpeed);
+    update.set(rain_shaders::rain_update::u_particleCount, count_);
+    update.set(rain_shaders::rain_update::u_shearHeight, shearHeight_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, particles_.id());
     gl::dispatchInvocations(count_, kComputeGroupSize);
     glMemoryBarrier(kParticleBarriers);
@@ -169,27 +170,27 @@ void RainSystem::draw(const RainDrawInputs& in) {
     gl::Program& p = programs_.get(techniqueShader(in.technique), fogVariant(in.fog));
     p.use();
     const StreakStyle& s = params_.streaks;
-    p.set("u_view", in.camera.view());
-    p.set("u_projection", in.camera.projection(in.aspect));
-    p.set("u_cameraPosition", in.camera.eye);
-    p.set("u_cylinderCenter", center_);
-    p.set("u_cylinder", glm::vec2(params_.radius, params_.height));
-    p.set("u_wind", wind_);
-    p.set("u_exposure", s.exposure);
-    p.set("u_streakWidth", glm::vec2(s.width, s.widthPerMetre));
-    p.set("u_viewportHeight", static_cast<float>(std::max(in.viewportHeight, 1)));
-    p.set("u_streakOpacity", s.opacity);
-    p.set("u_streakFalloff", s.falloffDistance);
-    p.set("u_streakTexture", kStreakTextureUnit);
-    p.set("u_ambient", in.lights.ambient);
-    p.set("u_sunDirection", glm::normalize(in.lights.sun.direction));
-    p.set("u_sunColor", in.lights.sun.color);
-    p.set("u_lampPosition", in.lights.lamp.position);
-    p.set("u_lampColor", in.lights.lamp.color);
-    p.set("u_lampRange", in.lights.lampRange);
+    p.set(rain_shaders::contract::u_view, in.camera.view());
+    p.set(rain_shaders::contract::u_projection, in.camera.projection(in.aspect));
+    p.set(rain_shaders::contract::u_cameraPosition, in.camera.eye);
+    p.set(rain_shaders::contract::u_cylinderCenter, center_);
+    p.set(rain_shaders::contract::u_cylinder, glm::vec2(params_.radius, params_.height));
+    p.set(rain_shaders::contract::u_wind, wind_);
+    p.set(rain_shaders::contract::u_exposure, s.exposure);
+    p.set(rain_shaders::contract::u_streakWidth, glm::vec2(s.width, s.widthPerMetre));
+    p.set(rain_shaders::contract::u_viewportHeight, static_cast<float>(std::max(in.viewportHeight, 1)));
+    p.set(rain_shaders::contract::u_streakOpacity, s.opacity);
+    p.set(rain_shaders::contract::u_streakFalloff, s.falloffDistance);
+    p.set(rain_shaders::contract::u_streakTexture, kStreakTextureUnit);
+    p.set(rain_shaders::contract::u_ambient, in.lights.ambient);
+    p.set(rain_shaders::contract::u_sunDirection, glm::normalize(in.lights.sun.direction));
+    p.set(rain_shaders::contract::u_sunColor, in.lights.sun.color);
+    p.set(rain_shaders::contract::u_lampPosition, in.lights.lamp.position);
+    p.set(rain_shaders::contract::u_lampColor, in.lights.lamp.color);
+    p.set(rain_shaders::contract::u_lampRange, in.lights.lampRange);
     if (in.fog) {
-        p.set("u_fogColor", in.fog->color);
-        p.set("u_fogDensity", in.fog->density);
+        p.set(rain_shaders::contract::u_fogColor, in.fog->color);
+        p.set(rain_shaders::contract::u_fogDensity, in.fog->density);
     }
     glActiveTexture(GL_TEXTURE0 + kStreakTextureUnit);
     glBindTexture(GL_TEXTURE_2D_ARRAY, streakTexture_.id());
@@ -199,6 +200,7 @@ void RainSystem::draw(const RainDrawInputs& in) {
     glDepthMask(GL_FALSE);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    p.reportUnsetUniforms();
     glBindVertexArray(vao.id());
     switch (in.technique) {
         case StreakTechnique::GeometryShader: glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count_)); break;

@@ -8,14 +8,12 @@
 #include <vector>
 
 #include "prism/geometry/normal_matrix.hpp"
+#include "prism/shaders.hpp"
 
 namespace prism::render {
 namespace {
 
-template <class T>
-void setIfPresent(gl::Program& p, std::string_view name, const T& value) {
-    if (p.hasUniform(name)) p.set(name, value);
-}
+namespace contract = shaders::contract;
 
 // The number of elements of a uniform array (the program answers to a[0]..a[n-1]).
 int capacityOf(const gl::Program& p, std::string_view arrayName) {
@@ -24,18 +22,20 @@ int capacityOf(const gl::Program& p, std::string_view arrayName) {
     return n;
 }
 
-void setLightArray(gl::Program& p, std::string_view countName, std::string_view firstName, std::string_view secondName,
+// One kind of light: its count and two arrays of vec3 (direction or position, colour).
+template <class Count, class Array>
+void setLightArray(gl::Program& p, const Count& count, const Array& firstArray, const Array& secondArray,
                    const std::vector<glm::vec3>& first, const std::vector<glm::vec3>& second) {
-    if (!p.hasUniform(countName)) return;
-    const int capacity = capacityOf(p, firstName);
+    if (!p.hasUniform(count.name)) return;
+    const int capacity = capacityOf(p, firstArray.name);
     if (static_cast<int>(first.size()) > capacity)
         throw std::invalid_argument(p.label() + ": " + std::to_string(first.size()) +
                                     " lights given but the shader holds " + std::to_string(capacity) + " (" +
-                                    std::string(firstName) + "); choose a variant with more lights");
-    p.set(countName, static_cast<int>(first.size()));
+                                    std::string(firstArray.name) + "); choose a variant with more lights");
+    p.set(count, static_cast<int>(first.size()));
     if (first.empty()) return;
-    p.set(firstName, std::span<const glm::vec3>(first));
-    p.set(secondName, std::span<const glm::vec3>(second));
+    p.set(firstArray, first);
+    p.set(secondArray, second);
 }
 
 }  // namespace
@@ -43,17 +43,17 @@ void setLightArray(gl::Program& p, std::string_view countName, std::string_view 
 void setFrameUniforms(gl::Program& p, const view::Camera& camera, float aspect, const view::Lights& lights,
                       const glm::mat4& world, const view::Material& material, const view::Fog* fog) {
     const glm::mat4 view = camera.view();
-    setIfPresent(p, "u_world", world);
-    setIfPresent(p, "u_view", view);
-    setIfPresent(p, "u_projection", camera.projection(aspect));
-    setIfPresent(p, "u_normal", geometry::normalMatrix(view * world));
-    setIfPresent(p, "u_color", material.color);
-    setIfPresent(p, "u_shininess", material.shininess);
-    setIfPresent(p, "u_specular", material.specular);
-    setIfPresent(p, "u_ambient", lights.ambient);
+    p.set(contract::u_world, world);
+    p.set(contract::u_view, view);
+    p.set(contract::u_projection, camera.projection(aspect));
+    p.set(contract::u_normal, geometry::normalMatrix(view * world));
+    p.set(contract::u_color, material.color);
+    p.set(contract::u_shininess, material.shininess);
+    p.set(contract::u_specular, material.specular);
+    p.set(contract::u_ambient, lights.ambient);
     if (fog && !(fog->density >= 0.0f)) throw std::invalid_argument(p.label() + ": fog density must be a number >= 0");
-    setIfPresent(p, "u_fogColor", fog ? fog->color : glm::vec3(0.0f));
-    setIfPresent(p, "u_fogDensity", fog ? fog->density : 0.0f);
+    p.set(contract::u_fogColor, fog ? fog->color : glm::vec3(0.0f));
+    p.set(contract::u_fogDensity, fog ? fog->density : 0.0f);
 
     std::vector<glm::vec3> directions, colors, positions, pointColors;
     for (const auto& l : lights.directional) {
@@ -64,8 +64,10 @@ void setFrameUniforms(gl::Program& p, const view::Camera& camera, float aspect, 
         positions.push_back(l.position);
         pointColors.push_back(l.color);
     }
-    setLightArray(p, "u_directionalLightCount", "u_lightDirection", "u_lightColor", directions, colors);
-    setLightArray(p, "u_pointLightCount", "u_pointLightPosition", "u_pointLightColor", positions, pointColors);
+    setLightArray(p, contract::u_directionalLightCount, contract::u_lightDirection, contract::u_lightColor, directions,
+                  colors);
+    setLightArray(p, contract::u_pointLightCount, contract::u_pointLightPosition, contract::u_pointLightColor,
+                  positions, pointColors);
 }
 
 }  // namespace prism::render

@@ -65,6 +65,7 @@ void GpuMesh::requireAttributesOf(const gl::Program& program) const {
 
 void GpuMesh::draw(const gl::Program& program) const {
     requireAttributesOf(program);
+    program.reportUnsetUniforms();
     draw();
 }
 

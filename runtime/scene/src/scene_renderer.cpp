@@ -16,6 +16,7 @@
 #include "prism/scene/scene_loader.hpp"
 #include "prism/water/rain_rates.hpp"
 #include "prism/water/water_scene.hpp"
+#include "prism/diffraction_shaders.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -197,9 +198,10 @@ void SceneRenderer::drawDiffraction(const Scene& scene, const SceneObject& objec
                          diffractionPrograms_->catalog().contractAttributes);
     render::setFrameUniforms(program, scene.camera, aspect, scene.lights, object.world, object.material,
                              scene.fog ? &*scene.fog : nullptr);
-    program.set("u_diffractionTangent", glm::vec3(static_cast<float>(m.tangent[0]), static_cast<float>(m.tangent[1]),
-                                                  static_cast<float>(m.tangent[2])));
-    program.set("u_diffractionRadial", m.radialTangent ? 1.0f : 0.0f);
+    program.set(diffraction_shaders::diffraction::u_diffractionTangent,
+                glm::vec3(static_cast<float>(m.tangent[0]), static_cast<float>(m.tangent[1]),
+                          static_cast<float>(m.tangent[2])));
+    program.set(diffraction_shaders::diffraction::u_diffractionRadial, m.radialTangent ? 1.0f : 0.0f);
     textures->apply(program);
     program.use();
     mesh.draw(program);

@@ -50,11 +50,6 @@ constexpr ws::ShaderId kPassShaders[kPassCount] = {
     ws::ShaderId::water_ledger_partial,      ws::ShaderId::water_ledger_total,
 };
 
-template <class T>
-void setIfPresent(gl::Program& p, std::string_view name, const T& value) {
-    if (p.hasUniform(name)) p.set(name, value);
-}
-
 // A storage buffer owned by `owner` (prism::gl handles); returns its name.
 GLuint makeBuffer(std::vector<gl::Buffer>& owner, std::size_t bytes, const void* data) {
     return owner.emplace_back(gl::Buffer::create(bytes, GL_DYNAMIC_COPY, data)).id();
@@ -122,8 +117,8 @@ GpuWaterSimulation::GpuWaterSimulation(HeightField terrain, std::vector<float> p
     impl_->totals = makeBuffer(impl_->ownedBuffers, bytes(1, 2 * sizeof(double)), nullptr);
     gl::throwIfGlError("creating the water simulation's storage buffers");
     for (auto& p : impl_->programs) {
-        setIfPresent(p, "u_gridSize", glm::ivec2(width(), height()));
-        setIfPresent(p, "u_partialCount", static_cast<int>(impl_->partialCount));
+        p.set(ws::contract::u_gridSize, glm::ivec2(width(), height()));
+        p.set(ws::contract::u_partialCount, static_cast<int>(impl_->partialCount));
     }
     std::vector<glm::vec2> zero(n, glm::vec2(0.0f));
     resetState(zero);
@@ -163,20 +158,20 @@ void GpuWaterSimulation::resetState(std::span<const glm::vec2> pairs) {
 void GpuWaterSimulation::runSubsteps(const StepConstants& k, long count) {
     const glm::ivec2 grid(width(), height());
     for (auto& p : impl_->programs) {
-        setIfPresent(p, "u_gridSize", grid);
-        setIfPresent(p, "u_dt", k.dt);
-        setIfPresent(p, "u_rainDepth", k.rainDepth);
-        setIfPresent(p, "u_openBorder", k.openBorder);
-        setIfPresent(p, "u_invEightCell", k.invEightCell);
-        setIfPresent(p, "u_flowRateDt", k.flowRateDt);
-        setIfPresent(p, "u_maxFlowFraction", k.maxFlowFraction);
-        setIfPresent(p, "u_waveAccelDt", k.waveAccelDt);
-        setIfPresent(p, "u_damping", k.damping);
-        setIfPresent(p, "u_epsilon", k.epsilon);
-        setIfPresent(p, "u_capPerDt", k.capPerDt);
-        setIfPresent(p, "u_smoothRadius", k.smoothRadius);
-        if (p.hasUniform("u_smoothWeights")) p.set("u_smoothWeights", std::span<const float>(k.smoothWeights));
-        setIfPresent(p, "u_partialCount", static_cast<int>(impl_->partialCount));
+        p.set(ws::contract::u_gridSize, grid);
+        p.set(ws::contract::u_dt, k.dt);
+        p.set(ws::contract::u_rainDepth, k.rainDepth);
+        p.set(ws::contract::u_openBorder, k.openBorder);
+        p.set(ws::contract::u_invEightCell, k.invEightCell);
+        p.set(ws::contract::u_flowRateDt, k.flowRateDt);
+        p.set(ws::contract::u_maxFlowFraction, k.maxFlowFraction);
+        p.set(ws::contract::u_waveAccelDt, k.waveAccelDt);
+        p.set(ws::contract::u_damping, k.damping);
+        p.set(ws::contract::u_epsilon, k.epsilon);
+        p.set(ws::contract::u_capPerDt, k.capPerDt);
+        p.set(ws::contract::u_smoothRadius, k.smoothRadius);
+        p.set(ws::contract::u_smoothWeights, k.smoothWeights);
+        p.set(ws::contract::u_partialCount, static_cast<int>(impl_->partialCount));
     }
     const GLenum ssbo = GL_SHADER_STORAGE_BUFFER;
     glBindBufferBase(ssbo, kTerrain, impl_->terrain);

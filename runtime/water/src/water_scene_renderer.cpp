@@ -35,11 +35,6 @@ void uploadDepthTexture(const WaterSimulation& simulation, GLuint texture) {
     glBindTexture(GL_TEXTURE_2D, 0);
 }
 
-template <class T>
-void setIfPresent(gl::Program& p, std::string_view name, const T& value) {
-    if (p.hasUniform(name)) p.set(name, value);
-}
-
 }  // namespace
 
 struct WaterSceneRenderer::Impl {
@@ -200,8 +195,8 @@ struct WaterSceneRenderer::Impl {
         const auto& d = scene.description();
         render::setFrameUniforms(p, camera, aspect, d.lights, scene.world(), view::Material{},
                                  d.fog ? &*d.fog : nullptr);
-        setIfPresent(p, "u_skyFogDistance", 2.0f * sceneExtent(scene.terrain()));
-        setIfPresent(p, "u_cameraPosition", camera.eye);
+        p.set(ws::contract::u_skyFogDistance, 2.0f * sceneExtent(scene.terrain()));
+        p.set(ws::contract::u_cameraPosition, camera.eye);
     }
 
     // The frame: the texture units the passes read (0 sky, 1 water depth, 2 terrain
@@ -240,8 +235,9 @@ struct WaterSceneRenderer::Impl {
         glDisable(GL_BLEND);
         gl::Program& sky = program("skybox", {});
         frameUniforms(sky, camera, aspect);
-        setIfPresent(sky, "u_skybox", 0);
+        sky.set(ws::skybox::u_skybox, 0);
         sky.use();
+        sky.reportUnsetUniforms();
         glBindVertexArray(skyVao);
         glDrawArrays(GL_TRIANGLES, 0, 36);
     }
@@ -254,10 +250,11 @@ struct WaterSceneRenderer::Impl {
         glDepthMask(GL_TRUE);
         gl::Program& terrain = program("terrain", {{"WET", scene.water() ? "1" : "0"}});
         frameUniforms(terrain, camera, aspect);
-        setIfPresent(terrain, "u_waterDepth", 1);
-        setIfPresent(terrain, "u_wetDarkening", look.wetDarkening);
-        setIfPresent(terrain, "u_wetFilmDepth", look.wetFilmDepth);
+        terrain.set(ws::terrain::u_waterDepth, 1);
+        terrain.set(ws::terrain::u_wetDarkening, look.wetDarkening);
+        terrain.set(ws::terrain::u_wetFilmDepth, look.wetFilmDepth);
         terrain.use();
+        terrain.reportUnsetUniforms();
         glBindVertexArray(terrainVao);
         glDrawElements(GL_TRIANGLES, terrainIndexCount, GL_UNSIGNED_INT, nullptr);
     }
@@ -280,6 +277,7 @@ struct WaterSceneRenderer::Impl {
         glDepthMask(GL_FALSE);
         glDepthFunc(GL_LEQUAL);
         surface.use();
+        surface.reportUnsetUniforms();
         glBindVertexArray(waterVao);
         glDrawElements(GL_TRIANGLES, waterIndexCount, GL_UNSIGNED_INT, nullptr);
         glDepthMask(GL_TRUE);
@@ -289,22 +287,22 @@ struct WaterSceneRenderer::Impl {
 
     void waterSurfaceUniforms(gl::Program& surface, const WaterSystem& water) {
         const WaterLook& look = scene.description().look;
-        setIfPresent(surface, "u_skybox", 0);
-        setIfPresent(surface, "u_waterDepth", 1);
-        setIfPresent(surface, "u_terrainHeight", 2);
-        setIfPresent(surface, "u_ripples", 3);
-        setIfPresent(surface, "u_terrainAlbedo", 4);
-        setIfPresent(surface, "u_wetDarkening", look.wetDarkening);
-        setIfPresent(surface, "u_rippleDensity", rippleDensity(water.rainMmPerHour()));
-        setIfPresent(surface, "u_cellSize", scene.terrain().cellSize);
-        setIfPresent(surface, "u_waterThreshold", look.threshold);
-        setIfPresent(surface, "u_shoreFadeDepth", look.shoreFadeDepth);
-        setIfPresent(surface, "u_fresnelF0", look.fresnelF0);
-        setIfPresent(surface, "u_waterTint", look.tint);
-        setIfPresent(surface, "u_waterAbsorption", look.absorption);
-        setIfPresent(surface, "u_rippleFrame", static_cast<float>(water.rippleFrame()));
-        setIfPresent(surface, "u_rippleScale", look.rippleScale);
-        setIfPresent(surface, "u_rippleStrength", rippleStrength(water.rainMmPerHour()));
+        surface.set(ws::water_surface::u_skybox, 0);
+        surface.set(ws::water_surface::u_waterDepth, 1);
+        surface.set(ws::water_surface::u_terrainHeight, 2);
+        surface.set(ws::water_surface::u_ripples, 3);
+        surface.set(ws::water_surface::u_terrainAlbedo, 4);
+        surface.set(ws::water_surface::u_wetDarkening, look.wetDarkening);
+        surface.set(ws::water_surface::u_rippleDensity, rippleDensity(water.rainMmPerHour()));
+        surface.set(ws::water_surface::u_cellSize, scene.terrain().cellSize);
+        surface.set(ws::water_surface::u_waterThreshold, look.threshold);
+        surface.set(ws::water_surface::u_shoreFadeDepth, look.shoreFadeDepth);
+        surface.set(ws::water_surface::u_fresnelF0, look.fresnelF0);
+        surface.set(ws::water_surface::u_waterTint, look.tint);
+        surface.set(ws::water_surface::u_waterAbsorption, look.absorption);
+        surface.set(ws::water_surface::u_rippleFrame, static_cast<float>(water.rippleFrame()));
+        surface.set(ws::water_surface::u_rippleScale, look.rippleScale);
+        surface.set(ws::water_surface::u_rippleStrength, rippleStrength(water.rainMmPerHour()));
     }
 
     // Leaves no program, vertex array or texture bound, for whoever draws next.

@@ -32,9 +32,16 @@
 // A uniform the program does not have, or a set() whose C++ type does not fit the
 // uniform's GLSL type, is reported ONCE per (program, name) through the warning
 // handler (stderr by default) and recorded in unknownUniformReports() /
-// typeMismatchReports(); the set is then skipped. A uniform that exists in the
-// table but was optimised away by the driver (location -1) is set silently as a
+// typeMismatchReports(); the set is then skipped (an unknown name's report says "did you
+// mean" the nearest uniform). An int into a float uniform is no mismatch: it is set as
+// the float of the same value when that is exact (|v| <= 2^24). A uniform that exists in
+// the table but was optimised away by the driver (location -1) is set silently as a
 // no-op, as GL does. Too many array elements throw std::length_error.
+//
+// Typed uniforms: set(handle, value) with the handles a generated header declares
+// (prism/catalog/uniform_handle.hpp) checks the name, the value's C++ type and, through
+// ProgramOf<Shader>, the shader at compile time; set(name, value) stays for names known
+// only at run time. unsetUniforms() lists the active uniforms never set since link.
 #pragma once
 
 #include <cstdint>
@@ -46,6 +53,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include <glm/mat3x3.hpp>  // complete types for set() and the usage example
@@ -57,12 +65,41 @@
 #include "prism/gl/driver_log.hpp"
 #include "prism/gl/handles.hpp"
 #include "prism/catalog/shader_catalog.hpp"
+#include "prism/catalog/uniform_handle.hpp"
 
 namespace prism::gl {
 
 namespace detail {
 enum class UniformSetterKind : int;  // what a set() overload passes; defined in program_uniforms.cpp
-}
+
+// The C++ type set(handle, value) takes for a uniform of GLSL type T (void: no setter).
+template <catalog::GlslType T>
+struct UniformValue {
+    using type = void;
+};
+#define PRISM_GL_UNIFORM_VALUE(Glsl, Cpp)          \
+    template <>                                    \
+    struct UniformValue<catalog::GlslType::Glsl> { \
+        using type = Cpp;                          \
+    }
+PRISM_GL_UNIFORM_VALUE(Float, float);
+PRISM_GL_UNIFORM_VALUE(Vec2, glm::vec2);
+PRISM_GL_UNIFORM_VALUE(Vec3, glm::vec3);
+PRISM_GL_UNIFORM_VALUE(Vec4, glm::vec4);
+PRISM_GL_UNIFORM_VALUE(Int, int);
+PRISM_GL_UNIFORM_VALUE(IVec2, glm::ivec2);
+PRISM_GL_UNIFORM_VALUE(IVec3, glm::ivec3);
+PRISM_GL_UNIFORM_VALUE(IVec4, glm::ivec4);
+PRISM_GL_UNIFORM_VALUE(UInt, unsigned);
+PRISM_GL_UNIFORM_VALUE(Bool, bool);
+PRISM_GL_UNIFORM_VALUE(Mat3, glm::mat3);
+PRISM_GL_UNIFORM_VALUE(Mat4, glm::mat4);
+PRISM_GL_UNIFORM_VALUE(Sampler, int);  // the texture unit
+#undef PRISM_GL_UNIFORM_VALUE
+
+template <class>
+inline constexpr bool kAlwaysFalse = false;
+}  // namespace detail
 
 // The source of one stage with its source-number table.
 struct StageText {
@@ -153,6 +190,37 @@ class Program {
     void set(std::string_view name, std::span<const glm::mat3> values);
     void set(std::string_view name, std::span<const glm::mat4> values);
 
+    // Typed set (prism/catalog/uniform_handle.hpp): `value` must be exactly the C++ type of
+    // the uniform's GLSL type (float, glm::vec3, int for a sampler's unit, ...), or for an
+    // array a range of it (std::span, std::vector, std::array); anything else is a compile
+    // error. A uniform this variant compiled out is a no-op, listed in compiledOutUniforms().
+    // ProgramOf<Shader> also rejects another shader's handles at compile time.
+    template <catalog::GlslType T, std::size_t N, class Tag, class V>
+    void set(const catalog::UniformHandle<T, N, Tag>& uniform, const V& value) {
+        using Element = typename detail::UniformValue<T>::type;
+        static_assert(!std::is_void_v<Element>, "Program::set(handle, value): no setter for this GLSL type");
+        if constexpr (N == 1) {
+            static_assert(std::is_same_v<V, Element>,
+                          "Program::set(handle, value): the value's C++ type does not match the uniform's GLSL type");
+            if (compiledIn(uniform.name)) set(uniform.name, value);
+        } else {
+            static_assert(std::is_convertible_v<const V&, std::span<const Element>>,
+                          "Program::set(handle, values): an array uniform takes a range of its element type");
+            if (compiledIn(uniform.name)) set(uniform.name, std::span<const Element>(value));
+        }
+    }
+
+    // Active uniforms never set since link, each by name: samplers (left at unit 0 on
+    // purpose) and uniforms with an initialiser in GLSL are left out.
+    std::vector<std::string> unsetUniforms() const;
+    // Warns once per program and uniform about unsetUniforms(), when the unset-uniform
+    // check is on (setUnsetUniformCheck; GpuMesh::draw calls this before the first draw).
+    void reportUnsetUniforms() const;
+    // Whether reportUnsetUniforms() warns; new Programs take setDefaultUnsetUniformCheck's value.
+    void setUnsetUniformCheck(bool on) { checkUnset_ = on; }
+    // Handles set() was given whose uniform this variant does not have, each once, in order.
+    const std::vector<std::string>& compiledOutUniforms() const { return compiledOut_; }
+
     // Replaces where this program's warnings go (empty function: the default handler).
     void setWarningHandler(WarningHandler handler);
     // Names set() was called with that the program does not have, each once, in order.
@@ -174,6 +242,14 @@ class Program {
     const UniformSlot* slotFor(std::string_view name);
     const UniformSlot* prepare(std::string_view name, SetterKind kind, std::size_t count);
     void warn(const std::string& message) const;
+    bool compiledIn(std::string_view name);                      // false: recorded in compiledOut_
+    std::vector<std::string> uniformNames() const;               // declared_, for "did you mean"
+    void startUnsetCheck(const std::vector<StageText>& stages);  // at link: initialisers, the switch
+
+    struct DeclaredUniform {
+        std::string name;  // without "[0]"
+        std::uint32_t glType = 0;
+    };
 
     ProgramObject program_;
     std::string label_;
@@ -183,6 +259,38 @@ class Program {
     std::vector<std::string> unknownReports_;
     std::vector<std::string> mismatchReports_;
     WarningHandler warningHandler_;
+    std::vector<DeclaredUniform> declared_;           // active, as reflected or reported by the driver
+    std::set<std::string, std::less<>> initialised_;  // declared with an initialiser in GLSL
+    std::set<std::string, std::less<>> setSinceLink_;
+    std::vector<std::string> compiledOut_;
+    bool checkUnset_ = false;
+    mutable std::set<std::string, std::less<>> unsetReported_;
+};
+
+// The unset-uniform check of new Programs (Program::reportUnsetUniforms): on by default in
+// debug builds, off in release builds; the viewer turns it on.
+void setDefaultUnsetUniformCheck(bool on);
+
+// A Program seen as built from the shader tagged `Shader` (a generated header's
+// `<namespace>::<shader>::Shader`): set() takes only that shader's handles, so another
+// shader's uniform is a compile error. A view: `program` must outlive it.
+template <class Shader>
+class ProgramOf {
+  public:
+    explicit ProgramOf(Program& program) : program_(&program) {}
+    Program& program() const { return *program_; }
+
+    template <catalog::GlslType T, std::size_t N, class V>
+    void set(const catalog::UniformHandle<T, N, Shader>& uniform, const V& value) const {
+        program_->set(uniform, value);
+    }
+    template <catalog::GlslType T, std::size_t N, class Other, class V>
+    void set(const catalog::UniformHandle<T, N, Other>&, const V&) const {
+        static_assert(detail::kAlwaysFalse<Other>, "ProgramOf<Shader>::set: the handle belongs to another shader");
+    }
+
+  private:
+    Program* program_;
 };
 
 }  // namespace prism::gl
