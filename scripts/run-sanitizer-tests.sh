@@ -42,4 +42,13 @@ export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$ROOT/tests/sanitizers/lsan.sup
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 # Examples, snippets and the newer systems' CLI and doc checks are not built in this tier (their
 # executables are not in TEST_TARGETS); integration and rendering tiers run in the main build.
-ctest --test-dir "$BUILD_DIR" -L '^(unit|gl)$' -E '^(example|snippets|architecture|hotreload|diffraction|bluenoise)\.' --output-on-failure -j "$(nproc)" --timeout 900 "$@"
+NOT_BUILT='(example|snippets|architecture|hotreload|diffraction|bluenoise)\..*'
+# Endurance runs that repeat, for minutes under ASan, code that shorter tests of this tier
+# already cover: 10,000-step mass ledgers (the step itself: water.WaterStep.*, water.Cases/GpuCpuAgreement.*), the
+# fast CPU step at every thread count (one count: water.FastCpuStep.*; races are not ASan's
+# to find), and the CLI render of the CD disc (the same scene as the CD golden, which runs).
+# They run in the main build's tier.
+ENDURANCE='water\.MassLedger\..*|water\.WaterGlTest\.GpuMassLedgerHoldsOver10000Steps|'
+ENDURANCE+='water\.FastCpuStep\.IsBitIdenticalToTheFirstStepForEveryThreadCount|SceneCli\.render_diffraction_cd'
+ctest --test-dir "$BUILD_DIR" -L '^(unit|gl)$' -E "^($NOT_BUILT|$ENDURANCE)\$" --output-on-failure -j "$(nproc)" \
+  --timeout 900 "$@"
