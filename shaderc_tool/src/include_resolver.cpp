@@ -370,7 +370,9 @@ class ModuleScanner {
         } else {  // which of them are active is glslang's to say
             const GlslVersion version =
                 parseVersionDirective(options_.defaultVersion).value_or(GlslVersion{330, "core"});
-            PreprocessRun run = preprocessWithGlslang(module.path, options_, version, reader_);
+            ResolveOptions alone = options_;
+            alone.warnShadowedIncludes = false;  // a stage that includes the module says it, with its chain
+            PreprocessRun run = preprocessWithGlslang(module.path, alone, version, reader_);
             result_.diagnostics = std::move(run.diagnostics);
             if (!run.files.empty())
                 for (const auto& found : run.files.front().found) module.includes.push_back(found.display);
