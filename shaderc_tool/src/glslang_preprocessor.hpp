@@ -51,6 +51,9 @@ struct ResolveOptions {
     // An #include that another folder's file of the same name could answer is a warning
     // (shadowedIncludeMessage); module scans turn it off: the stages that include them report it.
     bool warnShadowedIncludes = true;
+    // scanModule's "module has no leading comment" warning; the catalogue turns it off for
+    // libraries found through -I outside --base-dir (--warn-undocumented-modules).
+    bool warnUndocumentedModule = true;
 };
 
 // One file as glslang entered it.

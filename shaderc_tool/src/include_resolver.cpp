@@ -384,7 +384,7 @@ class ModuleScanner {
             for (const auto& physical : blank ? blankedDirective(line) : line.physical) module.text += physical + "\n";
         }
         module.description = leadingComment(lines);
-        if (module.description.empty())
+        if (module.description.empty() && options_.warnUndocumentedModule)
             result_.diagnostics.push_back(makeDiagnostic(Severity::Warning, module.path, 1, 0,
                                                          "module has no leading comment saying what it provides"));
         result_.ok = !hasErrors(result_.diagnostics);

@@ -603,6 +603,18 @@ TEST(ScanModule, MissingDescriptionIsAWarning) {
     EXPECT_EQ(result.diagnostics[0].message, "module has no leading comment saying what it provides");
 }
 
+// The catalogue turns the warning off for libraries (--warn-undocumented-modules).
+TEST(ScanModule, MissingDescriptionWarningCanBeTurnedOff) {
+    MemoryReader reader{{"a.glsl", "#include \"b.glsl\"\n// lygia's layout: the comment after the includes\n"},
+                        {"b.glsl", "// B\n"}};
+    ResolveOptions options;
+    options.warnUndocumentedModule = false;
+    const auto result = scanModule("a.glsl", options, reader);
+    EXPECT_TRUE(result.ok);
+    EXPECT_TRUE(result.diagnostics.empty()) << allMessages(result.diagnostics);
+    EXPECT_EQ(result.module.description, "");
+}
+
 TEST(ScanModule, MissingIncludeIsAnError) {
     MemoryReader reader{{"a.glsl", "// A\n#include \"gone.glsl\"\n"}};
     const auto result = scanModule("a.glsl", {}, reader);
