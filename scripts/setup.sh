@@ -6,6 +6,7 @@ set -euo pipefail
 PACKAGES=(
   build-essential cmake ninja-build pkg-config python3
   glslang-dev glslang-tools
+  glslc  # the reference of tests/shaderc/test_reference_corpus.cpp ("Coming from glslc" in docs/shaderc.md)
   libglfw3-dev libglm-dev libimgui-dev
   libosmesa6-dev libegl1-mesa-dev libgl1-mesa-dri libgles-dev
   libpng-dev python3-glad

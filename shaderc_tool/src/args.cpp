@@ -52,8 +52,10 @@ std::string conflictOf(const Options& o, const CLI::App& app) {
     return {};
 }
 
-// Every option, bound to `o` (to `defines` and `errfmt` where parseArgs checks them after).
-void addOptions(CLI::App& app, Options& o, std::vector<std::string>& defines, std::string& errfmt) {
+// Every option, bound to `o` (to `defines`, `errfmt` and `warnUndocumented` where parseArgs
+// checks or converts them after).
+void addOptions(CLI::App& app, Options& o, std::vector<std::string>& defines, std::string& errfmt,
+                std::string& warnUndocumented) {
     app.set_version_flag("--version", std::string("prism-shaderc ") + PRISM_VERSION);
     // Unknown options are collected (not an error inside CLI11, whose required-positional
     // check would otherwise speak first) and named below.
@@ -83,6 +85,11 @@ void addOptions(CLI::App& app, Options& o, std::vector<std::string>& defines, st
                  "with --check: resolve and validate even when no code changed since the last clean check");
     app.add_flag("--no-variant-sharing", o.noVariantSharing,
                  "resolve every variant on its own (the reference that variant sharing must equal; same outputs)");
+    app.add_option("--warn-undocumented-modules", warnUndocumented,
+                   "which modules without a leading comment get a warning: 'project' (not those of -I folders "
+                   "outside --base-dir) or 'all'")
+        ->check(CLI::IsMember({"project", "all"}))
+        ->capture_default_str();
     app.add_option("--cache-dir", o.cacheDir,
                    "validation results cache (content-addressed); default: next to --stamp, none without "
                    "--stamp; 'none' disables it");
@@ -94,9 +101,10 @@ ArgsResult parseArgs(int argc, char** argv) {
     Options o;
     std::vector<std::string> defines;
     std::string errfmt = "gcc";
+    std::string warnUndocumented = "project";
     CLI::App app{"prism-shaderc: resolve #includes, validate GLSL with glslang and embed it in a C++ header",
                  "prism-shaderc"};
-    addOptions(app, o, defines, errfmt);
+    addOptions(app, o, defines, errfmt, warnUndocumented);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -115,6 +123,7 @@ ArgsResult parseArgs(int argc, char** argv) {
         o.defines.push_back(nv);
     }
     o.errorFormat = errfmt == "msvc" ? ErrorFormat::Msvc : ErrorFormat::Gcc;
+    o.warnUndocumentedLibraryModules = warnUndocumented == "all";
     if (o.jobs == 0) o.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     if (o.glslVersion >= 150 && o.glslVersion < 300) o.glslProfile = "core";
     if (o.glslVersion < 150) o.glslProfile.clear();

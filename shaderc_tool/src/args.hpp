@@ -31,6 +31,8 @@ struct Options {
     bool checkOnly = false;         // --check: no header; --emit-glsl, --depfile, --stamp are still written
     bool revalidate = false;        // --revalidate: no clean-check shortcut (clean_check.hpp)
     bool noVariantSharing = false;  // --no-variant-sharing: every variant runs the preprocessor (the reference)
+    // --warn-undocumented-modules all: also warn about modules of -I libraries outside --base-dir
+    bool warnUndocumentedLibraryModules = false;
 };
 
 struct ArgsResult {

@@ -112,6 +112,12 @@ std::vector<std::pair<std::string, std::size_t>> moduleNames(const Options& o, c
     return named;
 }
 
+// A module of a library: found through an -I folder outside --base-dir (the project), so
+// its comments are not the project's to fix.
+bool isLibraryModule(const std::string& path, const Options& o) {
+    return embeddedLocation(path, o).searchDir != 0;
+}
+
 // A scan's diagnostics. Errors in a module no stage includes are warnings: only what is
 // used fails a build (used modules show their errors in the stages, under their macros).
 void reportScan(ModuleScanResult& scan, const std::string& identifier, bool used, DiagnosticSink& sink) {
@@ -136,7 +142,12 @@ ModuleIndex indexModules(const Options& o, const std::vector<ShaderInput>& shade
     const ResolveOptions ro{o.includeDirs, o.defines, {}, o.baseDir};
     std::vector<ModuleScanResult> scans(named.size());
     const int jobs = std::clamp(o.jobs, 1, static_cast<int>(std::max<std::size_t>(1, named.size() / 64)));
-    runPool(named.size(), jobs, [&](std::size_t i) { scans[i] = scanModule(files[named[i].second].path, ro, reader); });
+    runPool(named.size(), jobs, [&](std::size_t i) {
+        const std::string& path = files[named[i].second].path;
+        ResolveOptions mo = ro;
+        mo.warnUndocumentedModule = o.warnUndocumentedLibraryModules || !isLibraryModule(path, o);
+        scans[i] = scanModule(path, mo, reader);
+    });
 
     ModuleIndex index;
     std::vector<std::vector<std::string>> includes;

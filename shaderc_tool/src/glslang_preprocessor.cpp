@@ -291,6 +291,9 @@ class RecordingIncluder final : public glslang::TShader::Includer {
         if (std::none_of(includer.found.begin(), includer.found.end(),
                          [&](const FoundFile& f) { return f.canonical == found->canonical; }))
             includer.found.push_back(*found);
+        if (options_.warnShadowedIncludes)
+            if (auto message = shadowedIncludeMessage(target, dirs, *found, reader_); !message.empty())
+                report(includer, line.firstLine, column, std::move(message)).severity = Severity::Warning;
 
         FileFlags& flags = flags_[found->canonical];
         const auto open = std::find_if(stack_.begin(), stack_.end(),

@@ -7,7 +7,7 @@
 //
 // The callback also applies prism-shaderc's include rules:
 //   - search order: include_search.hpp; nesting deeper than 256 files is an error
-//     naming the chain;
+//     naming the chain; an include another folder's file could answer is a warning;
 //   - include-once: a file enters a stage once (identity = canonical path), so
 //     unguarded diamonds work; `#pragma prism reinclude` in a file opts it out (X-macro
 //     templates meant to be included again with other macros);
@@ -48,6 +48,12 @@ struct ResolveOptions {
     std::vector<std::pair<std::string, std::string>> defines;  // NAME, VALUE ("" -> defined empty)
     std::string defaultVersion = "#version 330 core";
     std::string baseDir;  // where "/x" includes are also looked up; "" = nowhere else
+    // An #include that another folder's file of the same name could answer is a warning
+    // (shadowedIncludeMessage); module scans turn it off: the stages that include them report it.
+    bool warnShadowedIncludes = true;
+    // scanModule's "module has no leading comment" warning; the catalogue turns it off for
+    // libraries found through -I outside --base-dir (--warn-undocumented-modules).
+    bool warnUndocumentedModule = true;
 };
 
 // One file as glslang entered it.

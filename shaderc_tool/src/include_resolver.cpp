@@ -370,7 +370,9 @@ class ModuleScanner {
         } else {  // which of them are active is glslang's to say
             const GlslVersion version =
                 parseVersionDirective(options_.defaultVersion).value_or(GlslVersion{330, "core"});
-            PreprocessRun run = preprocessWithGlslang(module.path, options_, version, reader_);
+            ResolveOptions alone = options_;
+            alone.warnShadowedIncludes = false;  // a stage that includes the module says it, with its chain
+            PreprocessRun run = preprocessWithGlslang(module.path, alone, version, reader_);
             result_.diagnostics = std::move(run.diagnostics);
             if (!run.files.empty())
                 for (const auto& found : run.files.front().found) module.includes.push_back(found.display);
@@ -382,7 +384,7 @@ class ModuleScanner {
             for (const auto& physical : blank ? blankedDirective(line) : line.physical) module.text += physical + "\n";
         }
         module.description = leadingComment(lines);
-        if (module.description.empty())
+        if (module.description.empty() && options_.warnUndocumentedModule)
             result_.diagnostics.push_back(makeDiagnostic(Severity::Warning, module.path, 1, 0,
                                                          "module has no leading comment saying what it provides"));
         result_.ok = !hasErrors(result_.diagnostics);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <filesystem>
 
 namespace prism::shaderc {
 
@@ -22,29 +23,64 @@ std::optional<IncludeTarget> parseIncludeTarget(std::string_view argument) {
 std::vector<SearchDir> includeSearchDirs(const IncludeTarget& target, const std::vector<std::string>& chain,
                                          const std::vector<std::string>& includeDirs, const std::string& baseDir) {
     std::vector<SearchDir> dirs;
-    auto add = [&](std::string path, std::string role) {
+    auto add = [&](std::string path, std::string role, bool ancestor = false) {
         if (std::none_of(dirs.begin(), dirs.end(), [&](const SearchDir& d) { return d.path == path; }))
-            dirs.push_back({std::move(path), std::move(role)});
+            dirs.push_back({std::move(path), std::move(role), ancestor});
     };
     const bool rootRelative = target.name.starts_with('/');
     if (!target.angled && !rootRelative)
         for (std::size_t i = 0; i < chain.size(); ++i)
-            add(parentDir(chain[i]), i == 0 ? "the including file's folder" : "folder of " + chain[i]);
+            add(parentDir(chain[i]), i == 0 ? "the including file's folder" : "folder of " + chain[i], i > 0);
     for (const auto& dir : includeDirs) add(joinPath("", dir), "-I");
     if (rootRelative && !baseDir.empty()) add(joinPath("", baseDir), "--base-dir");
     return dirs;
 }
 
-std::optional<FoundFile> findInclude(const IncludeTarget& target, const std::vector<SearchDir>& dirs,
-                                     const SourceReader& reader) {
+namespace {
+
+// The first file `target` names in dirs[from, end) that glslc would also search when
+// `glslcOnly` (not an ancestor folder), other than `except` (a canonical path).
+std::optional<FoundFile> findFrom(const IncludeTarget& target, const std::vector<SearchDir>& dirs, std::size_t from,
+                                  const SourceReader& reader, bool glslcOnly = false, const std::string& except = "") {
     std::string_view name = target.name;
     while (name.starts_with('/')) name.remove_prefix(1);
     if (name.empty()) return std::nullopt;
-    for (const auto& dir : dirs) {
-        std::string display = joinPath(dir.path, std::string(name));
-        if (auto canonical = reader.canonical(display)) return FoundFile{std::move(display), *canonical};
+    for (std::size_t i = from; i < dirs.size(); ++i) {
+        if (glslcOnly && dirs[i].ancestor) continue;
+        std::string display = joinPath(dirs[i].path, std::string(name));
+        if (auto canonical = reader.canonical(display); canonical && *canonical != except)
+            return FoundFile{std::move(display), *canonical, i};
     }
     return std::nullopt;
+}
+
+std::string placeOf(const FoundFile& file, const std::vector<SearchDir>& dirs) {
+    return file.display + " (" + dirs[file.dir].role + ")";
+}
+
+}  // namespace
+
+std::optional<FoundFile> findInclude(const IncludeTarget& target, const std::vector<SearchDir>& dirs,
+                                     const SourceReader& reader) {
+    return findFrom(target, dirs, 0, reader);
+}
+
+std::string shadowedIncludeMessage(const IncludeTarget& target, const std::vector<SearchDir>& dirs,
+                                   const FoundFile& found, const SourceReader& reader) {
+    const auto shadowed = findFrom(target, dirs, found.dir + 1, reader, false, found.canonical);
+    if (!shadowed) return {};
+    const std::string written = target.angled ? "<" + target.name + ">" : "\"" + target.name + "\"";
+    std::string message = "#include " + written + " could mean " + placeOf(found, dirs) + " or " +
+                          placeOf(*shadowed, dirs) + "; the first is used";
+    const auto glslcPick = findFrom(target, dirs, 0, reader, true);
+    if (glslcPick && glslcPick->canonical != found.canonical)
+        message += ", but glslc (which skips the folders up the include chain) would take " + glslcPick->display;
+    message += "; rename one of them, or write a path that only one folder holds";
+    if (dirs[found.dir].ancestor) {  // dirs[0] is the including file's folder
+        const std::string from = dirs[0].path.empty() ? "." : dirs[0].path;
+        message += " (here \"" + std::filesystem::path(found.display).lexically_relative(from).generic_string() + "\")";
+    }
+    return message;
 }
 
 std::string missingIncludeMessage(const IncludeTarget& target, const std::vector<SearchDir>& dirs) {

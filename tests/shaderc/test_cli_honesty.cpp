@@ -10,16 +10,11 @@
 #include "tool_runner.hpp"
 
 namespace fs = std::filesystem;
+using prism::test::occurrences;
 using prism::test::runShaderc;
 using prism::test::ScratchDir;
 
 namespace {
-
-std::size_t occurrences(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-    return n;
-}
 
 // A valid two-stage shader `a` in s/, including m/util.glsl.
 void writeValidShader(const ScratchDir& dir) {

@@ -6,8 +6,10 @@
 #include "data_writer.hpp"
 #include "generated_format.hpp"
 #include "header_writer.hpp"
+#include "tool_runner.hpp"
 
 using namespace prism::shaderc;
+using prism::test::occurrences;
 
 TEST(HeaderWriter, ChunksStayUnderTheLimitAndSplitAtLineEnds) {
     std::string text;
@@ -84,12 +86,6 @@ CatalogData twoVariantCatalogue(const std::string& moduleBody) {
     m.text = moduleBody;
     c.modules.push_back(m);
     return c;
-}
-
-std::size_t occurrences(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (auto pos = text.find(what); pos != std::string::npos; pos = text.find(what, pos + 1)) ++n;
-    return n;
 }
 
 }  // namespace

@@ -603,6 +603,18 @@ TEST(ScanModule, MissingDescriptionIsAWarning) {
     EXPECT_EQ(result.diagnostics[0].message, "module has no leading comment saying what it provides");
 }
 
+// The catalogue turns the warning off for libraries (--warn-undocumented-modules).
+TEST(ScanModule, MissingDescriptionWarningCanBeTurnedOff) {
+    MemoryReader reader{{"a.glsl", "#include \"b.glsl\"\n// lygia's layout: the comment after the includes\n"},
+                        {"b.glsl", "// B\n"}};
+    ResolveOptions options;
+    options.warnUndocumentedModule = false;
+    const auto result = scanModule("a.glsl", options, reader);
+    EXPECT_TRUE(result.ok);
+    EXPECT_TRUE(result.diagnostics.empty()) << allMessages(result.diagnostics);
+    EXPECT_EQ(result.module.description, "");
+}
+
 TEST(ScanModule, MissingIncludeIsAnError) {
     MemoryReader reader{{"a.glsl", "// A\n#include \"gone.glsl\"\n"}};
     const auto result = scanModule("a.glsl", {}, reader);
@@ -644,6 +656,19 @@ TEST_F(IncludeResolverOnDisk, ResolvesFromDiskAndSymlinksShareIdentity) {
     ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
     EXPECT_EQ(countOf(result.stage.text, "int a;"), 1u);
     EXPECT_EQ(result.stage.filesRead, (std::vector<std::string>{path("shaders/main.frag"), path("modules/a.glsl")}));
+}
+
+// The same file reached through two folders (an -I folder and a symlink to it) is one
+// file: nothing to warn about.
+TEST_F(IncludeResolverOnDisk, TheSameFileThroughTwoFoldersIsNoShadowWarning) {
+    write("shaders/main.frag", "#include <a.glsl>\nvoid main() {}\n");
+    write("modules/a.glsl", "int a;\n");
+    std::filesystem::create_directory_symlink(root_ / "modules", root_ / "linked");
+    ResolveOptions options;
+    options.includeDirs = {path("modules"), path("linked")};
+    const auto result = resolveStage(path("shaders/main.frag"), options, DiskReader{});
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    EXPECT_TRUE(result.diagnostics.empty()) << allMessages(result.diagnostics);
 }
 
 TEST_F(IncludeResolverOnDisk, DirectoryIsNotAnInclude) {
@@ -851,6 +876,71 @@ TEST(IncludeRules, SearchDirsHeaderExample) {
     EXPECT_EQ(dirs[0].role, "the including file's folder");
     EXPECT_EQ(dirs[1].path, "modules");
     EXPECT_TRUE(includeSearchDirs(*parseIncludeTarget("<a.glsl>"), {"s/x.frag"}, {}, "").empty());
+
+    const auto target = *parseIncludeTarget("\"a.glsl\"");
+    MemoryReader reader{{"s/a.glsl", ""}, {"modules/a.glsl", ""}};
+    const auto found = findInclude(target, dirs, reader);
+    ASSERT_TRUE(found);
+    EXPECT_EQ(found->display, "s/a.glsl");
+    EXPECT_TRUE(contains(shadowedIncludeMessage(target, dirs, *found, reader),
+                         "could mean s/a.glsl (the including file's folder) or modules/a.glsl (-I); "));
+}
+
+// ---- shadowed includes: two folders hold a file the include could mean -------------------
+
+std::vector<Diagnostic> warningsOf(const ResolveResult& result) {
+    std::vector<Diagnostic> warnings;
+    for (const auto& d : result.diagnostics)
+        if (d.severity == Severity::Warning) warnings.push_back(d);
+    return warnings;
+}
+
+// The glslc trap: glslang (and Prism) take the ancestor's file, glslc the -I one.
+TEST(ShadowedIncludes, AnAncestorFolderShadowingAnIncludeDirIsAWarningAtTheInclude) {
+    MemoryReader reader{{"s/main.frag", "#include \"sub/mid.glsl\"\nvoid main() {}\n"},
+                        {"s/sub/mid.glsl", "// mid\n#include \"common.glsl\"\n"},
+                        {"s/common.glsl", "int ancestor;\n"},
+                        {"m/common.glsl", "int library;\n"}};
+    ResolveOptions options;
+    options.includeDirs = {"m"};
+    const auto result = resolve(reader, "s/main.frag", options);
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    EXPECT_TRUE(contains(result.stage.text, "int ancestor;"));
+    const auto warnings = warningsOf(result);
+    ASSERT_EQ(warnings.size(), 1u) << allMessages(result.diagnostics);
+    EXPECT_EQ(formatDiagnostic(warnings[0], ErrorFormat::Gcc),
+              "s/sub/mid.glsl:2:10: warning: #include \"common.glsl\" could mean s/common.glsl (folder of "
+              "s/main.frag) or m/common.glsl (-I); the first is used, but glslc (which skips the folders up the "
+              "include chain) would take m/common.glsl; rename one of them, or write a path that only one folder "
+              "holds (here \"../common.glsl\")\n  included from s/main.frag:1\n");
+}
+
+// Two -I libraries with the same name: the first wins, as in glslc, and the warning says so.
+TEST(ShadowedIncludes, TwoIncludeDirsHoldingTheNameWarnWithoutAGlslcNote) {
+    MemoryReader reader{{"s/main.frag", "#include <noise.glsl>\nvoid main() {}\n"},
+                        {"a/noise.glsl", "int a;\n"},
+                        {"b/noise.glsl", "int b;\n"}};
+    ResolveOptions options;
+    options.includeDirs = {"a", "b"};
+    const auto result = resolve(reader, "s/main.frag", options);
+    const auto warnings = warningsOf(result);
+    ASSERT_EQ(warnings.size(), 1u) << allMessages(result.diagnostics);
+    EXPECT_TRUE(contains(warnings[0].message, "<noise.glsl> could mean a/noise.glsl (-I) or b/noise.glsl (-I)"));
+    EXPECT_TRUE(lacks(warnings[0].message, "glslc"));
+    EXPECT_EQ(warnings[0].line, 1);
+    EXPECT_EQ(warnings[0].column, 10);
+}
+
+// A module scanned on its own says nothing: the stages that include it warn, with their chain.
+TEST(ShadowedIncludes, AModuleScanLeavesTheWarningToTheStages) {
+    MemoryReader reader{{"m/a.glsl", "// A\n#ifndef X\n#include \"common.glsl\"\n#endif\n"},  // glslang decides
+                        {"m/common.glsl", "// here\n"},
+                        {"n/common.glsl", "// there\n"}};
+    ResolveOptions options;
+    options.includeDirs = {"m", "n"};
+    const auto result = scanModule("m/a.glsl", options, reader);
+    ASSERT_TRUE(result.ok) << allMessages(result.diagnostics);
+    EXPECT_TRUE(result.diagnostics.empty()) << allMessages(result.diagnostics);
 }
 
 // glslang must know the version before it starts; a #version met first in a module

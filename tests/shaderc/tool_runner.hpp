@@ -35,6 +35,13 @@ inline std::string readFile(const std::filesystem::path& p) {
     return ss.str();
 }
 
+// How many times `what` occurs in `text` (overlaps counted): "printed once" checks.
+inline std::size_t occurrences(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
+
 inline void writeFile(const std::filesystem::path& p, const std::string& text) {
     std::filesystem::create_directories(p.parent_path());
     std::ofstream(p, std::ios::binary) << text;
