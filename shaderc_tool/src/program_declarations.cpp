@@ -97,6 +97,17 @@ DeclaredPrograms declaredPrograms(const std::vector<std::string>& declarations, 
     return out;
 }
 
+std::set<std::string> filesNamedBy(const std::vector<std::string>& declarations, const SourceReader& reader) {
+    std::set<std::string> named;
+    for (const auto& text : declarations) {
+        const auto eq = text.find('=');
+        if (eq == std::string::npos) continue;
+        for (const auto& file : splitFiles(text.substr(eq + 1)))
+            if (auto canonical = reader.canonical(file)) named.insert(*canonical);
+    }
+    return named;
+}
+
 std::string declarationWithPaths(const std::string& declaration,
                                  const std::function<std::string(const std::string&)>& pathOf) {
     const auto eq = declaration.find('=');

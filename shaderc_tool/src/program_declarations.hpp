@@ -11,6 +11,7 @@
 #pragma once
 
 #include <functional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,10 @@ struct DeclaredPrograms {
 // their names, nor another declaration's. `reader` says which files exist.
 DeclaredPrograms declaredPrograms(const std::vector<std::string>& declarations, const std::vector<ShaderInput>& taken,
                                   const SourceReader& reader);
+
+// The canonical paths of the files the declarations name: an input folder's file among
+// them belongs to its declared program and is not paired by name.
+std::set<std::string> filesNamedBy(const std::vector<std::string>& declarations, const SourceReader& reader);
 
 // The declaration with each file written as `pathOf` gives it (the records of an unchanged
 // run use paths relative to --base-dir, so they stay free of the checkout's place).

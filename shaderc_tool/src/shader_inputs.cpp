@@ -147,12 +147,19 @@ void checkCompleteness(const ShaderInput& s, const std::string& where, std::vect
 ShaderInputsResult collectShaderInputs(const std::vector<std::string>& inputs,
                                        const std::vector<std::string>& programDeclarations) {
     ShaderInputsResult result;
-    auto byName = pairByName(stageFilesOf(inputs, result), result.diagnostics);
+    const DiskReader disk;
+    auto files = stageFilesOf(inputs, result);
+    const auto declaredFiles = filesNamedBy(programDeclarations, disk);
+    std::erase_if(files, [&](const std::string& f) {
+        const auto canonical = disk.canonical(f);
+        return canonical && declaredFiles.contains(*canonical);
+    });
+    auto byName = pairByName(files, result.diagnostics);
     for (auto& [name, shader] : byName) {
         checkCompleteness(shader, shader.stages.front().path, result.diagnostics);
         result.shaders.push_back(std::move(shader));
     }
-    auto declared = declaredPrograms(programDeclarations, result.shaders, DiskReader());
+    auto declared = declaredPrograms(programDeclarations, result.shaders, disk);
     result.diagnostics.insert(result.diagnostics.end(), declared.diagnostics.begin(), declared.diagnostics.end());
     result.ioError = result.ioError || declared.ioError;
     for (auto& p : declared.programs) result.shaders.push_back(std::move(p));

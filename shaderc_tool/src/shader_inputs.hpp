@@ -2,8 +2,9 @@
 // command line's files and directories into programs: the stage files that share a base
 // name (`phong.vert` + `phong.frag` [+ `phong.geom`], `terrain.vert` + `.tesc` + `.tese`
 // + `.frag`, or `rain.comp` alone), plus the programs `--program NAME=FILE,...` declares
-// (program_declarations.hpp). A file in an input folder that is not a stage kind is a
-// warning naming it, except a module (`.glsl`), which stages include.
+// (program_declarations.hpp); a stage file that a declaration names is that program's and
+// is not paired by name. A file in an input folder that is not a stage kind is a warning
+// naming it, except a module (`.glsl`), which stages include.
 //
 //   const auto inputs = collectShaderInputs({"shaders/"}, {"blur-h=shaders/fullscreen.vert,shaders/blur.frag"});
 //   sink.reportAll(inputs.diagnostics);

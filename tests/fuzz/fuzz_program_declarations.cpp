@@ -2,7 +2,8 @@
 // one per input line, over in-memory stage files of every kind. Oracle: no crash, leak,
 // undefined behaviour or escaping exception; every accepted program has a name that
 // mangles to an identifier demangling back to it, known files, one stage of each kind
-// in pipeline order, a vertex (or compute) stage, and a name no other program has.
+// in pipeline order, a vertex (or compute) stage, a name no other program has, and files
+// that filesNamedBy() lists (so an input folder does not pair them by name too).
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -44,7 +45,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const auto declarations = prism::fuzz::splitParts(prism::fuzz::text(data, size), "\n", 64);
     const DeclaredPrograms declared = declaredPrograms(declarations, {}, files);
     std::set<std::string> names;
-    for (const auto& p : declared.programs) checkProgram(p, files, names);
+    const auto named = filesNamedBy(declarations, files);
+    for (const auto& p : declared.programs) {
+        checkProgram(p, files, names);
+        for (const auto& s : p.stages)
+            if (!named.contains(*files.canonical(s.path)))
+                fail("a program's file is not among the named files", s.path);
+    }
     for (const auto& d : declarations)
         if (declarationWithPaths(d, [](const std::string& path) { return path; }) != d)
             fail("rewriting paths as themselves changed the declaration", d);

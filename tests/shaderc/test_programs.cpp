@@ -170,6 +170,21 @@ TEST(ProgramsCli, DeclaredProgramBesideSameNamePairsOfAFolder) {
     EXPECT_NE(r.output.find("of 2 programs"), std::string::npos) << r.output;
 }
 
+TEST(ProgramsCli, FolderFilesThatADeclarationNamesAreNotPairedByName) {
+    ScratchDir dir("programs-claimed");
+    for (const char* f : {"fullscreen.vert", "blur_h.frag", "tonemap.frag"})
+        fs::copy_file(kPrograms / "shared" / f, dir.path() / f);
+    fs::copy_file(kPrograms / "shared/fullscreen.vert", dir.path() / "plain.vert");
+    fs::copy_file(kPrograms / "shared/tonemap.frag", dir.path() / "plain.frag");
+    const std::string d = dir.str() + "/";
+    const auto r =
+        runShaderc("--check --stats --cache-dir none " + dir.str() + " --program blur-h=" + d + "fullscreen.vert," + d +
+                   "blur_h.frag --program tonemap=" + d + "tonemap.frag," + d + "fullscreen.vert");
+    // Without the rule, fullscreen, blur_h and tonemap would be incomplete same-name sets.
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("of 3 programs"), std::string::npos) << r.output;
+}
+
 namespace {
 
 struct DeclarationError {
