@@ -22,8 +22,8 @@ std::vector<std::string> splitFiles(const std::string& list) {
 // What is wrong with a program name, "" when nothing.
 std::string nameProblem(const std::string& name) {
     if (name.empty()) return "the program name before '=' is empty";
-    if (name.find_first_of("/\\,") != std::string::npos)
-        return "program name '" + name + "' contains '/', '\\' or ','; name the program, not a path";
+    if (name.find_first_of("/\\,:") != std::string::npos)  // ':' ends the shader of a --variant filter
+        return "program name '" + name + "' contains '/', '\\', ',' or ':'; name the program, not a path";
     if (std::any_of(name.begin(), name.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20; }))
         return "program name contains a control character";
     return {};

@@ -2,7 +2,7 @@
 // `--program NAME=FILE[,FILE...]` (CMake: prism_add_shaders(... PROGRAMS ...)). The files
 // may have any names and lie anywhere; their stages are put in pipeline order whatever
 // the argument's order, and one file may serve several programs (its compiled stage is
-// then shared, validation_scheduler.hpp). NAME is any text without '/', '\' or ',':
+// then shared, validation_scheduler.hpp). NAME is any text without '/', '\', ',' or ':':
 // its enumerator is mangleName(NAME) (module_naming.hpp), and name() returns NAME.
 // Every error names the argument: `--program blur=a.vert,b.frg: error: ...`.
 //

@@ -206,6 +206,9 @@ TEST(ProgramsCli, EachBadDeclarationIsAGccStyleErrorNamingTheArgument) {
         {"p=" + f + "/shared/blur_h.frag", "shader 'p' has no vertex stage (nor a compute stage)"},
         {f + "/shared/fullscreen.vert", "expected NAME=FILE[,FILE...]"},
         {"a/b=" + f + "/shared/fullscreen.vert," + f + "/shared/blur_h.frag", "program name 'a/b' contains '/'"},
+        {"a:b=" + f + "/shared/fullscreen.vert," + f + "/shared/blur_h.frag",
+         "program name 'a:b' contains '/', '\\', "
+         "',' or ':'"},
         {"p=" + f + "/shared/fullscreen.vert,," + f + "/shared/blur_h.frag", "an empty file name in the list"},
     };
     for (const auto& c : cases) {
