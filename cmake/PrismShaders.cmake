@@ -3,7 +3,9 @@
 # generated .cpp of data beside it, which the library compiles (no extra CMake needed).
 #
 #   prism_add_shaders(<target>
-#     SOURCES <stage files...>          # .vert/.geom/.frag/.comp (or directories)
+#     SOURCES <stage files...>          # .vert/.tesc/.tese/.geom/.frag/.comp (or directories);
+#                                       # same-name files make one program
+#     [PROGRAMS NAME=FILE[,FILE...]...] # programs from any stage files (--program; docs/shaderc.md)
 #     MODULE_DIRS <dirs...>             # -I, searched in order
 #     [HEADER <name.hpp>]               # default <target>.hpp; may contain a subdirectory
 #     [NAMESPACE <ns>]                  # default: the target's name (as a C identifier)
@@ -113,12 +115,12 @@ endfunction()
 
 function(prism_add_shaders target)
   cmake_parse_arguments(PARSE_ARGV 1 PAS "" "HEADER;NAMESPACE;GLSL_VERSION"
-                        "SOURCES;MODULE_DIRS;DEFINES;CONTRACT;VARIANTS")
+                        "SOURCES;PROGRAMS;MODULE_DIRS;DEFINES;CONTRACT;VARIANTS")
   if(PAS_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "prism_add_shaders(${target}): unknown arguments: ${PAS_UNPARSED_ARGUMENTS}")
   endif()
-  if(NOT PAS_SOURCES)
-    message(FATAL_ERROR "prism_add_shaders(${target}): give the shader stage files with SOURCES")
+  if(NOT PAS_SOURCES AND NOT PAS_PROGRAMS)
+    message(FATAL_ERROR "prism_add_shaders(${target}): give the shader stage files with SOURCES or PROGRAMS")
   endif()
   if(NOT TARGET Prism::shaderc)
     message(FATAL_ERROR "prism_add_shaders(${target}): Prism::shaderc is unknown; add_subdirectory(prism) "
@@ -152,6 +154,21 @@ function(prism_add_shaders target)
     get_filename_component(abs ${src} ABSOLUTE)
     list(APPEND sources ${abs})
     list(APPEND depends ${abs})
+  endforeach()
+  foreach(program IN LISTS PAS_PROGRAMS)
+    if(NOT program MATCHES "^([^=]+)=(.+)$")
+      message(FATAL_ERROR "prism_add_shaders(${target}): PROGRAMS ${program}: expected NAME=FILE[,FILE...]")
+    endif()
+    set(program_name ${CMAKE_MATCH_1})
+    string(REPLACE "," ";" program_files "${CMAKE_MATCH_2}")
+    set(program_arg "")
+    foreach(file IN LISTS program_files)
+      get_filename_component(abs ${file} ABSOLUTE)
+      list(APPEND depends ${abs})
+      string(APPEND program_arg ",${abs}")
+    endforeach()
+    string(SUBSTRING "${program_arg}" 1 -1 program_arg)
+    list(APPEND args --program "${program_name}=${program_arg}")
   endforeach()
   set(module_dirs "")
   foreach(dir IN LISTS PAS_MODULE_DIRS)

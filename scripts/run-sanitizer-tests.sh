@@ -24,7 +24,7 @@ done
 
 # The unit (label unit) and GL (label gl) test executables (tests/README.md: prism_<subject>_tests
 # and prism_<subject>_gl_tests); prism_scene_cli_tests also builds prism-render, which it runs.
-TEST_TARGETS=(prism_shaderc_tests prism_geometry_tests prism_image_tests prism_gl_tests prism_gl_gl_tests
+TEST_TARGETS=(prism_shaderc_tests prism_shaderc_gl_tests prism_geometry_tests prism_image_tests prism_gl_tests prism_gl_gl_tests
   prism_rain_tests prism_rain_gl_tests prism_water_tests prism_water_gl_tests prism_scene_tests prism_scene_gl_tests
   prism_scene_cli_tests prism_limits_tests)
 if [ "$BUILD" = 1 ]; then

@@ -60,7 +60,9 @@ void addOptions(CLI::App& app, Options& o, std::vector<std::string>& defines, st
     // Unknown options are collected (not an error inside CLI11, whose required-positional
     // check would otherwise speak first) and named below.
     app.allow_extras();
-    app.add_option("inputs", o.inputs, "shader stage files (.vert .geom .frag .comp) or directories");
+    app.add_option("inputs", o.inputs,
+                   "shader stage files (.vert .tesc .tese .geom .frag .comp) or directories; same-name files "
+                   "make one program");
     app.add_option("-I", o.includeDirs, "module search directory (repeatable, searched in order)")
         ->allow_extra_args(false);
     app.add_option("-o", o.output, "generated C++ header");
@@ -76,6 +78,10 @@ void addOptions(CLI::App& app, Options& o, std::vector<std::string>& defines, st
         ->allow_extra_args(false);
     app.add_option("--variant", o.variantFilters,
                    "emit only this variant of a shader: SHADER:NAME=VALUE,NAME=VALUE (repeatable)")
+        ->allow_extra_args(false);
+    app.add_option("--program", o.programs,
+                   "declare a program from any stage files, in any order: NAME=FILE[,FILE...] (repeatable; a file "
+                   "may serve several programs)")
         ->allow_extra_args(false);
     app.add_option("--base-dir", o.baseDir, "paths embedded in the header are made relative to this directory");
     app.add_option("--errfmt", errfmt, "diagnostic format")->check(CLI::IsMember({"gcc", "msvc"}));
@@ -115,7 +121,9 @@ ArgsResult parseArgs(int argc, char** argv) {
         if (extra.size() > 1 && extra[0] == '-')
             return usageError("unknown option '" + extra + "'; see prism-shaderc --help");
     if (!app.remaining().empty()) o.inputs.insert(o.inputs.end(), app.remaining().begin(), app.remaining().end());
-    if (o.inputs.empty()) return usageError("no shader inputs: give shader files or directories (see --help)");
+    if (o.inputs.empty() && o.programs.empty())
+        return usageError(
+            "no shader inputs: give shader files or directories, or --program NAME=FILE,... (see --help)");
     for (const auto& d : defines) {
         auto nv = splitDefine(d);
         if (!isIdentifier(nv.first))

@@ -16,6 +16,7 @@ struct Options {
     std::vector<std::pair<std::string, std::string>> defines;  // -D NAME[=VALUE]
     std::vector<std::string> contracts;                        // --contract (JSON), merged in order
     std::vector<std::string> variantFilters;                   // --variant SHADER:NAME=V,NAME=V
+    std::vector<std::string> programs;                         // --program NAME=FILE[,FILE...]
     std::string output;                                        // -o header
     std::string depfile;                                       // --depfile
     std::string stamp;                                         // --stamp: touched on every successful run

@@ -1,6 +1,10 @@
 // Comment- and layout-blind signatures of GLSL files (see code_signature.hpp).
 #include "code_signature.hpp"
 
+#include <filesystem>
+
+#include "shader_inputs.hpp"
+
 namespace prism::shaderc {
 
 std::string codeSignature(std::string_view text) {
@@ -56,9 +60,7 @@ std::string codeSignature(std::string_view text) {
 }
 
 bool hasCodeSignature(std::string_view path) {
-    for (std::string_view ext : {".glsl", ".vert", ".geom", ".frag", ".comp"})
-        if (path.size() >= ext.size() && path.substr(path.size() - ext.size()) == ext) return true;
-    return false;
+    return path.ends_with(kModuleExtension) || stageOfPath(std::filesystem::path(path)).has_value();
 }
 
 }  // namespace prism::shaderc

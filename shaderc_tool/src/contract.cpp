@@ -120,7 +120,8 @@ void checkNameAndType(const json& entry, const std::string& name, const std::str
 
 void readAttributes(const json& doc, Field& f, Contract& c) {
     readArray(doc, "attributes", "{name, type, location}", f, [&](const json& a, const std::string& at) {
-        ContractAttribute attr{f.string(a, "name", at), f.string(a, "type", at), f.integer(a, "location", at, true)};
+        ContractAttribute attr{f.string(a, "name", at), f.string(a, "type", at), f.integer(a, "location", at, true),
+                               f.file + " " + at};
         checkNameAndType(a, attr.name, attr.type, at, "vec3", "a_position", f);
         c.attributes.push_back(std::move(attr));
     });
@@ -182,6 +183,18 @@ void checkAttribute(const Contract& c, std::size_t s, const InterfaceVariable& v
         out.push_back(diagnosticAt(locate, s, v, severityFor(c),
                                    "vertex attribute '" + v.name + "' is `" + glslTypeWithArray(v) +
                                        "` but the contract (" + contractFiles(c) + ") supplies `" + it->type + "`"));
+    } else if (v.location >= 0 && v.location != it->location) {
+        // An error even against the built-in contract: the runtime would feed another attribute's data.
+        auto d =
+            diagnosticAt(locate, s, v, Severity::Error,
+                         "vertex attribute '" + v.name + "' is at layout(location = " + std::to_string(v.location) +
+                             ") but the binding contract puts it at location " + std::to_string(it->location) +
+                             "; drop the layout qualifier or use location " + std::to_string(it->location));
+        d.notes.push_back(
+            makeError(c.builtIn ? contractFiles(c) : it->entry, 0, 0,
+                      "the contract's entry: '" + it->name + "' at location " + std::to_string(it->location)));
+        d.notes.back().severity = Severity::Note;
+        out.push_back(std::move(d));
     }
 }
 

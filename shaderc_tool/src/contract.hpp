@@ -27,6 +27,7 @@ namespace prism::shaderc {
 struct ContractAttribute {
     std::string name, type;
     int location = 0;
+    std::string entry;  // where it is declared, for messages: "contract.json /attributes/0"
 };
 
 struct ContractUniform {
@@ -61,7 +62,9 @@ std::string_view builtInContractJson();
 inline constexpr std::size_t kContractTypoDistance = 2;
 
 // Checks the vertex stage's inputs and every stage's plain uniforms (not blocks): a name
-// in the contract must have its type; a near miss is an error (a warning against the
+// in the contract must have its type, and an explicit `layout(location = N)` on an
+// attribute the contract's location (GL would bind N, the runtime feeds the contract's);
+// a near miss is an error (a warning against the
 // built-in contract); other names pass.
 std::vector<Diagnostic> checkContract(const Contract& contract, const std::vector<StageInterface>& stages,
                                       const SourceLocator& locate);

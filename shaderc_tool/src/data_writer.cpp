@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "generated_format.hpp"
+#include "module_naming.hpp"
 #include "header_writer.hpp"
 #include "prism/hash/content_hash.hpp"
 
@@ -21,6 +22,8 @@ std::string_view stageEnum(catalog::Stage s) {
         case catalog::Stage::Geometry: return "Geometry";
         case catalog::Stage::Fragment: return "Fragment";
         case catalog::Stage::Compute: return "Compute";
+        case catalog::Stage::TessControl: return "TessControl";
+        case catalog::Stage::TessEvaluation: return "TessEvaluation";
     }
     return "Vertex";
 }
@@ -199,7 +202,7 @@ class DataWriter {
   private:
     std::string writeVariant(const CatalogShader& s, std::size_t index) {
         const auto& v = s.variants[index];
-        const std::string prefix = cppIdentifier(s.name) + "_v" + std::to_string(index);
+        const std::string prefix = mangleName(s.name) + "_v" + std::to_string(index);
         tablesOut_ << "// ---- shader " << s.name << ", variant " << v.name << "\n";
         std::vector<std::string> stages;
         for (const auto& st : v.stages) {
@@ -235,7 +238,7 @@ class DataWriter {
     std::string writeShaders() {
         std::vector<std::string> entries;
         for (const auto& s : c_.shaders) {
-            const std::string id = cppIdentifier(s.name);
+            const std::string id = mangleName(s.name);
             std::vector<std::string> variants;
             for (std::size_t i = 0; i < s.variants.size(); ++i) variants.push_back(writeVariant(s, i));
             std::vector<std::string> axes;

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "generated_format.hpp"
+#include "module_naming.hpp"
 
 namespace prism::shaderc {
 namespace {
@@ -75,7 +76,7 @@ std::string shaderNamespace(const std::string& shaderName) {
                                                 "kShaderNames",     "kModuleNames",     "kModulePaths", "kCatalog",
                                                 "shaderInfo",       "moduleInfo",       "name",         "modulePath",
                                                 "shaderIdFromName", "moduleIdFromName", "contract"};
-    std::string id = cppIdentifier(shaderName);
+    std::string id = mangleName(shaderName);
     return taken.count(id) ? id + "_" : id;
 }
 
@@ -92,8 +93,7 @@ void writeUniformHandles(std::ostream& out, const CatalogData& c) {
     for (const auto& s : c.shaders) {
         const std::string ns = shaderNamespace(s.name);
         out << "namespace " << ns
-            << " {\nstruct Shader {\n    static constexpr ShaderId id = ShaderId::" << cppIdentifier(s.name)
-            << ";\n};\n"
+            << " {\nstruct Shader {\n    static constexpr ShaderId id = ShaderId::" << mangleName(s.name) << ";\n};\n"
             << "template <prism::catalog::GlslType T, std::size_t N>\n"
             << "using Uniform = prism::catalog::UniformHandle<T, N, Shader>;\n";
         for (const auto& [name, decl] : uniformUnion(s)) {
@@ -180,7 +180,7 @@ std::string writeHeader(const CatalogData& c, const std::string& dataFileName) {
         << "namespace " << c.nameSpace << " {\n\n";
     out << "enum class ShaderId : std::uint32_t {\n";
     for (std::size_t i = 0; i < c.shaders.size(); ++i)
-        out << "    " << cppIdentifier(c.shaders[i].name) << " = " << i << ",\n";
+        out << "    " << mangleName(c.shaders[i].name) << " = " << i << ",\n";
     out << "};\ninline constexpr std::size_t kShaderCount = " << c.shaders.size() << ";\n\n";
     out << "// Every module of the include directories, with its own source and its dependencies.\n";
     out << "enum class ModuleId : std::uint32_t {\n";

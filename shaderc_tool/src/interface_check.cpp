@@ -19,44 +19,78 @@ Diagnostic diagnosticAt(const SourceLocator& locate, std::size_t stage, const In
 
 namespace {
 
-std::string describe(const InterfaceVariable& v, bool stripOuterArray) {
-    InterfaceVariable copy = v;
-    if (stripOuterArray) copy.arraySize = 0;
-    return std::string(interpolationName(v.interpolation)) + " " + glslTypeWithArray(copy);
+// Inputs of the stages after the vertex stage (tesc, tese, geom) and the outputs of the
+// tessellation control stage are arrays over the patch's or primitive's vertices, each
+// element one vertex's value; patch variables are not.
+bool perVertexArray(catalog::Stage stage, const InterfaceVariable& v) {
+    if (v.patch) return false;
+    if (v.storage == StorageKind::Out) return stage == catalog::Stage::TessControl;
+    return stage == catalog::Stage::Geometry || stage == catalog::Stage::TessControl ||
+           stage == catalog::Stage::TessEvaluation;
+}
+
+// What one vertex (or the patch) gets: the variable without its per-vertex array.
+InterfaceVariable element(catalog::Stage stage, const InterfaceVariable& v) {
+    InterfaceVariable e = v;
+    if (perVertexArray(stage, v)) e.arraySize = 0;
+    return e;
+}
+
+std::string describe(const InterfaceVariable& v) {
+    return std::string(v.patch ? "patch " : "") + std::string(interpolationName(v.interpolation)) + " " +
+           glslTypeWithArray(v);
+}
+
+// The output `in` reads, as GL links them: the output at the same explicit location
+// whatever its name; else the output of the same name, unless both have locations that differ.
+const InterfaceVariable* matchOf(const StageInterface& prev, const InterfaceVariable& in) {
+    const auto isOut = [&](const InterfaceVariable& o) {
+        return o.storage == StorageKind::Out && o.isBlock == in.isBlock;
+    };
+    if (in.location >= 0)
+        for (const auto& o : prev.variables)
+            if (isOut(o) && o.location == in.location) return &o;
+    for (const auto& o : prev.variables)
+        if (isOut(o) && o.name == in.name && (o.location < 0 || in.location < 0)) return &o;
+    return nullptr;
+}
+
+std::string locationText(const InterfaceVariable& v) {
+    return v.location >= 0 ? " (location " + std::to_string(v.location) + ")" : "";
 }
 
 void checkPair(const std::vector<StageInterface>& stages, std::size_t prevIndex, std::size_t nextIndex,
                const SourceLocator& locate, std::vector<Diagnostic>& out) {
     const auto& prev = stages[prevIndex];
     const auto& next = stages[nextIndex];
-    // Geometry inputs are arrays over the primitive's vertices: compare the element.
-    const bool arrayedInputs = next.stage == catalog::Stage::Geometry;
     const std::string prevName(catalog::stageName(prev.stage));
     const std::string nextName(catalog::stageName(next.stage));
 
     for (const auto& in : next.variables) {
         if (in.storage != StorageKind::In) continue;
-        auto match = std::find_if(prev.variables.begin(), prev.variables.end(), [&](const InterfaceVariable& o) {
-            return o.storage == StorageKind::Out && o.name == in.name && o.isBlock == in.isBlock;
-        });
-        const std::string what = std::string(in.isBlock ? "block" : "input") + " '" + in.name + "'";
-        if (match == prev.variables.end()) {
+        const auto* match = matchOf(prev, in);
+        const std::string what = std::string(in.isBlock ? "block" : "input") + " '" + in.name + "'" + locationText(in);
+        const InterfaceVariable inElement = element(next.stage, in);
+        if (match == nullptr) {
             out.push_back(diagnosticAt(locate, nextIndex, in, Severity::Error,
                                        nextName + " " + what + " is not written by the " + prevName + " stage (" +
                                            (locate.path ? locate.path(prevIndex, 0) : prevName) + "); declare `out " +
-                                           glslTypeWithArray(in) + " " + in.name + ";` there or remove the input"));
+                                           glslTypeWithArray(inElement) + " " + in.name + ";` there" +
+                                           (in.location >= 0 ? " at that location" : "") + " or remove the input"));
             continue;
         }
-        InterfaceVariable inElement = in;
-        if (arrayedInputs) inElement.arraySize = 0;
-        const bool typeDiffers = inElement.type != match->type || inElement.arraySize != match->arraySize;
-        const bool interpDiffers = in.interpolation != match->interpolation;
+        const InterfaceVariable outElement = element(prev.stage, *match);
+        const bool typeDiffers = inElement.type != outElement.type || inElement.arraySize != outElement.arraySize;
+        const bool interpDiffers = in.interpolation != match->interpolation || in.patch != match->patch;
         if (!typeDiffers && !interpDiffers) continue;
-        std::string problem = typeDiffers ? "type" : "interpolation qualifier";
-        auto d = diagnosticAt(locate, nextIndex, in, Severity::Error,
-                              nextName + " " + what + " is `" + describe(in, arrayedInputs) + "` but the " + prevName +
-                                  " output is `" + describe(*match, false) + "` (" + problem +
-                                  " mismatch); make both declarations agree");
+        std::string problem = typeDiffers                ? "type"
+                              : in.patch != match->patch ? "patch qualifier"
+                                                         : "interpolation qualifier";
+        auto d =
+            diagnosticAt(locate, nextIndex, in, Severity::Error,
+                         nextName + " " + what + " is `" + describe(inElement) + "` but the " + prevName + " output" +
+                             (match->name == in.name ? "" : " '" + match->name + "'" + locationText(*match)) + " is `" +
+                             describe(outElement) + "` (" + problem + " mismatch); make both declarations agree");
         d.notes.push_back(diagnosticAt(locate, prevIndex, *match, Severity::Note,
                                        "the " + prevName + " output '" + match->name + "' is declared here"));
         out.push_back(std::move(d));

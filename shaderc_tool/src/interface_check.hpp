@@ -1,6 +1,8 @@
 // The cross-stage interface check that glslang 12 lacks: every input of a stage after
-// the vertex stage must match an output of the previous stage in name, type, array
-// size and interpolation qualifier (flat / smooth / noperspective).
+// the vertex stage must match an output of the previous stage, as GL links them (the same
+// explicit location whatever the names, else the same name), in type, array size,
+// interpolation qualifier (flat / smooth / noperspective) and `patch`. The per-vertex
+// arrays of tesc, tese and geom inputs and of tesc outputs are compared element-wise.
 #pragma once
 
 #include <functional>

@@ -142,4 +142,24 @@ std::optional<std::string> demangleModuleIdentifier(std::string_view id) {
     return path;
 }
 
+std::string mangleName(std::string_view name) {
+    std::string id = pieceOf(name, true, false);
+    if (cppKeywords().contains(id)) id += '_';
+    return id;
+}
+
+std::optional<std::string> demangleName(std::string_view id) {
+    if (id.empty()) return std::nullopt;
+    std::string name(id);
+    if (id.back() == '_' && cppKeywords().contains(id.substr(0, id.size() - 1))) {
+        name.pop_back();
+    } else if (id.front() == '_') {
+        auto bytes = bytesOfHex(id.substr(1));
+        if (!bytes) return std::nullopt;
+        name = *bytes;
+    }
+    if (name.empty() || mangleName(name) != id) return std::nullopt;
+    return name;
+}
+
 }  // namespace prism::shaderc

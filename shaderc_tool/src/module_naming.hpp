@@ -10,7 +10,12 @@
 // So a_b/c -> a_b__c and a/b_c -> a__b_c differ, and demangleModuleIdentifier() gives
 // the path back (without ".glsl"), which is what makes the mapping collision-free.
 //
+// A program's name (a stage file's base name or a --program NAME) is mangled as one folder
+// of such a path, so that any text gives a usable ShaderId enumerator and name() keeps the text:
+//   phong -> phong, blur-h -> _626c75722d68, 16bit_storage -> _31366269745f73746f72616765.
+//
 //   assert(mangleModulePath("color/space/rgb2hsv.glsl") == "color__space__rgb2hsv");
+//   assert(demangleName(mangleName("blur-h")) == "blur-h");
 #pragma once
 
 #include <optional>
@@ -24,5 +29,10 @@ std::string mangleModulePath(std::string_view relativePath);
 // The relative path (without a dropped ".glsl") a mangled identifier came from, or
 // nullopt when no path mangles to it.
 std::optional<std::string> demangleModuleIdentifier(std::string_view identifier);
+
+// The identifier of a program name (see above); nullopt from demangleName() when no name
+// mangles to `identifier`.
+std::string mangleName(std::string_view name);
+std::optional<std::string> demangleName(std::string_view identifier);
 
 }  // namespace prism::shaderc

@@ -1,6 +1,7 @@
 // glslang reflection into the plain tables the header embeds.
 #include "reflection.hpp"
 
+#include <glslang/Include/Types.h>
 #include <glslang/Public/ShaderLang.h>
 
 #include <algorithm>
@@ -16,6 +17,8 @@ ProgramReflection reflectProgram(glslang::TProgram& program, const Contract& con
         if (a.name.rfind("gl_", 0) == 0) continue;
         for (const auto& c : contract.attributes)
             if (c.name == a.name) a.location = c.location;
+        if (in.getType() && in.getType()->getQualifier().hasLocation())  // GL binds what the shader says
+            a.location = static_cast<int>(in.getType()->getQualifier().layoutLocation);
         r.attributes.push_back(std::move(a));
     }
     for (int i = 0; i < program.getNumUniformVariables(); ++i) {

@@ -1,110 +1,170 @@
-// Grouping of stage files into shaders, with an error for every incomplete set.
+// Grouping of stage files into programs, with an error for every incomplete set and a
+// warning for every file of an input folder that is not a stage.
 #include "shader_inputs.hpp"
 
 #include <algorithm>
-#include <filesystem>
+#include <array>
 #include <map>
-#include <optional>
+
+#include "program_declarations.hpp"
 
 namespace prism::shaderc {
 namespace fs = std::filesystem;
 namespace {
 
-std::optional<catalog::Stage> stageOf(const fs::path& p) {
-    auto ext = p.extension().string();
-    if (ext == ".vert") return catalog::Stage::Vertex;
-    if (ext == ".geom") return catalog::Stage::Geometry;
-    if (ext == ".frag") return catalog::Stage::Fragment;
-    if (ext == ".comp") return catalog::Stage::Compute;
-    return std::nullopt;
-}
-
-bool isIdentifier(const std::string& s) {
-    if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) return false;
-    return std::all_of(s.begin(), s.end(),
-                       [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
-}
+constexpr std::array kStageKinds = {catalog::Stage::Vertex,         catalog::Stage::TessControl,
+                                    catalog::Stage::TessEvaluation, catalog::Stage::Geometry,
+                                    catalog::Stage::Fragment,       catalog::Stage::Compute};
 
 std::string siblingPath(const std::string& stagePath, std::string_view ext) {
     return fs::path(stagePath).replace_extension(std::string(ext)).string();
 }
 
-void checkCompleteness(const ShaderInput& s, std::vector<Diagnostic>& out) {
-    auto has = [&](catalog::Stage st) {
-        return std::any_of(s.stages.begin(), s.stages.end(), [&](const StageFile& f) { return f.stage == st; });
-    };
-    const auto& any = s.stages.front().path;
-    if (has(catalog::Stage::Compute)) {
-        if (s.stages.size() > 1)
-            out.push_back(makeError(any, 0, 0,
-                                    "shader '" + s.name +
-                                        "' mixes a compute stage with graphics stages; "
-                                        "rename one of them"));
-        return;
-    }
-    if (!has(catalog::Stage::Vertex))
-        out.push_back(
-            makeError(any, 0, 0, "shader '" + s.name + "' has no vertex stage: expected " + siblingPath(any, ".vert")));
-    if (!has(catalog::Stage::Fragment))
-        out.push_back(makeError(
-            any, 0, 0, "shader '" + s.name + "' has no fragment stage: expected " + siblingPath(any, ".frag")));
+bool hasStage(const ShaderInput& s, catalog::Stage st) {
+    return std::any_of(s.stages.begin(), s.stages.end(), [&](const StageFile& f) { return f.stage == st; });
 }
 
-}  // namespace
+// The stage files directly in `dir`, sorted; a warning for each other file but modules.
+std::vector<std::string> stageFilesIn(const std::string& dir, std::vector<Diagnostic>& out) {
+    std::vector<std::string> found, ignored;
+    std::error_code ec;
+    for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator(); it.increment(ec)) {
+        if (!it->is_regular_file(ec)) continue;
+        if (stageOfPath(it->path()))
+            found.push_back(it->path().string());
+        else if (it->path().extension() != kModuleExtension)
+            ignored.push_back(it->path().string());
+    }
+    std::sort(found.begin(), found.end());
+    std::sort(ignored.begin(), ignored.end());
+    for (const auto& f : ignored) {
+        Diagnostic d = makeError(f, 0, 0,
+                                 "not a stage Prism takes (" + stageExtensionList() + ") nor a module (" +
+                                     std::string(kModuleExtension) + "); skipped. Move it out of the input folder");
+        d.severity = Severity::Warning;
+        out.push_back(std::move(d));
+    }
+    return found;
+}
 
-ShaderInputsResult collectShaderInputs(const std::vector<std::string>& inputs) {
-    ShaderInputsResult result;
+// The stage files of the positional inputs (files and folders), in order.
+std::vector<std::string> stageFilesOf(const std::vector<std::string>& inputs, ShaderInputsResult& result) {
     std::vector<std::string> files;
     for (const auto& in : inputs) {
         std::error_code ec;
         if (fs::is_directory(in, ec)) {
-            std::vector<std::string> found;
-            for (const auto& e : fs::directory_iterator(in, ec))
-                if (e.is_regular_file() && stageOf(e.path())) found.push_back(e.path().string());
-            std::sort(found.begin(), found.end());
+            auto found = stageFilesIn(in, result.diagnostics);
+            if (found.empty())
+                result.diagnostics.push_back(makeError(in, 0, 0,
+                                                       "no stage files (" + stageExtensionList() +
+                                                           ") in this folder; give the folder that "
+                                                           "holds them, or drop it"));
             files.insert(files.end(), found.begin(), found.end());
         } else if (!fs::exists(in, ec)) {
             result.diagnostics.push_back(makeError(in, 0, 0, "no such file or directory"));
             result.ioError = true;
-        } else if (!stageOf(in)) {
-            result.diagnostics.push_back(
-                makeError(in, 0, 0, "unknown stage extension; use .vert, .geom, .frag or .comp"));
+        } else if (!stageOfPath(in)) {
+            result.diagnostics.push_back(makeError(in, 0, 0, "unknown stage extension; use " + stageExtensionList()));
         } else {
             files.push_back(in);
         }
     }
+    return files;
+}
 
+// Same-name stage files become one program each, sorted by name.
+std::map<std::string, ShaderInput> pairByName(const std::vector<std::string>& files, std::vector<Diagnostic>& out) {
     std::map<std::string, ShaderInput> byName;
     for (const auto& f : files) {
         auto name = fs::path(f).stem().string();
-        auto stage = *stageOf(f);
+        auto stage = *stageOfPath(f);
         auto& shader = byName[name];
         shader.name = name;
         auto dup = std::find_if(shader.stages.begin(), shader.stages.end(),
                                 [&](const StageFile& s) { return s.stage == stage; });
         if (dup != shader.stages.end()) {
             if (fs::path(dup->path).lexically_normal() != fs::path(f).lexically_normal())
-                result.diagnostics.push_back(makeError(f, 0, 0,
-                                                       "second " + std::string(catalog::stageName(stage)) +
-                                                           " stage for shader '" + name + "' (first: " + dup->path +
-                                                           "); shader names must be unique"));
+                out.push_back(makeError(f, 0, 0,
+                                        "second " + std::string(catalog::stageName(stage)) + " stage for shader '" +
+                                            name + "' (first: " + dup->path + "); shader names must be unique"));
             continue;
         }
         shader.stages.push_back({stage, f});
     }
+    for (auto& [name, shader] : byName) sortByPipelineOrder(shader.stages);
+    return byName;
+}
+
+}  // namespace
+
+std::optional<catalog::Stage> stageOfPath(const fs::path& p) {
+    const auto ext = p.extension().string();
+    for (auto stage : kStageKinds)
+        if (ext.size() > 1 && ext.substr(1) == catalog::stageName(stage)) return stage;
+    return std::nullopt;
+}
+
+std::string stageExtensionList() {
+    std::string list;
+    for (std::size_t i = 0; i < kStageKinds.size(); ++i)
+        list += (i == 0                        ? "."
+                 : i + 1 == kStageKinds.size() ? " or ."
+                                               : ", .") +
+                std::string(catalog::stageName(kStageKinds[i]));
+    return list;
+}
+
+void sortByPipelineOrder(std::vector<StageFile>& stages) {
+    std::stable_sort(stages.begin(), stages.end(), [](const StageFile& a, const StageFile& b) {
+        return catalog::pipelineOrder(a.stage) < catalog::pipelineOrder(b.stage);
+    });
+}
+
+void checkCompleteness(const ShaderInput& s, const std::string& where, std::vector<Diagnostic>& out) {
+    const auto& any = s.stages.front().path;
+    if (hasStage(s, catalog::Stage::Compute)) {
+        if (s.stages.size() > 1)
+            out.push_back(makeError(where, 0, 0,
+                                    "shader '" + s.name +
+                                        "' mixes a compute stage with graphics stages; "
+                                        "make them two programs"));
+        return;
+    }
+    if (!hasStage(s, catalog::Stage::Vertex))
+        out.push_back(makeError(where, 0, 0,
+                                "shader '" + s.name + "' has no vertex stage (nor a compute stage): expected " +
+                                    siblingPath(any, ".vert")));
+    if (!hasStage(s, catalog::Stage::Fragment))
+        out.push_back(makeError(
+            where, 0, 0, "shader '" + s.name + "' has no fragment stage: expected " + siblingPath(any, ".frag")));
+    if (hasStage(s, catalog::Stage::TessControl) && !hasStage(s, catalog::Stage::TessEvaluation))
+        out.push_back(makeError(where, 0, 0,
+                                "shader '" + s.name +
+                                    "' has a tessellation control stage but no evaluation stage: expected " +
+                                    siblingPath(any, ".tese")));
+}
+
+ShaderInputsResult collectShaderInputs(const std::vector<std::string>& inputs,
+                                       const std::vector<std::string>& programDeclarations) {
+    ShaderInputsResult result;
+    const DiskReader disk;
+    auto files = stageFilesOf(inputs, result);
+    const auto declaredFiles = filesNamedBy(programDeclarations, disk);
+    std::erase_if(files, [&](const std::string& f) {
+        const auto canonical = disk.canonical(f);
+        return canonical && declaredFiles.contains(*canonical);
+    });
+    auto byName = pairByName(files, result.diagnostics);
     for (auto& [name, shader] : byName) {
-        std::sort(shader.stages.begin(), shader.stages.end(),
-                  [](const StageFile& a, const StageFile& b) { return a.stage < b.stage; });
-        if (!isIdentifier(name)) {
-            result.diagnostics.push_back(makeError(shader.stages.front().path, 0, 0,
-                                                   "shader name '" + name +
-                                                       "' is not a C++ identifier; rename the file "
-                                                       "(letters, digits and '_')"));
-            continue;
-        }
-        checkCompleteness(shader, result.diagnostics);
+        checkCompleteness(shader, shader.stages.front().path, result.diagnostics);
         result.shaders.push_back(std::move(shader));
     }
+    auto declared = declaredPrograms(programDeclarations, result.shaders, disk);
+    result.diagnostics.insert(result.diagnostics.end(), declared.diagnostics.begin(), declared.diagnostics.end());
+    result.ioError = result.ioError || declared.ioError;
+    for (auto& p : declared.programs) result.shaders.push_back(std::move(p));
+    std::sort(result.shaders.begin(), result.shaders.end(),
+              [](const ShaderInput& a, const ShaderInput& b) { return a.name < b.name; });
     return result;
 }
 

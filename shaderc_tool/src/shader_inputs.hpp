@@ -1,8 +1,17 @@
 // Stage 3 of prism-shaderc, with the contract (contract.hpp): the inputs. Turns the
-// command line's files and directories into shaders: the stage files that
-// share a base name (`phong.vert` + `phong.frag` [+ `phong.geom`], or `rain.comp` alone).
+// command line's files and directories into programs: the stage files that share a base
+// name (`phong.vert` + `phong.frag` [+ `phong.geom`], `terrain.vert` + `.tesc` + `.tese`
+// + `.frag`, or `rain.comp` alone), plus the programs `--program NAME=FILE,...` declares
+// (program_declarations.hpp); a stage file that a declaration names is that program's and
+// is not paired by name. A file in an input folder that is not a stage kind is a warning
+// naming it, except a module (`.glsl`), which stages include.
+//
+//   const auto inputs = collectShaderInputs({"shaders/"}, {"blur-h=shaders/fullscreen.vert,shaders/blur.frag"});
+//   sink.reportAll(inputs.diagnostics);
 #pragma once
 
+#include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,8 +27,8 @@ struct StageFile {
 };
 
 struct ShaderInput {
-    std::string name;               // base name, a C++ identifier
-    std::vector<StageFile> stages;  // in pipeline order
+    std::string name;               // base name or declared name; any text (mangleName() gives its enumerator)
+    std::vector<StageFile> stages;  // in pipeline order (catalog::pipelineOrder)
 };
 
 struct ShaderInputsResult {
@@ -28,6 +37,24 @@ struct ShaderInputsResult {
     bool ioError = false;  // an input that does not exist (exit status 2, not 1)
 };
 
-ShaderInputsResult collectShaderInputs(const std::vector<std::string>& inputs);
+// The stage kind a file's extension names, nullopt for any other file.
+std::optional<catalog::Stage> stageOfPath(const std::filesystem::path& path);
+
+// The extensions stageOfPath() knows, for messages: ".vert, .tesc, ... or .comp".
+std::string stageExtensionList();
+
+// The extension of a module file: in an input folder it is no stage and no warning.
+inline constexpr std::string_view kModuleExtension = ".glsl";
+
+// Sorts a program's stages into the order they run in (catalog::pipelineOrder).
+void sortByPipelineOrder(std::vector<StageFile>& stages);
+
+// Checks the stage kinds of one program: compute alone; else a vertex and a fragment
+// stage, and a tessellation control stage only with an evaluation stage. `where` is the
+// diagnostics' file: the first stage file, or the --program argument.
+void checkCompleteness(const ShaderInput& program, const std::string& where, std::vector<Diagnostic>& out);
+
+ShaderInputsResult collectShaderInputs(const std::vector<std::string>& inputs,
+                                       const std::vector<std::string>& programDeclarations = {});
 
 }  // namespace prism::shaderc

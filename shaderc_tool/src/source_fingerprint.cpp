@@ -9,6 +9,8 @@
 #include "code_signature.hpp"
 #include "generated_format.hpp"
 #include "prism/hash/content_hash.hpp"
+#include "program_declarations.hpp"
+#include "shader_inputs.hpp"
 #include "shown_path.hpp"
 
 namespace prism::shaderc {
@@ -30,11 +32,10 @@ std::vector<std::string> listing(const std::string& dir, bool (*keep)(const fs::
 }
 
 bool isModule(const fs::path& p) {
-    return p.extension() == ".glsl";
+    return p.extension() == kModuleExtension;
 }
 bool isStage(const fs::path& p) {
-    const auto e = p.extension();
-    return e == ".vert" || e == ".geom" || e == ".frag" || e == ".comp";
+    return stageOfPath(p).has_value();
 }
 
 std::string fingerprintOf(const Options& o, const std::vector<std::string>& embedded, const SourceReader& reader,
@@ -54,6 +55,7 @@ std::string fingerprintOf(const Options& o, const std::vector<std::string>& embe
     for (const auto& contract : o.contracts) h.add("--contract " + shown(contract));
     for (const auto& dir : o.includeDirs) h.add("-I " + shown(dir));
     for (const auto& input : o.inputs) h.add("in " + shown(input));
+    for (const auto& declaration : o.programs) h.add("--program " + declarationWithPaths(declaration, shown));
     for (const auto& file : embedded) {
         h.add(file);
         const auto text = reader.read(recordedToPath(file, o));

@@ -66,6 +66,8 @@ class LinkerObjectCollector : public glslang::TIntermTraverser {
         v.interpolation = q.flat      ? Interpolation::Flat
                           : q.nopersp ? Interpolation::NoPerspective
                                       : Interpolation::Smooth;
+        v.patch = q.patch;
+        if (q.hasLocation()) v.location = static_cast<int>(q.layoutLocation);
         const TSourceLoc& loc = sym.getLoc();
         v.sourceNumber = static_cast<std::uint32_t>(loc.string < 0 ? 0 : loc.string);
         v.line = loc.line;

@@ -25,6 +25,8 @@ struct InterfaceVariable {
     int arraySize = 0;  // 0 = not an array, -1 = unsized, else the (outer) size
     Interpolation interpolation = Interpolation::Smooth;
     bool isBlock = false;
+    bool patch = false;              // `patch in` / `patch out`: per patch, not an array over its vertices
+    int location = -1;               // explicit layout(location = N), -1 without
     std::uint32_t sourceNumber = 0;  // from the #line directives
     int line = 0;
     int column = 0;

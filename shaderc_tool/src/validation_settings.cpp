@@ -25,6 +25,7 @@ std::string catalogueCacheKey(const Options& o) {
         for (const auto& item : list) h.add(item);
     }
     for (const auto& [name, value] : o.defines) h.add(name).add(value);
+    for (const auto& declaration : o.programs) h.add("--program").add(declaration);
     h.add(std::to_string(o.glslVersion)).add(o.glslProfile).add(o.baseDir);
     if (o.warnUndocumentedLibraryModules) h.add("warn-undocumented-modules=all");  // more warnings, another record
     return h.hex();

@@ -27,6 +27,8 @@ EShLanguage glslangStage(catalog::Stage s) {
         case catalog::Stage::Geometry: return EShLangGeometry;
         case catalog::Stage::Fragment: return EShLangFragment;
         case catalog::Stage::Compute: return EShLangCompute;
+        case catalog::Stage::TessControl: return EShLangTessControl;
+        case catalog::Stage::TessEvaluation: return EShLangTessEvaluation;
     }
     return EShLangVertex;
 }

@@ -70,5 +70,35 @@ TEST(ModuleNaming, OnlyWhatManglingWritesDecodes) {
     EXPECT_EQ(demangleModuleIdentifier("color__space__rgb2hsv"), "color/space/rgb2hsv.glsl");
 }
 
+// Program names (issue 24): identifiers stay as they are, any other text is mangled like
+// one folder of a module path, and demangleName() gives the text back.
+TEST(ProgramNaming, IdentifiersStayOtherNamesAreMangledReversibly) {
+    EXPECT_EQ(mangleName("phong"), "phong");
+    EXPECT_EQ(mangleName("rain_streaks"), "rain_streaks");
+    EXPECT_EQ(mangleName("float"), "float_");
+    EXPECT_EQ(mangleName("blur-h"), "_626c75722d68");
+    EXPECT_EQ(mangleName("16bit_storage"), "_31366269745f73746f72616765");
+    for (const std::string name : {"phong", "float", "blur-h", "16bit_storage", "a__b", "_x", "x_", "ü"})
+        EXPECT_EQ(demangleName(mangleName(name)), name) << name;
+    EXPECT_FALSE(demangleName("_zz"));    // not hex
+    EXPECT_FALSE(demangleName("_7068"));  // "ph" is written "ph"
+    EXPECT_FALSE(demangleName("x_"));     // not a keyword
+}
+
+TEST(ProgramNaming, NoTwoNamesShareAnIdentifier) {
+    std::mt19937 random(24);
+    const std::string alphabet = "ab_1-.";
+    std::map<std::string, std::string> nameOf;
+    for (int n = 0; n < 20000; ++n) {
+        std::string name;
+        const int length = 1 + static_cast<int>(random() % 5);
+        for (int i = 0; i < length; ++i) name += alphabet[random() % alphabet.size()];
+        const std::string id = mangleName(name);
+        EXPECT_EQ(demangleName(id), name) << id;
+        const auto [it, fresh] = nameOf.emplace(id, name);
+        EXPECT_TRUE(fresh || it->second == name) << id << " from both " << it->second << " and " << name;
+    }
+}
+
 }  // namespace
 }  // namespace prism::shaderc

@@ -26,6 +26,8 @@ GLenum shaderType(catalog::Stage stage) {
         case catalog::Stage::Geometry: return GL_GEOMETRY_SHADER;
         case catalog::Stage::Fragment: return GL_FRAGMENT_SHADER;
         case catalog::Stage::Compute: return GL_COMPUTE_SHADER;
+        case catalog::Stage::TessControl: return GL_TESS_CONTROL_SHADER;
+        case catalog::Stage::TessEvaluation: return GL_TESS_EVALUATION_SHADER;
     }
     return GL_VERTEX_SHADER;
 }
@@ -36,6 +38,8 @@ std::string_view stageWord(catalog::Stage stage) {
         case catalog::Stage::Geometry: return "geometry";
         case catalog::Stage::Fragment: return "fragment";
         case catalog::Stage::Compute: return "compute";
+        case catalog::Stage::TessControl: return "tessellation control";
+        case catalog::Stage::TessEvaluation: return "tessellation evaluation";
     }
     return "?";
 }

@@ -38,16 +38,34 @@
 
 namespace prism::catalog {
 
-enum class Stage : std::uint8_t { Vertex, Geometry, Fragment, Compute };
+// The enumerators' values are stored in generated catalogues: new kinds go at the end;
+// pipelineOrder() gives the order a program's stages run in.
+enum class Stage : std::uint8_t { Vertex, Geometry, Fragment, Compute, TessControl, TessEvaluation };
 
+// The stage file's extension without the dot, as glslang names it.
 constexpr std::string_view stageName(Stage s) {
     switch (s) {
         case Stage::Vertex: return "vert";
         case Stage::Geometry: return "geom";
         case Stage::Fragment: return "frag";
         case Stage::Compute: return "comp";
+        case Stage::TessControl: return "tesc";
+        case Stage::TessEvaluation: return "tese";
     }
     return "?";
+}
+
+// The stage's place in a program: vert, tesc, tese, geom, frag; compute on its own.
+constexpr int pipelineOrder(Stage s) {
+    switch (s) {
+        case Stage::Vertex: return 0;
+        case Stage::TessControl: return 1;
+        case Stage::TessEvaluation: return 2;
+        case Stage::Geometry: return 3;
+        case Stage::Fragment: return 4;
+        case Stage::Compute: return 5;
+    }
+    return 6;
 }
 
 // One row of a line table: `#line L <number>` in an embedded source means line L
