@@ -190,6 +190,19 @@ TEST_P(HotReloadBy, ModuleEditIsRebuiltAndDrawn) {
     EXPECT_EQ(cache_->reloadCount(), 1u);
 }
 
+// The program a reload swaps in still knows its shader: another shader's handle stays refused.
+TEST_F(HotReload, RebuiltProgramStillKnowsItsShader) {
+    auto& w = watcher();
+    gl::Program& program = cache_->get("unicolor");
+    editMaterial(kSwapRedAndBlue);
+    ASSERT_EQ(w.pollNow().reloaded.size(), 1u);
+    EXPECT_TRUE(program.builtFrom(shaders::shaderInfo(shaders::ShaderId::unicolor)));
+    program.setWarningHandler([](std::string_view) {});
+    program.set(shaders::phong::u_color, glm::vec4(1.0f));
+    program.set(shaders::unicolor::u_color, glm::vec4(1.0f));
+    EXPECT_EQ(program.foreignHandleReports(), std::vector<std::string>{"phong::u_color"});
+}
+
 // File times tick coarsely (a jiffy or more): a second edit of the same size may keep the
 // first one's mtime. Simulated exactly by setting it back; the content must still count.
 TEST_P(HotReloadBy, SameSizeEditWithTheSameMtimeIsSeen) {

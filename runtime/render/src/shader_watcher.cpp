@@ -193,6 +193,7 @@ void ShaderWatcher::rebuild(const std::string& shader, const std::string& varian
     }
     std::vector<std::string> errors = std::move(outcome.diagnostics);
     if (outcome.sources) {
+        outcome.sources->variant = variant;  // the rebuilt program still knows its shader
         try {
             cache_.reload(shader, variantName, gl::Program(std::move(*outcome.sources)));
             result.reloaded.push_back(request.label);
