@@ -168,6 +168,26 @@ TEST_F(HotReload, WatchesTheModulesAndStagesTheCatalogueWasBuiltFrom) {
     EXPECT_FALSE(watched(fs::path(PRISM_SOURCE_DIR) / "modules" / "material.glsl"));  // the copy, not the tree
 }
 
+// A copy of the recorded tree (the viewer's --source-root): what lay under the recorded base
+// dir is watched in the copy; a folder outside it (installed modules) stays where it was.
+TEST_F(HotReload, FromAMovedTreeWatchesTheCopy) {
+    const std::string base = PRISM_SOURCE_DIR, modules = base + "/modules", contract = modules + "/contract.json";
+    const std::string outside = "/opt/prism-installed/share/prism/modules";  // not under the base dir
+    const std::string_view dirs[] = {modules, outside}, contracts[] = {contract};
+    const catalog::SourceTree tree{"prism::shaders", base, dirs, contracts, {}};
+    const auto options = render::ShaderWatchOptions::from(tree, root_.string());
+    EXPECT_EQ(options.sourceRoot, root_.string());
+    EXPECT_EQ(options.moduleDirs, (std::vector<std::string>{"modules", outside}));
+    EXPECT_EQ(options.contractFiles, std::vector<std::string>{"modules/contract.json"});
+    EXPECT_EQ(render::ShaderWatchOptions::from(tree).moduleDirs, (std::vector<std::string>{modules, outside}));
+
+    cache_->get("unicolor");
+    const render::ShaderWatcher moved(*cache_, options);
+    const auto files = moved.watchedFiles();
+    EXPECT_NE(std::find(files.begin(), files.end(), material_.lexically_normal().string()), files.end());
+    for (const auto& f : files) EXPECT_EQ(f.rfind(root_.string(), 0), 0u) << f << " is not in the copy";
+}
+
 // (1) A module edit is picked up, rebuilt and the new program is the one drawing.
 TEST_P(HotReloadBy, ModuleEditIsRebuiltAndDrawn) {
     auto& w = watcher();
