@@ -141,7 +141,7 @@ StageText composeStageIn(const catalog::Catalog& catalog, const catalog::SourceT
     for (std::uint32_t id : moduleOrder(catalog, modules)) {
         const catalog::Module& m = catalog.modules[id];
         src += catalog::lineDirective(1, number, version) + '\n';
-        src += userText(catalog::joinChunks(m.chunks)).text;  // a module keeps its #version line; one per stage
+        src += userText(catalog::joinChunks(m.chunks)).text;  // its #version blanked: the stage has one, on line 1
         text.files.push_back({number, detail::modulePathIn(m, tree)});
         ++number;
     }
