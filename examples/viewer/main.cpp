@@ -30,6 +30,7 @@
 #include "prism/rain/rain_classes.hpp"
 #include "prism/render/shader_watcher.hpp"
 #include "prism/shaders.hpp"
+#include "prism/shaders_sources.hpp"  // kSourceTree: where the catalogue was built from, for --watch
 #include "reference_check.hpp"
 #include "sampling_reference.hpp"
 #include "scene_display.hpp"
@@ -43,6 +44,7 @@ namespace {
 
 using namespace prism::viewer;
 const prism::catalog::Catalog& kCatalog = prism::shaders::kCatalog;
+const prism::catalog::SourceTree& kSourceTree = prism::shaders::kSourceTree;
 
 volatile std::sig_atomic_t gStopRequested = 0;
 void onStopSignal(int) {
@@ -127,11 +129,11 @@ class ViewerApp {
         installKeyHandler(window_, state_, kCatalog);
         if (state_.panels) ui_.emplace(window_);  // after our key callback: ImGui chains to it
         if (args_.watch) {
-            prism::render::ShaderWatchOptions watchOptions;
-            watchOptions.sourceRoot = args_.sourceRoot;
+            // The tree prism_add_shaders() recorded for the catalogue, or a copy of it (--source-root).
+            const auto watchOptions = prism::render::ShaderWatchOptions::from(kSourceTree, args_.sourceRoot);
             watcher_ = std::make_unique<prism::render::ShaderWatcher>(cache_, watchOptions);
-            std::cout << "viewer: watching " << watcher_->watchedFiles().size() << " files under " << args_.sourceRoot
-                      << std::endl;
+            std::cout << "viewer: watching " << watcher_->watchedFiles().size() << " files under "
+                      << watcher_->sourceRoot() << std::endl;
         }
         std::cout << "viewer: frame time from " << (timer_.gpuTimed() ? "GL_TIME_ELAPSED queries" : "the CPU clock")
                   << std::endl;

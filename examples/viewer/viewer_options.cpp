@@ -9,7 +9,6 @@ namespace prism::viewer {
 
 std::optional<ViewerOptions> parseViewerOptions(int argc, char** argv, int& exitCode) {
     ViewerOptions o;
-    o.sourceRoot = PRISM_SOURCE_DIR;
     CLI::App app{
         "viewer: an interactive window over the Prism catalogue and scenes, with panels for every "
         "system (run under xvfb-run -a on a headless machine)",
@@ -29,8 +28,9 @@ std::optional<ViewerOptions> parseViewerOptions(int argc, char** argv, int& exit
     app.add_option("--script", o.script, "play key and parameter events from FILE, one line per frame (docs/viewer.md)")
         ->check(CLI::ExistingFile);
     auto* watch = app.add_flag("--watch", o.watch, "hot reload: rebuild edited shaders and modules in process");
-    app.add_option("--source-root", o.sourceRoot, "the tree --watch watches (needs --watch)")
-        ->capture_default_str()
+    app.add_option("--source-root", o.sourceRoot,
+                   "a copy of the tree the catalogue was built from, for --watch to watch instead (default: that "
+                   "tree, as prism_add_shaders recorded it)")
         ->needs(watch);  // used only by --watch: alone it would be accepted and ignored
     app.add_flag("!--no-panels", o.panels, "hide the ImGui panels");
     app.add_option("--width", o.width, "window width")->check(CLI::Range(64, 8192));

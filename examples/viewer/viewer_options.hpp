@@ -23,8 +23,8 @@ struct ViewerOptions {
     std::string screenshot;  // PNG of the last frame
     std::string script;      // --script FILE of key and parameter events, one per frame
     bool watch = false;
-    std::string sourceRoot;
-    bool panels = true;  // --no-panels hides the ImGui panels
+    std::string sourceRoot;  // --source-root: a copy of the catalogue's recorded tree; "": that tree
+    bool panels = true;      // --no-panels hides the ImGui panels
     int width = 1100;
     int height = 760;
 };

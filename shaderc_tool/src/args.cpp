@@ -1,6 +1,7 @@
 // Command-line parsing for prism-shaderc (see docs/shaderc.md for the contract).
 #include "args.hpp"
 #include "data_writer.hpp"
+#include "header_writer.hpp"
 #include "source_reader.hpp"
 
 #include <CLI/CLI.hpp>
@@ -23,6 +24,14 @@ bool isIdentifier(const std::string& s) {
     for (char c : s)
         if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
     return true;
+}
+
+// The namespace of a header written without --namespace: its file name as an identifier
+// (-o gen/toon_shaders.hpp: toon_shaders). prism_add_shaders(toon_shaders) names its header
+// toon_shaders.hpp and its namespace toon_shaders, so the tool run by hand agrees with it,
+// and no default is Prism's own prism::shaders, whose kCatalog a second catalogue would clash with.
+std::string defaultNamespace(const std::string& header) {
+    return cppIdentifier(std::filesystem::path(header).stem().string());
 }
 
 // A usage error: printed on stderr, exit status 2.
@@ -73,7 +82,9 @@ void addOptions(CLI::App& app, Options& o, std::vector<std::string>& defines, st
     app.add_flag("--check", o.checkOnly, "validate only: no header (--emit-glsl, --depfile, --stamp still written)");
     app.add_option("-D", defines, "define a macro for every stage: NAME[=VALUE]")->allow_extra_args(false);
     app.add_option("--glsl-version", o.glslVersion, "default #version when a shader has none")->capture_default_str();
-    app.add_option("--namespace", o.nameSpace, "C++ namespace of the generated code (needs -o)")->capture_default_str();
+    app.add_option("--namespace", o.nameSpace,
+                   "C++ namespace of the generated code (needs -o; default: the header's file name, "
+                   "toon_shaders for -o gen/toon_shaders.hpp, as prism_add_shaders names it after its target)");
     app.add_option("--contract", o.contracts, "binding contract JSON (attributes and uniforms the runtime provides)")
         ->allow_extra_args(false);
     app.add_option("--variant", o.variantFilters,
@@ -136,6 +147,7 @@ ArgsResult parseArgs(int argc, char** argv) {
     if (o.glslVersion >= 150 && o.glslVersion < 300) o.glslProfile = "core";
     if (o.glslVersion < 150) o.glslProfile.clear();
     if (auto conflict = conflictOf(o, app); !conflict.empty()) return usageError(conflict);
+    if (o.nameSpace.empty() && !o.output.empty()) o.nameSpace = defaultNamespace(o.output);
     if (o.baseDir.empty()) o.baseDir = std::filesystem::current_path().string();
     o.baseDir = std::filesystem::absolute(o.baseDir).lexically_normal().string();
     return {std::move(o), 0};

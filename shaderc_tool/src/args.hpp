@@ -22,8 +22,8 @@ struct Options {
     std::string stamp;                                         // --stamp: touched on every successful run
     std::string emitGlslDir;                                   // --emit-glsl
     std::string baseDir;                                       // --base-dir: embedded paths are relative to it
-    std::string cacheDir;  // --cache-dir: validation results cache ("" = default, "none" = off)
-    std::string nameSpace = "prism::shaders";
+    std::string cacheDir;   // --cache-dir: validation results cache ("" = default, "none" = off)
+    std::string nameSpace;  // --namespace; default: the header's file name (defaultNamespace)
     int glslVersion = 330;
     std::string glslProfile = "core";
     ErrorFormat errorFormat = ErrorFormat::Gcc;

@@ -334,6 +334,7 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
     ResolvedCatalog rc;
     rc.data.nameSpace = o.nameSpace;
     rc.data.contract = contract;
+    for (const auto& file : contract.files) rc.data.contractFiles.push_back(embeddedLocation(file, o));
     rc.data.versionDirective = versionDirective(o.glslVersion, o.glslProfile);
     rc.filesRead = contract.files;
     auto filters = parseVariantFilters(o.variantFilters);
@@ -372,6 +373,7 @@ std::string fingerprint(const ResolvedCatalog& rc) {
     mix(format::kLayoutVersion);
     mix(d.nameSpace);
     mix(d.versionDirective);
+    for (const auto& f : d.contractFiles) mix(f.path + '\0' + std::to_string(f.searchDir));
     mix(d.sourcesBlock);  // so a header with a stale record is rewritten
     for (const auto& s : d.shaders) {
         mix(s.name);

@@ -40,7 +40,7 @@ struct CatalogModule {
     std::string identifier;  // ModuleId enumerator, e.g. "lights" or "lighting_phong"
     std::string path;        // as embedded
     std::string description;
-    std::string text;                         // own text, #include/#version/#pragma once blanked
+    std::string text;                         // own text, #include/#pragma once blanked
     std::vector<std::uint32_t> dependencies;  // direct includes, in order
     std::string sourcePath;                   // as read (for the depfile), not embedded
     std::uint32_t searchDir = 0;              // what `path` is relative to (EmbeddedPath)
@@ -54,6 +54,7 @@ struct CatalogData {
     std::vector<CatalogShader> shaders;  // sorted by name
     std::vector<CatalogModule> modules;  // sorted by identifier
     Contract contract;
+    std::vector<EmbeddedPath> contractFiles;  // contract.files as embedded, for run-time contract errors
 };
 
 }  // namespace prism::shaderc

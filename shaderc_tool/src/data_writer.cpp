@@ -180,6 +180,11 @@ class DataWriter {
         tablesOut_ << "// ---- binding contract\n";
         auto contractAttributes = arrays_.array("prism::catalog::Attribute", "contract_attributes", attributes, false);
         auto contractUniforms = arrays_.array("prism::catalog::Uniform", "contract_uniforms", uniforms, false);
+        std::vector<std::string> files;
+        for (std::size_t n = 0; n < c_.contractFiles.size(); ++n)
+            files.push_back("{" + std::to_string(n) + ", " + quotedLiteral(c_.contractFiles[n].path) +
+                            searchDirField(c_.contractFiles[n].searchDir) + "}");
+        auto contractFiles = arrays_.array("prism::catalog::SourceFile", "contract_files", files);
 
         std::ostringstream out;
         out << format::kBannerStart << PRISM_VERSION << format::kBannerEnd << format::kFingerprintLine << c_.fingerprint
@@ -193,7 +198,8 @@ class DataWriter {
             << poolOut_.str() << "\n"
             << tablesOut_.str() << "\n}  // namespace\n\n"
             << "constinit const prism::catalog::Catalog kCatalog{" << shaders << ", " << modules << ", "
-            << contractAttributes << ", " << contractUniforms << ", " << quotedLiteral(c_.versionDirective) << "};\n"
+            << contractAttributes << ", " << contractUniforms << ", " << quotedLiteral(c_.versionDirective) << ", "
+            << contractFiles << "};\n"
             << "\n}  // namespace " << c_.nameSpace << "\n";
         if (!c_.sourcesBlock.empty()) out << "\n" << c_.sourcesBlock;
         return out.str();

@@ -379,8 +379,9 @@ class ModuleScanner {
         }
         for (const auto& line : lines) {
             const auto directive = parseDirective(line);
-            const bool blank = directive && (directive->name == "include" || directive->name == "version" ||
-                                             isPragmaOnce(*directive) || isIncludeExtension(*directive));
+            // #version stays: run-time composition checks it against the stage's, as resolution does.
+            const bool blank = directive && (directive->name == "include" || isPragmaOnce(*directive) ||
+                                             isIncludeExtension(*directive));
             for (const auto& physical : blank ? blankedDirective(line) : line.physical) module.text += physical + "\n";
         }
         module.description = leadingComment(lines);

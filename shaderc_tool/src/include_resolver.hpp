@@ -59,8 +59,8 @@ struct ResolveResult {
 // `reader` is injectable (MemoryReader) so tests and fuzzers run on in-memory files.
 ResolveResult resolveStage(const std::string& stagePath, const ResolveOptions& options, const SourceReader& reader);
 
-// A module as the catalogue stores it: its own text with #include, #version and
-// #pragma once lines blanked (so line numbers stay true), its leading comment as the
+// A module as the catalogue stores it: its own text with #include and #pragma once
+// lines blanked (so line numbers stay true; a #version line is kept), its leading comment as the
 // description, and the files its active includes name (display paths) in order, as
 // glslang's preprocessor sees the module on its own with the -D macros. The public API's
 // ModuleText (prism/shaderc/build_step.hpp).

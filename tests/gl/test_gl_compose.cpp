@@ -6,6 +6,7 @@
 #include "gl_test_support.hpp"
 #include "prism/gl/compose.hpp"
 #include "prism/gl/module_library.hpp"
+#include "prism/shaders.hpp"
 
 namespace {
 
@@ -234,8 +235,29 @@ TEST_F(ComposeGl, MisspelledAttributeIsAnErrorAtTheModuleLineWithASuggestion) {
     }
 }
 
+// A generated catalogue records its contract files (Catalog::contractFiles): a contract
+// error names them without the source tree.
+TEST_F(ComposeGl, ContractErrorNamesTheGeneratedCataloguesContractFiles) {
+    const ComposeStage stages[] = {
+        {cat::Stage::Vertex,
+         {},
+         "in vec3 a_positon;\nvoid main() { gl_Position = vec4(a_positon, 1.0); }\n",
+         "app/misspelled.vert"},
+        {cat::Stage::Fragment, {}, "out vec4 fragColor;\nvoid main() { fragColor = vec4(1.0); }\n", "app/plain.frag"}};
+    try {
+        prism::gl::composeProgram(prism::shaders::kCatalog, stages, "misspelled");
+        FAIL() << "a_positon, which the runtime never provides, linked silently";
+    } catch (const CompositionError& e) {
+        ASSERT_FALSE(e.diagnostics.empty()) << e.what();
+        EXPECT_NE(e.diagnostics.front().find("app/misspelled.vert:1:9: error: vertex attribute 'a_positon' is not in "
+                                             "the binding contract (modules/contract.json)"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
 // With the source tree recorded beside a catalogue, a contract error names the contract
-// files (without it, the catalogue's contract has no file to name).
+// files as absolute paths (this hand-written catalogue records none itself).
 TEST_F(ComposeGl, ContractErrorNamesTheSourceTreesContractFiles) {
     const std::string_view contracts[] = {"modules/contract.json"};
     const cat::SourceTree tree{"test", "", {}, contracts, {}};

@@ -168,6 +168,26 @@ TEST_F(HotReload, WatchesTheModulesAndStagesTheCatalogueWasBuiltFrom) {
     EXPECT_FALSE(watched(fs::path(PRISM_SOURCE_DIR) / "modules" / "material.glsl"));  // the copy, not the tree
 }
 
+// A copy of the recorded tree (the viewer's --source-root): what lay under the recorded base
+// dir is watched in the copy; a folder outside it (installed modules) stays where it was.
+TEST_F(HotReload, FromAMovedTreeWatchesTheCopy) {
+    const std::string base = PRISM_SOURCE_DIR, modules = base + "/modules", contract = modules + "/contract.json";
+    const std::string outside = "/opt/prism-installed/share/prism/modules";  // not under the base dir
+    const std::string_view dirs[] = {modules, outside}, contracts[] = {contract};
+    const catalog::SourceTree tree{"prism::shaders", base, dirs, contracts, {}};
+    const auto options = render::ShaderWatchOptions::from(tree, root_.string());
+    EXPECT_EQ(options.sourceRoot, root_.string());
+    EXPECT_EQ(options.moduleDirs, (std::vector<std::string>{"modules", outside}));
+    EXPECT_EQ(options.contractFiles, std::vector<std::string>{"modules/contract.json"});
+    EXPECT_EQ(render::ShaderWatchOptions::from(tree).moduleDirs, (std::vector<std::string>{modules, outside}));
+
+    cache_->get("unicolor");
+    const render::ShaderWatcher moved(*cache_, options);
+    const auto files = moved.watchedFiles();
+    EXPECT_NE(std::find(files.begin(), files.end(), material_.lexically_normal().string()), files.end());
+    for (const auto& f : files) EXPECT_EQ(f.rfind(root_.string(), 0), 0u) << f << " is not in the copy";
+}
+
 // (1) A module edit is picked up, rebuilt and the new program is the one drawing.
 TEST_P(HotReloadBy, ModuleEditIsRebuiltAndDrawn) {
     auto& w = watcher();
@@ -188,6 +208,19 @@ TEST_P(HotReloadBy, ModuleEditIsRebuiltAndDrawn) {
     editMaterial(kSwapRedAndBlue);
     EXPECT_TRUE(w.pollNow().reloaded.empty());
     EXPECT_EQ(cache_->reloadCount(), 1u);
+}
+
+// The program a reload swaps in still knows its shader: another shader's handle stays refused.
+TEST_F(HotReload, RebuiltProgramStillKnowsItsShader) {
+    auto& w = watcher();
+    gl::Program& program = cache_->get("unicolor");
+    editMaterial(kSwapRedAndBlue);
+    ASSERT_EQ(w.pollNow().reloaded.size(), 1u);
+    EXPECT_TRUE(program.builtFrom(shaders::shaderInfo(shaders::ShaderId::unicolor)));
+    program.setWarningHandler([](std::string_view) {});
+    program.set(shaders::phong::u_color, glm::vec4(1.0f));
+    program.set(shaders::unicolor::u_color, glm::vec4(1.0f));
+    EXPECT_EQ(program.foreignHandleReports(), std::vector<std::string>{"phong::u_color"});
 }
 
 // File times tick coarsely (a jiffy or more): a second edit of the same size may keep the

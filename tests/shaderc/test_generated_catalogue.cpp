@@ -107,6 +107,14 @@ TEST(GeneratedCatalogue, LineTablesMapSourceNumbersToModules) {
     EXPECT_TRUE(mentionsLights);
 }
 
+// The contract files the build step read, as it embeds paths (relative to the base dir), so
+// that run-time contract errors can name them without the source tree.
+TEST(GeneratedCatalogue, NamesItsContractFiles) {
+    ASSERT_EQ(prism::shaders::kCatalog.contractFiles.size(), 1u);
+    EXPECT_EQ(prism::shaders::kCatalog.contractFiles[0].path, "modules/contract.json");
+    EXPECT_EQ(prism::shaders::kCatalog.contractFiles[0].searchDir, 0u);
+}
+
 // The one contract lookup the runtime uses (catalog::attributeLocation): the locations
 // modules/contract.json declares, and a clear error for a name the runtime never provides.
 TEST(GeneratedCatalogue, AttributeLocationsComeFromTheContract) {
@@ -151,7 +159,7 @@ TEST(GeneratedCatalogue, AssembledStagesEqualTheEmittedGlsl) {
 }
 
 // A module's own text, assembled from shared pieces, is its file with the #include
-// lines blanked (line numbers kept).
+// lines blanked (line numbers kept); a #version line stays (version.glsl's).
 TEST(GeneratedCatalogue, ModuleTextIsItsFileWithIncludesBlanked) {
     const auto text = joinChunks(shaders::moduleInfo(shaders::ModuleId::lighting).chunks);
     std::istringstream file(prism::test::readFile(std::string(PRISM_SOURCE_DIR) + "/modules/lighting.glsl"));
@@ -159,12 +167,14 @@ TEST(GeneratedCatalogue, ModuleTextIsItsFileWithIncludesBlanked) {
     int lines = 0;
     for (std::string want, got; std::getline(file, want); ++lines) {
         ASSERT_TRUE(std::getline(assembled, got)) << "line " << lines + 1;
-        if (want.rfind("#include", 0) == 0 || want.rfind("#pragma once", 0) == 0 || want.rfind("#version", 0) == 0)
+        if (want.rfind("#include", 0) == 0 || want.rfind("#pragma once", 0) == 0)
             EXPECT_EQ(got.find_first_not_of(" \t"), std::string::npos) << want;
         else
             EXPECT_EQ(got, want);
     }
     EXPECT_GT(lines, 10);
+    EXPECT_NE(joinChunks(shaders::moduleInfo(shaders::ModuleId::version).chunks).find("\n#version 330 core\n"),
+              std::string::npos);
 }
 
 // Issue 22, item 4: a misspelled axis or value is an error that names it and lists the

@@ -569,8 +569,8 @@ TEST(ScanModule, BlanksDirectivesKeepsLinesAndReadsDescription) {
     EXPECT_EQ(result.module.path, "m/lighting.glsl");
     EXPECT_EQ(result.module.canonical, "m/lighting.glsl");
     EXPECT_EQ(result.module.description, "Blinn-Phong lighting: diffuse and specular terms.");
-    EXPECT_EQ(result.module.text,
-              "// Blinn-Phong lighting:\n//   diffuse and specular terms.\n\n\n\n"
+    EXPECT_EQ(result.module.text,  // #version stays: composition holds it to the stage's
+              "// Blinn-Phong lighting:\n//   diffuse and specular terms.\n\n#version 330 core\n\n"
               "#ifdef SHADOWS\n\n#endif\n"
               "vec3 light() { return vec3(1.0); }\n");
     EXPECT_EQ(result.module.includes, std::vector<std::string>{"m/math.glsl"});

@@ -58,7 +58,7 @@ void expectMatchesBaseline(const std::string& actual, const std::string& name) {
 
 TEST(GoldenHeader, ProjectCatalogue) {
     ScratchDir dir("golden-catalogue");
-    auto run = runShaderc("-o catalogue.hpp " + catalogueArgs(), dir.str());
+    auto run = runShaderc("-o catalogue.hpp --namespace prism::shaders " + catalogueArgs(), dir.str());
     ASSERT_EQ(run.exitCode, 0) << run.output;
     const auto header = readFile(dir.path() / "catalogue.hpp");
     const auto data = readFile(dir.path() / "catalogue.cpp");
@@ -83,6 +83,23 @@ TEST(GoldenHeader, VariantsGeometryAndCompute) {
     EXPECT_NE(data.find("prism::catalog::Stage::Compute"), std::string::npos);
     expectMatchesBaseline(header, "variants.hpp");
     expectMatchesBaseline(data, "variants.cpp.txt");
+}
+
+// Without --namespace the namespace is the header's name, as prism_add_shaders() names a
+// catalogue after its target (toon_shaders.hpp and toon_shaders): never Prism's prism::shaders.
+TEST(ToolOutputs, NamespaceDefaultsToTheHeadersName) {
+    ScratchDir dir("default-namespace");
+    auto run = runShaderc("-o gen/toon-shaders.hpp " + fixtureArgs(), dir.str());
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    const auto header = readFile(dir.path() / "gen" / "toon-shaders.hpp");
+    EXPECT_NE(header.find("\nnamespace toon_shaders {\n"), std::string::npos) << header.substr(0, 1200);
+    EXPECT_EQ(header.find("prism::shaders"), std::string::npos);
+    EXPECT_NE(readFile(dir.path() / "gen" / "toon-shaders.cpp").find("\nnamespace toon_shaders {\n"),
+              std::string::npos);
+
+    run = runShaderc("-o gen/toon-shaders.hpp --namespace lit::toon " + fixtureArgs(), dir.str());
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(readFile(dir.path() / "gen" / "toon-shaders.hpp").find("\nnamespace lit::toon {\n"), std::string::npos);
 }
 
 // The header's own text (banner and the comments the tool writes) is Prism's: it names

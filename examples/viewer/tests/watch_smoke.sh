@@ -1,6 +1,7 @@
 #!/bin/bash
 # End-to-end check of `viewer --watch` (CTest example.viewer_watch): on a private Xvfb
-# display, the viewer watches a temp copy of modules/ and shader_sources/.
+# display. Without --source-root the viewer watches the tree the catalogue was built from;
+# in the runs that edit, it watches a temp copy of modules/ and shader_sources/.
 #   1. A broken module edit is printed as `path:line:col: error:` and put in the overlay;
 #      undoing the edit reloads the shader and clears the overlay; the last frame (written
 #      on SIGTERM) has no overlay.
@@ -33,10 +34,11 @@ wait_for() {
     done
     fail "no /$1/ within $2 s"
 }
-start_viewer() {  # $1: name of the run
-    log=$work/$1.log
-    DISPLAY=":$(cat "$work/display")" "$viewer" --watch --source-root "$work" --screenshot "$work/$1.png" \
-        >"$log" 2>&1 &
+start_viewer() {  # $1: name of the run; the rest: more options
+    local name=$1
+    shift
+    log=$work/$name.log
+    DISPLAY=":$(cat "$work/display")" "$viewer" --watch "$@" --screenshot "$work/$name.png" >"$log" 2>&1 &
     viewer_pid=$!
     wait_for '^viewer: watching [0-9]+ files' 60
 }
@@ -77,8 +79,16 @@ for _ in $(seq 100); do [ -s "$work/display" ] && break; sleep 0.1; done
 
 overlay_red="110 16 16"  # error_overlay.cpp's strip colour
 
+# 0. Without --source-root the viewer watches the tree its catalogue records (kSourceTree):
+#    the checkout it was built from. Nothing is edited there.
+start_viewer recorded
+watched=$(sed -n 's/^viewer: watching [0-9]* files under //p' "$log")
+[ "$watched" = "$source" ] || fail "--watch watches '$watched', not the catalogue's recorded tree '$source'"
+stop_viewer
+echo "watch_smoke: run 0 OK (--watch alone watches the recorded tree $watched)"
+
 # 1. phong (the first shader shown) includes material.glsl; line 6 is new and broken.
-start_viewer recover
+start_viewer recover --source-root "$work"
 printf 'vec3 broken = ;\n' >>"$material"
 wait_for 'material\.glsl:6:[0-9]+: error: ' 30
 wait_for '^viewer: overlay shows: modules/material\.glsl:6:' 5
@@ -92,7 +102,7 @@ pixel=$(top_left_pixel "$work/recover.png") || fail "cannot read $work/recover.p
 echo "watch_smoke: run 1 OK (error printed and overlaid, fix reloaded, overlay gone: top-left pixel $pixel)"
 
 # 2. The overlay is really drawn in the window.
-start_viewer overlay
+start_viewer overlay --source-root "$work"
 printf 'vec3 broken = ;\n' >>"$material"
 wait_for '^viewer: overlay shows: ' 30
 sleep 0.5  # a few frames with the overlay

@@ -69,8 +69,9 @@ bool isDirective(std::string_view line, std::string_view name) {
            (t.size() == name.size() || !std::isalnum(static_cast<unsigned char>(t[name.size()])));
 }
 
-// The user's source with its #version and #include lines blanked (line numbers kept; the
-// includes join the modules) and its first #version line, as the build step keeps it.
+// A source (yours, or a module's own text) with its #version and #include lines blanked
+// (line numbers kept; the includes join the modules) and its first #version line, which
+// the build step keeps for a stage.
 struct UserText {
     std::string text;
     std::string version;  // "" when the source has none
@@ -104,8 +105,11 @@ std::vector<std::uint32_t> moduleOrder(const catalog::Catalog& catalog, std::spa
     return out;
 }
 
-StageText composeStage(const catalog::Catalog& catalog, const ComposeStage& stage,
-                       std::span<const catalog::Define> defines) {
+namespace {
+
+// composeStage, with the modules placed where `tree` (may be null) says the build step read them.
+StageText composeStageIn(const catalog::Catalog& catalog, const catalog::SourceTree* tree, const ComposeStage& stage,
+                         std::span<const catalog::Define> defines) {
     StageText text;
     text.stage = stage.stage;
     const std::string userName =
@@ -113,7 +117,7 @@ StageText composeStage(const catalog::Catalog& catalog, const ComposeStage& stag
     const UserText user = userText(stage.source);
     std::vector<std::uint32_t> modules = stage.modules;
     if (user.includes)
-        for (std::uint32_t id : detail::includedModules(catalog, userName, stage.source, defines))
+        for (std::uint32_t id : detail::includedModules(catalog, tree, userName, stage.source, defines))
             modules.push_back(id);
     const std::string versionLine = user.version.empty() ? std::string(versionDirectiveOf(catalog)) : user.version;
     // Each file starts at its line 1 (the `#line` rule: prism/catalog/line_directive.hpp).
@@ -137,10 +141,8 @@ StageText composeStage(const catalog::Catalog& catalog, const ComposeStage& stag
     for (std::uint32_t id : moduleOrder(catalog, modules)) {
         const catalog::Module& m = catalog.modules[id];
         src += catalog::lineDirective(1, number, version) + '\n';
-        std::string body = catalog::joinChunks(m.chunks);
-        if (!body.empty() && body.back() != '\n') body += '\n';
-        src += body;
-        text.files.push_back({number, m.path.empty() ? std::string(m.name) : std::string(m.path)});
+        src += userText(catalog::joinChunks(m.chunks)).text;  // its #version blanked: the stage has one, on line 1
+        text.files.push_back({number, detail::modulePathIn(m, tree)});
         ++number;
     }
     src += catalog::lineDirective(1, 0, version) + '\n';
@@ -148,20 +150,34 @@ StageText composeStage(const catalog::Catalog& catalog, const ComposeStage& stag
     return text;
 }
 
-ProgramSources composeSources(const catalog::Catalog& catalog, std::span<const ComposeStage> stages, std::string label,
-                              std::span<const catalog::Define> defines) {
+ProgramSources composeSourcesIn(const catalog::Catalog& catalog, const catalog::SourceTree* tree,
+                                std::span<const ComposeStage> stages, std::string label,
+                                std::span<const catalog::Define> defines) {
     ProgramSources out;
     out.label = std::move(label);
-    for (const auto& s : stages) out.stages.push_back(composeStage(catalog, s, defines));
+    for (const auto& s : stages) out.stages.push_back(composeStageIn(catalog, tree, s, defines));
     for (const auto& a : catalog.contractAttributes) out.attributes.push_back({std::string(a.name), a.location});
     return out;
 }
 
+}  // namespace
+
+StageText composeStage(const catalog::Catalog& catalog, const ComposeStage& stage,
+                       std::span<const catalog::Define> defines) {
+    return composeStageIn(catalog, nullptr, stage, defines);
+}
+
+ProgramSources composeSources(const catalog::Catalog& catalog, std::span<const ComposeStage> stages, std::string label,
+                              std::span<const catalog::Define> defines) {
+    return composeSourcesIn(catalog, nullptr, stages, std::move(label), defines);
+}
+
 namespace {
 
-Program checkedProgram(const catalog::Catalog& catalog, std::span<const ComposeStage> stages, std::string label,
+Program checkedProgram(const catalog::Catalog& catalog, const catalog::SourceTree* tree,
+                       std::span<const ComposeStage> stages, std::string label,
                        std::span<const catalog::Define> defines, std::span<const std::string> contractFiles) {
-    ProgramSources sources = composeSources(catalog, stages, std::move(label), defines);
+    ProgramSources sources = composeSourcesIn(catalog, tree, stages, std::move(label), defines);
     const std::vector<std::string> problems = detail::checkComposedSources(catalog, sources, contractFiles);
     if (!problems.empty()) {
         std::string message = "prism compose: " + sources.label + " failed the build step's checks:";
@@ -175,20 +191,23 @@ Program checkedProgram(const catalog::Catalog& catalog, std::span<const ComposeS
 
 Program composeProgram(const catalog::Catalog& catalog, std::span<const ComposeStage> stages, std::string label,
                        std::span<const catalog::Define> defines) {
-    const std::string generated[] = {"the catalogue's binding contract (prism-shaderc --contract)"};
-    return checkedProgram(catalog, stages, std::move(label), defines, generated);
+    // The contract files as the build step embedded them (relative, like the modules' paths).
+    std::vector<std::string> files;
+    for (const auto& f : catalog.contractFiles) files.emplace_back(f.path);
+    if (files.empty()) files.emplace_back("the catalogue's binding contract (prism-shaderc --contract)");
+    return checkedProgram(catalog, nullptr, stages, std::move(label), defines, files);
 }
 
 Program composeProgram(const catalog::Catalog& catalog, const catalog::SourceTree& tree,
                        std::span<const ComposeStage> stages, std::string label,
                        std::span<const catalog::Define> defines) {
     const std::vector<std::string> files(tree.contractFiles.begin(), tree.contractFiles.end());
-    return checkedProgram(catalog, stages, std::move(label), defines, files);
+    return checkedProgram(catalog, &tree, stages, std::move(label), defines, files);
 }
 
 Program composeProgram(const ModuleLibrary& library, std::span<const ComposeStage> stages, std::string label,
                        std::span<const catalog::Define> defines) {
-    return checkedProgram(library.catalog(), stages, std::move(label), defines, library.contractFiles());
+    return checkedProgram(library.catalog(), nullptr, stages, std::move(label), defines, library.contractFiles());
 }
 
 }  // namespace prism::gl

@@ -1,10 +1,12 @@
-// Resolves a composed stage's #include lines with the build step's resolver (see
-// compose_includes.hpp): the catalogue's modules are served as in-memory files at their
-// paths, under the roots their ids are relative to.
+// Resolves a composed stage's own source with the build step's resolver (see
+// compose_includes.hpp): the catalogue's modules are served as in-memory files where the
+// build step read them (under the source tree when one is given), so includes, cycles and
+// #version conflicts are found, and reported, as prism-shaderc finds them.
 #include "compose_includes.hpp"
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 #include <utility>
 
 #include "compose_check.hpp"
@@ -13,51 +15,78 @@ namespace prism::gl::detail {
 namespace {
 
 namespace sc = prism::shaderc;
+namespace fs = std::filesystem;
 
 // The folder a module's id is relative to: its path less one component per "__" part
 // of the id ("modules/toon/quantize.glsl", "toon__quantize" -> "modules").
 std::string rootOf(const catalog::Module& m) {
-    std::filesystem::path root = std::filesystem::path(std::string(m.path)).lexically_normal();
+    fs::path root = fs::path(std::string(m.path)).lexically_normal();
     std::size_t parts = 1;
     for (std::size_t p = m.name.find("__"); p != std::string_view::npos; p = m.name.find("__", p + 2)) ++parts;
     for (std::size_t i = 0; i < parts && root.has_relative_path(); ++i) root = root.parent_path();
     return root.generic_string();
 }
 
+// The build step's -I and base dir: the tree's, else the roots of the modules' ids.
+sc::ResolveSettings settingsFor(const catalog::Catalog& catalog, const catalog::SourceTree* tree,
+                                std::span<const catalog::Define> defines) {
+    sc::ResolveSettings settings;
+    if (!catalog.versionDirective.empty()) settings.defaultVersion = std::string(catalog.versionDirective);
+    for (const auto& d : defines) settings.defines.emplace_back(std::string(d.name), std::string(d.value));
+    if (tree) {
+        settings.includeDirs.assign(tree->moduleDirs.begin(), tree->moduleDirs.end());
+        settings.baseDir = std::string(tree->baseDir);
+        return settings;
+    }
+    for (const auto& m : catalog.modules) {
+        const std::string root = rootOf(m);
+        if (!m.path.empty() &&
+            std::find(settings.includeDirs.begin(), settings.includeDirs.end(), root) == settings.includeDirs.end())
+            settings.includeDirs.push_back(root);
+    }
+    return settings;
+}
+
 [[noreturn]] void fail(const std::string& sourceName, const std::vector<sc::Message>& messages) {
-    throw compositionError("prism compose: " + sourceName + ": an #include could not be resolved", messages);
+    throw compositionError("prism compose: " + sourceName + ": the build step's resolver rejected it", messages);
 }
 
 }  // namespace
 
-std::vector<std::uint32_t> includedModules(const catalog::Catalog& catalog, const std::string& sourceName,
-                                           std::string_view source, std::span<const catalog::Define> defines) {
+std::string modulePathIn(const catalog::Module& m, const catalog::SourceTree* tree) {
+    const std::string path = m.path.empty() ? std::string(m.name) : std::string(m.path);
+    if (!tree || m.path.empty()) return path;
+    const std::string_view dir =
+        m.searchDir == 0 || m.searchDir > tree->moduleDirs.size() ? tree->baseDir : tree->moduleDirs[m.searchDir - 1];
+    return (fs::path(std::string(dir)) / path).lexically_normal().generic_string();
+}
+
+std::vector<std::uint32_t> includedModules(const catalog::Catalog& catalog, const catalog::SourceTree* tree,
+                                           const std::string& sourceName, std::string_view source,
+                                           std::span<const catalog::Define> defines) {
     std::vector<std::pair<std::string, std::string>> texts{{sourceName, std::string(source)}};
-    sc::ResolveSettings settings;
-    for (const auto& d : defines) settings.defines.emplace_back(std::string(d.name), std::string(d.value));
-    for (const auto& m : catalog.modules) {
-        if (m.path.empty()) continue;
-        texts.emplace_back(std::string(m.path), catalog::joinChunks(m.chunks));
-        const std::string root = rootOf(m);
-        if (std::find(settings.includeDirs.begin(), settings.includeDirs.end(), root) == settings.includeDirs.end())
-            settings.includeDirs.push_back(root);
-    }
+    for (const auto& m : catalog.modules)
+        if (!m.path.empty()) texts.emplace_back(modulePathIn(m, tree), catalog::joinChunks(m.chunks));
     const sc::Files files = sc::Files::memory(texts);
-    const sc::ModuleScan scan = sc::scanModule(sourceName, settings, files);
-    if (!scan.ok || sc::hasError(scan.messages)) fail(sourceName, scan.messages);
+    std::map<std::string, std::uint32_t> idByCanonical;
+    for (std::uint32_t id = 0; id < catalog.modules.size(); ++id)
+        if (!catalog.modules[id].path.empty())
+            idByCanonical.emplace(sc::canonicalPath(modulePathIn(catalog.modules[id], tree), files), id);
+
+    const sc::StageResolution stage = sc::resolveStage(sourceName, settingsFor(catalog, tree, defines), files);
+    if (!stage.ok || sc::hasError(stage.messages)) fail(sourceName, stage.messages);
+    const std::string own = sc::canonicalPath(sourceName, files);
     std::vector<std::uint32_t> ids;
-    for (const auto& include : scan.module.includes) {
-        const std::string canonical = sc::canonicalPath(include, files);
-        std::uint32_t id = 0;
-        while (id < catalog.modules.size() &&
-               sc::canonicalPath(std::string(catalog.modules[id].path), files) != canonical)
-            ++id;
-        if (id == catalog.modules.size())
-            fail(sourceName, {sc::errorAt(include, 0, 0,
+    for (const auto& file : stage.resolved.files) {  // source numbers: the stage, then what it includes
+        const std::string canonical = sc::canonicalPath(file, files);
+        if (canonical == own) continue;
+        const auto found = idByCanonical.find(canonical);
+        if (found == idByCanonical.end())
+            fail(sourceName, {sc::errorAt(file, 0, 0,
                                           "included by " + sourceName +
-                                              " but not a module of the catalogue; list it among "
-                                              "the catalogue's modules")});
-        ids.push_back(id);
+                                              " but not a module of the catalogue; list it among the catalogue's "
+                                              "modules")});
+        ids.push_back(found->second);
     }
     return ids;
 }

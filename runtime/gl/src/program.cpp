@@ -109,6 +109,7 @@ ProgramSources sourcesFromVariant(const catalog::Variant& variant,
     std::vector<UniformDecl> uniforms;
     for (const auto& u : variant.uniforms) uniforms.push_back({std::string(u.name), u.glType, u.arraySize});
     out.uniforms = std::move(uniforms);
+    out.variant = &variant;
     return out;
 }
 
@@ -142,6 +143,7 @@ void Program::warn(const std::string& message) const {
 
 void Program::build(ProgramSources sources) {
     label_ = std::move(sources.label);
+    variant_ = sources.variant;
     if (sources.stages.empty()) throw ShaderBuildError(programName(label_) + " has no stages", "");
 
     std::vector<ShaderObject> shaders;  // deleted when this function returns or throws

@@ -2,6 +2,7 @@
 // unknown names and unfitting types are reported once per (program, name).
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 
 #include <glm/glm.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -218,6 +219,25 @@ const Program::UniformSlot* Program::prepare(std::string_view name, SetterKind k
     use();
     setSinceLink_.emplace(name.substr(0, name.back() == ']' ? name.rfind('[') : name.size()));
     return slot;
+}
+
+bool Program::builtFrom(const catalog::Shader& shader) const {
+    // The variant lies in its shader's variant table: two pointer comparisons, no names.
+    const std::less<const catalog::Variant*> before;
+    return variant_ != nullptr && !before(variant_, shader.variants.data()) &&
+           before(variant_, shader.variants.data() + shader.variants.size());
+}
+
+bool Program::takesHandleOf(const catalog::Shader& shader, std::string_view uniform) {
+    if (variant_ == nullptr || builtFrom(shader)) return true;
+    const std::string handle = std::string(shader.name) + "::" + std::string(uniform);  // no GLSL name has "::"
+    if (reported_.emplace(handle).second) {
+        foreignReports_.push_back(handle);
+        warn("set() of handle " + handle + ", which belongs to shader '" + std::string(shader.name) +
+             "', on a program of another shader; the value is ignored (use this shader's handle, or "
+             "ProgramOf<Shader> to catch it at compile time). Reported once.");
+    }
+    return false;
 }
 
 void Program::set(std::string_view name, float v) {

@@ -45,13 +45,21 @@ std::string driverDiagnostic(const std::string& what) {
 
 }  // namespace
 
-ShaderWatchOptions ShaderWatchOptions::from(const catalog::SourceTree& sources) {
+ShaderWatchOptions ShaderWatchOptions::from(const catalog::SourceTree& sources, const std::string& movedTo) {
     ShaderWatchOptions options;
-    options.sourceRoot = std::string(sources.baseDir);
+    options.sourceRoot = movedTo.empty() ? std::string(sources.baseDir) : movedTo;
     options.moduleDirs.assign(sources.moduleDirs.begin(), sources.moduleDirs.end());
     options.contractFiles.assign(sources.contractFiles.begin(), sources.contractFiles.end());
     for (const auto& d : sources.defines) options.defines.emplace_back(d.name, d.value);
     options.builtInContract = options.contractFiles.empty();
+    if (movedTo.empty()) return options;
+    // A path under the recorded base dir becomes relative to it, which the watcher joins onto sourceRoot.
+    const fs::path base = fs::path(std::string(sources.baseDir)).lexically_normal();
+    for (auto* paths : {&options.moduleDirs, &options.contractFiles})
+        for (auto& path : *paths)
+            if (const auto rel = fs::path(path).lexically_normal().lexically_relative(base);
+                !rel.empty() && *rel.begin() != "..")
+                path = rel.generic_string();
     return options;
 }
 
@@ -193,6 +201,7 @@ void ShaderWatcher::rebuild(const std::string& shader, const std::string& varian
     }
     std::vector<std::string> errors = std::move(outcome.diagnostics);
     if (outcome.sources) {
+        outcome.sources->variant = variant;  // the rebuilt program still knows its shader
         try {
             cache_.reload(shader, variantName, gl::Program(std::move(*outcome.sources)));
             result.reloaded.push_back(request.label);

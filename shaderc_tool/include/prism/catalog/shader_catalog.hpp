@@ -132,7 +132,8 @@ struct Shader {
 };
 
 // A reusable GLSL module (what SHADER_MODULE is in the FUDGE shader thesis §7.1). `chunks` hold the module's own
-// text with its #include, #version and #pragma once lines blanked (line numbers kept);
+// text with its #include and #pragma once lines blanked (line numbers kept; its #version
+// line stays, so run-time composition holds it to the build step's one-version rule);
 // `dependencies` are its direct includes (ModuleId values) in include order. `path` and
 // `searchDir` are as in SourceFile.
 struct Module {
@@ -151,6 +152,10 @@ struct Catalog {
     std::span<const Attribute> contractAttributes;  // everything the runtime supplies
     std::span<const Uniform> contractUniforms;
     std::string_view versionDirective;  // e.g. "#version 330 core"
+    // The --contract files, in order, with paths as in SourceFile (relative to the base dir
+    // or their -I directory; `number` is the position): what run-time contract errors name.
+    // Empty: Prism's built-in contract (no --contract).
+    std::span<const SourceFile> contractFiles = {};
 };
 
 inline std::string joinChunks(std::span<const std::string_view> chunks) {

@@ -17,7 +17,9 @@
 // `contract::Contract`), for runtime code that feeds whichever program it is given.
 // A handle is a name with its GLSL type, its array length and its shader in the type;
 // prism::gl::Program::set(handle, value) and prism::gl::ProgramOf<Tag> (prism/gl/program.hpp)
-// check the value's C++ type and the shader against them at compile time.
+// check the value's C++ type and the shader against them at compile time. A plain Program
+// only learns its shader at run time: shaderOf<Tag>() gives it the catalogue entry of a
+// shader tag, so that set() refuses another shader's handle there.
 //
 // Usage (snippet: examples/snippets/catalog_uniform_handle.cpp):
 //
@@ -28,9 +30,12 @@
 //     static_assert(prism::catalog::glslTypeName(u_lights.type) == "vec3");
 #pragma once
 
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
+
+#include "prism/catalog/shader_catalog.hpp"
 
 namespace prism::catalog {
 
@@ -83,5 +88,19 @@ struct UniformHandle {
     using Shader = ShaderTag;
     std::string_view name;
 };
+
+// A generated header's shader tag: its `id` is that header's ShaderId, whose shaderInfo(ShaderId)
+// (found by argument-dependent lookup, so any catalogue's header works) is the shader's
+// catalogue entry. The contract's tag and hand-made tags are none: they name no shader.
+template <class Tag>
+concept CatalogShaderTag = requires {
+    { shaderInfo(Tag::id) } -> std::same_as<const Shader&>;
+};
+
+// The catalogue entry of the shader tagged `Tag`: an index into the catalogue's shaders.
+template <CatalogShaderTag Tag>
+const Shader& shaderOf() {
+    return shaderInfo(Tag::id);
+}
 
 }  // namespace prism::catalog

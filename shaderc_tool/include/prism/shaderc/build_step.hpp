@@ -106,7 +106,7 @@ struct StageResolution {
 };
 StageResolution resolveStage(const std::string& path, const ResolveSettings& settings, const Files& files);
 
-// A module as the catalogue stores it (includes, #version and #pragma once blanked) and the
+// A module as the catalogue stores it (includes and #pragma once blanked, #version kept) and the
 // files its active #includes name, in order.
 struct ModuleText {
     std::string path, canonical, text, description;

@@ -35,12 +35,15 @@
 // is your code, 1..k the modules; the files table maps them to paths for errors.
 // Modules come in dependency order (dependencies before dependants, otherwise in the
 // order asked for); each module appears once however often it is reached (diamonds).
-// Your source is read as the build step reads a stage (prism/shaderc/build_step.hpp): its
-// first `#version` line replaces the catalogue's, and each active `#include` is found in
-// the build step's search order (your file's folder, then the modules' roots) and must be
-// a module of the catalogue, which then joins `modules`; both lines are blanked (line
-// numbers kept). A missing include throws CompositionError with the build step's
-// `path:line:col: error: ...` diagnostic, as do unknown module ids and dependency cycles.
+// Your source is resolved as the build step resolves a stage (prism/shaderc/build_step.hpp):
+// its first `#version` line replaces the catalogue's, and each active `#include` is found
+// in the build step's search order (your file's folder, then the modules' roots) and must
+// be a module of the catalogue, which then joins `modules`; both lines are blanked (line
+// numbers kept). A missing include, an include cycle, or an included module whose
+// `#version` differs from yours (`#version 330 core conflicts with #version 450 core at
+// ...`) throws CompositionError with the build step's `path:line:col: error: ...`
+// diagnostic, as do unknown module ids and dependency cycles. Given the catalogue's source
+// tree, the modules are named where the build step read them (tree's base dir or -I dir).
 #pragma once
 
 #include <cstdint>

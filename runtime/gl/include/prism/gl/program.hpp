@@ -40,8 +40,11 @@
 //
 // Typed uniforms: set(handle, value) with the handles a generated header declares
 // (prism/catalog/uniform_handle.hpp) checks the name, the value's C++ type and, through
-// ProgramOf<Shader>, the shader at compile time; set(name, value) stays for names known
-// only at run time. unsetUniforms() lists the active uniforms never set since link.
+// ProgramOf<Shader>, the shader at compile time. A plain Program checks the shader at run
+// time: one built from a catalogue variant knows its shader (builtFrom), and a handle of
+// another shader is reported once per handle, like an unknown name, and skipped.
+// set(name, value) stays for names known only at run time. unsetUniforms() lists the
+// active uniforms never set since link.
 #pragma once
 
 #include <cstdint>
@@ -125,6 +128,7 @@ struct ProgramSources {
     std::vector<StageText> stages;                     // in pipeline order
     std::vector<AttributeBinding> attributes;          // bound before linking
     std::optional<std::vector<UniformDecl>> uniforms;  // reflection; nullopt = ask the driver
+    const catalog::Variant* variant = nullptr;         // the catalogue variant these are, if any
 };
 
 // The catalogue variant's stages (chunks joined), contract attributes and uniforms.
@@ -194,11 +198,14 @@ class Program {
     // the uniform's GLSL type (float, glm::vec3, int for a sampler's unit, ...), or for an
     // array a range of it (std::span, std::vector, std::array); anything else is a compile
     // error. A uniform this variant compiled out is a no-op, listed in compiledOutUniforms().
-    // ProgramOf<Shader> also rejects another shader's handles at compile time.
+    // A handle of another shader than builtFrom()'s is skipped and reported once
+    // (foreignHandleReports()); ProgramOf<Shader> rejects it at compile time instead.
     template <catalog::GlslType T, std::size_t N, class Tag, class V>
     void set(const catalog::UniformHandle<T, N, Tag>& uniform, const V& value) {
         using Element = typename detail::UniformValue<T>::type;
         static_assert(!std::is_void_v<Element>, "Program::set(handle, value): no setter for this GLSL type");
+        if constexpr (catalog::CatalogShaderTag<Tag>)
+            if (!takesHandleOf(catalog::shaderOf<Tag>(), uniform.name)) return;
         if constexpr (N == 1) {
             static_assert(std::is_same_v<V, Element>,
                           "Program::set(handle, value): the value's C++ type does not match the uniform's GLSL type");
@@ -221,6 +228,13 @@ class Program {
     // Handles set() was given whose uniform this variant does not have, each once, in order.
     const std::vector<std::string>& compiledOutUniforms() const { return compiledOut_; }
 
+    // Whether this program runs a variant of `shader` of a generated catalogue. Programs
+    // composed or built from raw sources know no shader: false for every shader, and
+    // set(handle) takes any shader's handles (their names are still checked).
+    bool builtFrom(const catalog::Shader& shader) const;
+    // Handles of another shader set() was given, as "<shader>::<uniform>", each once, in order.
+    const std::vector<std::string>& foreignHandleReports() const { return foreignReports_; }
+
     // Replaces where this program's warnings go (empty function: the default handler).
     void setWarningHandler(WarningHandler handler);
     // Names set() was called with that the program does not have, each once, in order.
@@ -242,9 +256,10 @@ class Program {
     const UniformSlot* slotFor(std::string_view name);
     const UniformSlot* prepare(std::string_view name, SetterKind kind, std::size_t count);
     void warn(const std::string& message) const;
-    bool compiledIn(std::string_view name);                      // false: recorded in compiledOut_
-    std::vector<std::string> uniformNames() const;               // declared_, for "did you mean"
-    void startUnsetCheck(const std::vector<StageText>& stages);  // at link: initialisers, the switch
+    bool compiledIn(std::string_view name);                                       // false: recorded in compiledOut_
+    bool takesHandleOf(const catalog::Shader& shader, std::string_view uniform);  // false: reported once
+    std::vector<std::string> uniformNames() const;                                // declared_, for "did you mean"
+    void startUnsetCheck(const std::vector<StageText>& stages);                   // at link: initialisers, the switch
 
     struct DeclaredUniform {
         std::string name;  // without "[0]"
@@ -263,6 +278,8 @@ class Program {
     std::set<std::string, std::less<>> initialised_;  // declared with an initialiser in GLSL
     std::set<std::string, std::less<>> setSinceLink_;
     std::vector<std::string> compiledOut_;
+    std::vector<std::string> foreignReports_;
+    const catalog::Variant* variant_ = nullptr;  // what it was built from; null: no catalogue shader
     bool checkUnset_ = false;
     mutable std::set<std::string, std::less<>> unsetReported_;
 };

@@ -72,8 +72,10 @@ struct ShaderWatchOptions {
 
     // Everything prism_add_shaders() recorded for a catalogue (its generated
     // <header>_sources.hpp): base dir, -I dirs, contract files (none: the built-in
-    // contract) and defines.
-    static ShaderWatchOptions from(const catalog::SourceTree& sources);
+    // contract) and defines. `movedTo`, when given, is a copy of the recorded base dir (a
+    // checkout elsewhere, a scratch copy to edit): the folders and files recorded under the
+    // base dir are watched under it instead; those outside it (installed modules) stay.
+    static ShaderWatchOptions from(const catalog::SourceTree& sources, const std::string& movedTo = {});
 };
 
 struct WatchPollResult {
