@@ -58,7 +58,8 @@ Contract internalOf(const BindingContract& c) {
     Contract out;
     out.files = c.files;
     out.builtIn = c.builtIn;
-    for (const auto& a : c.attributes) out.attributes.push_back({a.name, a.type, a.location});
+    for (const auto& a : c.attributes)
+        out.attributes.push_back({a.name, a.type, a.location, {}});  // run time: no JSON entry to name
     for (const auto& u : c.uniforms) out.uniforms.push_back({u.name, u.type, u.array});
     return out;
 }

@@ -191,7 +191,7 @@ void checkAttribute(const Contract& c, std::size_t s, const InterfaceVariable& v
                              ") but the binding contract puts it at location " + std::to_string(it->location) +
                              "; drop the layout qualifier or use location " + std::to_string(it->location));
         d.notes.push_back(
-            makeError(c.builtIn ? contractFiles(c) : it->entry, 0, 0,
+            makeError(c.builtIn || it->entry.empty() ? contractFiles(c) : it->entry, 0, 0,
                       "the contract's entry: '" + it->name + "' at location " + std::to_string(it->location)));
         d.notes.back().severity = Severity::Note;
         out.push_back(std::move(d));
