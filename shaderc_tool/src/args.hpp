@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "diagnostics.hpp"
+#include "spirv_codegen.hpp"
 
 namespace prism::shaderc {
 
@@ -23,6 +24,10 @@ struct Options {
     std::string baseDir;                                       // --base-dir: embedded paths are relative to it
     std::string cacheDir;  // --cache-dir: validation results cache ("" = default, "none" = off)
     std::string nameSpace = "prism::shaders";
+    std::string client = "opengl";     // --client opengl|vulkan
+    std::string targetEnv;             // --target-env (vulkan client only; "" = vulkan1.2)
+    std::optional<SpirvEnv> spirvEnv;  // the vulkan client's environment; empty for opengl
+    std::string emitSpirvDir;          // --emit-spirv: <program>[.<variant>].<stage>.spv (vulkan client)
     int glslVersion = 330;
     std::string glslProfile = "core";
     ErrorFormat errorFormat = ErrorFormat::Gcc;

@@ -324,6 +324,7 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
     rc.data.nameSpace = o.nameSpace;
     rc.data.contract = contract;
     rc.data.versionDirective = versionDirective(o.glslVersion, o.glslProfile);
+    rc.data.spirvEnv = o.spirvEnv;
     rc.filesRead = contract.files;
     auto filters = parseVariantFilters(o.variantFilters);
     sink.reportAll(filters.diagnostics);
@@ -332,7 +333,7 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
     if (o.printStats)
         if (const auto version = parseVersionDirective(rc.data.versionDirective))
             rc.builtInsMs = buildGlslangBuiltIns(*version);
-    const ResolveOptions base{o.includeDirs, o.defines, rc.data.versionDirective, o.baseDir};
+    const ResolveOptions base{o.includeDirs, o.defines, rc.data.versionDirective, o.baseDir, o.spirvEnv};
     const auto baseRuns = resolveBaseRuns(o, shaders, base, reader);
     for (const auto& runs : baseRuns) rc.preprocessorRuns += runs.size();
     IncludedFiles included;
@@ -361,7 +362,8 @@ std::string fingerprint(const ResolvedCatalog& rc) {
     mix(format::kLayoutVersion);
     mix(d.nameSpace);
     mix(d.versionDirective);
-    mix(d.sourcesBlock);  // so a header with a stale record is rewritten
+    if (d.spirvEnv) mix(spirvEnvName(*d.spirvEnv));  // OpenGL catalogues: as before
+    mix(d.sourcesBlock);                             // so a header with a stale record is rewritten
     for (const auto& s : d.shaders) {
         mix(s.name);
         for (const auto& a : s.axes) {

@@ -38,6 +38,7 @@
 #include "directive_lines.hpp"
 #include "include_search.hpp"
 #include "source_reader.hpp"
+#include "spirv_codegen.hpp"
 
 namespace prism::shaderc {
 
@@ -47,7 +48,8 @@ struct ResolveOptions {
     std::vector<std::string> includeDirs;
     std::vector<std::pair<std::string, std::string>> defines;  // NAME, VALUE ("" -> defined empty)
     std::string defaultVersion = "#version 330 core";
-    std::string baseDir;  // where "/x" includes are also looked up; "" = nowhere else
+    std::string baseDir;                    // where "/x" includes are also looked up; "" = nowhere else
+    std::optional<SpirvEnv> spirvEnv = {};  // the Vulkan client's: glslang then predefines VULKAN
 };
 
 // One file as glslang entered it.

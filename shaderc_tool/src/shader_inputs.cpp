@@ -11,12 +11,18 @@ namespace fs = std::filesystem;
 namespace {
 
 std::optional<catalog::Stage> stageOf(const fs::path& p) {
-    auto ext = p.extension().string();
-    if (ext == ".vert") return catalog::Stage::Vertex;
-    if (ext == ".geom") return catalog::Stage::Geometry;
-    if (ext == ".frag") return catalog::Stage::Fragment;
-    if (ext == ".comp") return catalog::Stage::Compute;
-    return std::nullopt;
+    return stageOfPath(p);
+}
+
+// Pipeline order: a task stage runs before its mesh stage, both before the fragment stage.
+int pipelineRank(catalog::Stage s) {
+    if (s == catalog::Stage::Task) return -2;
+    if (s == catalog::Stage::Mesh) return -1;
+    return static_cast<int>(s);
+}
+
+bool isVulkanOnly(catalog::Stage s) {
+    return s > catalog::Stage::Compute;
 }
 
 bool isIdentifier(const std::string& s) {
@@ -34,6 +40,28 @@ void checkCompleteness(const ShaderInput& s, std::vector<Diagnostic>& out) {
         return std::any_of(s.stages.begin(), s.stages.end(), [&](const StageFile& f) { return f.stage == st; });
     };
     const auto& any = s.stages.front().path;
+    if (std::any_of(s.stages.begin(), s.stages.end(), [](const StageFile& f) { return isRayTracingStage(f.stage); })) {
+        if (!std::all_of(s.stages.begin(), s.stages.end(),
+                         [](const StageFile& f) { return isRayTracingStage(f.stage); }))
+            out.push_back(
+                makeError(any, 0, 0, "shader '" + s.name + "' mixes ray-tracing stages with other stages; rename one"));
+        return;
+    }
+    if (has(catalog::Stage::Mesh) || has(catalog::Stage::Task)) {
+        if (has(catalog::Stage::Vertex) || has(catalog::Stage::Geometry) || has(catalog::Stage::Compute))
+            out.push_back(makeError(any, 0, 0,
+                                    "shader '" + s.name +
+                                        "' mixes a mesh pipeline with vertex, geometry or compute "
+                                        "stages; rename one of them"));
+        if (!has(catalog::Stage::Mesh))
+            out.push_back(makeError(
+                any, 0, 0,
+                "shader '" + s.name + "' has a task stage but no mesh stage: expected " + siblingPath(any, ".mesh")));
+        if (!has(catalog::Stage::Fragment))
+            out.push_back(makeError(
+                any, 0, 0, "shader '" + s.name + "' has no fragment stage: expected " + siblingPath(any, ".frag")));
+        return;
+    }
     if (has(catalog::Stage::Compute)) {
         if (s.stages.size() > 1)
             out.push_back(makeError(any, 0, 0,
@@ -52,7 +80,16 @@ void checkCompleteness(const ShaderInput& s, std::vector<Diagnostic>& out) {
 
 }  // namespace
 
-ShaderInputsResult collectShaderInputs(const std::vector<std::string>& inputs) {
+std::optional<catalog::Stage> stageOfPath(const fs::path& p) {
+    const auto ext = p.extension().string();
+    for (int k = 0; k <= static_cast<int>(catalog::Stage::Callable); ++k) {
+        const auto stage = static_cast<catalog::Stage>(k);
+        if (ext.size() > 1 && ext.substr(1) == catalog::stageName(stage)) return stage;
+    }
+    return std::nullopt;
+}
+
+ShaderInputsResult collectShaderInputs(const std::vector<std::string>& inputs, bool vulkanClient) {
     ShaderInputsResult result;
     std::vector<std::string> files;
     for (const auto& in : inputs) {
@@ -68,7 +105,9 @@ ShaderInputsResult collectShaderInputs(const std::vector<std::string>& inputs) {
             result.ioError = true;
         } else if (!stageOf(in)) {
             result.diagnostics.push_back(
-                makeError(in, 0, 0, "unknown stage extension; use .vert, .geom, .frag or .comp"));
+                makeError(in, 0, 0,
+                          "unknown stage extension; use .vert, .geom, .frag or .comp (with --client vulkan also "
+                          ".mesh, .task, .rgen, .rint, .rahit, .rchit, .rmiss or .rcall)"));
         } else {
             files.push_back(in);
         }
@@ -78,6 +117,13 @@ ShaderInputsResult collectShaderInputs(const std::vector<std::string>& inputs) {
     for (const auto& f : files) {
         auto name = fs::path(f).stem().string();
         auto stage = *stageOf(f);
+        if (isVulkanOnly(stage) && !vulkanClient) {
+            result.diagnostics.push_back(makeError(f, 0, 0,
+                                                   "a ." + std::string(catalog::stageName(stage)) +
+                                                       " stage is Vulkan GLSL: build it with --client vulkan "
+                                                       "(prism_add_shaders(... CLIENT vulkan))"));
+            continue;
+        }
         auto& shader = byName[name];
         shader.name = name;
         auto dup = std::find_if(shader.stages.begin(), shader.stages.end(),
@@ -94,7 +140,7 @@ ShaderInputsResult collectShaderInputs(const std::vector<std::string>& inputs) {
     }
     for (auto& [name, shader] : byName) {
         std::sort(shader.stages.begin(), shader.stages.end(),
-                  [](const StageFile& a, const StageFile& b) { return a.stage < b.stage; });
+                  [](const StageFile& a, const StageFile& b) { return pipelineRank(a.stage) < pipelineRank(b.stage); });
         if (!isIdentifier(name)) {
             result.diagnostics.push_back(makeError(shader.stages.front().path, 0, 0,
                                                    "shader name '" + name +

@@ -9,6 +9,7 @@
 #include "code_signature.hpp"
 #include "generated_format.hpp"
 #include "prism/hash/content_hash.hpp"
+#include "shader_inputs.hpp"
 #include "shown_path.hpp"
 
 namespace prism::shaderc {
@@ -33,8 +34,7 @@ bool isModule(const fs::path& p) {
     return p.extension() == ".glsl";
 }
 bool isStage(const fs::path& p) {
-    const auto e = p.extension();
-    return e == ".vert" || e == ".geom" || e == ".frag" || e == ".comp";
+    return stageOfPath(p).has_value();
 }
 
 std::string fingerprintOf(const Options& o, const std::vector<std::string>& embedded, const SourceReader& reader,
@@ -48,6 +48,7 @@ std::string fingerprintOf(const Options& o, const std::vector<std::string>& embe
     const auto shown = [&](const std::string& dir) { return recordedName(dir, o); };
     h.add("ns " + o.nameSpace);
     h.add("glsl " + std::to_string(o.glslVersion) + " " + o.glslProfile);
+    if (o.spirvEnv) h.add("client vulkan " + std::string(spirvEnvName(*o.spirvEnv)));
     h.add("out " + fs::path(o.output).filename().string());
     for (const auto& [name, value] : o.defines) h.add("-D " + name + "=" + value);
     for (const auto& filter : o.variantFilters) h.add("--variant " + filter);
