@@ -235,3 +235,23 @@ TEST(VulkanClient, SwitchingTheClientRebuildsAndTheCacheKeepsSpirv) {
 }
 
 }  // namespace
+
+namespace {
+
+// The same bytes whatever -j, and no path of this machine in them (no SPIR-V debug information).
+TEST(VulkanClient, OutputsAreDeterministicAndHermetic) {
+    ScratchDir dir("vulkan-determinism");
+    const std::string args = " --client vulkan --cache-dir none -o out.hpp --base-dir " + kCases.string() + " " +
+                             modulesArg() + " " + (kCases / "reflection").string() + " " +
+                             (kCases / "extensions").string() + " " + (kCases / "mesh").string();
+    fs::create_directories(dir.path() / "a");
+    fs::create_directories(dir.path() / "b");
+    ASSERT_EQ(runShaderc("-j 1" + args, (dir.path() / "a").string()).exitCode, 0);
+    ASSERT_EQ(runShaderc("-j 4" + args, (dir.path() / "b").string()).exitCode, 0);
+    const auto one = readFile(dir.path() / "a/out.hpp") + readFile(dir.path() / "a/out.cpp");
+    EXPECT_EQ(one, readFile(dir.path() / "b/out.hpp") + readFile(dir.path() / "b/out.cpp"));
+    EXPECT_EQ(one.find(PRISM_SOURCE_DIR), std::string::npos);
+    EXPECT_EQ(one.find(dir.str()), std::string::npos);
+}
+
+}  // namespace
