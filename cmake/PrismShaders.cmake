@@ -12,7 +12,9 @@
 #     [CONTRACT <json files...>]        # binding contract(s)
 #     [DEFINES NAME[=VALUE]...]         # -D for every stage
 #     [VARIANTS SHADER:NAME=VALUE,...]  # emit only these variants of those shaders
-#     [GLSL_VERSION <n>])               # default 330
+#     [GLSL_VERSION <n>]                # default 330
+#     [CLIENT opengl|vulkan]            # default opengl; vulkan stores SPIR-V (docs/shaderc.md, "Clients")
+#     [TARGET_ENV vulkan1.x])           # CLIENT vulkan only: vulkan1.0 ... vulkan1.3, default vulkan1.2
 #
 #   target_link_libraries(app PRIVATE <target>)   # then #include "<name.hpp>"
 #
@@ -114,7 +116,7 @@ function(_prism_write_source_tree file ns base_dir module_dirs contracts defines
 endfunction()
 
 function(prism_add_shaders target)
-  cmake_parse_arguments(PARSE_ARGV 1 PAS "" "HEADER;NAMESPACE;GLSL_VERSION"
+  cmake_parse_arguments(PARSE_ARGV 1 PAS "" "HEADER;NAMESPACE;GLSL_VERSION;CLIENT;TARGET_ENV"
                         "SOURCES;PROGRAMS;MODULE_DIRS;DEFINES;CONTRACT;VARIANTS")
   if(PAS_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "prism_add_shaders(${target}): unknown arguments: ${PAS_UNPARSED_ARGUMENTS}")
@@ -197,6 +199,18 @@ function(prism_add_shaders target)
   endforeach()
   if(PAS_GLSL_VERSION)
     list(APPEND args --glsl-version ${PAS_GLSL_VERSION})
+  endif()
+  if(PAS_CLIENT)
+    if(NOT PAS_CLIENT MATCHES "^(opengl|vulkan)$")
+      message(FATAL_ERROR "prism_add_shaders(${target}): CLIENT ${PAS_CLIENT} is none of opengl, vulkan")
+    endif()
+    list(APPEND args --client ${PAS_CLIENT})
+  endif()
+  if(PAS_TARGET_ENV)
+    if(NOT PAS_CLIENT STREQUAL "vulkan")
+      message(FATAL_ERROR "prism_add_shaders(${target}): TARGET_ENV ${PAS_TARGET_ENV} needs CLIENT vulkan")
+    endif()
+    list(APPEND args --target-env ${PAS_TARGET_ENV})
   endif()
 
   _prism_write_source_tree(${source_tree} ${PAS_NAMESPACE} ${PROJECT_SOURCE_DIR} "${module_dirs}" "${contracts}"

@@ -6,7 +6,9 @@ set -euo pipefail
 PACKAGES=(
   build-essential cmake ninja-build pkg-config python3
   glslang-dev glslang-tools
-  glslc  # the reference of tests/shaderc/test_reference_corpus.cpp ("Coming from glslc" in docs/shaderc.md)
+  # glslc: the reference of tests/shaderc/test_reference_corpus.cpp ("Coming from glslc" in docs/shaderc.md) and of
+  # the Vulkan client's tests; the Vulkan client links SPIRV-Tools, whose spirv-val checks its output
+  glslc spirv-tools spirv-cross libspirv-cross-c-shared-dev
   libglfw3-dev libglm-dev libimgui-dev
   libosmesa6-dev libegl1-mesa-dev libgl1-mesa-dri libgles-dev
   libpng-dev python3-glad

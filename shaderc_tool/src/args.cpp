@@ -54,8 +54,14 @@ std::string conflictOf(const Options& o, const CLI::App& app) {
     if (app.count("--namespace") > 0 && o.output.empty())
         return "--namespace only names the generated header's namespace, and no header is written: give -o "
                "<header> or drop --namespace";
-    if (!o.checkOnly && o.output.empty() && o.emitGlslDir.empty())
-        return "nothing to write: give -o <header>, --emit-glsl <dir> or --check";
+    if (o.client != "vulkan" && !o.targetEnv.empty())
+        return "--target-env " + o.targetEnv + " picks a Vulkan version, and --client is " + o.client +
+               "; add --client vulkan or drop --target-env";
+    if (o.client != "vulkan" && !o.emitSpirvDir.empty())
+        return "--emit-spirv writes the vulkan client's SPIR-V, and --client is " + o.client +
+               "; add --client vulkan or drop --emit-spirv";
+    if (!o.checkOnly && o.output.empty() && o.emitGlslDir.empty() && o.emitSpirvDir.empty())
+        return "nothing to write: give -o <header>, --emit-glsl <dir>, --emit-spirv <dir> or --check";
     if (!o.checkOnly && !o.output.empty() && o.emitGlslDir.empty() && dataPathFor(o.output) == o.output)
         return "-o " + o.output + ": the data file would overwrite the header; name the header .hpp or .h";
     return {};
@@ -79,6 +85,13 @@ void addOptions(CLI::App& app, Options& o, std::vector<std::string>& defines, st
     app.add_option("--stamp", o.stamp, "file touched on every successful run (build-system output)");
     app.add_option("--emit-glsl", o.emitGlslDir,
                    "also write each flattened stage as DIR/<shader>[.<variant>].<stage> (with --check too)");
+    app.add_option("--client", o.client, "GLSL for opengl (driver GLSL, the default) or vulkan (SPIR-V, as glslc)")
+        ->check(CLI::IsMember({"opengl", "vulkan"}))
+        ->capture_default_str();
+    app.add_option("--target-env", o.targetEnv,
+                   "with --client vulkan: vulkan1.0, vulkan1.1, vulkan1.2 (default), vulkan1.3");
+    app.add_option("--emit-spirv", o.emitSpirvDir,
+                   "with --client vulkan: also write each stage's SPIR-V as DIR/<shader>[.<variant>].<stage>.spv");
     app.add_flag("--check", o.checkOnly, "validate only: no header (--emit-glsl, --depfile, --stamp still written)");
     app.add_option("-D", defines, "define a macro for every stage: NAME[=VALUE]")->allow_extra_args(false);
     app.add_option("--glsl-version", o.glslVersion, "default #version when a shader has none")->capture_default_str();
@@ -148,6 +161,12 @@ ArgsResult parseArgs(int argc, char** argv) {
     if (o.glslVersion < 150) o.glslProfile.clear();
     if (auto conflict = conflictOf(o, app); !conflict.empty()) return usageError(conflict);
     if (o.nameSpace.empty() && !o.output.empty()) o.nameSpace = defaultNamespace(o.output);
+    if (o.client == "vulkan") {
+        o.spirvEnv = parseSpirvEnv(o.targetEnv.empty() ? "vulkan1.2" : o.targetEnv);
+        if (!o.spirvEnv || o.targetEnv.starts_with("opengl"))
+            return usageError("--target-env " + o.targetEnv +
+                              ": not a Vulkan version; use vulkan1.0, vulkan1.1, vulkan1.2 or vulkan1.3");
+    }
     if (o.baseDir.empty()) o.baseDir = std::filesystem::current_path().string();
     o.baseDir = std::filesystem::absolute(o.baseDir).lexically_normal().string();
     return {std::move(o), 0};

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "diagnostics.hpp"
+#include "spirv_codegen.hpp"
 
 namespace prism::shaderc {
 
@@ -22,8 +23,12 @@ struct Options {
     std::string stamp;                                         // --stamp: touched on every successful run
     std::string emitGlslDir;                                   // --emit-glsl
     std::string baseDir;                                       // --base-dir: embedded paths are relative to it
-    std::string cacheDir;   // --cache-dir: validation results cache ("" = default, "none" = off)
-    std::string nameSpace;  // --namespace; default: the header's file name (defaultNamespace)
+    std::string cacheDir;              // --cache-dir: validation results cache ("" = default, "none" = off)
+    std::string nameSpace;             // --namespace; default: the header's file name (defaultNamespace)
+    std::string client = "opengl";     // --client opengl|vulkan
+    std::string targetEnv;             // --target-env (vulkan client only; "" = vulkan1.2)
+    std::optional<SpirvEnv> spirvEnv;  // the vulkan client's environment; empty for opengl
+    std::string emitSpirvDir;          // --emit-spirv: <program>[.<variant>].<stage>.spv (vulkan client)
     int glslVersion = 330;
     std::string glslProfile = "core";
     ErrorFormat errorFormat = ErrorFormat::Gcc;

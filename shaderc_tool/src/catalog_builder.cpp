@@ -336,6 +336,7 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
     rc.data.contract = contract;
     for (const auto& file : contract.files) rc.data.contractFiles.push_back(embeddedLocation(file, o));
     rc.data.versionDirective = versionDirective(o.glslVersion, o.glslProfile);
+    rc.data.spirvEnv = o.spirvEnv;
     rc.filesRead = contract.files;
     auto filters = parseVariantFilters(o.variantFilters);
     sink.reportAll(filters.diagnostics);
@@ -344,7 +345,7 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
     if (o.printStats)
         if (const auto version = parseVersionDirective(rc.data.versionDirective))
             rc.builtInsMs = buildGlslangBuiltIns(*version);
-    const ResolveOptions base{o.includeDirs, o.defines, rc.data.versionDirective, o.baseDir};
+    const ResolveOptions base{o.includeDirs, o.defines, rc.data.versionDirective, o.baseDir, o.spirvEnv};
     const auto baseRuns = resolveBaseRuns(o, shaders, base, reader);
     for (const auto& runs : baseRuns) rc.preprocessorRuns += runs.size();
     IncludedFiles included;
@@ -374,7 +375,8 @@ std::string fingerprint(const ResolvedCatalog& rc) {
     mix(d.nameSpace);
     mix(d.versionDirective);
     for (const auto& f : d.contractFiles) mix(f.path + '\0' + std::to_string(f.searchDir));
-    mix(d.sourcesBlock);  // so a header with a stale record is rewritten
+    if (d.spirvEnv) mix(spirvEnvName(*d.spirvEnv));  // OpenGL catalogues: as before
+    mix(d.sourcesBlock);                             // so a header with a stale record is rewritten
     for (const auto& s : d.shaders) {
         mix(s.name);
         for (const auto& a : s.axes) {

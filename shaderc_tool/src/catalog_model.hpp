@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -11,6 +12,7 @@
 
 #include "contract.hpp"
 #include "reflection.hpp"
+#include "spirv_codegen.hpp"
 #include "shown_path.hpp"
 #include "variants.hpp"
 
@@ -51,6 +53,7 @@ struct CatalogData {
     std::string fingerprint;   // of every input; lets an unchanged run skip validation
     std::string sourcesBlock;  // closing comment: the files read and their fingerprint (source_fingerprint.hpp)
     std::string versionDirective;
+    std::optional<SpirvEnv> spirvEnv;    // the Vulkan client's environment (SPIR-V stored); empty: OpenGL
     std::vector<CatalogShader> shaders;  // sorted by name
     std::vector<CatalogModule> modules;  // sorted by identifier
     Contract contract;

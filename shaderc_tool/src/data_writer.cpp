@@ -4,6 +4,7 @@
 #include "data_writer.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <sstream>
@@ -24,8 +25,37 @@ std::string_view stageEnum(catalog::Stage s) {
         case catalog::Stage::Compute: return "Compute";
         case catalog::Stage::TessControl: return "TessControl";
         case catalog::Stage::TessEvaluation: return "TessEvaluation";
+        case catalog::Stage::Mesh: return "Mesh";
+        case catalog::Stage::Task: return "Task";
+        case catalog::Stage::RayGen: return "RayGen";
+        case catalog::Stage::Intersect: return "Intersect";
+        case catalog::Stage::AnyHit: return "AnyHit";
+        case catalog::Stage::ClosestHit: return "ClosestHit";
+        case catalog::Stage::Miss: return "Miss";
+        case catalog::Stage::Callable: return "Callable";
     }
     return "Vertex";
+}
+
+// SPIR-V words as array items, eight hexadecimal words a line.
+std::vector<std::string> wordLines(const std::vector<std::uint32_t>& words) {
+    std::vector<std::string> lines;
+    for (std::size_t i = 0; i < words.size(); i += 8) {
+        std::string line;
+        for (std::size_t k = i; k < std::min(words.size(), i + 8); ++k) {
+            char hex[16];
+            std::snprintf(hex, sizeof hex, "0x%08x", words[k]);
+            line += (k == i ? "" : ", ") + std::string(hex);
+        }
+        lines.push_back(std::move(line));
+    }
+    return lines;
+}
+
+const std::vector<std::uint32_t>* spirvOf(const ProgramReflection& r, catalog::Stage stage) {
+    for (const auto& s : r.spirv)
+        if (s.stage == stage) return &s.words;
+    return nullptr;
 }
 
 // The trailing searchDir of a SourceFile or Module row, left out when 0 (the default): files
@@ -199,7 +229,8 @@ class DataWriter {
             << tablesOut_.str() << "\n}  // namespace\n\n"
             << "constinit const prism::catalog::Catalog kCatalog{" << shaders << ", " << modules << ", "
             << contractAttributes << ", " << contractUniforms << ", " << quotedLiteral(c_.versionDirective) << ", "
-            << contractFiles << "};\n"
+            << contractFiles << (c_.spirvEnv ? ", " + quotedLiteral(std::string(spirvEnvName(*c_.spirvEnv))) : "")
+            << "};\n"
             << "\n}  // namespace " << c_.nameSpace << "\n";
         if (!c_.sourcesBlock.empty()) out << "\n" << c_.sourcesBlock;
         return out.str();
@@ -221,8 +252,11 @@ class DataWriter {
                 files.push_back("{" + std::to_string(n) + ", " + quotedLiteral(st.files[n].path) +
                                 searchDirField(st.files[n].searchDir) + "}");
             auto fileArray = arrays_.array("prism::catalog::SourceFile", stageId + "_files", files);
+            std::string spirv;  // the Vulkan client's words, each distinct module once
+            if (const auto* words = spirvOf(v.reflection, st.stage))
+                spirv = ", " + arrays_.array("std::uint32_t", stageId + "_spirv", wordLines(*words), false);
             stages.push_back("{prism::catalog::Stage::" + std::string(stageEnum(st.stage)) + ", " + chunks + ", " +
-                             fileArray + "}");
+                             fileArray + spirv + "}");
         }
         auto stageArray = arrays_.array("prism::catalog::StageSource", prefix + "_stages", stages, false);
         std::vector<std::string> defines, attributes, uniforms;
@@ -238,7 +272,26 @@ class DataWriter {
         auto attributeArray = arrays_.array("prism::catalog::Attribute", prefix + "_attributes", attributes);
         auto uniformArray = arrays_.array("prism::catalog::Uniform", prefix + "_uniforms", uniforms);
         return "{" + quotedLiteral(v.name) + ", " + defineArray + ", " + stageArray + ", " + attributeArray + ", " +
-               uniformArray + "}";
+               uniformArray + (c_.spirvEnv ? vulkanLayout(v.reflection, prefix) : "") + "}";
+    }
+
+    // A Vulkan-client variant's descriptors, push constants and specialisation constants.
+    std::string vulkanLayout(const ProgramReflection& r, const std::string& prefix) {
+        std::vector<std::string> resources, push, spec;
+        for (const auto& x : r.resources)
+            resources.push_back("{" + quotedLiteral(x.name) + ", " + std::to_string(x.set) + ", " +
+                                std::to_string(x.binding) +
+                                ", prism::catalog::ResourceKind::" + std::string(catalog::resourceKindName(x.kind)) +
+                                ", " + std::to_string(x.size) + ", " + std::to_string(x.arraySize) + "}");
+        for (const auto& p : r.pushConstants)
+            push.push_back("{" + quotedLiteral(p.name) + ", " + hexLiteral(p.glType) + ", " + std::to_string(p.offset) +
+                           ", " + std::to_string(p.size) + "}");
+        for (const auto& c : r.specConstants)
+            spec.push_back("{" + quotedLiteral(c.name) + ", " + std::to_string(c.id) + ", " + hexLiteral(c.glType) +
+                           ", " + hexLiteral(c.defaultBits) + "}");
+        return ", " + arrays_.array("prism::catalog::Resource", prefix + "_resources", resources, false) + ", " +
+               arrays_.array("prism::catalog::PushConstant", prefix + "_push_constants", push, false) + ", " +
+               arrays_.array("prism::catalog::SpecConstant", prefix + "_spec_constants", spec, false);
     }
 
     std::string writeShaders() {

@@ -16,7 +16,9 @@
 #include <regex>
 #include <sstream>
 
+#include "glslang_stage.hpp"
 #include "preprocessor_limits.hpp"
+#include "shader_inputs.hpp"
 
 namespace prism::shaderc {
 namespace {
@@ -27,10 +29,8 @@ void initializeGlslangOnce() {
 }
 
 EShLanguage languageOf(const std::string& path) {
-    if (path.ends_with(".vert")) return EShLangVertex;
-    if (path.ends_with(".geom")) return EShLangGeometry;
-    if (path.ends_with(".comp")) return EShLangCompute;
-    return EShLangFragment;  // fragment stages and modules
+    const auto stage = stageOfPath(path);
+    return stage ? glslangStage(*stage) : EShLangFragment;  // modules: as fragment code
 }
 
 EProfile profileOf(const GlslVersion& version) {
@@ -471,9 +471,11 @@ PreprocessRun preprocessWithGlslang(const std::string& path, const ResolveOption
     const char* names[] = {"0"};
     shader.setStringsWithLengthsAndNames(strings, nullptr, names, 1);
     shader.setPreamble(preamble.c_str());
+    if (options.spirvEnv) configureShader(shader, languageOf(path), *options.spirvEnv);
     std::string output;
-    const bool ok = shader.preprocess(GetDefaultResources(), version.number, profileOf(version), true, false,
-                                      EShMsgDefault, &output, includer);
+    const bool ok =
+        shader.preprocess(GetDefaultResources(), version.number, profileOf(version), true, false,
+                          options.spirvEnv ? spirvMessages(*options.spirvEnv) : EShMsgDefault, &output, includer);
     if (!ok) addGlslangErrors(shader.getInfoLog(), includer, run);
     run.ok = std::none_of(run.diagnostics.begin(), run.diagnostics.end(),
                           [](const Diagnostic& d) { return d.severity == Severity::Error; });

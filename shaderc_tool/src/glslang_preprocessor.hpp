@@ -38,6 +38,7 @@
 #include "directive_lines.hpp"
 #include "include_search.hpp"
 #include "source_reader.hpp"
+#include "spirv_codegen.hpp"
 
 namespace prism::shaderc {
 
@@ -54,6 +55,7 @@ struct ResolveOptions {
     // scanModule's "module has no leading comment" warning; the catalogue turns it off for
     // libraries found through -I outside --base-dir (--warn-undocumented-modules).
     bool warnUndocumentedModule = true;
+    std::optional<SpirvEnv> spirvEnv = {};  // the Vulkan client's: glslang then predefines VULKAN
 };
 
 // One file as glslang entered it.

@@ -26,6 +26,7 @@ std::string writeOutputs(const Options& o, const ResolvedCatalog& rc) {
         }
     }
     if (!o.emitGlslDir.empty() && !emitGlsl(o.emitGlslDir, rc.data, error)) return error;
+    if (!o.emitSpirvDir.empty() && !emitSpirv(o.emitSpirvDir, rc.data, error)) return error;
     return {};
 }
 

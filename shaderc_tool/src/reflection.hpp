@@ -1,11 +1,14 @@
 // Part of stage 5 (validation_scheduler.hpp): the active attributes and uniforms of a
 // linked program (glslang's reflection), with attribute locations taken from the binding
-// contract.
+// contract. A Vulkan-client program's descriptors, push constants, specialisation constants
+// and SPIR-V are filled in by vulkan_reflection.hpp.
 #pragma once
 
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include <prism/catalog/shader_catalog.hpp>
 
 #include "contract.hpp"
 
@@ -27,9 +30,37 @@ struct ReflectedUniform {
     int arraySize = 1;
 };
 
+struct ReflectedResource {
+    std::string name;
+    std::uint32_t set = 0, binding = 0;
+    catalog::ResourceKind kind = catalog::ResourceKind::UniformBuffer;
+    std::uint32_t size = 0;  // bytes of a buffer block; 0 otherwise
+    std::uint32_t arraySize = 1;
+};
+
+struct ReflectedPushConstant {
+    std::string name;
+    std::uint32_t glType = 0, offset = 0, size = 0;
+};
+
+struct ReflectedSpecConstant {
+    std::string name;
+    std::uint32_t id = 0, glType = 0, defaultBits = 0;
+};
+
+struct StageSpirv {
+    catalog::Stage stage = catalog::Stage::Vertex;
+    std::vector<std::uint32_t> words;
+};
+
 struct ProgramReflection {
     std::vector<ReflectedAttribute> attributes;  // sorted by location, then name
     std::vector<ReflectedUniform> uniforms;      // sorted by name
+    // The Vulkan client's (empty for OpenGL):
+    std::vector<ReflectedResource> resources;          // by set, then binding
+    std::vector<ReflectedPushConstant> pushConstants;  // by offset
+    std::vector<ReflectedSpecConstant> specConstants;  // by id
+    std::vector<StageSpirv> spirv;                     // one per stage, in the program's stage order
 };
 
 // `program` must be linked.

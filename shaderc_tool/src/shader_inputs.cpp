@@ -12,9 +12,24 @@ namespace prism::shaderc {
 namespace fs = std::filesystem;
 namespace {
 
-constexpr std::array kStageKinds = {catalog::Stage::Vertex,         catalog::Stage::TessControl,
-                                    catalog::Stage::TessEvaluation, catalog::Stage::Geometry,
-                                    catalog::Stage::Fragment,       catalog::Stage::Compute};
+using catalog::Stage;
+constexpr std::array kGlStageKinds = {Stage::Vertex,   Stage::TessControl, Stage::TessEvaluation,
+                                      Stage::Geometry, Stage::Fragment,    Stage::Compute};
+constexpr std::array kVulkanOnlyStageKinds = {Stage::Mesh,   Stage::Task,       Stage::RayGen, Stage::Intersect,
+                                              Stage::AnyHit, Stage::ClosestHit, Stage::Miss,   Stage::Callable};
+
+bool isVulkanOnly(Stage s) {
+    return std::find(kVulkanOnlyStageKinds.begin(), kVulkanOnlyStageKinds.end(), s) != kVulkanOnlyStageKinds.end();
+}
+
+// ".a, .b or .c"
+template <std::size_t N>
+std::string extensionList(const std::array<Stage, N>& kinds) {
+    std::string list;
+    for (std::size_t i = 0; i < N; ++i)
+        list += (i == 0 ? "." : i + 1 == N ? " or ." : ", .") + std::string(catalog::stageName(kinds[i]));
+    return list;
+}
 
 std::string siblingPath(const std::string& stagePath, std::string_view ext) {
     return fs::path(stagePath).replace_extension(std::string(ext)).string();
@@ -99,19 +114,16 @@ std::map<std::string, ShaderInput> pairByName(const std::vector<std::string>& fi
 
 std::optional<catalog::Stage> stageOfPath(const fs::path& p) {
     const auto ext = p.extension().string();
-    for (auto stage : kStageKinds)
-        if (ext.size() > 1 && ext.substr(1) == catalog::stageName(stage)) return stage;
+    if (ext.size() < 2) return std::nullopt;
+    for (auto stage : kGlStageKinds)
+        if (ext.substr(1) == catalog::stageName(stage)) return stage;
+    for (auto stage : kVulkanOnlyStageKinds)
+        if (ext.substr(1) == catalog::stageName(stage)) return stage;
     return std::nullopt;
 }
 
 std::string stageExtensionList() {
-    std::string list;
-    for (std::size_t i = 0; i < kStageKinds.size(); ++i)
-        list += (i == 0                        ? "."
-                 : i + 1 == kStageKinds.size() ? " or ."
-                                               : ", .") +
-                std::string(catalog::stageName(kStageKinds[i]));
-    return list;
+    return extensionList(kGlStageKinds) + " (with --client vulkan also " + extensionList(kVulkanOnlyStageKinds) + ")";
 }
 
 void sortByPipelineOrder(std::vector<StageFile>& stages) {
@@ -120,8 +132,38 @@ void sortByPipelineOrder(std::vector<StageFile>& stages) {
     });
 }
 
+namespace {
+
+// Ray-tracing stages: validated one by one, with nothing else in their program.
+void checkRayTracing(const ShaderInput& s, const std::string& where, std::vector<Diagnostic>& out) {
+    if (!std::all_of(s.stages.begin(), s.stages.end(), [](const StageFile& f) { return isRayTracingStage(f.stage); }))
+        out.push_back(makeError(where, 0, 0, "shader '" + s.name + "' mixes ray-tracing stages with other stages"));
+}
+
+// A mesh pipeline: [task +] mesh + frag, without vertex, geometry or compute stages.
+void checkMeshPipeline(const ShaderInput& s, const std::string& where, std::vector<Diagnostic>& out) {
+    const auto& any = s.stages.front().path;
+    if (hasStage(s, Stage::Vertex) || hasStage(s, Stage::Geometry) || hasStage(s, Stage::Compute) ||
+        hasStage(s, Stage::TessControl) || hasStage(s, Stage::TessEvaluation))
+        out.push_back(makeError(
+            where, 0, 0,
+            "shader '" + s.name + "' mixes a mesh pipeline with vertex, tessellation, geometry or compute stages"));
+    if (!hasStage(s, Stage::Mesh))
+        out.push_back(makeError(
+            where, 0, 0,
+            "shader '" + s.name + "' has a task stage but no mesh stage: expected " + siblingPath(any, ".mesh")));
+    if (!hasStage(s, Stage::Fragment))
+        out.push_back(makeError(
+            where, 0, 0, "shader '" + s.name + "' has no fragment stage: expected " + siblingPath(any, ".frag")));
+}
+
+}  // namespace
+
 void checkCompleteness(const ShaderInput& s, const std::string& where, std::vector<Diagnostic>& out) {
     const auto& any = s.stages.front().path;
+    if (std::any_of(s.stages.begin(), s.stages.end(), [](const StageFile& f) { return isRayTracingStage(f.stage); }))
+        return checkRayTracing(s, where, out);
+    if (hasStage(s, Stage::Mesh) || hasStage(s, Stage::Task)) return checkMeshPipeline(s, where, out);
     if (hasStage(s, catalog::Stage::Compute)) {
         if (s.stages.size() > 1)
             out.push_back(makeError(where, 0, 0,
@@ -144,8 +186,23 @@ void checkCompleteness(const ShaderInput& s, const std::string& where, std::vect
                                     siblingPath(any, ".tese")));
 }
 
+// Under the OpenGL client a program with a mesh, task or ray-tracing stage is an error
+// naming the file and --client vulkan; it is left out.
+void refuseVulkanOnlyStages(ShaderInputsResult& result) {
+    std::erase_if(result.shaders, [&](const ShaderInput& s) {
+        auto it =
+            std::find_if(s.stages.begin(), s.stages.end(), [](const StageFile& f) { return isVulkanOnly(f.stage); });
+        if (it == s.stages.end()) return false;
+        result.diagnostics.push_back(makeError(it->path, 0, 0,
+                                               "a ." + std::string(catalog::stageName(it->stage)) +
+                                                   " stage is Vulkan GLSL: build it with --client vulkan "
+                                                   "(prism_add_shaders(... CLIENT vulkan))"));
+        return true;
+    });
+}
+
 ShaderInputsResult collectShaderInputs(const std::vector<std::string>& inputs,
-                                       const std::vector<std::string>& programDeclarations) {
+                                       const std::vector<std::string>& programDeclarations, bool vulkanClient) {
     ShaderInputsResult result;
     const DiskReader disk;
     auto files = stageFilesOf(inputs, result);
@@ -163,6 +220,7 @@ ShaderInputsResult collectShaderInputs(const std::vector<std::string>& inputs,
     result.diagnostics.insert(result.diagnostics.end(), declared.diagnostics.begin(), declared.diagnostics.end());
     result.ioError = result.ioError || declared.ioError;
     for (auto& p : declared.programs) result.shaders.push_back(std::move(p));
+    if (!vulkanClient) refuseVulkanOnlyStages(result);
     std::sort(result.shaders.begin(), result.shaders.end(),
               [](const ShaderInput& a, const ShaderInput& b) { return a.name < b.name; });
     return result;

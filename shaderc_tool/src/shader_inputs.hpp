@@ -4,7 +4,9 @@
 // + `.frag`, or `rain.comp` alone), plus the programs `--program NAME=FILE,...` declares
 // (program_declarations.hpp); a stage file that a declaration names is that program's and
 // is not paired by name. A file in an input folder that is not a stage kind is a warning
-// naming it, except a module (`.glsl`), which stages include.
+// naming it, except a module (`.glsl`), which stages include. The Vulkan client also takes
+// mesh programs (`x.mesh` + `x.frag` [+ `x.task`]) and ray-tracing stages (`.rgen .rint
+// .rahit .rchit .rmiss .rcall`, validated each on its own); the OpenGL client refuses them.
 //
 //   const auto inputs = collectShaderInputs({"shaders/"}, {"blur-h=shaders/fullscreen.vert,shaders/blur.frag"});
 //   sink.reportAll(inputs.diagnostics);
@@ -37,10 +39,12 @@ struct ShaderInputsResult {
     bool ioError = false;  // an input that does not exist (exit status 2, not 1)
 };
 
-// The stage kind a file's extension names, nullopt for any other file.
+// The stage kind a file's extension names (".vert" ... ".rcall", whatever the client),
+// nullopt for any other file.
 std::optional<catalog::Stage> stageOfPath(const std::filesystem::path& path);
 
-// The extensions stageOfPath() knows, for messages: ".vert, .tesc, ... or .comp".
+// The extensions stageOfPath() knows, for messages: ".vert, .tesc, ... or .comp (with
+// --client vulkan also .mesh, ...)".
 std::string stageExtensionList();
 
 // The extension of a module file: in an input folder it is no stage and no warning.
@@ -49,12 +53,16 @@ inline constexpr std::string_view kModuleExtension = ".glsl";
 // Sorts a program's stages into the order they run in (catalog::pipelineOrder).
 void sortByPipelineOrder(std::vector<StageFile>& stages);
 
-// Checks the stage kinds of one program: compute alone; else a vertex and a fragment
-// stage, and a tessellation control stage only with an evaluation stage. `where` is the
+// Checks the stage kinds of one program: compute alone; ray-tracing stages alone; [task +]
+// mesh + fragment; else a vertex and a fragment stage, and a tessellation control stage
+// only with an evaluation stage. `where` is the
 // diagnostics' file: the first stage file, or the --program argument.
 void checkCompleteness(const ShaderInput& program, const std::string& where, std::vector<Diagnostic>& out);
 
+// `vulkanClient`: mesh, task and ray-tracing stages are taken; else each is an error that
+// names the file and --client vulkan.
 ShaderInputsResult collectShaderInputs(const std::vector<std::string>& inputs,
-                                       const std::vector<std::string>& programDeclarations = {});
+                                       const std::vector<std::string>& programDeclarations = {},
+                                       bool vulkanClient = false);
 
 }  // namespace prism::shaderc

@@ -44,7 +44,7 @@ int runTool(int argc, char** argv) {
         return exitStatus(writeBuildSystemFiles(o, unchanged->filesRead));
 
     DiagnosticSink sink;
-    const auto inputs = collectShaderInputs(o.inputs, o.programs);
+    const auto inputs = collectShaderInputs(o.inputs, o.programs, o.spirvEnv.has_value());
     sink.reportAll(inputs.diagnostics);
     const auto contract = loadContracts(o.contracts, disk);
     sink.reportAll(contract.diagnostics);

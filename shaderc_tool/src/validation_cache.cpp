@@ -45,13 +45,42 @@ Diagnostic diagnosticFrom(const json& j) {
     return d;
 }
 
+// The Vulkan client's part of a result: descriptors, push constants, specialisation
+// constants and each stage's SPIR-V words.
+json vulkanJson(const ProgramReflection& r) {
+    json resources = json::array(), push = json::array(), spec = json::array(), spirv = json::array();
+    for (const auto& x : r.resources)
+        resources.push_back({x.name, x.set, x.binding, static_cast<int>(x.kind), x.size, x.arraySize});
+    for (const auto& p : r.pushConstants) push.push_back({p.name, p.glType, p.offset, p.size});
+    for (const auto& c : r.specConstants) spec.push_back({c.name, c.id, c.glType, c.defaultBits});
+    for (const auto& s : r.spirv) spirv.push_back({static_cast<int>(s.stage), s.words});
+    return {{"resources", resources}, {"pushConstants", push}, {"specConstants", spec}, {"spirv", spirv}};
+}
+
+void readVulkan(const json& j, ProgramReflection& r) {
+    for (const auto& x : j.at("resources"))
+        r.resources.push_back({x.at(0).get<std::string>(), x.at(1).get<std::uint32_t>(), x.at(2).get<std::uint32_t>(),
+                               static_cast<catalog::ResourceKind>(x.at(3).get<int>()), x.at(4).get<std::uint32_t>(),
+                               x.at(5).get<std::uint32_t>()});
+    for (const auto& p : j.at("pushConstants"))
+        r.pushConstants.push_back({p.at(0).get<std::string>(), p.at(1).get<std::uint32_t>(),
+                                   p.at(2).get<std::uint32_t>(), p.at(3).get<std::uint32_t>()});
+    for (const auto& c : j.at("specConstants"))
+        r.specConstants.push_back({c.at(0).get<std::string>(), c.at(1).get<std::uint32_t>(),
+                                   c.at(2).get<std::uint32_t>(), c.at(3).get<std::uint32_t>()});
+    for (const auto& s : j.at("spirv"))
+        r.spirv.push_back({static_cast<catalog::Stage>(s.at(0).get<int>()), s.at(1).get<std::vector<std::uint32_t>>()});
+}
+
 json toJson(const std::string& text, const ValidatedVariant& v) {
     json attributes = json::array(), uniforms = json::array(), diagnostics = json::array();
     for (const auto& a : v.reflection.attributes) attributes.push_back({a.name, a.glType, a.location});
     for (const auto& u : v.reflection.uniforms) uniforms.push_back({u.name, u.glType, u.arraySize});
     for (const auto& d : v.diagnostics) diagnostics.push_back(toJson(d));
-    return {
+    json result = {
         {"text", text}, {"ok", v.ok}, {"attributes", attributes}, {"uniforms", uniforms}, {"diagnostics", diagnostics}};
+    if (!v.reflection.spirv.empty()) result["vulkan"] = vulkanJson(v.reflection);
+    return result;
 }
 
 ValidatedVariant resultFrom(const json& j) {
@@ -63,6 +92,7 @@ ValidatedVariant resultFrom(const json& j) {
             {a.at(0).get<std::string>(), a.at(1).get<std::uint32_t>(), a.at(2).get<int>()});
     for (const auto& u : j.at("uniforms"))
         v.reflection.uniforms.push_back({u.at(0).get<std::string>(), u.at(1).get<std::uint32_t>(), u.at(2).get<int>()});
+    if (j.contains("vulkan")) readVulkan(j.at("vulkan"), v.reflection);
     return v;
 }
 

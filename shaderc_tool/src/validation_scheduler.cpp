@@ -25,7 +25,8 @@ std::vector<StageToValidate> stagesOf(const ResolvedCatalog& rc, std::size_t s, 
     std::vector<StageToValidate> stages;
     const auto& resolved = rc.resolved[s][v];
     for (std::size_t st = 0; st < resolved.size(); ++st)
-        stages.push_back({rc.data.shaders[s].variants[v].stages[st].stage, rc.stagePaths[s][st], resolved[st]});
+        stages.push_back({rc.data.shaders[s].variants[v].stages[st].stage, rc.stagePaths[s][st], resolved[st],
+                          rc.data.spirvEnv, rc.data.shaders[s].name});
     return stages;
 }
 
@@ -53,6 +54,7 @@ std::string toolIdentity() {
 ProgramKey programKey(const ResolvedCatalog& rc, const Contract& contract, std::size_t s, std::size_t v) {
     hash::ContentHash tokens;
     tokens.add("prism-shaderc validation").add(toolIdentity());
+    if (rc.data.spirvEnv) tokens.add("client").add(spirvEnvName(*rc.data.spirvEnv));
     for (const auto& a : contract.attributes) tokens.add(a.name).add(a.type).add(std::to_string(a.location));
     tokens.add("uniforms");
     for (const auto& u : contract.uniforms) tokens.add(u.name).add(u.type).add(std::to_string(u.array));
@@ -142,7 +144,8 @@ StagePlan planStages(const ResolvedCatalog& rc, const std::vector<Program>& prog
     for (std::size_t i = 0; i < toValidate.size(); ++i)
         for (const auto& st : plan.lists[i]) {
             const std::string key = std::to_string(static_cast<int>(st.stage)) + " " + st.resolved.versionDirective +
-                                    " " + st.resolved.validationKey;
+                                    " " + st.resolved.validationKey +
+                                    (st.spirvEnv ? " " + std::string(spirvEnvName(*st.spirvEnv)) : "");
             auto [it, fresh] = index.try_emplace(key, plan.distinct.size());
             if (fresh) plan.distinct.push_back(&st);
             plan.refs[i].push_back(it->second);

@@ -14,23 +14,33 @@
 #include <sstream>
 
 #include "did_you_mean.hpp"
+#include "glslang_stage.hpp"
 #include "directive_lines.hpp"
 #include "interface_check.hpp"
 #include "stage_interface.hpp"
+#include "vulkan_reflection.hpp"
 
 namespace prism::shaderc {
 namespace {
 
-EShLanguage glslangStage(catalog::Stage s) {
-    switch (s) {
-        case catalog::Stage::Vertex: return EShLangVertex;
-        case catalog::Stage::Geometry: return EShLangGeometry;
-        case catalog::Stage::Fragment: return EShLangFragment;
-        case catalog::Stage::Compute: return EShLangCompute;
-        case catalog::Stage::TessControl: return EShLangTessControl;
-        case catalog::Stage::TessEvaluation: return EShLangTessEvaluation;
-    }
-    return EShLangVertex;
+EShMessages messagesFor(const StageToValidate& s) {
+    return s.spirvEnv ? spirvMessages(*s.spirvEnv) : EShMsgDefault;
+}
+
+// glslang's refusal of Vulkan GLSL under the OpenGL client, as one error that names the
+// construct and the option that accepts it; "" for any other message.
+std::string vulkanOnlyHint(const std::string& token, const std::string& message) {
+    const bool vulkanOnly = message.find("only allowed when using GLSL for Vulkan") != std::string::npos ||
+                            message.find("only allowed when generating SPIR-V") != std::string::npos;
+    const bool vulkanBuiltIn = (token == "gl_VertexIndex" || token == "gl_InstanceIndex") &&
+                               message.find("undeclared identifier") != std::string::npos;
+    if (!vulkanOnly && !vulkanBuiltIn) return {};
+    return "'" + token +
+           "' is Vulkan GLSL, and this stage is validated as OpenGL GLSL; build it with --client vulkan "
+           "(prism_add_shaders(... CLIENT vulkan)), or use the OpenGL equivalent" +
+           (token == "gl_VertexIndex"     ? " gl_VertexID"
+            : token == "gl_InstanceIndex" ? " gl_InstanceID"
+                                          : "");
 }
 
 EProfile profileOf(const std::string& versionDirective) {
@@ -151,6 +161,8 @@ std::vector<Diagnostic> mapInfoLog(const std::string& log, const StageMaps& maps
             std::string rest = t[2];
             rest.erase(0, rest.find_first_not_of(' '));  // glslang writes "'' :  syntax error"
             message = tok.empty() ? rest : "'" + tok + "': " + rest;
+            if (!maps.stage->spirvEnv)
+                if (auto hint = vulkanOnlyHint(tok, rest); !hint.empty()) message = std::move(hint);
         }
         column = columnOf(maps.lines.find(source, lineNo), tok);
         if (!tok.empty() && message.ends_with("no matching overloaded function found")) {
@@ -211,8 +223,9 @@ std::shared_ptr<CompiledStage> compileStage(const StageToValidate& s) {
     auto shader = std::make_unique<glslang::TShader>(glslangStage(s.stage));
     const char* text = s.resolved.text.c_str();
     shader->setStrings(&text, 1);
+    if (s.spirvEnv) configureShader(*shader, glslangStage(s.stage), *s.spirvEnv);
     compiled->ok = shader->parse(GetDefaultResources(), s.resolved.versionNumber,
-                                 profileOf(s.resolved.versionDirective), false, false, EShMsgDefault);
+                                 profileOf(s.resolved.versionDirective), false, false, messagesFor(s));
     if (const char* log = shader->getInfoLog(); log && *log) {  // the line texts only when there is a message
         const StageMaps maps{&s, SourceLines(s.resolved)};
         compiled->diagnostics = mapInfoLog(log, maps);
@@ -247,18 +260,42 @@ std::vector<Diagnostic> checkInterfaces(const std::vector<StageToValidate>& stag
     std::vector<StageInterface> interfaces;
     for (std::size_t i = 0; i < stages.size(); ++i)
         interfaces.push_back(extractStageInterface(stages[i].stage, *shaders[i]));
+    // The binding contract names what the OpenGL runtime feeds by name; Vulkan binds by location.
+    const auto contractOf = [&] {
+        return stages.front().spirvEnv ? std::vector<Diagnostic>{} : checkContract(contract, interfaces, locate);
+    };
     auto io = checkStageInterfaces(interfaces, locate);
-    auto bound = checkContract(contract, interfaces, locate);
+    auto bound = contractOf();
     if (!io.empty() || !bound.empty()) {  // messages: find the declarations' lines, then check again
         for (std::size_t i = 0; i < stages.size(); ++i) {
             const SourceLines lines(stages[i].resolved);
             for (auto& v : interfaces[i].variables) lines.locateDeclaration(v);
         }
         io = checkStageInterfaces(interfaces, locate);
-        bound = checkContract(contract, interfaces, locate);
+        bound = contractOf();
     }
     io.insert(io.end(), bound.begin(), bound.end());
     return io;
+}
+
+// The Vulkan client's SPIR-V of every stage of a linked program, each checked by
+// SPIRV-Tools, with the program's layout read from glslang and from the words.
+void emitSpirv(const std::vector<StageToValidate>& stages, glslang::TProgram& program, ValidatedVariant& result) {
+    result.reflection = reflectVulkanProgram(program);
+    for (const auto& s : stages) {
+        const std::string what =
+            "the " + std::string(catalog::stageName(s.stage)) + " stage of program '" + s.program + "'";
+        StageSpirv out{s.stage, {}};
+        std::string log;
+        if (!generateSpirv(program, glslangStage(s.stage), out.words, log)) {
+            result.diagnostics.push_back(makeError(s.path, 0, 0, "glslang made no SPIR-V of " + what + ": " + log));
+            continue;
+        }
+        auto invalid = validateSpirv(out.words, *s.spirvEnv, s.path, what);
+        result.diagnostics.insert(result.diagnostics.end(), invalid.begin(), invalid.end());
+        addSpecConstants(result.reflection, out.words);
+        result.reflection.spirv.push_back(std::move(out));
+    }
 }
 
 // Links the program and reflects it into `result`; link errors become diagnostics.
@@ -266,7 +303,7 @@ void linkAndReflect(const std::vector<StageToValidate>& stages, const std::vecto
                     const Contract& contract, ValidatedVariant& result) {
     glslang::TProgram program;
     for (auto* sh : shaders) program.addShader(sh);
-    if (!program.link(EShMsgDefault)) {
+    if (!program.link(messagesFor(stages.front()))) {
         const auto before = result.diagnostics.size();
         std::istringstream log(program.getInfoLog());
         std::string line;
@@ -277,9 +314,20 @@ void linkAndReflect(const std::vector<StageToValidate>& stages, const std::vecto
             result.diagnostics.push_back(makeError(stages.front().path, 0, 0, "glslang could not link the program"));
         return;
     }
-    result.reflection = reflectProgram(program, contract);
+    if (stages.front().spirvEnv)
+        emitSpirv(stages, program, result);
+    else
+        result.reflection = reflectProgram(program, contract);
     result.ok = true;
     for (const auto& d : result.diagnostics) result.ok = result.ok && d.severity != Severity::Error;
+}
+
+// Prism's own stage-interface and contract checks cover the classic pipeline (vertex to
+// fragment, compute). Mesh and ray-tracing programs get glslang's link checks only.
+bool hasClassicInterfaces(const std::vector<StageToValidate>& stages) {
+    return std::none_of(stages.begin(), stages.end(), [](const StageToValidate& s) {
+        return isRayTracingStage(s.stage) || s.stage == catalog::Stage::Mesh || s.stage == catalog::Stage::Task;
+    });
 }
 
 }  // namespace
@@ -311,7 +359,8 @@ ValidatedVariant validateCompiledProgram(const std::vector<StageToValidate>& sta
     glslang::TPoolAllocator pool;
     glslang::SetThreadPoolAllocator(&pool);
 
-    const auto interfaceMessages = checkInterfaces(stages, shaders, contract);
+    const auto interfaceMessages =
+        hasClassicInterfaces(stages) ? checkInterfaces(stages, shaders, contract) : std::vector<Diagnostic>{};
     result.diagnostics.insert(result.diagnostics.end(), interfaceMessages.begin(), interfaceMessages.end());
     // glslang's own link check would only repeat these errors, with less detail; a
     // warning (a near miss of Prism's built-in contract) still links and reflects.

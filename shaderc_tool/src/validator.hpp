@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include "diagnostics.hpp"
 #include "include_resolver.hpp"
 #include "reflection.hpp"
+#include "spirv_codegen.hpp"
 
 namespace prism::shaderc {
 
@@ -21,11 +23,13 @@ struct StageToValidate {
     catalog::Stage stage;
     std::string path;  // the stage file, for errors without a line
     ResolvedStage resolved;
+    std::optional<SpirvEnv> spirvEnv = {};  // the Vulkan client's environment; empty: OpenGL driver GLSL
+    std::string program = {};               // the program's name, for SPIR-V messages
 };
 
 struct ValidatedVariant {
     bool ok = false;
-    ProgramReflection reflection;
+    ProgramReflection reflection;  // with the Vulkan client, also each stage's SPIR-V
     std::vector<Diagnostic> diagnostics;
 };
 

@@ -28,8 +28,8 @@ GLenum shaderType(catalog::Stage stage) {
         case catalog::Stage::Compute: return GL_COMPUTE_SHADER;
         case catalog::Stage::TessControl: return GL_TESS_CONTROL_SHADER;
         case catalog::Stage::TessEvaluation: return GL_TESS_EVALUATION_SHADER;
+        default: return GL_NONE;  // mesh, task and ray tracing: Vulkan-client stages, which GL cannot create
     }
-    return GL_VERTEX_SHADER;
 }
 
 std::string_view stageWord(catalog::Stage stage) {
@@ -40,6 +40,9 @@ std::string_view stageWord(catalog::Stage stage) {
         case catalog::Stage::Compute: return "compute";
         case catalog::Stage::TessControl: return "tessellation control";
         case catalog::Stage::TessEvaluation: return "tessellation evaluation";
+        case catalog::Stage::Mesh: return "mesh";
+        case catalog::Stage::Task: return "task";
+        default: return "ray-tracing";
     }
     return "?";
 }

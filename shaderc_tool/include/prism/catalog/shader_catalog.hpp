@@ -38,9 +38,26 @@
 
 namespace prism::catalog {
 
-// The enumerators' values are stored in generated catalogues: new kinds go at the end;
-// pipelineOrder() gives the order a program's stages run in.
-enum class Stage : std::uint8_t { Vertex, Geometry, Fragment, Compute, TessControl, TessEvaluation };
+// The stage kinds, named by their file extensions (glslang's). The enumerators' values are
+// stored in generated catalogues: new kinds go at the end; pipelineOrder() gives the order a
+// program's stages run in. Mesh, task and the ray-tracing kinds exist for the Vulkan client
+// only (prism-shaderc --client vulkan).
+enum class Stage : std::uint8_t {
+    Vertex,
+    Geometry,
+    Fragment,
+    Compute,
+    TessControl,
+    TessEvaluation,
+    Mesh,
+    Task,
+    RayGen,
+    Intersect,
+    AnyHit,
+    ClosestHit,
+    Miss,
+    Callable,
+};
 
 // The stage file's extension without the dot, as glslang names it.
 constexpr std::string_view stageName(Stage s) {
@@ -51,21 +68,37 @@ constexpr std::string_view stageName(Stage s) {
         case Stage::Compute: return "comp";
         case Stage::TessControl: return "tesc";
         case Stage::TessEvaluation: return "tese";
+        case Stage::Mesh: return "mesh";
+        case Stage::Task: return "task";
+        case Stage::RayGen: return "rgen";
+        case Stage::Intersect: return "rint";
+        case Stage::AnyHit: return "rahit";
+        case Stage::ClosestHit: return "rchit";
+        case Stage::Miss: return "rmiss";
+        case Stage::Callable: return "rcall";
     }
     return "?";
 }
 
-// The stage's place in a program: vert, tesc, tese, geom, frag; compute on its own.
+// The stage's place in a program: vert, tesc, tese, geom (or task, mesh), frag; compute
+// on its own; the ray-tracing stages in their enumerators' order.
 constexpr int pipelineOrder(Stage s) {
     switch (s) {
         case Stage::Vertex: return 0;
         case Stage::TessControl: return 1;
         case Stage::TessEvaluation: return 2;
         case Stage::Geometry: return 3;
-        case Stage::Fragment: return 4;
-        case Stage::Compute: return 5;
+        case Stage::Task: return 4;
+        case Stage::Mesh: return 5;
+        case Stage::Fragment: return 6;
+        case Stage::Compute: return 7;
+        default: return 8 + static_cast<int>(s);  // the ray-tracing kinds
     }
-    return 6;
+}
+
+// Ray-tracing stages are validated one by one (as glslc does): no stage interface links them.
+constexpr bool isRayTracingStage(Stage s) {
+    return s >= Stage::RayGen && s <= Stage::Callable;
 }
 
 // One row of a line table: `#line L <number>` in an embedded source means line L
@@ -83,14 +116,18 @@ struct SourceFile {
 // One stage of one variant: driver-safe GLSL (version on line 1, integer #line only)
 // as pieces of at most 16 KB (MSVC's string-literal limit) that other stages share: the
 // #version/#define block, #line lines, module bodies, the stage's body. Concatenate them.
+// A Vulkan-client catalogue (prism-shaderc --client vulkan) also stores the stage's SPIR-V
+// words (each distinct module once); an OpenGL-client catalogue leaves `spirv` empty.
 struct StageSource {
     Stage stage;
     std::span<const std::string_view> chunks;
     std::span<const SourceFile> files;
+    std::span<const std::uint32_t> spirv = {};
 };
 
 // An active vertex attribute. `location` comes from the binding contract, so the
-// runtime binds it with glBindAttribLocation before linking.
+// runtime binds it with glBindAttribLocation before linking; in a Vulkan-client
+// catalogue it is the shader's own `layout(location = N)`.
 struct Attribute {
     std::string_view name;
     std::uint32_t glType;  // GL_FLOAT_VEC3 etc.
@@ -102,6 +139,65 @@ struct Uniform {
     std::string_view name;
     std::uint32_t glType;
     std::int32_t arraySize;
+};
+
+// What a Vulkan descriptor binding holds (VkDescriptorType's names).
+enum class ResourceKind : std::uint8_t {
+    UniformBuffer,
+    StorageBuffer,
+    CombinedImageSampler,
+    SampledImage,
+    StorageImage,
+    Sampler,
+    UniformTexelBuffer,
+    StorageTexelBuffer,
+    InputAttachment,
+    AccelerationStructure,
+};
+
+// The enumerator's own spelling ("UniformBuffer"), for messages and generated code.
+constexpr std::string_view resourceKindName(ResourceKind k) {
+    switch (k) {
+        case ResourceKind::UniformBuffer: return "UniformBuffer";
+        case ResourceKind::StorageBuffer: return "StorageBuffer";
+        case ResourceKind::CombinedImageSampler: return "CombinedImageSampler";
+        case ResourceKind::SampledImage: return "SampledImage";
+        case ResourceKind::StorageImage: return "StorageImage";
+        case ResourceKind::Sampler: return "Sampler";
+        case ResourceKind::UniformTexelBuffer: return "UniformTexelBuffer";
+        case ResourceKind::StorageTexelBuffer: return "StorageTexelBuffer";
+        case ResourceKind::InputAttachment: return "InputAttachment";
+        case ResourceKind::AccelerationStructure: return "AccelerationStructure";
+    }
+    return "?";
+}
+
+// One descriptor of a Vulkan-client variant: `size` is a buffer block's size in bytes (0 for
+// images and samplers); `arraySize` is 1 for non-arrays.
+struct Resource {
+    std::string_view name;
+    std::uint32_t set;
+    std::uint32_t binding;
+    ResourceKind kind;
+    std::uint32_t size;
+    std::uint32_t arraySize;
+};
+
+// A member of a variant's push-constant block, at `offset` bytes, `size` bytes long.
+struct PushConstant {
+    std::string_view name;
+    std::uint32_t glType;
+    std::uint32_t offset;
+    std::uint32_t size;
+};
+
+// A specialisation constant (`layout(constant_id = N) const T name = default;`): its
+// default as the 32 bits of the SPIR-V literal (a float's bits for float, 0/1 for bool).
+struct SpecConstant {
+    std::string_view name;
+    std::uint32_t id;
+    std::uint32_t glType;
+    std::uint32_t defaultBits;
 };
 
 struct Define {
@@ -122,6 +218,9 @@ struct Variant {
     std::span<const StageSource> stages;  // in pipeline order
     std::span<const Attribute> attributes;
     std::span<const Uniform> uniforms;
+    std::span<const Resource> resources = {};          // Vulkan client: by set, then binding
+    std::span<const PushConstant> pushConstants = {};  // Vulkan client: by offset
+    std::span<const SpecConstant> specConstants = {};  // Vulkan client: by id
 };
 
 struct Shader {
@@ -156,6 +255,7 @@ struct Catalog {
     // or their -I directory; `number` is the position): what run-time contract errors name.
     // Empty: Prism's built-in contract (no --contract).
     std::span<const SourceFile> contractFiles = {};
+    std::string_view targetEnv = {};  // "vulkan1.2" etc. for a Vulkan-client catalogue; "" for OpenGL
 };
 
 inline std::string joinChunks(std::span<const std::string_view> chunks) {
