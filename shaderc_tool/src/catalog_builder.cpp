@@ -345,7 +345,11 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
     if (o.printStats)
         if (const auto version = parseVersionDirective(rc.data.versionDirective))
             rc.builtInsMs = buildGlslangBuiltIns(*version);
-    const ResolveOptions base{o.includeDirs, o.defines, rc.data.versionDirective, o.baseDir, o.spirvEnv};
+    const ResolveOptions base{.includeDirs = o.includeDirs,
+                              .defines = o.defines,
+                              .defaultVersion = rc.data.versionDirective,
+                              .baseDir = o.baseDir,
+                              .spirvEnv = o.spirvEnv};
     const auto baseRuns = resolveBaseRuns(o, shaders, base, reader);
     for (const auto& runs : baseRuns) rc.preprocessorRuns += runs.size();
     IncludedFiles included;
