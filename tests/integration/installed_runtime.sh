@@ -46,10 +46,16 @@ else
 fi
 for f in include/prism/gl/program.hpp include/prism/render/gpu_mesh.hpp include/prism/geometry/mesh.hpp \
          include/prism/image/png_io.hpp include/prism/view/camera.hpp include/prism/scene/scene_loader.hpp \
-         include/prism/catalog/shader_catalog.hpp include/prism/shaders.hpp include/glad/gl.h \
+         include/prism/catalog/shader_catalog.hpp include/prism/shaders.hpp include/prism-glad/glad/gl.h \
          lib/libprism_gl.a lib/libprism_render.a lib/cmake/Prism/PrismTargets.cmake bin/prism-shaderc; do
   if [ -e "$PREFIX/$f" ]; then pass "prefix has $f"; else fail "prefix lacks $f"; fi
 done
+# Glad's headers stay out of include/, where they would shadow a consumer's own glad.
+if [ -e "$PREFIX/include/glad" ] || [ -e "$PREFIX/include/KHR" ]; then
+  fail "prefix has include/glad or include/KHR (glad's headers belong in include/prism-glad)"
+else
+  pass "prefix has no include/glad or include/KHR"
+fi
 
 # check_safe_defaults <generator> <consumer copy> <build dir> <log dir>
 check_safe_defaults() {
