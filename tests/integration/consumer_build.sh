@@ -139,7 +139,7 @@ check_generator() {
   local lit_data=$bld/lit_shaders_generated/consumer/lit_shaders.cpp
   local plain_hdr=$bld/plain_shaders_generated/consumer/plain_shaders.hpp
   local exe=$bld/prism_consumer
-  echo "== $gen: add_subdirectory($SOURCE)"
+  echo "== $gen: FetchContent_Declare(prism SOURCE_DIR $SOURCE)"
 
   local prism_args=("${PRISM_ARGS[@]}")
   [ "$tag" = make ] && prism_args+=(-DPRISM_INSTALL=ON)
