@@ -23,3 +23,6 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/PrismConfigVersion.cmake
 install(FILES ${PROJECT_BINARY_DIR}/PrismConfig.cmake ${PROJECT_BINARY_DIR}/PrismConfigVersion.cmake
               ${PROJECT_SOURCE_DIR}/cmake/PrismShaders.cmake
         DESTINATION ${PRISM_CMAKE_DIR})
+if(PRISM_BUILD_RUNTIME)
+  include(${PROJECT_SOURCE_DIR}/cmake/PrismPackaging.cmake)
+endif()

@@ -3,7 +3,7 @@
 #   runtime/<dir>/src/*.cpp                    sources and private headers
 # It records the library's LAYER (cpu, gl, render, systems, scenes) for the layering check
 # (scripts/check_layers.py, docs/architecture.md), exports it as Prism::<EXPORT_NAME> and
-# installs it with its headers.
+# installs it with its headers when PRISM_INSTALL is on.
 #
 #   prism_library(prism_view EXPORT_NAME view LAYER cpu
 #     SOURCES src/camera.cpp PUBLIC glm::glm)
@@ -26,6 +26,9 @@ function(prism_library name)
   set_target_properties(${name} PROPERTIES POSITION_INDEPENDENT_CODE ON EXPORT_NAME ${ARG_EXPORT_NAME})
   prism_set_layer(${name} ${ARG_LAYER})
   add_library(Prism::${ARG_EXPORT_NAME} ALIAS ${name})
+  if(NOT PRISM_INSTALL)
+    return()
+  endif()
   install(TARGETS ${name} EXPORT PrismTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
   if(EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/include)
     install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
@@ -89,6 +92,9 @@ function(prism_install_catalog target export_name)
   target_include_directories(${target} PUBLIC $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
   set_target_properties(${target} PROPERTIES EXPORT_NAME ${export_name})
   set_property(TARGET ${target} APPEND PROPERTY EXPORT_PROPERTIES PRISM_NAMESPACE)  # claimed by PrismConfig.cmake
+  if(NOT PRISM_INSTALL)
+    return()
+  endif()
   install(TARGETS ${target} EXPORT PrismTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
                                                LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
   install(FILES ${header} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/${header_rel})

@@ -18,6 +18,7 @@ PACKAGES=(
   libtinyobjloader-dev libstb-dev
   universal-ctags  # scripts/check_function_length.py (tests/architecture)
   xvfb xauth
+  lintian  # checks the Debian package cpack builds (tests/integration/installed_runtime.sh)
   clang-14 libclang-rt-14-dev
   clang-format-14  # scripts/check_format.py (tests/format): the format is clang-format 14's
   chromium fonts-dejavu-core  # the browser test tier (tests/report, label browser)

@@ -1,7 +1,13 @@
 #!/usr/bin/env bash
 # Integration test of Prism's CMake step: builds examples/consumer (a standalone project
-# with two prism_add_shaders() catalogues) against this source tree with Ninja and with
-# Unix Makefiles, and checks the dependency graph through file timestamps:
+# with two prism_add_shaders() catalogues) against this source tree with FetchContent
+# (SOURCE_DIR, no network) under Ninja and Unix Makefiles, Prism's runtime off, and
+# checks that Prism is a lean subproject (issue 29): the Ninja build's `cmake --install`
+# holds nothing of Prism's, and a configure with Prism's defaults (runtime on), whose
+# build graph is read but not built, has at most MAX_LEAN_STEPS steps for a consumer that
+# links Prism::render, no Prism program, no object of a system it does not link (rain,
+# water, diffraction, blue noise, scene) and no install rule of Prism's. Both builds check
+# the dependency graph through file timestamps:
 #   - a rebuild with nothing changed does nothing;
 #   - touching tint.glsl (read only by lit_shaders) re-runs prism-shaderc for lit_shaders
 #     alone, rewrites no header (content unchanged) and recompiles nothing;
@@ -11,8 +17,8 @@
 #   - an include error fails the build with a GCC-style diagnostic at tint.glsl and
 #     leaves the previous header intact; fixing it recovers;
 #   - a module added to lit's module dir re-runs lit_shaders only;
-# then installs Prism from that build and builds the consumer with find_package(Prism),
-# also as a project with an old cmake_minimum_required().
+# then installs Prism from the Makefiles build (-DPRISM_INSTALL=ON there) and builds the
+# consumer with find_package(Prism), also as a project with an old cmake_minimum_required().
 # Works on copies of the consumer under --work; never modifies the source tree.
 #
 # Usage: consumer_build.sh --source <prism source dir> --work <scratch dir>
@@ -48,7 +54,12 @@ unset MAKEFLAGS MFLAGS MAKELEVEL DESTDIR CMAKE_GENERATOR CMAKE_BUILD_PARALLEL_LE
 COMMON_ARGS=(-DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-O0 -DCMAKE_C_FLAGS_DEBUG=-O0)
 [ -n "$CXX_COMPILER" ] && COMMON_ARGS+=("-DCMAKE_CXX_COMPILER=$CXX_COMPILER")
 [ -n "$C_COMPILER" ] && COMMON_ARGS+=("-DCMAKE_C_COMPILER=$C_COMPILER")
-PRISM_ARGS=(-DPRISM_BUILD_RUNTIME=OFF -DPRISM_BUILD_TESTS=OFF -DPRISM_BUILD_EXAMPLES=OFF -DPRISM_BUILD_BENCH=OFF)
+# Both builds take the tool alone; the Makefiles build installs it for check_installed.
+PRISM_ARGS=(-DPRISM_BUILD_RUNTIME=OFF)
+# The lean graph has 113 steps (the tool; gl, render and the CPU libraries under them;
+# Prism's classic catalogue; the consumer's two catalogues and three programs); without
+# Prism's EXCLUDE_FROM_ALL it is 186 (every library and catalogue of Prism's).
+MAX_LEAN_STEPS=130
 
 FAILURES=0
 pass() { echo "PASS: $*"; }
@@ -128,10 +139,12 @@ check_generator() {
   local lit_data=$bld/lit_shaders_generated/consumer/lit_shaders.cpp
   local plain_hdr=$bld/plain_shaders_generated/consumer/plain_shaders.hpp
   local exe=$bld/prism_consumer
-  echo "== $gen: add_subdirectory($SOURCE)"
+  echo "== $gen: FetchContent_Declare(prism SOURCE_DIR $SOURCE)"
 
+  local prism_args=("${PRISM_ARGS[@]}")
+  [ "$tag" = make ] && prism_args+=(-DPRISM_INSTALL=ON)
   if ! step "$logs/1-configure.log" "$CMAKE" -S "$src" -B "$bld" -G "$gen" -DPRISM_SOURCE_DIR="$SOURCE" \
-         "${PRISM_ARGS[@]}" "${COMMON_ARGS[@]}"; then
+         "${prism_args[@]}" "${COMMON_ARGS[@]}"; then
     fail "$gen: configure the consumer"; show_log "$logs/1-configure.log"; return
   fi
   pass "$gen: configure the consumer"
@@ -145,6 +158,7 @@ check_generator() {
   done
   [ $missing = 0 ] || return
   run_consumer "$bld" "$src" "$SOURCE/modules" "$logs/2-run.log" "$gen"
+  [ "$tag" = ninja ] && check_consumer_install "$bld" "$logs" "$dir/install"
 
   # Nothing changed: nothing to do.
   local a_lit a_plain a_lith a_plainh a_exe
@@ -262,11 +276,54 @@ check_generator() {
   echo "   ($gen checks took $((SECONDS - started)) s)"
 }
 
-# check_installed: installs Prism from the Ninja build's prism/ subproject (configured
-# with runtime, tests, examples and bench OFF; this reuses its prism-shaderc instead of
-# compiling a third one) and builds a fresh copy of the consumer with find_package.
+# check_consumer_install <build dir> <log dir> <prefix>: the consumer's `cmake --install`
+# writes its own program and nothing of Prism's (PRISM_INSTALL is off in a subproject).
+check_consumer_install() {
+  local bld=$1 logs=$2 prefix=$3
+  if step "$logs/2-install.log" "$CMAKE" --install "$bld" --prefix "$prefix"; then
+    local extra; extra=$(cd "$prefix" && find . -type f ! -path ./bin/prism_consumer | head -n 5)
+    check "Ninja: the consumer's install holds bin/prism_consumer alone${extra:+ (also: $extra)}" \
+      test -z "$extra" -a -x "$prefix/bin/prism_consumer"
+  else
+    fail "Ninja: cmake --install the consumer"; show_log "$logs/2-install.log"
+  fi
+}
+
+# check_lean: configures a fresh copy of the consumer with Prism's defaults as a
+# subproject (runtime on) and reads its build graph without building it (issue 29,
+# item 1): the consumer links Prism::render, so the graph must hold the tool, render and
+# what render links, and nothing else of Prism's.
+check_lean() {
+  local dir=$WORK/lean
+  local src=$dir/consumer bld=$dir/build logs=$dir/logs prism=$dir/build/_deps/prism-build started=$SECONDS
+  echo "== Ninja: the lean subproject (Prism's runtime on, graph only)"
+  rm -rf "$dir"; mkdir -p "$logs"
+  cp -R "$SOURCE/examples/consumer" "$src"
+  if ! step "$logs/1-configure.log" "$CMAKE" -S "$src" -B "$bld" -G Ninja -DPRISM_SOURCE_DIR="$SOURCE" \
+         "${COMMON_ARGS[@]}"; then
+    fail "lean: configure the consumer with Prism's runtime"; show_log "$logs/1-configure.log"; return
+  fi
+  ninja -C "$bld" -t commands all >"$logs/commands.txt" 2>"$logs/commands.err"
+  local steps; steps=$(grep -c . "$logs/commands.txt")
+  check "lean: $steps build steps (at most $MAX_LEAN_STEPS)" test "$steps" -gt 0 -a "$steps" -le "$MAX_LEAN_STEPS"
+  local cmds=$logs/commands.txt
+  check "lean: the graph links prism-shaderc" grep -q -e "-o _deps/prism-build/shaderc_tool/prism-shaderc " "$cmds"
+  check "lean: the graph archives libprism_render.a" grep -q -e "prism-build/runtime/render/libprism_render\.a " "$cmds"
+  local apps; apps=$(grep -o -E "_deps/prism-build/(apps|examples|bench|tests)/[^ ]*" "$cmds" | head -n 3)
+  check "lean: no Prism program, example, bench or test in the graph${apps:+ (has: $apps)}" test -z "$apps"
+  local systems; systems=$(grep -o -E "_deps/prism-build/runtime/(rain|water|diffraction|bluenoise|scene|reference)/" \
+                           "$cmds" | sort -u | head -n 3)
+  check "lean: no system the consumer does not link in the graph${systems:+ (has: $systems)}" test -z "$systems"
+  local rules; rules=$(grep -l -r "file(INSTALL" "$prism" --include=cmake_install.cmake | head -n 3)
+  check "lean: no install rule of Prism's${rules:+ (in: $rules)}" test -z "$rules"
+  echo "   (lean checks took $((SECONDS - started)) s)"
+}
+
+# check_installed: installs Prism from the Makefiles build's FetchContent subproject
+# (runtime off, PRISM_INSTALL on; this reuses its prism-shaderc instead of compiling a
+# third one) and builds a fresh copy of the consumer with find_package.
 check_installed() {
-  local from=$WORK/ninja/build/prism dir=$WORK/installed
+  local from=$WORK/make/build/_deps/prism-build dir=$WORK/installed
   local prefix=$dir/prefix src=$dir/consumer bld=$dir/build logs=$dir/logs
   local started=$SECONDS
   echo "== Ninja: find_package(Prism) from an install prefix"
@@ -344,6 +401,7 @@ else
   fail "Unix Makefiles: 'make' not found (scripts/setup.sh installs build-essential)"
 fi
 [ $have_ninja = 1 ] && check_installed
+[ $have_ninja = 1 ] && check_lean
 
 echo "consumer_build: $FAILURES failed check(s) in $SECONDS s"
 [ "$FAILURES" -eq 0 ]

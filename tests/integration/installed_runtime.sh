@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Integration test of the installed runtime: installs this Prism build (runtime included)
-# into a prefix, then builds examples/consumer against that prefix alone with Ninja and
+# Integration test of the installed runtime: packages this Prism build (runtime included)
+# as the Debian package prism-dev with cpack, which lintian must pass without an error,
+# and unpacks it with dpkg-deb -x into a scratch root (issue 29, item 3; nothing is
+# installed on the machine); its usr/ is the prefix the rest uses. Then builds examples/consumer against that prefix alone with Ninja and
 # with Unix Makefiles (find_package(Prism)), runs its prism_consumer_render, and compares
 # the PNG with tests/golden/consumer/tinted_phong.png (thresholds in render_png.cpp).
 # Also checks that the prefix holds the runtime's headers, libraries, generated
@@ -12,6 +14,8 @@
 # outside project (issue 22, item 3): prism_consumer_reload watches its lit_shaders
 # catalogue through the lit_shaders_sources.hpp that prism_add_shaders() wrote, the test
 # edits the prefix's material.glsl under it, and the next frame must use the rebuilt program.
+# The pkg-config consumer (issue 29, item 4): examples/consumer/Makefile, built with make and
+# the prefix's prism.pc alone, renders the same golden PNG.
 #
 # Usage: installed_runtime.sh --source <prism source> --build <prism build> --work <scratch dir>
 #          [--cmake <cmake>] [--jobs <n>]
@@ -33,23 +37,71 @@ if [ -z "$SOURCE" ] || [ -z "$BUILD" ] || [ -z "$WORK" ]; then
 fi
 unset MAKEFLAGS MFLAGS MAKELEVEL DESTDIR CMAKE_GENERATOR CMAKE_BUILD_PARALLEL_LEVEL
 rm -rf "$WORK" && mkdir -p "$WORK"
-PREFIX=$WORK/prefix
+ROOT=$WORK/deb-root PREFIX=$WORK/deb-root/usr
 FAILURES=0
 pass() { echo "PASS: $*"; }
 fail() { echo "FAIL: $*"; FAILURES=$((FAILURES + 1)); }
 show_log() { echo "  --- last lines of $1:"; tail -n 25 "$1" | sed 's/^/  | /'; }
 
-if "$CMAKE" --install "$BUILD" --prefix "$PREFIX" >"$WORK/install.log" 2>&1; then
-  pass "cmake --install the Prism build into $PREFIX"
+CPACK=$(dirname "$(command -v "$CMAKE")")/cpack  # beside the cmake that built Prism
+if "$CPACK" -G DEB --config "$BUILD/CPackConfig.cmake" -B "$WORK/deb" >"$WORK/cpack.log" 2>&1; then
+  pass "cpack -G DEB packages the Prism build"
 else
-  fail "cmake --install the Prism build"; show_log "$WORK/install.log"; exit 1
+  fail "cpack -G DEB"; show_log "$WORK/cpack.log"; exit 1
+fi
+DEB=$(find "$WORK/deb" -maxdepth 1 -name 'prism-dev_*_*.deb' -print -quit)
+if [ -z "$DEB" ]; then
+  fail "no prism-dev_<version>_<arch>.deb in $WORK/deb"; exit 1
+fi
+depends=$(dpkg-deb -f "$DEB" Depends)
+for pkg in glslang-dev libglm-dev libpng-dev nlohmann-json3-dev libtinyobjloader-dev; do
+  case ", $depends," in
+    *", $pkg,"*) pass "$(basename "$DEB") depends on $pkg" ;;
+    *) fail "$(basename "$DEB") does not depend on $pkg (Depends: $depends)" ;;
+  esac
+done
+if lintian --fail-on error "$DEB" >"$WORK/lintian.log" 2>&1; then
+  pass "lintian: no error ($(grep -c '^W:' "$WORK/lintian.log") warning(s), in $WORK/lintian.log)"
+else
+  fail "lintian reports errors"; grep '^E:' "$WORK/lintian.log" | head -n 10
+fi
+if dpkg-deb -x "$DEB" "$ROOT" && [ -d "$PREFIX" ]; then
+  pass "dpkg-deb -x unpacks the package into $ROOT"
+else
+  fail "dpkg-deb -x $DEB $ROOT"; exit 1
 fi
 for f in include/prism/gl/program.hpp include/prism/render/gpu_mesh.hpp include/prism/geometry/mesh.hpp \
          include/prism/image/png_io.hpp include/prism/view/camera.hpp include/prism/scene/scene_loader.hpp \
-         include/prism/catalog/shader_catalog.hpp include/prism/shaders.hpp include/glad/gl.h \
-         lib/libprism_gl.a lib/libprism_render.a lib/cmake/Prism/PrismTargets.cmake bin/prism-shaderc; do
+         include/prism/catalog/shader_catalog.hpp include/prism/shaders.hpp include/prism-glad/glad/gl.h \
+         lib/libprism_gl.a lib/libprism_render.a lib/cmake/Prism/PrismTargets.cmake bin/prism-shaderc \
+         lib/pkgconfig/prism.pc; do
   if [ -e "$PREFIX/$f" ]; then pass "prefix has $f"; else fail "prefix lacks $f"; fi
 done
+# Glad's headers stay out of include/, where they would shadow a consumer's own glad.
+if [ -e "$PREFIX/include/glad" ] || [ -e "$PREFIX/include/KHR" ]; then
+  fail "prefix has include/glad or include/KHR (glad's headers belong in include/prism-glad)"
+else
+  pass "prefix has no include/glad or include/KHR"
+fi
+
+# check_pkg_config: examples/consumer/Makefile with pkg-config and the prefix alone.
+check_pkg_config() {
+  local src=$WORK/pkg-config/consumer bld=$WORK/pkg-config/build
+  mkdir -p "$WORK/pkg-config" && cp -r "$SOURCE/examples/consumer" "$src"
+  if PKG_CONFIG_PATH=$PREFIX/lib/pkgconfig make -C "$src" BUILD="$bld" CXXFLAGS=-O1 \
+       >"$WORK/pkg-config/build.log" 2>&1; then
+    pass "pkg-config: make builds the consumer's renderer with prism.pc"
+  else
+    fail "pkg-config: make with prism.pc"; show_log "$WORK/pkg-config/build.log"; return
+  fi
+  if "$bld/prism_consumer_render" "$WORK/pkg-config/tinted_phong.png" \
+       --golden "$SOURCE/tests/golden/consumer/tinted_phong.png" >"$WORK/pkg-config/run.log" 2>&1; then
+    pass "pkg-config: rendered PNG matches the golden ($(grep golden "$WORK/pkg-config/run.log"))"
+  else
+    fail "pkg-config: prism_consumer_render against the golden"; show_log "$WORK/pkg-config/run.log"
+  fi
+}
+check_pkg_config
 
 # check_safe_defaults <generator> <consumer copy> <build dir> <log dir>
 check_safe_defaults() {
