@@ -146,7 +146,7 @@ struct WaterSceneRenderer::Impl {
         glBindTexture(GL_TEXTURE_2D, heightTexture);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
         glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, t.width, t.height, 0, GL_RED, GL_FLOAT, t.heights.data());
-        setGridSampling(GL_LINEAR);  // the fragment stage interpolates; the vertex stage uses texelFetch
+        setGridSampling(GL_NEAREST);  // read by texelFetch only (the depth is interpolated per vertex)
         depthTexture = newTexture();
         glBindTexture(GL_TEXTURE_2D, depthTexture);
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, t.width, t.height, 0, GL_RG, GL_FLOAT, nullptr);
