@@ -43,13 +43,15 @@ double luminance(const image::Rgba8& p) {
     return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
 }
 
-double periodicAmplitude(const image::Image8& image, PixelRect window, double minPeriod, double maxPeriod) {
-    double best = 0.0;
+PeriodicAmplitude periodicAmplitude(const image::Image8& image, PixelRect window, double minPeriod, double maxPeriod) {
+    PeriodicAmplitude best;
     // Frequencies 1/8 of a bin apart across the band, so a period between two bins is not missed.
     const int length = std::min(window.x1 - window.x0, window.y1 - window.y0);
     const double step = 0.125 / std::max(1, length);
-    for (double f = 1.0 / maxPeriod; f <= 1.0 / minPeriod + 1e-12; f += step)
-        best = std::max({best, amplitudeAt(image, window, f, true), amplitudeAt(image, window, f, false)});
+    for (double f = 1.0 / maxPeriod; f <= 1.0 / minPeriod + 1e-12; f += step) {
+        best.alongRows = std::max(best.alongRows, amplitudeAt(image, window, f, true));
+        best.alongColumns = std::max(best.alongColumns, amplitudeAt(image, window, f, false));
+    }
     return best;
 }
 
