@@ -34,7 +34,7 @@ HeightField twistedPlane(float slope, float twist) {
     return f;
 }
 
-image::Image8 renderFilm(float film, const HeightField& terrain) {
+image::Image8 renderDepths(const std::vector<float>& depths, const HeightField& terrain) {
     WaterSceneDescription d;
     d.terrain = terrain;
     d.permeability = uniformPermeability(d.terrain, 0.0);
@@ -43,12 +43,24 @@ image::Image8 renderFilm(float film, const HeightField& terrain) {
     d.look.shoreFadeDepth = 1e-4f;
     d.look.absorption = 300.0f;
     WaterScene scene(std::move(d));
-    scene.water()->simulation().setDepth(std::vector<float>(terrain.cellCount(), film));
+    scene.water()->simulation().setDepth(depths);
     WaterSceneRenderer renderer(scene);
     view::Camera top;
     top.eye = {0.0f, 8.0f, 0.001f};
     top.fovYDegrees = 40.0f;
     return renderer.renderImage(top, kImage, kImage);
+}
+
+image::Image8 renderFilm(float film, const HeightField& terrain) {
+    return renderDepths(std::vector<float>(terrain.cellCount(), film), terrain);
+}
+
+// Mean luminance of the pixels in [x0, x0 + n) x [y0, y0 + n).
+double meanLuminance(const image::Image8& img, int x0, int y0, int n) {
+    double sum = 0.0;
+    for (int y = y0; y < y0 + n; ++y)
+        for (int x = x0; x < x0 + n; ++x) sum += prism::test::luminance(img.at(x, y));
+    return sum / (n * n);
 }
 
 // Cell period in pixels near the image centre: 8 m above the plane's middle, 40 degrees
@@ -67,6 +79,22 @@ TEST_F(ThinFilm, AUniformFilmOnATiltedPlaneShowsNoCellLattice) {
     const double amplitude = prism::test::periodicAmplitude(img, {64, 64, 192, 192}, 0.85 * p, 1.15 * p).lattice();
     std::printf("[thin film] cell period %.2f px, amplitude at it %.3f levels (bound 1)\n", p, amplitude);
     EXPECT_LT(amplitude, 1.0) << "a lattice at the cell period: the film's depth disagrees with its triangles";
+}
+
+// One dry cell in the same film on the plain slope: its vertex continues the wet neighbours'
+// level only up to its own ground. Before, it took the highest neighbour's level, a whole
+// cell's drop (25 mm here) above its ground, and the six triangles round it showed as deep,
+// dark water: the 24 px window round it measured 38.0 levels against the film's 43.4; now
+// 43.7 (dry ground, no darker than the film), bound 2 levels below the film.
+TEST_F(ThinFilm, ADryCellOnASlopeRaisesNoWater) {
+    const HeightField plane = twistedPlane(0.1f, 0.0f);
+    std::vector<float> depths(plane.cellCount(), 0.0005f);
+    depths[plane.index(kCells / 2, kCells / 2)] = 0.0f;
+    const image::Image8 img = renderDepths(depths, plane);
+    const double spot = meanLuminance(img, kImage / 2 - 12, kImage / 2 - 12, 24);
+    const double film = meanLuminance(img, kImage / 2 - 12, kImage / 2 + 40, 24);
+    std::printf("[thin film] around the dry cell %.2f, the film %.2f levels\n", spot, film);
+    EXPECT_GT(spot, film - 2.0) << "water raised over a dry cell on a slope";
 }
 
 }  // namespace
