@@ -11,8 +11,9 @@ int main() {
     // [snippet]
     prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
     prism::image::Image8 image = renderer.render(prism::scene::loadScene("examples/scenes/one_light.json"));
+    prism::image::ImageF hdr = renderer.renderF(prism::scene::loadScene("examples/scenes/one_light.json"));
     std::size_t built = renderer.programs().size();                         // programs built so far
     const std::vector<std::string>& drawn = renderer.lastFrame().variants;  // "phong FOG=1,..." per draw
     // [/snippet]
-    return image.width == 512 && drawn.size() == 3 && built == 3 ? 0 : 1;
+    return image.width == 512 && hdr.width == 512 && drawn.size() == 3 && built == 3 ? 0 : 1;
 }

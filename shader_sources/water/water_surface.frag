@@ -7,9 +7,11 @@
 // and deep water turns to the body colour. There is no draw threshold: the surface
 // fades in with depth from 0 to u_shoreFadeDepth (premultiplied output, blend ONE,
 // ONE_MINUS_SRC_ALPHA) and below that the terrain's own wet darkening shows the film.
-// The normal is turned to face the viewer (no shards at grazing angles). The depth is
-// taken per fragment (water level minus the bilinear terrain height), so the shore
-// follows the terrain's contour line.
+// The normal is turned to face the viewer (no shards at grazing angles). The depth is the
+// vertices' depth (level minus terrain) interpolated over the same triangles as the level
+// and the terrain mesh, so it is zero exactly where the drawn surface meets the drawn
+// terrain. Level minus the *bilinear* terrain disagreed with those triangles by up to a
+// quarter of a cell's twist, which punched a hole into every cell of a thin film.
 // RIPPLES (scenes with rain only): capillary ripples from the animated normal maps, as
 // many layers as the rain's u_rippleDensity; their bump (crest height) adds reflection.
 #pragma prism variant RIPPLES
@@ -27,17 +29,16 @@ uniform vec3 u_waterTint;          // body colour of the water
 uniform float u_waterAbsorption;   // 1/m: transmittance exp(-absorption x path)
 uniform float u_wetDarkening;      // albedo factor of soaked ground
 uniform float u_cellSize;
-uniform sampler2D u_terrainHeight;  // R32F, linear filtering
 uniform sampler2D u_terrainAlbedo;  // RGBA8 albedo per cell, linear filtering
 
 in vec3 v_worldPosition;
 in vec3 v_eyePosition;
 in vec3 v_worldNormal;
-in float v_surface;
+in float v_depth;  // water level minus terrain, per vertex
 in vec2 v_uv;
 
 void main() {
-    float depth = v_surface - texture(u_terrainHeight, v_uv).r;
+    float depth = v_depth;
     if (depth <= 0.0) discard;  // under the bank: the terrain is in front
     float shore = smoothstep(0.0, u_shoreFadeDepth, depth);
     vec3 up = vec3(0.0, 1.0, 0.0);

@@ -2,8 +2,9 @@
 // only an index buffer). A wet vertex sits on the water surface (terrain + depth). A dry
 // vertex next to water continues the neighbouring water level into the bank, so the
 // surface meets the terrain along the true contour line (the depth test and the
-// fragment's own depth cut it there) instead of in cell-sized steps; a dry vertex away
-// from water is tucked under the terrain. The normal comes from central differences of
+// fragment's own depth cut it there) instead of in cell-sized steps, but never rises above
+// its own ground (downhill of a wet cell on a slope it would otherwise lift a cell-sized
+// sheet of deep-looking water); a dry vertex away from water is tucked under the terrain. The normal comes from central differences of
 // the surface.
 #include <version.glsl>
 #include <transforms.glsl>
@@ -16,7 +17,7 @@ uniform float u_waterThreshold;     // m: a vertex with less water is dry (the s
 out vec3 v_worldPosition;
 out vec3 v_eyePosition;
 out vec3 v_worldNormal;
-out float v_surface;  // water level (m, local)
+out float v_depth;    // water level minus terrain (m): negative under a bank
 out vec2 v_uv;        // grid position as texture coordinate (texel centres)
 
 float depthAt(ivec2 c) {
@@ -49,7 +50,7 @@ void main() {
             float d = depthAt(nc);
             if (d > u_waterThreshold) level = max(level, texelFetch(u_terrainHeight, nc, 0).r + d);
         }
-        if (level > -1.0e29) y = level;
+        if (level > -1.0e29) y = min(level, ground);
     }
     vec3 normal = vec3(0.0, 1.0, 0.0);
     if (wet) {
@@ -64,7 +65,7 @@ void main() {
     v_worldPosition = world.xyz;
     v_eyePosition = eye.xyz;
     v_worldNormal = mat3(u_world) * normal;
-    v_surface = y;
+    v_depth = y - ground;
     v_uv = (vec2(c) + 0.5) / vec2(size);
     gl_Position = clipPosition(eye);
 }

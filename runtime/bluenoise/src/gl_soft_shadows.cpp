@@ -9,6 +9,7 @@
 
 #include "prism/bluenoise_shaders.hpp"
 #include "prism/gl/framebuffer.hpp"
+#include "prism/gl/draw_state.hpp"
 #include "prism/gl/gl.hpp"
 #include "prism/gl/handles.hpp"
 #include "prism/render/program_cache.hpp"
@@ -56,6 +57,7 @@ RealImage GlSoftShadows::render(const SoftShadowScene& scene, StochasticSetup& s
     if (scene.spheres.size() > 3)
         throw std::invalid_argument("prism::bluenoise::GlSoftShadows: at most 3 spheres, the scene has " +
                                     std::to_string(scene.spheres.size()));
+    const gl::ScopedDrawState keep;  // the caller's framebuffer, viewport, bindings and unit, put back on return
     if (options.width != gl_->framebuffer.width() || options.height != gl_->framebuffer.height())
         throw std::invalid_argument("prism::bluenoise::GlSoftShadows: options size differs from the framebuffer's");
     gl::Program& program = gl_->programs.get("soft_shadows");

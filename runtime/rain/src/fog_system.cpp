@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "prism/gl/draw_state.hpp"
 #include "prism/gl/gl.hpp"
 #include "prism/rain/rain_params.hpp"
 #include "prism/rain_shaders.hpp"
@@ -51,6 +52,7 @@ void FogSystem::setStrength(float strength) {
 
 void FogSystem::draw(const view::Camera& camera, float aspect, const view::Fog* distanceFog, float timeSeconds) {
     if (params_.strength <= 0.0f) return;
+    const gl::ScopedDrawState keep;  // the caller's blend, depth, bindings and unit, put back on return
     gl::Program& p = programs_.get("fog_billboards", {{"FOG", distanceFog ? "1" : "0"}});
     p.use();
     p.set(rain_shaders::fog_billboards::u_view, camera.view());
@@ -73,14 +75,10 @@ void FogSystem::draw(const view::Camera& camera, float aspect, const view::Fog* 
     glDepthMask(GL_FALSE);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    glBlendEquation(GL_FUNC_ADD);  // premultiplied "over": nothing else may be left here
     p.reportUnsetUniforms();
     glBindVertexArray(vao_.id());
     glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(simulation_.billboards().size()));
-    glBindVertexArray(0);
-    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-    glActiveTexture(GL_TEXTURE0);
-    glDisable(GL_BLEND);
-    glDepthMask(GL_TRUE);
     gl::throwIfGlError("rain: drawing the fog billboards");
 }
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <string>
 
+#include "prism/gl/draw_state.hpp"
 #include "prism/gl/gl.hpp"
 #include "prism/rain/streak_texture.hpp"
 #include "prism/rain_shaders.hpp"
@@ -104,6 +105,7 @@ void RainSystem::update(float dt, const glm::vec3& eye) {
     shearHeight_ = shearHeight(params_, eye);
     ++steps_;
     if (count_ == 0) return;
+    const gl::ScopedDrawState keep;
     gl::Program& update = programs_.get("rain_update");
     update.use();
     update.set(rain_shaders::rain_update::u_cylinderCenter, center_);
@@ -160,6 +162,7 @@ void RainSystem::bindAttributes(const gl::VertexArray& vao, unsigned divisor) {
 
 void RainSystem::draw(const RainDrawInputs& in) {
     if (count_ == 0) return;
+    const gl::ScopedDrawState keep;  // the caller's blend, depth, bindings and unit, put back on return
     ensureStreakTexture();
     const bool instanced = in.technique == StreakTechnique::Instanced;
     gl::VertexArray& vao = instanced ? instancedVao_ : pointsVao_;
@@ -200,6 +203,7 @@ void RainSystem::draw(const RainDrawInputs& in) {
     glDepthMask(GL_FALSE);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    glBlendEquation(GL_FUNC_ADD);  // premultiplied "over": nothing else may be left here
     p.reportUnsetUniforms();
     glBindVertexArray(vao.id());
     switch (in.technique) {
@@ -210,13 +214,8 @@ void RainSystem::draw(const RainDrawInputs& in) {
         case StreakTechnique::PointSprites:
             glEnable(GL_PROGRAM_POINT_SIZE);
             glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count_));
-            glDisable(GL_PROGRAM_POINT_SIZE);
             break;
     }
-    glBindVertexArray(0);
-    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-    glDisable(GL_BLEND);
-    glDepthMask(GL_TRUE);
     gl::throwIfGlError("rain: drawing " + std::string(techniqueName(in.technique)));
 }
 

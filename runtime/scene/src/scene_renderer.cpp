@@ -5,6 +5,7 @@
 #include "prism/diffraction/diffraction_gl.hpp"
 #include "prism/render/feature_variants.hpp"
 #include "prism/render/frame_uniforms.hpp"
+#include "prism/gl/draw_state.hpp"
 #include "prism/gl/framebuffer.hpp"
 #include "prism/gl/gl.hpp"
 #include "prism/render/gpu_mesh.hpp"
@@ -218,7 +219,22 @@ void SceneRenderer::drawDiffraction(const Scene& scene, const SceneObject& objec
 image::Image8 SceneRenderer::render(const Scene& scene) {
     lastFrame_ = {};
     if (scene.stochastic) return renderStochastic(*scene.stochastic, scene.width, scene.height);  // CPU, no draws
+    const gl::ScopedDrawState keep;  // declared before fb: restored after fb is deleted
     gl::Framebuffer fb(scene.width, scene.height, gl::ColorFormat::Rgba8);
+    drawFrame(scene, fb);
+    return fb.readImage8();
+}
+
+image::ImageF SceneRenderer::renderF(const Scene& scene) {
+    lastFrame_ = {};
+    if (scene.stochastic) return image::toImageF(renderStochastic(*scene.stochastic, scene.width, scene.height));
+    const gl::ScopedDrawState keep;
+    gl::Framebuffer fb(scene.width, scene.height, gl::ColorFormat::Rgba32F);
+    drawFrame(scene, fb);
+    return fb.readImageF();
+}
+
+void SceneRenderer::drawFrame(const Scene& scene, gl::Framebuffer& fb) {
     fb.bind();
     const glm::vec4 background = scene.fog ? glm::vec4(scene.fog->color, 1.0f) : scene.background;
     fb.clear({background.r, background.g, background.b, background.a});
@@ -234,7 +250,6 @@ image::Image8 SceneRenderer::render(const Scene& scene) {
     if (scene.fog && scene.fogBillboards && *scene.fogBillboards > 0.0f) drawFogBillboards(scene, terrainLowest);
     glFinish();
     gl::throwIfGlError("rendering " + scene.file);
-    return fb.readImage8();
 }
 
 water::HeightField SceneRenderer::buildTerrain(const WaterSettings& settings) {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "prism/gl/draw_state.hpp"
 #include "prism/gl/framebuffer.hpp"
 #include "prism/gl/gl.hpp"
 #include "prism/gl/handles.hpp"
@@ -146,7 +147,7 @@ struct WaterSceneRenderer::Impl {
         glBindTexture(GL_TEXTURE_2D, heightTexture);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
         glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, t.width, t.height, 0, GL_RED, GL_FLOAT, t.heights.data());
-        setGridSampling(GL_LINEAR);  // the fragment stage interpolates; the vertex stage uses texelFetch
+        setGridSampling(GL_NEAREST);  // read by texelFetch only (the depth is interpolated per vertex)
         depthTexture = newTexture();
         glBindTexture(GL_TEXTURE_2D, depthTexture);
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, t.width, t.height, 0, GL_RG, GL_FLOAT, nullptr);
@@ -200,8 +201,9 @@ struct WaterSceneRenderer::Impl {
     }
 
     // The frame: the texture units the passes read (0 sky, 1 water depth, 2 terrain
-    // height, 3 ripples, 4 terrain albedo), then sky, terrain and water, then unbinding.
+    // height, 3 ripples, 4 terrain albedo), then sky, terrain and water; the caller's state is put back.
     void draw(const view::Camera& camera, int width, int height) {
+        const gl::ScopedDrawState keep;  // the caller's blend, depth, bindings and units, put back on return
         const float aspect = static_cast<float>(width) / static_cast<float>(std::max(1, height));
         glViewport(0, 0, width, height);
         glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
@@ -211,7 +213,6 @@ struct WaterSceneRenderer::Impl {
         drawSky(camera, aspect);
         drawTerrain(camera, aspect);
         if (scene.water() && waterIndexCount > 0) drawWaterSurface(*scene.water(), camera, aspect);
-        unbindAll();
         gl::throwIfGlError("drawing the water scene");
     }
 
@@ -274,15 +275,13 @@ struct WaterSceneRenderer::Impl {
         waterSurfaceUniforms(surface, water);
         glEnable(GL_BLEND);
         glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+        glBlendEquation(GL_FUNC_ADD);  // premultiplied "over": nothing else may be left here
         glDepthMask(GL_FALSE);
         glDepthFunc(GL_LEQUAL);
         surface.use();
         surface.reportUnsetUniforms();
         glBindVertexArray(waterVao);
         glDrawElements(GL_TRIANGLES, waterIndexCount, GL_UNSIGNED_INT, nullptr);
-        glDepthMask(GL_TRUE);
-        glDepthFunc(GL_LESS);
-        glDisable(GL_BLEND);
     }
 
     void waterSurfaceUniforms(gl::Program& surface, const WaterSystem& water) {
@@ -303,20 +302,6 @@ struct WaterSceneRenderer::Impl {
         surface.set(ws::water_surface::u_rippleFrame, static_cast<float>(water.rippleFrame()));
         surface.set(ws::water_surface::u_rippleScale, look.rippleScale);
         surface.set(ws::water_surface::u_rippleStrength, rippleStrength(water.rainMmPerHour()));
-    }
-
-    // Leaves no program, vertex array or texture bound, for whoever draws next.
-    static void unbindAll() {
-        glBindVertexArray(0);
-        glUseProgram(0);
-        glActiveTexture(GL_TEXTURE3);
-        glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-        for (GLenum unit : {GL_TEXTURE4, GL_TEXTURE2, GL_TEXTURE1}) {
-            glActiveTexture(unit);
-            glBindTexture(GL_TEXTURE_2D, 0);
-        }
-        glActiveTexture(GL_TEXTURE0);
-        glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
     }
 };
 

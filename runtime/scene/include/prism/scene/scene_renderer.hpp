@@ -17,6 +17,7 @@
 //     #include "prism/shaders.hpp"
 //     prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
 //     prism::image::Image8 image = renderer.render(prism::scene::loadScene("examples/scenes/one_light.json"));
+//     prism::image::ImageF hdr = renderer.renderF(prism::scene::loadScene("examples/scenes/one_light.json"));
 //     std::size_t built = renderer.programs().size();                         // programs built so far
 //     const std::vector<std::string>& drawn = renderer.lastFrame().variants;  // "phong FOG=1,..." per draw
 //
@@ -40,6 +41,9 @@ struct RainParams;
 namespace prism::water {
 struct HeightField;
 }  // namespace prism::water
+namespace prism::gl {
+class Framebuffer;
+}  // namespace prism::gl
 
 namespace prism::scene {
 
@@ -67,6 +71,8 @@ class SceneRenderer {
     ~SceneRenderer();
 
     image::Image8 render(const Scene& scene);
+    // The same frame drawn into an RGBA32F target, unclamped, so NaN and Inf survive to be counted.
+    image::ImageF renderF(const Scene& scene);
     render::ProgramCache& programs() { return programs_; }
     const SceneFrameInfo& lastFrame() const { return lastFrame_; }
     // Rain systems created so far: one per rendered frame of a scene with rain, none
@@ -93,6 +99,7 @@ class SceneRenderer {
     static constexpr std::size_t kDiffractionTablesKept = 8;
 
   private:
+    void drawFrame(const Scene& scene, gl::Framebuffer& target);
     water::HeightField buildTerrain(const WaterSettings& settings);  // sceneTerrain(), counted
     void drawObjects(const Scene& scene);
     void drawRain(const Scene& scene, std::optional<float> terrainLowest);
