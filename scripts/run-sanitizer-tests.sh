@@ -26,7 +26,7 @@ done
 # and prism_<subject>_gl_tests); prism_scene_cli_tests also builds prism-render, which it runs.
 TEST_TARGETS=(prism_shaderc_tests prism_shaderc_gl_tests prism_geometry_tests prism_image_tests prism_gl_tests prism_gl_gl_tests
   prism_rain_tests prism_rain_gl_tests prism_water_tests prism_water_gl_tests prism_scene_tests prism_scene_gl_tests
-  prism_scene_cli_tests prism_limits_tests)
+  prism_scene_cli_tests prism_limits_tests prism_draw_state_gl_tests)
 if [ "$BUILD" = 1 ]; then
   bash scripts/configure-sanitizer-build.sh "$BUILD_DIR"
   cmake --build "$BUILD_DIR" --target "${TEST_TARGETS[@]}" -j "$(nproc)"
