@@ -10,6 +10,7 @@
 #     [CONTRACT <json files...>]        # binding contract(s)
 #     [DEFINES NAME[=VALUE]...]         # -D for every stage
 #     [VARIANTS SHADER:NAME=VALUE,...]  # emit only these variants of those shaders
+#     [TARGETS gl es300 ...]            # --target: also validate these (docs/targets.md); default gl
 #     [GLSL_VERSION <n>])               # default 330
 #
 #   target_link_libraries(app PRIVATE <target>)   # then #include "<name.hpp>"
@@ -113,7 +114,7 @@ endfunction()
 
 function(prism_add_shaders target)
   cmake_parse_arguments(PARSE_ARGV 1 PAS "" "HEADER;NAMESPACE;GLSL_VERSION"
-                        "SOURCES;MODULE_DIRS;DEFINES;CONTRACT;VARIANTS")
+                        "SOURCES;MODULE_DIRS;DEFINES;CONTRACT;VARIANTS;TARGETS")
   if(PAS_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "prism_add_shaders(${target}): unknown arguments: ${PAS_UNPARSED_ARGUMENTS}")
   endif()
@@ -180,6 +181,10 @@ function(prism_add_shaders target)
   endforeach()
   if(PAS_GLSL_VERSION)
     list(APPEND args --glsl-version ${PAS_GLSL_VERSION})
+  endif()
+  if(PAS_TARGETS)
+    string(REPLACE ";" "," target_list "${PAS_TARGETS}")
+    list(APPEND args --target ${target_list})
   endif()
 
   _prism_write_source_tree(${source_tree} ${PAS_NAMESPACE} ${PROJECT_SOURCE_DIR} "${module_dirs}" "${contracts}"

@@ -53,7 +53,8 @@ std::string conflictOf(const Options& o, const CLI::App& app) {
 }
 
 // Every option, bound to `o` (to `defines` and `errfmt` where parseArgs checks them after).
-void addOptions(CLI::App& app, Options& o, std::vector<std::string>& defines, std::string& errfmt) {
+void addOptions(CLI::App& app, Options& o, std::vector<std::string>& defines, std::string& errfmt,
+                std::string& targets) {
     app.set_version_flag("--version", std::string("prism-shaderc ") + PRISM_VERSION);
     // Unknown options are collected (not an error inside CLI11, whose required-positional
     // check would otherwise speak first) and named below.
@@ -66,6 +67,9 @@ void addOptions(CLI::App& app, Options& o, std::vector<std::string>& defines, st
     app.add_option("--stamp", o.stamp, "file touched on every successful run (build-system output)");
     app.add_option("--emit-glsl", o.emitGlslDir,
                    "also write each flattened stage as DIR/<shader>[.<variant>].<stage> (with --check too)");
+    app.add_option("--target", targets,
+                   "what to produce and validate: a comma list of gl, es300 (GLSL ES 3.00), spirv (docs/targets.md)")
+        ->capture_default_str();
     app.add_flag("--check", o.checkOnly, "validate only: no header (--emit-glsl, --depfile, --stamp still written)");
     app.add_option("-D", defines, "define a macro for every stage: NAME[=VALUE]")->allow_extra_args(false);
     app.add_option("--glsl-version", o.glslVersion, "default #version when a shader has none")->capture_default_str();
@@ -94,9 +98,10 @@ ArgsResult parseArgs(int argc, char** argv) {
     Options o;
     std::vector<std::string> defines;
     std::string errfmt = "gcc";
+    std::string targets = "gl";
     CLI::App app{"prism-shaderc: resolve #includes, validate GLSL with glslang and embed it in a C++ header",
                  "prism-shaderc"};
-    addOptions(app, o, defines, errfmt);
+    addOptions(app, o, defines, errfmt, targets);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -114,6 +119,11 @@ ArgsResult parseArgs(int argc, char** argv) {
             return usageError("-D " + d + ": '" + nv.first + "' is not a macro name; use -D NAME or -D NAME=VALUE");
         o.defines.push_back(nv);
     }
+    if (auto error = parseTargetList(targets, o.targets); !error.empty())
+        return usageError("--target " + targets + ": " + error);
+    if (hasTarget(o.targets, Target::Spirv))
+        return usageError("--target " + targets +
+                          ": this prism-shaderc does not produce spirv yet (docs/targets.md); ask for gl and es300");
     o.errorFormat = errfmt == "msvc" ? ErrorFormat::Msvc : ErrorFormat::Gcc;
     if (o.jobs == 0) o.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     if (o.glslVersion >= 150 && o.glslVersion < 300) o.glslProfile = "core";

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "diagnostics.hpp"
+#include "targets.hpp"
 
 namespace prism::shaderc {
 
@@ -23,6 +24,7 @@ struct Options {
     std::string baseDir;                                       // --base-dir: embedded paths are relative to it
     std::string cacheDir;  // --cache-dir: validation results cache ("" = default, "none" = off)
     std::string nameSpace = "prism::shaders";
+    std::vector<Target> targets = {Target::Gl};  // --target gl,es300,spirv (targets.hpp)
     int glslVersion = 330;
     std::string glslProfile = "core";
     ErrorFormat errorFormat = ErrorFormat::Gcc;

@@ -26,6 +26,7 @@ std::string catalogueCacheKey(const Options& o) {
     }
     for (const auto& [name, value] : o.defines) h.add(name).add(value);
     h.add(std::to_string(o.glslVersion)).add(o.glslProfile).add(o.baseDir);
+    if (o.targets != std::vector<Target>{Target::Gl}) h.add("--target " + targetListText(o.targets));
     return h.hex();
 }
 

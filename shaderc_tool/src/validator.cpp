@@ -228,10 +228,11 @@ bool compiledCleanly(const CompiledStage& stage) {
     return stage.ok && stage.diagnostics.empty();
 }
 
-ValidatedVariant validateProgram(const std::vector<StageToValidate>& stages, const Contract& contract) {
+ValidatedVariant validateProgram(const std::vector<StageToValidate>& stages, const Contract& contract,
+                                 const LinkedProgramCheck& check) {
     std::vector<std::shared_ptr<CompiledStage>> compiled;
     for (const auto& s : stages) compiled.push_back(compileStage(s));
-    return validateCompiledProgram(stages, compiled, contract);
+    return validateCompiledProgram(stages, compiled, contract, check);
 }
 
 namespace {
@@ -261,7 +262,7 @@ std::vector<Diagnostic> checkInterfaces(const std::vector<StageToValidate>& stag
 
 // Links the program and reflects it into `result`; link errors become diagnostics.
 void linkAndReflect(const std::vector<StageToValidate>& stages, const std::vector<glslang::TShader*>& shaders,
-                    const Contract& contract, ValidatedVariant& result) {
+                    const Contract& contract, const LinkedProgramCheck& check, ValidatedVariant& result) {
     glslang::TProgram program;
     for (auto* sh : shaders) program.addShader(sh);
     if (!program.link(EShMsgDefault)) {
@@ -276,6 +277,10 @@ void linkAndReflect(const std::vector<StageToValidate>& stages, const std::vecto
         return;
     }
     result.reflection = reflectProgram(program, contract);
+    if (check) {
+        const auto found = check(program, shaders);
+        result.diagnostics.insert(result.diagnostics.end(), found.begin(), found.end());
+    }
     result.ok = true;
     for (const auto& d : result.diagnostics) result.ok = result.ok && d.severity != Severity::Error;
 }
@@ -284,7 +289,7 @@ void linkAndReflect(const std::vector<StageToValidate>& stages, const std::vecto
 
 ValidatedVariant validateCompiledProgram(const std::vector<StageToValidate>& stages,
                                          const std::vector<std::shared_ptr<CompiledStage>>& compiledStages,
-                                         const Contract& contract) {
+                                         const Contract& contract, const LinkedProgramCheck& check) {
     ValidatedVariant result;
     bool compiled = true;
     for (std::size_t i = 0; i < stages.size(); ++i) {
@@ -315,7 +320,7 @@ ValidatedVariant validateCompiledProgram(const std::vector<StageToValidate>& sta
     // warning (a near miss of Prism's built-in contract) still links and reflects.
     const auto isError = [](const Diagnostic& d) { return d.severity == Severity::Error; };
     if (std::none_of(interfaceMessages.begin(), interfaceMessages.end(), isError))
-        linkAndReflect(stages, shaders, contract, result);
+        linkAndReflect(stages, shaders, contract, check, result);
     return result;
 }
 

@@ -4,6 +4,7 @@
 // from" chain).
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -15,7 +16,17 @@
 #include "include_resolver.hpp"
 #include "reflection.hpp"
 
+namespace glslang {
+class TProgram;
+class TShader;
+}  // namespace glslang
+
 namespace prism::shaderc {
+
+// A further check of a linked program (the es300 limits, es300_limits.hpp): reads the
+// program and its shaders (in stage order), returns what it found.
+using LinkedProgramCheck =
+    std::function<std::vector<Diagnostic>(glslang::TProgram&, const std::vector<glslang::TShader*>&)>;
 
 struct StageToValidate {
     catalog::Stage stage;
@@ -34,7 +45,8 @@ void initializeValidator();
 void finalizeValidator();
 
 // Thread-safe: each call uses its own glslang objects.
-ValidatedVariant validateProgram(const std::vector<StageToValidate>& stages, const Contract& contract);
+ValidatedVariant validateProgram(const std::vector<StageToValidate>& stages, const Contract& contract,
+                                 const LinkedProgramCheck& check = {});
 
 // One stage parsed by glslang, shareable by the programs whose stage has the same
 // token stream (validation_scheduler.hpp). Its diagnostics speak of the text it was
@@ -49,6 +61,6 @@ bool compiledCleanly(const CompiledStage& stage);                           // p
 // with validateProgram, on private stages.
 ValidatedVariant validateCompiledProgram(const std::vector<StageToValidate>& stages,
                                          const std::vector<std::shared_ptr<CompiledStage>>& compiled,
-                                         const Contract& contract);
+                                         const Contract& contract, const LinkedProgramCheck& check = {});
 
 }  // namespace prism::shaderc

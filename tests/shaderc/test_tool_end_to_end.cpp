@@ -12,9 +12,11 @@
 #include <regex>
 #include <thread>
 
+#include "baseline.hpp"
 #include "tool_runner.hpp"
 
 namespace fs = std::filesystem;
+using prism::test::expectMatchesBaseline;
 using prism::test::readFile;
 using prism::test::runShaderc;
 using prism::test::ScratchDir;
@@ -23,7 +25,6 @@ namespace {
 
 const std::string kSource = PRISM_SOURCE_DIR;
 const std::string kFixture = kSource + "/tests/shaderc/fixtures/variants";
-const std::string kBaseResults = kSource + "/tests/shaderc/baseResults";
 
 // The project catalogue with the light counts pinned (2 directional, 1 point), so the
 // baseline stays small: the other light variants differ only in their #defines.
@@ -35,23 +36,6 @@ std::string catalogueArgs() {
 std::string fixtureArgs() {
     return "--base-dir " + kSource + " -I " + kFixture + "/modules --contract " + kFixture + "/contract.json " +
            kFixture + "/shaders";
-}
-
-bool updateMode() {
-    const char* v = std::getenv("PRISM_UPDATE_BASELINES");
-    return v && std::string(v) == "1";
-}
-
-void expectMatchesBaseline(const std::string& actual, const std::string& name) {
-    const fs::path baseline = fs::path(kBaseResults) / name;
-    if (updateMode()) {
-        prism::test::writeFile(baseline, actual);
-        GTEST_SKIP() << "rewrote " << baseline << " (PRISM_UPDATE_BASELINES=1); this run checked nothing";
-    }
-    ASSERT_TRUE(fs::exists(baseline)) << baseline << " is missing; run with PRISM_UPDATE_BASELINES=1 to create it";
-    EXPECT_TRUE(actual == readFile(baseline))
-        << "generated text differs from " << baseline
-        << "; inspect the difference and, if intended, rerun with PRISM_UPDATE_BASELINES=1";
 }
 
 }  // namespace
