@@ -6,6 +6,8 @@ set -euo pipefail
 PACKAGES=(
   build-essential cmake ninja-build pkg-config python3
   glslang-dev glslang-tools
+  # the Vulkan client links SPIRV-Tools; glslc and spirv-val are its tests' references
+  glslc spirv-tools spirv-cross libspirv-cross-c-shared-dev
   libglfw3-dev libglm-dev libimgui-dev
   libosmesa6-dev libegl1-mesa-dev libgl1-mesa-dri libgles-dev
   libpng-dev python3-glad

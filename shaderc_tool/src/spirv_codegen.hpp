@@ -1,0 +1,54 @@
+// SPIR-V out of glslang, and SPIRV-Tools' check of it: the one place that knows how a
+// target environment (Vulkan 1.0-1.3, OpenGL 4.5) maps to glslang's client and SPIR-V
+// versions and to SPIRV-Tools' environment. Client-neutral: it takes glslang objects and a
+// SpirvEnv, never catalogue types, so every SPIR-V producer (the Vulkan client, SPIR-V
+// targets) shares it.
+//
+//   glslang::TShader shader(EShLangVertex);
+//   configureShader(shader, EShLangVertex, SpirvEnv::Vulkan1_2);
+//   shader.parse(GetDefaultResources(), 100, ENoProfile, false, false, spirvMessages(SpirvEnv::Vulkan1_2));
+//   ... program.addShader(&shader); program.link(spirvMessages(SpirvEnv::Vulkan1_2));
+//   std::vector<std::uint32_t> words;
+//   std::string log;
+//   if (!generateSpirv(program, EShLangVertex, words, log)) ...;
+//   auto diagnostics = validateSpirv(words, SpirvEnv::Vulkan1_2, "shaders/blur.vert", "program blur, vert stage");
+#pragma once
+
+#include <glslang/Public/ShaderLang.h>
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "diagnostics.hpp"
+
+namespace prism::shaderc {
+
+enum class SpirvEnv : std::uint8_t { Vulkan1_0, Vulkan1_1, Vulkan1_2, Vulkan1_3, OpenGL4_5 };
+
+// "vulkan1.0" ... "vulkan1.3", "opengl4.5" (glslc's --target-env spellings).
+std::optional<SpirvEnv> parseSpirvEnv(std::string_view name);
+std::string_view spirvEnvName(SpirvEnv env);
+// The names parseSpirvEnv takes, for an error message: "vulkan1.0, vulkan1.1, ...".
+std::string spirvEnvNames();
+
+// Sets `shader`'s input, client and SPIR-V target for `env` (as glslangValidator -V / -G
+// and glslc --target-env do), before parse().
+void configureShader(glslang::TShader& shader, EShLanguage stage, SpirvEnv env);
+// The messages that parse() and link() take for `env`: SPIR-V rules, plus Vulkan rules for Vulkan.
+EShMessages spirvMessages(SpirvEnv env);
+
+// The SPIR-V words of `stage` of a linked `program` (glslang's generator, unoptimised,
+// no debug information). False with glslang's log when it produced nothing.
+bool generateSpirv(const glslang::TProgram& program, EShLanguage stage, std::vector<std::uint32_t>& words,
+                   std::string& log);
+
+// SPIRV-Tools' validator on `words` for `env`: one error per message, at `file` (the
+// stage's source), saying `what` failed (e.g. "program blur, vert stage"). Empty when valid.
+std::vector<Diagnostic> validateSpirv(std::span<const std::uint32_t> words, SpirvEnv env, const std::string& file,
+                                      const std::string& what);
+
+}  // namespace prism::shaderc

@@ -1,0 +1,111 @@
+// Unit tests of spirv_codegen.hpp: SPIR-V generated from a linked glslang program for a
+// Vulkan environment, and SPIRV-Tools' verdict on good and broken words.
+#include <gtest/gtest.h>
+
+#include <glslang/Public/ResourceLimits.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "spirv_codegen.hpp"
+#include "validation_fixture.hpp"
+
+namespace prism::shaderc {
+namespace {
+
+const auto* const kEnv = ::testing::AddGlobalTestEnvironment(new test::GlslangEnvironment);
+
+const char* const kVertex = R"(#version 450
+layout(push_constant) uniform Push { mat4 mvp; } pc;
+layout(set = 1, binding = 2) uniform Extra { vec4 tint; } extra;
+layout(location = 0) in vec3 a_position;
+layout(location = 0) out vec4 v_color;
+void main() {
+    v_color = extra.tint * float(gl_VertexIndex);
+    gl_Position = pc.mvp * vec4(a_position, 1.0);
+}
+)";
+
+// Parses and links `text` as one stage for `env`; null when either step fails.
+std::unique_ptr<glslang::TProgram> linkedProgram(glslang::TShader& shader, const char* text, SpirvEnv env) {
+    shader.setStrings(&text, 1);
+    configureShader(shader, EShLangVertex, env);
+    if (!shader.parse(GetDefaultResources(), 100, ENoProfile, false, false, spirvMessages(env))) return nullptr;
+    auto program = std::make_unique<glslang::TProgram>();
+    program->addShader(&shader);
+    if (!program->link(spirvMessages(env))) return nullptr;
+    return program;
+}
+
+TEST(SpirvCodegen, TargetEnvironmentsByGlslcName) {
+    EXPECT_EQ(parseSpirvEnv("vulkan1.0"), SpirvEnv::Vulkan1_0);
+    EXPECT_EQ(parseSpirvEnv("vulkan1.3"), SpirvEnv::Vulkan1_3);
+    EXPECT_EQ(parseSpirvEnv("opengl4.5"), SpirvEnv::OpenGL4_5);
+    EXPECT_FALSE(parseSpirvEnv("vulkan1.4").has_value());
+    EXPECT_FALSE(parseSpirvEnv("Vulkan1.2").has_value());
+    for (auto env : {SpirvEnv::Vulkan1_0, SpirvEnv::Vulkan1_1, SpirvEnv::Vulkan1_2, SpirvEnv::Vulkan1_3})
+        EXPECT_EQ(parseSpirvEnv(spirvEnvName(env)), env);
+    EXPECT_EQ(spirvEnvNames(), "vulkan1.0, vulkan1.1, vulkan1.2, vulkan1.3, opengl4.5");
+}
+
+TEST(SpirvCodegen, VulkanStageBecomesValidSpirv) {
+    glslang::TShader shader(EShLangVertex);
+    auto program = linkedProgram(shader, kVertex, SpirvEnv::Vulkan1_2);
+    ASSERT_TRUE(program) << shader.getInfoLog();
+    std::vector<std::uint32_t> words;
+    std::string log;
+    ASSERT_TRUE(generateSpirv(*program, EShLangVertex, words, log)) << log;
+    ASSERT_GT(words.size(), 5u);
+    EXPECT_EQ(words[0], 0x07230203u);  // the SPIR-V magic number
+    EXPECT_EQ(words[1], 0x00010500u);  // Vulkan 1.2 → SPIR-V 1.5
+    EXPECT_TRUE(validateSpirv(words, SpirvEnv::Vulkan1_2, "a.vert", "program a, vert stage").empty());
+}
+
+TEST(SpirvCodegen, VersionFollowsTheEnvironment) {
+    glslang::TShader shader(EShLangVertex);
+    auto program = linkedProgram(shader, kVertex, SpirvEnv::Vulkan1_0);
+    ASSERT_TRUE(program) << shader.getInfoLog();
+    std::vector<std::uint32_t> words;
+    std::string log;
+    ASSERT_TRUE(generateSpirv(*program, EShLangVertex, words, log)) << log;
+    EXPECT_EQ(words[1], 0x00010000u);
+}
+
+TEST(SpirvCodegen, NoStageNoWords) {
+    glslang::TShader shader(EShLangVertex);
+    auto program = linkedProgram(shader, kVertex, SpirvEnv::Vulkan1_2);
+    ASSERT_TRUE(program);
+    std::vector<std::uint32_t> words{1, 2};
+    std::string log;
+    EXPECT_FALSE(generateSpirv(*program, EShLangFragment, words, log));
+    EXPECT_TRUE(words.empty());
+    EXPECT_NE(log.find("no such stage"), std::string::npos);
+}
+
+TEST(SpirvCodegen, PushConstantsAreRefusedOutsideVulkan) {
+    glslang::TShader shader(EShLangVertex);
+    EXPECT_FALSE(linkedProgram(shader, kVertex, SpirvEnv::OpenGL4_5));
+    EXPECT_NE(std::string(shader.getInfoLog()).find("push_constant"), std::string::npos) << shader.getInfoLog();
+}
+
+TEST(SpirvCodegen, BrokenWordsAreAnErrorNamingTheStage) {
+    glslang::TShader shader(EShLangVertex);
+    auto program = linkedProgram(shader, kVertex, SpirvEnv::Vulkan1_2);
+    ASSERT_TRUE(program);
+    std::vector<std::uint32_t> words;
+    std::string log;
+    ASSERT_TRUE(generateSpirv(*program, EShLangVertex, words, log));
+    words[3] = 2;  // the id bound below the ids in use
+    const auto errors = validateSpirv(words, SpirvEnv::Vulkan1_2, "shaders/a.vert", "program a, vert stage");
+    ASSERT_FALSE(errors.empty());
+    EXPECT_EQ(errors[0].file, "shaders/a.vert");
+    EXPECT_NE(errors[0].message.find("program a, vert stage"), std::string::npos) << errors[0].message;
+    EXPECT_NE(errors[0].message.find("vulkan1.2"), std::string::npos) << errors[0].message;
+    // Vulkan 1.0 takes SPIR-V 1.0 only: 1.5 words are refused.
+    ASSERT_TRUE(generateSpirv(*program, EShLangVertex, words, log));
+    EXPECT_FALSE(validateSpirv(words, SpirvEnv::Vulkan1_0, "a.vert", "program a").empty());
+}
+
+}  // namespace
+}  // namespace prism::shaderc
