@@ -217,6 +217,7 @@ TEST(Targets, EveryEs300ProgramOfTheProjectValidatesAndLinks) {
             const std::string vert = entry.path().string();
             if (!vert.ends_with(".es300.vert")) continue;
             const std::string frag = vert.substr(0, vert.size() - 4) + "frag";
+            EXPECT_EQ(prism::test::readFile(vert).rfind("#version 300 es\n", 0), 0u) << vert;
             const auto ref = runShell("glslangValidator -l '" + vert + "' '" + frag + "'");
             EXPECT_EQ(ref.exitCode, 0) << vert << "\n" << ref.output;
             ++programs;
