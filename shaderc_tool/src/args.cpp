@@ -45,8 +45,12 @@ std::string conflictOf(const Options& o, const CLI::App& app) {
     if (app.count("--namespace") > 0 && o.output.empty())
         return "--namespace only names the generated header's namespace, and no header is written: give -o "
                "<header> or drop --namespace";
-    if (!o.checkOnly && o.output.empty() && o.emitGlslDir.empty())
-        return "nothing to write: give -o <header>, --emit-glsl <dir> or --check";
+    if (!o.emitSpirvDir.empty() && !hasTarget(o.targets, Target::Spirv))
+        return "--emit-spirv " + o.emitSpirvDir +
+               " writes the spirv target's words, and --target does not ask for "
+               "spirv; add it (--target gl,spirv) or drop --emit-spirv";
+    if (!o.checkOnly && o.output.empty() && o.emitGlslDir.empty() && o.emitSpirvDir.empty())
+        return "nothing to write: give -o <header>, --emit-glsl <dir>, --emit-spirv <dir> or --check";
     if (!o.checkOnly && !o.output.empty() && o.emitGlslDir.empty() && dataPathFor(o.output) == o.output)
         return "-o " + o.output + ": the data file would overwrite the header; name the header .hpp or .h";
     return {};
@@ -70,6 +74,8 @@ void addOptions(CLI::App& app, Options& o, std::vector<std::string>& defines, st
     app.add_option("--target", targets,
                    "what to produce and validate: a comma list of gl, es300 (GLSL ES 3.00), spirv (docs/targets.md)")
         ->capture_default_str();
+    app.add_option("--emit-spirv", o.emitSpirvDir,
+                   "also write the spirv target's stages as DIR/<shader>[.<variant>].<stage>.spv (with --check too)");
     app.add_flag("--check", o.checkOnly, "validate only: no header (--emit-glsl, --depfile, --stamp still written)");
     app.add_option("-D", defines, "define a macro for every stage: NAME[=VALUE]")->allow_extra_args(false);
     app.add_option("--glsl-version", o.glslVersion, "default #version when a shader has none")->capture_default_str();
@@ -121,9 +127,6 @@ ArgsResult parseArgs(int argc, char** argv) {
     }
     if (auto error = parseTargetList(targets, o.targets); !error.empty())
         return usageError("--target " + targets + ": " + error);
-    if (hasTarget(o.targets, Target::Spirv))
-        return usageError("--target " + targets +
-                          ": this prism-shaderc does not produce spirv yet (docs/targets.md); ask for gl and es300");
     o.errorFormat = errfmt == "msvc" ? ErrorFormat::Msvc : ErrorFormat::Gcc;
     if (o.jobs == 0) o.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     if (o.glslVersion >= 150 && o.glslVersion < 300) o.glslProfile = "core";

@@ -21,6 +21,7 @@ struct Options {
     std::string depfile;                                       // --depfile
     std::string stamp;                                         // --stamp: touched on every successful run
     std::string emitGlslDir;                                   // --emit-glsl
+    std::string emitSpirvDir;                                  // --emit-spirv (the spirv target's .spv files)
     std::string baseDir;                                       // --base-dir: embedded paths are relative to it
     std::string cacheDir;  // --cache-dir: validation results cache ("" = default, "none" = off)
     std::string nameSpace = "prism::shaders";

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "contract.hpp"
 #include "reflection.hpp"
 #include "shown_path.hpp"
+#include "spirv_program.hpp"
 #include "variants.hpp"
 
 namespace prism::shaderc {
@@ -27,6 +29,8 @@ struct CatalogVariant {
     std::vector<std::pair<std::string, std::string>> defines;
     std::vector<CatalogStage> stages;
     ProgramReflection reflection;
+    bool es300 = false;                 // the es300 target was produced for it (es300_target.hpp)
+    std::optional<SpirvProgram> spirv;  // the spirv target's, when the run produces it for this shader
 };
 
 struct CatalogShader {

@@ -8,6 +8,7 @@
 #include <map>
 #include <sstream>
 
+#include "es300_target.hpp"
 #include "generated_format.hpp"
 #include "header_writer.hpp"
 #include "prism/hash/content_hash.hpp"
@@ -202,19 +203,8 @@ class DataWriter {
         const std::string prefix = cppIdentifier(s.name) + "_v" + std::to_string(index);
         tablesOut_ << "// ---- shader " << s.name << ", variant " << v.name << "\n";
         std::vector<std::string> stages;
-        for (const auto& st : v.stages) {
-            const std::string stageId = prefix + "_" + std::string(catalog::stageName(st.stage));
-            std::vector<std::string> refs;
-            for (const auto& piece : stagePieces(st.text)) pool_.reference(piece, refs);
-            auto chunks = arrays_.references(stageId + "_chunks", refs);
-            std::vector<std::string> files;
-            for (std::size_t n = 0; n < st.files.size(); ++n)
-                files.push_back("{" + std::to_string(n) + ", " + quotedLiteral(st.files[n].path) +
-                                searchDirField(st.files[n].searchDir) + "}");
-            auto fileArray = arrays_.array("prism::catalog::SourceFile", stageId + "_files", files);
-            stages.push_back("{prism::catalog::Stage::" + std::string(stageEnum(st.stage)) + ", " + chunks + ", " +
-                             fileArray + "}");
-        }
+        for (const auto& st : v.stages)
+            stages.push_back(stageSource(st, st.text, prefix + "_" + std::string(catalog::stageName(st.stage))));
         auto stageArray = arrays_.array("prism::catalog::StageSource", prefix + "_stages", stages, false);
         std::vector<std::string> defines, attributes, uniforms;
         for (const auto& [n, val] : v.defines)
@@ -228,8 +218,78 @@ class DataWriter {
         auto defineArray = arrays_.array("prism::catalog::Define", prefix + "_defines", defines);
         auto attributeArray = arrays_.array("prism::catalog::Attribute", prefix + "_attributes", attributes);
         auto uniformArray = arrays_.array("prism::catalog::Uniform", prefix + "_uniforms", uniforms);
+        // The other targets' fields only where a target gave them: a gl catalogue stays as it was.
+        const std::string targets =
+            v.es300 || v.spirv ? ", " + writeEs300(v, prefix) + ", " + writeSpirv(v, prefix) : "";
         return "{" + quotedLiteral(v.name) + ", " + defineArray + ", " + stageArray + ", " + attributeArray + ", " +
-               uniformArray + "}";
+               uniformArray + targets + "}";
+    }
+
+    std::string stageSource(const CatalogStage& st, const std::string& text, const std::string& stageId) {
+        std::vector<std::string> refs;
+        for (const auto& piece : stagePieces(text)) pool_.reference(piece, refs);
+        auto chunks = arrays_.references(stageId + "_chunks", refs);
+        std::vector<std::string> files;
+        for (std::size_t n = 0; n < st.files.size(); ++n)
+            files.push_back("{" + std::to_string(n) + ", " + quotedLiteral(st.files[n].path) +
+                            searchDirField(st.files[n].searchDir) + "}");
+        auto fileArray = arrays_.array("prism::catalog::SourceFile", stageId + "_files", files);
+        return "{prism::catalog::Stage::" + std::string(stageEnum(st.stage)) + ", " + chunks + ", " + fileArray + "}";
+    }
+
+    // The es300 stages: their pieces go through the pool, so what they share with the gl
+    // text (every module body) is stored once.
+    std::string writeEs300(const CatalogVariant& v, const std::string& prefix) {
+        if (!v.es300) return "std::span<const prism::catalog::StageSource>{}";
+        std::vector<std::string> stages;
+        for (const auto& st : v.stages)
+            stages.push_back(
+                stageSource(st, es300Text(st.text), prefix + "_es300_" + std::string(catalog::stageName(st.stage))));
+        return arrays_.array("prism::catalog::StageSource", prefix + "_es300_stages", stages, false);
+    }
+
+    std::string writeSpirv(const CatalogVariant& v, const std::string& prefix) {
+        if (!v.spirv) return "prism::catalog::SpirvProgram{}";
+        std::vector<std::string> stages;
+        for (const auto& st : v.spirv->stages)
+            stages.push_back("{prism::catalog::Stage::" + std::string(stageEnum(st.stage)) + ", " +
+                             wordsArray(prefix + "_spirv_" + std::string(catalog::stageName(st.stage)), st.words) +
+                             "}");
+        const auto& r = v.spirv->reflection;
+        std::vector<std::string> blocks, samplers, inputs;
+        for (const auto& b : r.blocks) {
+            std::vector<std::string> members;
+            for (const auto& m : b.members)
+                members.push_back("{" + quotedLiteral(m.name) + ", " + hexLiteral(m.glType) + ", " +
+                                  std::to_string(m.offset) + ", " + std::to_string(m.arraySize) + "}");
+            blocks.push_back("{" + quotedLiteral(b.name) + ", " + std::to_string(b.set) + ", " +
+                             std::to_string(b.binding) + ", " + std::to_string(b.size) + ", " +
+                             arrays_.array("prism::catalog::BlockMember", prefix + "_spirv_members", members, false) +
+                             "}");
+        }
+        for (const auto& s : r.samplers)
+            samplers.push_back("{" + quotedLiteral(s.name) + ", " + hexLiteral(s.glType) + ", " +
+                               std::to_string(s.set) + ", " + std::to_string(s.binding) + ", " +
+                               std::to_string(s.arraySize) + "}");
+        for (const auto& in : r.inputs)
+            inputs.push_back("{" + quotedLiteral(in.name) + ", " + hexLiteral(in.glType) + ", " +
+                             std::to_string(in.location) + "}");
+        return "prism::catalog::SpirvProgram{" +
+               arrays_.array("prism::catalog::SpirvStage", prefix + "_spirv_stages", stages, false) + ", " +
+               arrays_.array("prism::catalog::UniformBlock", prefix + "_spirv_blocks", blocks, false) + ", " +
+               arrays_.array("prism::catalog::SamplerBinding", prefix + "_spirv_samplers", samplers, false) + ", " +
+               arrays_.array("prism::catalog::Attribute", prefix + "_spirv_inputs", inputs) + "}";
+    }
+
+    // One array per distinct word sequence, eight words a line: a stage that variants share is stored once.
+    std::string wordsArray(const std::string& name, const std::vector<std::uint32_t>& words) {
+        std::string body;
+        for (std::size_t i = 0; i < words.size(); ++i)
+            body += (i % 8 == 0 ? "\n    " : " ") + hexLiteral(words[i]) + ",";
+        if (auto it = words_.find(body); it != words_.end()) return it->second;
+        tablesOut_ << "constexpr std::uint32_t " << name << "[] = {" << body << "\n};\n";
+        words_.emplace(body, name);
+        return name;
     }
 
     std::string writeShaders() {
@@ -281,6 +341,7 @@ class DataWriter {
     std::ostringstream poolOut_, tablesOut_;
     TextPool pool_;
     ArrayEmitter arrays_;
+    std::map<std::string, std::string> words_;  // SPIR-V words (as printed) -> their array
 };
 
 std::string textHash(const std::string& text) {

@@ -73,7 +73,7 @@ std::string programName(const ResolvedCatalog& rc, const EsProgram& p) {
     return "'" + shader.name + "'" + (shader.variants.size() > 1 ? " (variant " + variant.name + ")" : "");
 }
 
-std::vector<Diagnostic> validateOne(const ResolvedCatalog& rc, const EsProgram& p, const Contract& contract) {
+std::vector<Diagnostic> validateOne(ResolvedCatalog& rc, const EsProgram& p, const Contract& contract) {
     std::vector<StageToValidate> stages;
     const auto& resolved = rc.resolved[p.shader][p.variant];
     for (std::size_t st = 0; st < resolved.size(); ++st)
@@ -90,12 +90,13 @@ std::vector<Diagnostic> validateOne(const ResolvedCatalog& rc, const EsProgram& 
                                    "; `#pragma prism targets gl spirv` in a stage file leaves a shader out of es300",
                                {},
                                {}});
+    rc.data.shaders[p.shader].variants[p.variant].es300 = result.ok;
     return std::move(result.diagnostics);
 }
 
 }  // namespace
 
-std::vector<Diagnostic> validateEs300(const Options& o, const ResolvedCatalog& rc, const Contract& contract) {
+std::vector<Diagnostic> validateEs300(const Options& o, ResolvedCatalog& rc, const Contract& contract) {
     std::vector<EsProgram> programs;
     for (std::size_t s = 0; s < rc.data.shaders.size(); ++s) {
         if (!producedFor(o, rc, s, Target::Es300)) continue;

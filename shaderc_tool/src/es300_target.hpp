@@ -27,7 +27,8 @@ std::string es300Text(const std::string& desktop);
 ResolvedStage es300Stage(const ResolvedStage& desktop);
 
 // Validates, links and limit-checks every variant of every shader the run produces es300
-// for (shader_targets.hpp); diagnostics in catalogue order.
-std::vector<Diagnostic> validateEs300(const Options& options, const ResolvedCatalog& catalog, const Contract& contract);
+// for (shader_targets.hpp), marking each one that passed (CatalogVariant::es300); diagnostics
+// in catalogue order.
+std::vector<Diagnostic> validateEs300(const Options& options, ResolvedCatalog& catalog, const Contract& contract);
 
 }  // namespace prism::shaderc

@@ -6,9 +6,7 @@
 
 namespace prism::shaderc {
 
-namespace {
-
-std::string variantBase(const std::string& dir, const CatalogShader& s, const CatalogVariant& v) {
+std::string emittedVariantBase(const std::string& dir, const CatalogShader& s, const CatalogVariant& v) {
     std::string base = dir + "/" + s.name;
     if (s.variants.size() > 1 || !v.defines.empty()) {
         std::string suffix;
@@ -17,8 +15,6 @@ std::string variantBase(const std::string& dir, const CatalogShader& s, const Ca
     }
     return base;
 }
-
-}  // namespace
 
 bool emitGlsl(const std::string& dir, const CatalogData& catalog, const std::vector<Target>& runTargets,
               const std::vector<std::vector<Target>>& targets, std::string& error) {
@@ -29,7 +25,7 @@ bool emitGlsl(const std::string& dir, const CatalogData& catalog, const std::vec
             for (const Target t : targets[i]) {
                 if (t == Target::Spirv) continue;  // words, not text
                 const std::string base =
-                    variantBase(dir, s, v) + (nameTargets ? "." + std::string(targetName(t)) : std::string());
+                    emittedVariantBase(dir, s, v) + (nameTargets ? "." + std::string(targetName(t)) : std::string());
                 for (const auto& st : v.stages) {
                     const std::string text = t == Target::Es300 ? es300Text(st.text) : st.text;
                     if (writeIfChanged(base + "." + std::string(catalog::stageName(st.stage)), text, error) ==

@@ -14,6 +14,9 @@
 
 namespace prism::shaderc {
 
+// DIR/<shader>[.<variant>]: the start of every file name of one variant's stages.
+std::string emittedVariantBase(const std::string& dir, const CatalogShader& shader, const CatalogVariant& variant);
+
 // `targets[s]`: the targets shader s is produced for (all of the run's: the run's targets).
 bool emitGlsl(const std::string& dir, const CatalogData& catalog, const std::vector<Target>& runTargets,
               const std::vector<std::vector<Target>>& targets, std::string& error);

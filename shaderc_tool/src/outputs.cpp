@@ -9,6 +9,7 @@
 #include "header_writer.hpp"
 #include "output_file.hpp"
 #include "shader_targets.hpp"
+#include "spirv_emitter.hpp"
 
 namespace prism::shaderc {
 
@@ -26,6 +27,7 @@ std::string writeOutputs(const Options& o, const ResolvedCatalog& rc) {
             return error;
         }
     }
+    if (!o.emitSpirvDir.empty() && !emitSpirv(o.emitSpirvDir, rc.data, error)) return error;
     if (o.emitGlslDir.empty()) return {};
     std::vector<std::vector<Target>> targets(rc.data.shaders.size());
     for (std::size_t s = 0; s < targets.size(); ++s)

@@ -21,21 +21,15 @@
 namespace prism::shaderc {
 namespace {
 
-EShLanguage glslangStage(catalog::Stage s) {
-    switch (s) {
-        case catalog::Stage::Vertex: return EShLangVertex;
-        case catalog::Stage::Geometry: return EShLangGeometry;
-        case catalog::Stage::Fragment: return EShLangFragment;
-        case catalog::Stage::Compute: return EShLangCompute;
-    }
-    return EShLangVertex;
-}
-
 EProfile profileOf(const std::string& versionDirective) {
     if (versionDirective.find(" es") != std::string::npos) return EEsProfile;
     if (versionDirective.find("compatibility") != std::string::npos) return ECompatibilityProfile;
     if (versionDirective.find("core") != std::string::npos) return ECoreProfile;
     return ENoProfile;
+}
+
+EShMessages messagesFor(const StageToValidate& stage) {
+    return stage.spirv ? spirvMessages(*stage.spirv) : EShMsgDefault;
 }
 
 // The text of every (source number, line) in a flattened stage, recovered from its
@@ -183,6 +177,16 @@ std::vector<Diagnostic> mapInfoLog(const std::string& log, const StageMaps& maps
 
 }  // namespace
 
+EShLanguage glslangStage(catalog::Stage s) {
+    switch (s) {
+        case catalog::Stage::Vertex: return EShLangVertex;
+        case catalog::Stage::Geometry: return EShLangGeometry;
+        case catalog::Stage::Fragment: return EShLangFragment;
+        case catalog::Stage::Compute: return EShLangCompute;
+    }
+    return EShLangVertex;
+}
+
 void initializeValidator() {
     glslang::InitializeProcess();
 }
@@ -209,8 +213,14 @@ std::shared_ptr<CompiledStage> compileStage(const StageToValidate& s) {
     auto shader = std::make_unique<glslang::TShader>(glslangStage(s.stage));
     const char* text = s.resolved.text.c_str();
     shader->setStrings(&text, 1);
+    if (s.spirv) {
+        configureShader(*shader, glslangStage(s.stage), *s.spirv);
+        shader->setEnvInputVulkanRulesRelaxed();
+        shader->setAutoMapLocations(true);
+        shader->setAutoMapBindings(true);
+    }
     compiled->ok = shader->parse(GetDefaultResources(), s.resolved.versionNumber,
-                                 profileOf(s.resolved.versionDirective), false, false, EShMsgDefault);
+                                 profileOf(s.resolved.versionDirective), false, false, messagesFor(s));
     if (const char* log = shader->getInfoLog(); log && *log) {  // the line texts only when there is a message
         const StageMaps maps{&s, SourceLines(s.resolved)};
         compiled->diagnostics = mapInfoLog(log, maps);
@@ -265,7 +275,7 @@ void linkAndReflect(const std::vector<StageToValidate>& stages, const std::vecto
                     const Contract& contract, const LinkedProgramCheck& check, ValidatedVariant& result) {
     glslang::TProgram program;
     for (auto* sh : shaders) program.addShader(sh);
-    if (!program.link(EShMsgDefault)) {
+    if (!program.link(messagesFor(stages.front()))) {
         const auto before = result.diagnostics.size();
         std::istringstream log(program.getInfoLog());
         std::string line;
@@ -274,6 +284,12 @@ void linkAndReflect(const std::vector<StageToValidate>& stages, const std::vecto
                 result.diagnostics.push_back(makeError(stages.front().path, 0, 0, "link: " + line.substr(7)));
         if (result.diagnostics.size() == before)
             result.diagnostics.push_back(makeError(stages.front().path, 0, 0, "glslang could not link the program"));
+        return;
+    }
+    // glslang assigns the spirv target's locations and bindings here, before anything reads them.
+    if (stages.front().spirv && !program.mapIO()) {
+        result.diagnostics.push_back(
+            makeError(stages.front().path, 0, 0, "glslang could not assign locations and bindings"));
         return;
     }
     result.reflection = reflectProgram(program, contract);

@@ -15,6 +15,7 @@
 #include "diagnostics.hpp"
 #include "include_resolver.hpp"
 #include "reflection.hpp"
+#include "spirv_codegen.hpp"
 
 namespace glslang {
 class TProgram;
@@ -32,6 +33,10 @@ struct StageToValidate {
     catalog::Stage stage;
     std::string path;  // the stage file, for errors without a line
     ResolvedStage resolved;
+    // Set: parsed and linked as SPIR-V for this environment with glslang's relaxed Vulkan
+    // rules (loose uniforms in one std140 block per stage, locations and bindings
+    // assigned by glslang), the spirv target (spirv_target.hpp).
+    std::optional<SpirvEnv> spirv;
 };
 
 struct ValidatedVariant {
@@ -39,6 +44,9 @@ struct ValidatedVariant {
     ProgramReflection reflection;
     std::vector<Diagnostic> diagnostics;
 };
+
+// glslang's stage kind of a Prism stage.
+EShLanguage glslangStage(catalog::Stage stage);
 
 // Call once per process before any validateProgram (thread-safe afterwards).
 void initializeValidator();

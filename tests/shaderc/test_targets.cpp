@@ -241,3 +241,70 @@ TEST(GoldenTargets, PhongPerTarget) {
         expectMatchesBaseline(prism::test::readFile(dir.path() / "out" / (base + file)), "targets/phong." + file);
     }
 }
+
+// Every SPIR-V module of the project's catalogues, every variant (compute passes included):
+// prism-shaderc runs SPIRV-Tools' validator on each; the reference tool, spirv-val, checks
+// each written .spv again.
+TEST(Targets, EverySpirvModuleOfTheProjectPassesTheValidator) {
+    ScratchDir dir("targets-spirv");
+    const std::string m = kSource + "/modules", sh = kSource + "/shader_sources";
+    int modules = 0;
+    for (const std::string name : {"", "rain", "diffraction", "bluenoise", "water"}) {
+        const std::string out = (dir.path() / (name.empty() ? "project" : name)).string();
+        const std::string contract = name.empty() ? "" : " --contract " + m + "/" + name + "/contract.json";
+        const auto run = runShaderc("--check --cache-dir none --target gl,spirv --emit-spirv " + out + " -I " + m +
+                                        " --contract " + m + "/contract.json" + contract + " " + sh + "/" + name,
+                                    dir.str());
+        ASSERT_EQ(run.exitCode, 0) << name << ":\n" << run.output;
+        EXPECT_EQ(run.output, "") << name;
+        std::string files;
+        for (const auto& entry : fs::directory_iterator(out)) {
+            files += " '" + entry.path().string() + "'";
+            ++modules;
+        }
+        const auto ref = runShell("for f in" + files + "; do spirv-val --target-env vulkan1.1 \"$f\" || exit 1; done");
+        EXPECT_EQ(ref.exitCode, 0) << name << "\n" << ref.output;
+    }
+    EXPECT_GT(modules, 200) << "fewer SPIR-V modules than the catalogues' stages";
+}
+
+// The data file keeps every target of a variant: the es300 text (its pieces shared with the
+// gl text) and the SPIR-V words with their reflection, whose block layout agrees with the
+// reference reflection (spirv-cross --reflect); the file compiles.
+TEST(Targets, CatalogueStoresEveryTargetAndTheBlockLayoutMatchesTheReference) {
+    ScratchDir dir("targets-data");
+    const auto run =
+        runShaderc("-o cat.hpp --cache-dir none --target gl,es300,spirv --emit-spirv spv --base-dir " + kSource +
+                       " --variant 'phong:BLINN=1,FOG=0,DIRECTIONAL_LIGHTS=1,POINT_LIGHTS=1' -I " + kSource +
+                       "/modules --contract " + kSource + "/modules/contract.json " + kSource +
+                       "/shader_sources/phong.vert " + kSource + "/shader_sources/phong.frag",
+                   dir.str());
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    const auto data = prism::test::readFile(dir.path() / "cat.cpp");
+    EXPECT_NE(data.find("phong_v0_es300_stages,"), std::string::npos);
+    EXPECT_NE(data.find("{\n    0x7230203, "), std::string::npos) << "no SPIR-V magic number in the data file";
+    const auto reflected = runShell(
+        "spirv-cross spv/phong.BLINN-1_FOG-0_DIRECTIONAL_LIGHTS-1_POINT_LIGHTS-1.frag.spv --reflect", dir.str());
+    ASSERT_EQ(reflected.exitCode, 0) << reflected.output;
+    const std::regex member(
+        R"re("name" : "(u_\w+)",\s*"type" : "\w+",\s*(?:"array" : \[[^\]]*\],\s*)?"offset" : (\d+))re");
+    int members = 0;
+    for (std::sregex_iterator it(reflected.output.begin(), reflected.output.end(), member), end; it != end; ++it) {
+        const std::string row = "{\"" + (*it)[1].str() + "\", ";
+        const auto at = data.find(row, data.find("phong_v0_spirv_members[]"));
+        ASSERT_NE(at, std::string::npos) << row;
+        EXPECT_NE(data.substr(at, data.find('}', at) - at).find(", " + (*it)[2].str() + ", "), std::string::npos)
+            << data.substr(at, 60) << " vs spirv-cross offset " << (*it)[2];
+        ++members;
+    }
+    EXPECT_GT(members, 5) << reflected.output;
+    const std::smatch size = [&] {
+        std::smatch m;
+        std::regex_search(reflected.output, m, std::regex(R"("block_size" : (\d+))"));
+        return m;
+    }();
+    EXPECT_NE(data.find("{\"gl_DefaultUniformBlock\", 0, 0, " + size[1].str() + ","), std::string::npos);
+    const auto compiled =
+        runShell("c++ -std=c++20 -fsyntax-only -I " + kSource + "/shaderc_tool/include -I . cat.cpp", dir.str());
+    EXPECT_EQ(compiled.exitCode, 0) << compiled.output;
+}

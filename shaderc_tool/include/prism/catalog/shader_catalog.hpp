@@ -97,13 +97,60 @@ struct VariantAxis {
     std::span<const std::string_view> values;
 };
 
-// One validated combination of axis values.
+// The spirv target (docs/targets.md): SPIR-V for Vulkan 1.1 of one stage. The words of a
+// distinct stage are stored once and shared by the variants that have it.
+struct SpirvStage {
+    Stage stage;
+    std::span<const std::uint32_t> words;
+};
+
+// A member of a uniform block: `offset` in bytes from the block's start (std140).
+struct BlockMember {
+    std::string_view name;
+    std::uint32_t glType;
+    std::uint32_t offset;
+    std::int32_t arraySize;
+};
+
+// A uniform block of the spirv target: the loose uniforms of GL-style source packed into
+// `gl_DefaultUniformBlock` (glslang's relaxed Vulkan rules), at descriptor set/binding.
+struct UniformBlock {
+    std::string_view name;
+    std::uint32_t set;
+    std::uint32_t binding;
+    std::uint32_t size;  // bytes
+    std::span<const BlockMember> members;
+};
+
+// A combined image sampler of the spirv target, at descriptor set/binding.
+struct SamplerBinding {
+    std::string_view name;
+    std::uint32_t glType;
+    std::uint32_t set;
+    std::uint32_t binding;
+    std::int32_t arraySize;
+};
+
+// A variant's spirv target: empty spans when the catalogue was built without it.
+// `inputs` are the vertex inputs with the locations glslang assigned.
+struct SpirvProgram {
+    std::span<const SpirvStage> stages;
+    std::span<const UniformBlock> blocks;
+    std::span<const SamplerBinding> samplers;
+    std::span<const Attribute> inputs;
+};
+
+// One validated combination of axis values. `stages` is the gl target (desktop GLSL);
+// `es300Stages` and `spirv` are the other targets', empty when the catalogue was built
+// without them (prism-shaderc --target, docs/targets.md) or the shader opted out.
 struct Variant {
     std::string_view name;                // e.g. "FOG=1,DIRECTIONAL_LIGHTS=4" or "default"
     std::span<const Define> defines;      // one per axis, in axis order
     std::span<const StageSource> stages;  // in pipeline order
     std::span<const Attribute> attributes;
     std::span<const Uniform> uniforms;
+    std::span<const StageSource> es300Stages = {};  // GLSL ES 3.00, same line tables as `stages`
+    SpirvProgram spirv = {};
 };
 
 struct Shader {
