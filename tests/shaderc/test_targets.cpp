@@ -2,7 +2,8 @@
 // `#pragma prism targets`, es300's refusal of geometry and compute stages, ES-only errors
 // at the module's own file:line, the ES 3.00 minimum-limits warning, every es300 program of
 // the project's catalogues validated and linked as ES 3.00 (checked again by the reference,
-// glslangValidator), and golden texts of one shader per target.
+// glslangValidator), every SPIR-V module through SPIRV-Tools (and spirv-val), the data file
+// of all three targets, and golden texts of one shader per target.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -230,7 +231,7 @@ TEST(GoldenTargets, PhongPerTarget) {
     ScratchDir dir("targets-golden");
     const auto run = runShaderc("--check --cache-dir none --base-dir " + kSource +
                                     " --variant 'phong:BLINN=1,FOG=1,DIRECTIONAL_LIGHTS=1,POINT_LIGHTS=1' --target "
-                                    "gl,es300 --emit-glsl out -I " +
+                                    "gl,es300,spirv --emit-glsl out --emit-spirv out -I " +
                                     kSource + "/modules --contract " + kSource + "/modules/contract.json " + kSource +
                                     "/shader_sources/phong.vert " + kSource + "/shader_sources/phong.frag",
                                 dir.str());
@@ -239,6 +240,14 @@ TEST(GoldenTargets, PhongPerTarget) {
     for (const std::string file : {"gl.vert", "gl.frag", "es300.vert", "es300.frag"}) {
         SCOPED_TRACE(file);
         expectMatchesBaseline(prism::test::readFile(dir.path() / "out" / (base + file)), "targets/phong." + file);
+    }
+    // SPIR-V as the reference disassembler reads it (spirv-dis, no header comment: the
+    // generator's version line would tie the baseline to a tool release).
+    for (const std::string stage : {"vert", "frag"}) {
+        SCOPED_TRACE(stage);
+        const auto dis = runShell("spirv-dis --no-header --raw-id 'out/" + base + stage + ".spv'", dir.str());
+        ASSERT_EQ(dis.exitCode, 0) << dis.output;
+        expectMatchesBaseline(dis.output, "targets/phong.spirv." + stage + ".spvasm");
     }
 }
 
