@@ -8,8 +8,8 @@
 #include <sstream>
 
 #include "es300_limits.hpp"
-#include "job_pool.hpp"
 #include "shader_targets.hpp"
+#include "validation_scheduler.hpp"
 #include "validator.hpp"
 
 namespace prism::shaderc {
@@ -63,34 +63,25 @@ ResolvedStage es300Stage(const ResolvedStage& desktop) {
 
 namespace {
 
-struct EsProgram {
-    std::size_t shader, variant;
-};
+using EsProgram = std::pair<std::size_t, std::size_t>;  // shader, variant
 
 std::string programName(const ResolvedCatalog& rc, const EsProgram& p) {
-    const auto& shader = rc.data.shaders[p.shader];
-    const auto& variant = shader.variants[p.variant];
+    const auto& shader = rc.data.shaders[p.first];
+    const auto& variant = shader.variants[p.second];
     return "'" + shader.name + "'" + (shader.variants.size() > 1 ? " (variant " + variant.name + ")" : "");
 }
 
 std::vector<Diagnostic> validateOne(ResolvedCatalog& rc, const EsProgram& p, const Contract& contract) {
     std::vector<StageToValidate> stages;
-    const auto& resolved = rc.resolved[p.shader][p.variant];
+    const auto& resolved = rc.resolved[p.first][p.second];
     for (std::size_t st = 0; st < resolved.size(); ++st)
-        stages.push_back({rc.data.shaders[p.shader].variants[p.variant].stages[st].stage, rc.stagePaths[p.shader][st],
+        stages.push_back({rc.data.shaders[p.first].variants[p.second].stages[st].stage, rc.stagePaths[p.first][st],
                           es300Stage(resolved[st])});
     auto result = validateProgram(stages, contract, es300LimitsCheck(programName(rc, p), stages.front().path));
-    for (auto& d : result.diagnostics)
-        if (d.severity == Severity::Error)
-            d.notes.push_back({Severity::Note,
-                               "",
-                               0,
-                               0,
-                               "for target es300 (GLSL ES 3.00) in program " + programName(rc, p) +
-                                   "; `#pragma prism targets gl spirv` in a stage file leaves a shader out of es300",
-                               {},
-                               {}});
-    rc.data.shaders[p.shader].variants[p.variant].es300 = result.ok;
+    noteTarget(result.diagnostics,
+               "for target es300 (GLSL ES 3.00) in program " + programName(rc, p) +
+                   "; `#pragma prism targets gl spirv` in a stage file leaves a shader out of es300");
+    rc.data.shaders[p.first].variants[p.second].es300 = result.ok;
     return std::move(result.diagnostics);
 }
 
@@ -105,16 +96,14 @@ std::vector<Diagnostic> validateEs300(const Options& o, ResolvedCatalog& rc, con
             !variants.empty() &&
             std::all_of(variants.front().stages.begin(), variants.front().stages.end(),
                         [](const CatalogStage& st) { return targetRunsStage(Target::Es300, st.stage); });
-        for (std::size_t v = 0; runnable && v < variants.size(); ++v) programs.push_back({s, v});
+        for (std::size_t v = 0; runnable && v < variants.size(); ++v) programs.emplace_back(s, v);
     }
-    if (programs.empty()) return {};
-    std::vector<std::vector<Diagnostic>> found(programs.size());
-    initializeValidator();
-    runPool(programs.size(), o.jobs, [&](std::size_t i) { found[i] = validateOne(rc, programs[i], contract); });
-    finalizeValidator();
-    std::vector<Diagnostic> out;
-    for (auto& f : found) out.insert(out.end(), f.begin(), f.end());
-    return out;
+    return runOncePerTokenKey(
+        rc, contract, programs, o.jobs, [&](std::size_t i) { return validateOne(rc, programs[i], contract); },
+        [&](std::size_t from, std::size_t to) {
+            rc.data.shaders[programs[to].first].variants[programs[to].second].es300 =
+                rc.data.shaders[programs[from].first].variants[programs[from].second].es300;
+        });
 }
 
 }  // namespace prism::shaderc

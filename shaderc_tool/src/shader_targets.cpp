@@ -87,4 +87,9 @@ std::vector<Diagnostic> checkShaderTargets(const Options& o, const ResolvedCatal
     return out;
 }
 
+void noteTarget(std::vector<Diagnostic>& diagnostics, const std::string& what) {
+    for (auto& d : diagnostics)
+        if (d.severity == Severity::Error) d.notes.push_back({Severity::Note, "", 0, 0, what, {}, {}});
+}
+
 }  // namespace prism::shaderc

@@ -33,4 +33,8 @@ bool producedFor(const Options& options, const ResolvedCatalog& catalog, std::si
 
 std::vector<Diagnostic> checkShaderTargets(const Options& options, const ResolvedCatalog& catalog);
 
+// Adds to every error of a target's program the note saying which target and program
+// (`what`: "for target es300 (GLSL ES 3.00) in program 'phong' ...").
+void noteTarget(std::vector<Diagnostic>& diagnostics, const std::string& what);
+
 }  // namespace prism::shaderc

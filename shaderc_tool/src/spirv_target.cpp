@@ -7,8 +7,8 @@
 
 #include <algorithm>
 
-#include "job_pool.hpp"
 #include "shader_targets.hpp"
+#include "validation_scheduler.hpp"
 #include "validator.hpp"
 
 namespace prism::shaderc {
@@ -94,10 +94,7 @@ std::vector<Diagnostic> buildSpirvTarget(const Options& o, ResolvedCatalog& rc, 
         if (!producedFor(o, rc, s, Target::Spirv)) continue;
         for (std::size_t v = 0; v < rc.data.shaders[s].variants.size(); ++v) programs.emplace_back(s, v);
     }
-    if (programs.empty()) return {};
-    std::vector<std::vector<Diagnostic>> found(programs.size());
-    initializeValidator();
-    runPool(programs.size(), o.jobs, [&](std::size_t i) {
+    const auto run = [&](std::size_t i) {
         const auto [s, v] = programs[i];
         auto& shader = rc.data.shaders[s];
         std::vector<StageToValidate> stages;
@@ -107,23 +104,17 @@ std::vector<Diagnostic> buildSpirvTarget(const Options& o, ResolvedCatalog& rc, 
         SpirvProgram program;
         auto result =
             validateProgram(stages, contract, generateInto(stages, programName(shader, shader.variants[v]), program));
-        for (auto& d : result.diagnostics)
-            if (d.severity == Severity::Error)
-                d.notes.push_back({Severity::Note,
-                                   "",
-                                   0,
-                                   0,
-                                   "for target spirv (Vulkan 1.1, relaxed rules) in program " +
-                                       programName(shader, shader.variants[v]),
-                                   {},
-                                   {}});
-        found[i] = std::move(result.diagnostics);
+        noteTarget(result.diagnostics, "for target spirv (Vulkan 1.1, relaxed rules) in program " +
+                                           programName(shader, shader.variants[v]));
         if (result.ok && program.stages.size() == stages.size()) shader.variants[v].spirv = std::move(program);
-    });
-    finalizeValidator();
-    std::vector<Diagnostic> out;
-    for (auto& f : found) out.insert(out.end(), f.begin(), f.end());
-    return out;
+        return std::move(result.diagnostics);
+    };
+    // The same token stream gives the same words and reflection.
+    const auto share = [&](std::size_t from, std::size_t to) {
+        rc.data.shaders[programs[to].first].variants[programs[to].second].spirv =
+            rc.data.shaders[programs[from].first].variants[programs[from].second].spirv;
+    };
+    return runOncePerTokenKey(rc, contract, programs, o.jobs, run, share);
 }
 
 }  // namespace prism::shaderc

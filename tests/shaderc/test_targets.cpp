@@ -317,3 +317,26 @@ TEST(Targets, CatalogueStoresEveryTargetAndTheBlockLayoutMatchesTheReference) {
         runShell("c++ -std=c++20 -fsyntax-only -I " + kSource + "/shaderc_tool/include -I . cat.cpp", dir.str());
     EXPECT_EQ(compiled.exitCode, 0) << compiled.output;
 }
+
+// Two variants with one token stream (an axis the code never reads) are compiled once per
+// target: the second takes the first's es300 verdict and SPIR-V, and the data file shares the
+// words.
+TEST(Targets, VariantsWithOneTokenStreamShareTheirTargets) {
+    ScratchDir dir("targets-shared");
+    dir.write("sh/plain.vert",
+              "// plain\n#version 330 core\n#pragma prism variant QUALITY 1 2\nin vec3 a_position;\n"
+              "uniform mat4 u_world;\nvoid main() { gl_Position = u_world * vec4(a_position, 1.0); }\n");
+    dir.write("sh/plain.frag",
+              "// plain\n#version 330 core\nuniform vec4 u_color;\nout vec4 o_color;\n"
+              "void main() { o_color = u_color; }\n");
+    dir.write("mods/.keep.glsl", "// nothing\n");
+    const auto run = runShaderc("--stats -o p.hpp --cache-dir none --target gl,es300,spirv -I mods sh", dir.str());
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("1 shared a token stream"), std::string::npos) << run.output;
+    const auto data = prism::test::readFile(dir.path() / "p.cpp");
+    for (const std::string variant : {"plain_v0", "plain_v1"})
+        EXPECT_NE(data.find(variant + "_es300_stages, prism::catalog::SpirvProgram{plain_v0_spirv_stages"),
+                  std::string::npos)
+            << variant << "\n"
+            << data;
+}
