@@ -186,20 +186,22 @@ void checkCompleteness(const ShaderInput& s, const std::string& where, std::vect
                                     siblingPath(any, ".tese")));
 }
 
-// Under the OpenGL client a program with a mesh, task or ray-tracing stage is an error
-// naming the file and --client vulkan; it is left out.
-void refuseVulkanOnlyStages(ShaderInputsResult& result) {
-    std::erase_if(result.shaders, [&](const ShaderInput& s) {
-        auto it =
-            std::find_if(s.stages.begin(), s.stages.end(), [](const StageFile& f) { return isVulkanOnly(f.stage); });
-        if (it == s.stages.end()) return false;
-        result.diagnostics.push_back(makeError(it->path, 0, 0,
-                                               "a ." + std::string(catalog::stageName(it->stage)) +
-                                                   " stage is Vulkan GLSL: build it with --client vulkan "
-                                                   "(prism_add_shaders(... CLIENT vulkan))"));
-        return true;
-    });
+namespace {
+
+// Under the OpenGL client a program with a mesh, task or ray-tracing stage is one error
+// naming the file and --client vulkan (and no completeness errors): true when refused.
+bool refusedVulkanOnly(const ShaderInput& s, bool vulkanClient, std::vector<Diagnostic>& out) {
+    if (vulkanClient) return false;
+    auto it = std::find_if(s.stages.begin(), s.stages.end(), [](const StageFile& f) { return isVulkanOnly(f.stage); });
+    if (it == s.stages.end()) return false;
+    out.push_back(makeError(it->path, 0, 0,
+                            "a ." + std::string(catalog::stageName(it->stage)) +
+                                " stage is Vulkan GLSL: build it with --client vulkan "
+                                "(prism_add_shaders(... CLIENT vulkan))"));
+    return true;
 }
+
+}  // namespace
 
 ShaderInputsResult collectShaderInputs(const std::vector<std::string>& inputs,
                                        const std::vector<std::string>& programDeclarations, bool vulkanClient) {
@@ -213,14 +215,15 @@ ShaderInputsResult collectShaderInputs(const std::vector<std::string>& inputs,
     });
     auto byName = pairByName(files, result.diagnostics);
     for (auto& [name, shader] : byName) {
+        if (refusedVulkanOnly(shader, vulkanClient, result.diagnostics)) continue;
         checkCompleteness(shader, shader.stages.front().path, result.diagnostics);
         result.shaders.push_back(std::move(shader));
     }
     auto declared = declaredPrograms(programDeclarations, result.shaders, disk);
     result.diagnostics.insert(result.diagnostics.end(), declared.diagnostics.begin(), declared.diagnostics.end());
     result.ioError = result.ioError || declared.ioError;
-    for (auto& p : declared.programs) result.shaders.push_back(std::move(p));
-    if (!vulkanClient) refuseVulkanOnlyStages(result);
+    for (auto& p : declared.programs)
+        if (!refusedVulkanOnly(p, vulkanClient, result.diagnostics)) result.shaders.push_back(std::move(p));
     std::sort(result.shaders.begin(), result.shaders.end(),
               [](const ShaderInput& a, const ShaderInput& b) { return a.name < b.name; });
     return result;

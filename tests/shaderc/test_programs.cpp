@@ -110,24 +110,41 @@ TEST(ProgramsCli, FolderFilesThatAreNoStageAreWarningsNamingThemButModulesAreNot
     fs::copy_file(kPrograms / "shared/fullscreen.vert", dir.path() / "post.vert");
     fs::copy_file(kPrograms / "shared/tonemap.frag", dir.path() / "post.frag");
     dir.write("notes.md", "# notes\n");
-    dir.write("post.mesh", "#version 450\n");
+    dir.write("post.hlsl", "float4 main() : SV_Target { return 1; }\n");
     dir.write("common.glsl", "// A module the stages may include.\nfloat one() { return 1.0; }\n");
     const auto r = runShaderc("--check " + dir.str());
     EXPECT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find(dir.str() + "/notes.md: warning: not a stage Prism takes (.vert, .tesc, .tese, .geom, "
-                                        ".frag or .comp) nor a module (.glsl); skipped"),
+                                        ".frag or .comp (with --client vulkan also .mesh, .task, .rgen, .rint, "
+                                        ".rahit, .rchit, .rmiss or .rcall)) nor a module (.glsl); skipped"),
               std::string::npos)
         << r.output;
-    EXPECT_NE(r.output.find(dir.str() + "/post.mesh: warning: not a stage"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(dir.str() + "/post.hlsl: warning: not a stage"), std::string::npos) << r.output;
     EXPECT_EQ(r.output.find("common.glsl"), std::string::npos) << r.output;
+}
+
+// A Vulkan-only stage in a folder under the OpenGL client is no silent skip and no mere
+// warning: the folder is most likely Vulkan code built without --client vulkan.
+TEST(ProgramsCli, FolderMeshStageUnderTheGlClientIsOneErrorNamingTheClient) {
+    ScratchDir dir("programs-mesh");
+    fs::copy_file(kPrograms / "shared/tonemap.frag", dir.path() / "post.frag");
+    dir.write("post.mesh", "#version 450\n");
+    const auto r = runShaderc("--check " + dir.str());
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(
+        r.output.find(dir.str() + "/post.mesh: error: a .mesh stage is Vulkan GLSL: build it with --client vulkan"),
+        std::string::npos)
+        << r.output;
+    EXPECT_EQ(r.output.find("mixes a mesh pipeline"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("no fragment stage"), std::string::npos) << r.output;
 }
 
 TEST(ProgramsCli, FolderWithoutStagesIsAnErrorNotZeroOfZero) {
     ScratchDir dir("programs-none");
-    dir.write("a.task", "#version 450\n");
+    dir.write("a.hlsl", "float4 main() : SV_Target { return 1; }\n");
     const auto r = runShaderc("--check --stats " + dir.str());
     EXPECT_EQ(r.exitCode, 1) << r.output;
-    EXPECT_NE(r.output.find(dir.str() + "/a.task: warning: not a stage"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(dir.str() + "/a.hlsl: warning: not a stage"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find(dir.str() + ": error: no stage files"), std::string::npos) << r.output;
     EXPECT_EQ(r.output.find("validated 0 of 0"), std::string::npos) << r.output;
 }
