@@ -65,21 +65,16 @@ namespace {
 
 using EsProgram = std::pair<std::size_t, std::size_t>;  // shader, variant
 
-std::string programName(const ResolvedCatalog& rc, const EsProgram& p) {
-    const auto& shader = rc.data.shaders[p.first];
-    const auto& variant = shader.variants[p.second];
-    return "'" + shader.name + "'" + (shader.variants.size() > 1 ? " (variant " + variant.name + ")" : "");
-}
-
 std::vector<Diagnostic> validateOne(ResolvedCatalog& rc, const EsProgram& p, const Contract& contract) {
     std::vector<StageToValidate> stages;
     const auto& resolved = rc.resolved[p.first][p.second];
     for (std::size_t st = 0; st < resolved.size(); ++st)
         stages.push_back({rc.data.shaders[p.first].variants[p.second].stages[st].stage, rc.stagePaths[p.first][st],
                           es300Stage(resolved[st])});
-    auto result = validateProgram(stages, contract, es300LimitsCheck(programName(rc, p), stages.front().path));
+    const std::string program = targetProgramName(rc, p.first, p.second);
+    auto result = validateProgram(stages, contract, es300LimitsCheck(program, stages.front().path));
     noteTarget(result.diagnostics,
-               "for target es300 (GLSL ES 3.00) in program " + programName(rc, p) +
+               "for target es300 (GLSL ES 3.00) in program " + program +
                    "; `#pragma prism targets gl spirv` in a stage file leaves a shader out of es300");
     rc.data.shaders[p.first].variants[p.second].es300 = result.ok;
     return std::move(result.diagnostics);

@@ -87,6 +87,11 @@ std::vector<Diagnostic> checkShaderTargets(const Options& o, const ResolvedCatal
     return out;
 }
 
+std::string targetProgramName(const ResolvedCatalog& rc, std::size_t shader, std::size_t variant) {
+    const auto& s = rc.data.shaders[shader];
+    return "'" + s.name + "'" + (s.variants.size() > 1 ? " (variant " + s.variants[variant].name + ")" : "");
+}
+
 void noteTarget(std::vector<Diagnostic>& diagnostics, const std::string& what) {
     for (auto& d : diagnostics)
         if (d.severity == Severity::Error) d.notes.push_back({Severity::Note, "", 0, 0, what, {}, {}});

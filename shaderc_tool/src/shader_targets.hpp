@@ -33,6 +33,10 @@ bool producedFor(const Options& options, const ResolvedCatalog& catalog, std::si
 
 std::vector<Diagnostic> checkShaderTargets(const Options& options, const ResolvedCatalog& catalog);
 
+// "'phong' (variant FOG=1)", or "'phong'" for a shader of one variant: a program in a
+// target's messages.
+std::string targetProgramName(const ResolvedCatalog& catalog, std::size_t shader, std::size_t variant);
+
 // Adds to every error of a target's program the note saying which target and program
 // (`what`: "for target es300 (GLSL ES 3.00) in program 'phong' ...").
 void noteTarget(std::vector<Diagnostic>& diagnostics, const std::string& what);

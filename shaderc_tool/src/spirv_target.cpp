@@ -6,13 +6,6 @@
 #include "validator.hpp"
 
 namespace prism::shaderc {
-namespace {
-
-std::string programName(const CatalogShader& shader, const CatalogVariant& variant) {
-    return "'" + shader.name + "'" + (shader.variants.size() > 1 ? " (variant " + variant.name + ")" : "");
-}
-
-}  // namespace
 
 std::vector<Diagnostic> buildSpirvTarget(const Options& o, ResolvedCatalog& rc, const Contract& contract) {
     std::vector<std::pair<std::size_t, std::size_t>> programs;
@@ -28,8 +21,8 @@ std::vector<Diagnostic> buildSpirvTarget(const Options& o, ResolvedCatalog& rc, 
             stages.push_back({shader.variants[v].stages[st].stage, rc.stagePaths[s][st], rc.resolved[s][v][st],
                               kSpirvTargetEnv, shader.name, true});
         auto result = validateProgram(stages, contract);
-        noteTarget(result.diagnostics, "for target spirv (Vulkan 1.1, relaxed rules) in program " +
-                                           programName(shader, shader.variants[v]));
+        noteTarget(result.diagnostics,
+                   "for target spirv (Vulkan 1.1, relaxed rules) in program " + targetProgramName(rc, s, v));
         if (result.ok && result.reflection.spirv.size() == stages.size())
             shader.variants[v].spirv = std::move(result.reflection);
         return std::move(result.diagnostics);
