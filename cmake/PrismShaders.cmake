@@ -13,6 +13,7 @@
 #     [DEFINES NAME[=VALUE]...]         # -D for every stage
 #     [VARIANTS SHADER:NAME=VALUE,...]  # emit only these variants of those shaders
 #     [GLSL_VERSION <n>]                # default 330
+#     [TARGETS gl es300 spirv]          # --target: also produce these (docs/targets.md); default gl
 #     [CLIENT opengl|vulkan]            # default opengl; vulkan stores SPIR-V (docs/shaderc.md, "Clients")
 #     [TARGET_ENV vulkan1.x])           # CLIENT vulkan only: vulkan1.0 ... vulkan1.3, default vulkan1.2
 #
@@ -117,7 +118,7 @@ endfunction()
 
 function(prism_add_shaders target)
   cmake_parse_arguments(PARSE_ARGV 1 PAS "" "HEADER;NAMESPACE;GLSL_VERSION;CLIENT;TARGET_ENV"
-                        "SOURCES;PROGRAMS;MODULE_DIRS;DEFINES;CONTRACT;VARIANTS")
+                        "SOURCES;PROGRAMS;MODULE_DIRS;DEFINES;CONTRACT;VARIANTS;TARGETS")
   if(PAS_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "prism_add_shaders(${target}): unknown arguments: ${PAS_UNPARSED_ARGUMENTS}")
   endif()
@@ -211,6 +212,10 @@ function(prism_add_shaders target)
       message(FATAL_ERROR "prism_add_shaders(${target}): TARGET_ENV ${PAS_TARGET_ENV} needs CLIENT vulkan")
     endif()
     list(APPEND args --target-env ${PAS_TARGET_ENV})
+  endif()
+  if(PAS_TARGETS)
+    string(REPLACE ";" "," target_list "${PAS_TARGETS}")
+    list(APPEND args --target ${target_list})
   endif()
 
   _prism_write_source_tree(${source_tree} ${PAS_NAMESPACE} ${PROJECT_SOURCE_DIR} "${module_dirs}" "${contracts}"

@@ -2,6 +2,7 @@
 // faded out as the camera comes close so a sprite never fills the screen abruptly.
 #include <version.glsl>
 #include <transforms.glsl>
+#pragma prism targets gl spirv  // ES 3.00 has no geometry stage
 
 layout(points) in;
 layout(triangle_strip, max_vertices = 4) out;

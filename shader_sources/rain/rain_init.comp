@@ -3,6 +3,7 @@
 // seeds identically, so both start from the same state.
 #version 430 core
 #include <rain/particles.glsl>
+#pragma prism targets gl spirv  // ES 3.00 has no compute stage
 
 layout(local_size_x = 256) in;
 layout(std430, binding = 0) buffer RainParticles {

@@ -3,6 +3,7 @@
 // (beyond the falloff, at the cylinder's edge) emit nothing.
 #include <version.glsl>
 #include <rain/streak_varyings.glsl>
+#pragma prism targets gl spirv  // ES 3.00 has no geometry stage: rain_instanced draws the same streaks there
 
 layout(points) in;
 layout(triangle_strip, max_vertices = 4) out;

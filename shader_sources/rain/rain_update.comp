@@ -2,6 +2,7 @@
 // dispatched as ceil(count / 256) work groups, split over x and y when above 65535.
 #version 430 core
 #include <rain/particles.glsl>
+#pragma prism targets gl spirv  // ES 3.00 has no compute stage
 
 layout(local_size_x = 256) in;
 layout(std430, binding = 0) buffer RainParticles {

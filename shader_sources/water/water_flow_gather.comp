@@ -4,6 +4,7 @@
 // border and are added to the cell's ledger accumulator.
 #version 430 core
 #include <water/water_grid.glsl>
+#pragma prism targets gl spirv  // ES 3.00 has no compute stage
 layout(local_size_x = 16, local_size_y = 16) in;
 
 layout(std430, binding = WATER_BINDING_WATER_IN) readonly buffer WaterIn { vec2 waterIn[]; };

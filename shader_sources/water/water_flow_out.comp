@@ -5,6 +5,7 @@
 // (amount, direction code 0..8, 4 = none) for the gather pass.
 #version 430 core
 #include <water/water_grid.glsl>
+#pragma prism targets gl spirv  // ES 3.00 has no compute stage
 layout(local_size_x = 16, local_size_y = 16) in;
 
 layout(std430, binding = WATER_BINDING_TERRAIN) readonly buffer Terrain { float terrain[]; };

@@ -3,6 +3,7 @@
 // group (shared-memory tree) into one partial sum per group.
 #version 430 core
 #include <water/water_grid.glsl>
+#pragma prism targets gl spirv  // ES 3.00 has no compute stage
 layout(local_size_x = 256) in;
 
 layout(std430, binding = WATER_BINDING_LEDGER_CELLS) readonly buffer LedgerCells { dvec2 ledgerCells[]; };

@@ -2,6 +2,7 @@
 // order, double precision) into the totals (infiltrated, lost through the border).
 #version 430 core
 #include <water/water_grid.glsl>
+#pragma prism targets gl spirv  // ES 3.00 has no compute stage
 layout(local_size_x = 256) in;
 
 layout(std430, binding = WATER_BINDING_LEDGER_PARTIALS) readonly buffer LedgerPartials { dvec2 partials[]; };

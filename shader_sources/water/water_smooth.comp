@@ -6,6 +6,7 @@
 // (the border is a wall for the smoothing).
 #version 430 core
 #include <water/water_grid.glsl>
+#pragma prism targets gl spirv  // ES 3.00 has no compute stage
 layout(local_size_x = 16, local_size_y = 16) in;
 
 layout(std430, binding = WATER_BINDING_TERRAIN) readonly buffer Terrain { float terrain[]; };

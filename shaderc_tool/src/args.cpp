@@ -40,6 +40,20 @@ ArgsResult usageError(const std::string& message) {
     return {std::nullopt, 2};
 }
 
+// A Vulkan-client catalogue's output is SPIR-V: --target (`given` as `list`) may say spirv,
+// the same thing, so `targets` stays the client's own {Gl}; gl and es300 are OpenGL text.
+std::string vulkanClientTargets(Options& o, bool given, const std::string& list) {
+    if (o.client != "vulkan") return {};
+    if (given && o.targets != std::vector<Target>{Target::Spirv})
+        return "--target " + list +
+               " with --client vulkan: a Vulkan-client catalogue's output is SPIR-V (its GLSL is Vulkan GLSL, "
+               "neither OpenGL nor ES text); drop --target or give --target spirv, or build OpenGL-style "
+               "sources with --client opengl --target " +
+               list;
+    o.targets = {Target::Gl};
+    return {};
+}
+
 // Flag combinations where a flag would be ignored are refused, naming both flags;
 // "" when the combination does what it says.
 std::string conflictOf(const Options& o, const CLI::App& app) {
@@ -57,9 +71,10 @@ std::string conflictOf(const Options& o, const CLI::App& app) {
     if (o.client != "vulkan" && !o.targetEnv.empty())
         return "--target-env " + o.targetEnv + " picks a Vulkan version, and --client is " + o.client +
                "; add --client vulkan or drop --target-env";
-    if (o.client != "vulkan" && !o.emitSpirvDir.empty())
-        return "--emit-spirv writes the vulkan client's SPIR-V, and --client is " + o.client +
-               "; add --client vulkan or drop --emit-spirv";
+    if (o.client != "vulkan" && !o.emitSpirvDir.empty() && !hasTarget(o.targets, Target::Spirv))
+        return "--emit-spirv " + o.emitSpirvDir +
+               " writes SPIR-V, and this run makes none; add the spirv target (--target gl,spirv), or --client "
+               "vulkan for Vulkan GLSL, or drop --emit-spirv";
     if (!o.checkOnly && o.output.empty() && o.emitGlslDir.empty() && o.emitSpirvDir.empty())
         return "nothing to write: give -o <header>, --emit-glsl <dir>, --emit-spirv <dir> or --check";
     if (!o.checkOnly && !o.output.empty() && o.emitGlslDir.empty() && dataPathFor(o.output) == o.output)
@@ -67,10 +82,10 @@ std::string conflictOf(const Options& o, const CLI::App& app) {
     return {};
 }
 
-// Every option, bound to `o` (to `defines`, `errfmt` and `warnUndocumented` where parseArgs
-// checks or converts them after).
+// Every option, bound to `o` (to `defines`, `errfmt`, `warnUndocumented` and `targets`
+// where parseArgs checks or converts them after).
 void addOptions(CLI::App& app, Options& o, std::vector<std::string>& defines, std::string& errfmt,
-                std::string& warnUndocumented) {
+                std::string& warnUndocumented, std::string& targets) {
     app.set_version_flag("--version", std::string("prism-shaderc ") + PRISM_VERSION);
     // Unknown options are collected (not an error inside CLI11, whose required-positional
     // check would otherwise speak first) and named below.
@@ -90,8 +105,12 @@ void addOptions(CLI::App& app, Options& o, std::vector<std::string>& defines, st
         ->capture_default_str();
     app.add_option("--target-env", o.targetEnv,
                    "with --client vulkan: vulkan1.0, vulkan1.1, vulkan1.2 (default), vulkan1.3");
+    app.add_option("--target", targets,
+                   "what to produce and validate: a comma list of gl, es300 (GLSL ES 3.00), spirv (docs/targets.md)")
+        ->capture_default_str();
     app.add_option("--emit-spirv", o.emitSpirvDir,
-                   "with --client vulkan: also write each stage's SPIR-V as DIR/<shader>[.<variant>].<stage>.spv");
+                   "with --client vulkan or --target spirv: also write each stage's SPIR-V as "
+                   "DIR/<shader>[.<variant>].<stage>.spv (with --check too)");
     app.add_flag("--check", o.checkOnly, "validate only: no header (--emit-glsl, --depfile, --stamp still written)");
     app.add_option("-D", defines, "define a macro for every stage: NAME[=VALUE]")->allow_extra_args(false);
     app.add_option("--glsl-version", o.glslVersion, "default #version when a shader has none")->capture_default_str();
@@ -132,9 +151,10 @@ ArgsResult parseArgs(int argc, char** argv) {
     std::vector<std::string> defines;
     std::string errfmt = "gcc";
     std::string warnUndocumented = "project";
+    std::string targets = "gl";
     CLI::App app{"prism-shaderc: resolve #includes, validate GLSL with glslang and embed it in a C++ header",
                  "prism-shaderc"};
-    addOptions(app, o, defines, errfmt, warnUndocumented);
+    addOptions(app, o, defines, errfmt, warnUndocumented, targets);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -154,6 +174,10 @@ ArgsResult parseArgs(int argc, char** argv) {
             return usageError("-D " + d + ": '" + nv.first + "' is not a macro name; use -D NAME or -D NAME=VALUE");
         o.defines.push_back(nv);
     }
+    if (auto error = parseTargetList(targets, o.targets); !error.empty())
+        return usageError("--target " + targets + ": " + error);
+    if (auto error = vulkanClientTargets(o, app.count("--target") > 0, targets); !error.empty())
+        return usageError(error);
     o.errorFormat = errfmt == "msvc" ? ErrorFormat::Msvc : ErrorFormat::Gcc;
     o.warnUndocumentedLibraryModules = warnUndocumented == "all";
     if (o.jobs == 0) o.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));

@@ -8,6 +8,7 @@
 
 #include "diagnostics.hpp"
 #include "spirv_codegen.hpp"
+#include "targets.hpp"
 
 namespace prism::shaderc {
 
@@ -28,7 +29,10 @@ struct Options {
     std::string client = "opengl";     // --client opengl|vulkan
     std::string targetEnv;             // --target-env (vulkan client only; "" = vulkan1.2)
     std::optional<SpirvEnv> spirvEnv;  // the vulkan client's environment; empty for opengl
-    std::string emitSpirvDir;          // --emit-spirv: <program>[.<variant>].<stage>.spv (vulkan client)
+    std::string emitSpirvDir;          // --emit-spirv: <program>[.<variant>].<stage>.spv
+    // --target gl,es300,spirv (targets.hpp). A Vulkan-client catalogue's output is SPIR-V
+    // already: there --target may only say spirv, and `targets` stays {Gl}, the client's own.
+    std::vector<Target> targets = {Target::Gl};
     int glslVersion = 330;
     std::string glslProfile = "core";
     ErrorFormat errorFormat = ErrorFormat::Gcc;

@@ -29,7 +29,25 @@ struct CatalogVariant {
     std::vector<std::pair<std::string, std::string>> defines;
     std::vector<CatalogStage> stages;
     ProgramReflection reflection;
+    bool es300 = false;  // the es300 target was produced for it (es300_target.hpp)
+    // The spirv target's SPIR-V and layout (spirv_target.hpp), when the run produces it for
+    // this shader; `attributes` are the vertex inputs at the locations glslang assigned.
+    std::optional<ProgramReflection> spirv = {};
 };
+
+// The variant's SPIR-V and its layout: the spirv target's, else the Vulkan client's; nullptr
+// when the run made none for it.
+inline const ProgramReflection* spirvOf(const CatalogVariant& v) {
+    if (v.spirv) return &*v.spirv;
+    return v.reflection.spirv.empty() ? nullptr : &v.reflection;
+}
+
+// The words of `stage` in `r`, or nullptr.
+inline const std::vector<std::uint32_t>* stageWords(const ProgramReflection& r, catalog::Stage stage) {
+    for (const auto& s : r.spirv)
+        if (s.stage == stage) return &s.words;
+    return nullptr;
+}
 
 struct CatalogShader {
     std::string name;

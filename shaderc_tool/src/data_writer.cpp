@@ -9,6 +9,7 @@
 #include <map>
 #include <sstream>
 
+#include "es300_target.hpp"
 #include "generated_format.hpp"
 #include "module_naming.hpp"
 #include "header_writer.hpp"
@@ -50,12 +51,6 @@ std::vector<std::string> wordLines(const std::vector<std::uint32_t>& words) {
         lines.push_back(std::move(line));
     }
     return lines;
-}
-
-const std::vector<std::uint32_t>* spirvOf(const ProgramReflection& r, catalog::Stage stage) {
-    for (const auto& s : r.spirv)
-        if (s.stage == stage) return &s.words;
-    return nullptr;
 }
 
 // The trailing searchDir of a SourceFile or Module row, left out when 0 (the default): files
@@ -242,56 +237,98 @@ class DataWriter {
         const std::string prefix = mangleName(s.name) + "_v" + std::to_string(index);
         tablesOut_ << "// ---- shader " << s.name << ", variant " << v.name << "\n";
         std::vector<std::string> stages;
-        for (const auto& st : v.stages) {
-            const std::string stageId = prefix + "_" + std::string(catalog::stageName(st.stage));
-            std::vector<std::string> refs;
-            for (const auto& piece : stagePieces(st.text)) pool_.reference(piece, refs);
-            auto chunks = arrays_.references(stageId + "_chunks", refs);
-            std::vector<std::string> files;
-            for (std::size_t n = 0; n < st.files.size(); ++n)
-                files.push_back("{" + std::to_string(n) + ", " + quotedLiteral(st.files[n].path) +
-                                searchDirField(st.files[n].searchDir) + "}");
-            auto fileArray = arrays_.array("prism::catalog::SourceFile", stageId + "_files", files);
-            std::string spirv;  // the Vulkan client's words, each distinct module once
-            if (const auto* words = spirvOf(v.reflection, st.stage))
-                spirv = ", " + arrays_.array("std::uint32_t", stageId + "_spirv", wordLines(*words), false);
-            stages.push_back("{prism::catalog::Stage::" + std::string(stageEnum(st.stage)) + ", " + chunks + ", " +
-                             fileArray + spirv + "}");
-        }
+        const ProgramReflection* spirv = spirvOf(v);
+        for (const auto& st : v.stages)
+            stages.push_back(stageSource(st, st.text, prefix + "_" + std::string(catalog::stageName(st.stage)),
+                                         spirv ? stageWords(*spirv, st.stage) : nullptr));
         auto stageArray = arrays_.array("prism::catalog::StageSource", prefix + "_stages", stages, false);
-        std::vector<std::string> defines, attributes, uniforms;
+        std::vector<std::string> defines, uniforms;
         for (const auto& [n, val] : v.defines)
             defines.push_back("{" + quotedLiteral(n) + ", " + quotedLiteral(val) + "}");
-        for (const auto& a : v.reflection.attributes)
-            attributes.push_back("{" + quotedLiteral(a.name) + ", " + hexLiteral(a.glType) + ", " +
-                                 std::to_string(a.location) + "}");
         for (const auto& u : v.reflection.uniforms)
             uniforms.push_back("{" + quotedLiteral(u.name) + ", " + hexLiteral(u.glType) + ", " +
                                std::to_string(u.arraySize) + "}");
         auto defineArray = arrays_.array("prism::catalog::Define", prefix + "_defines", defines);
-        auto attributeArray = arrays_.array("prism::catalog::Attribute", prefix + "_attributes", attributes);
+        auto attributeArray = attributeRows(v.reflection.attributes, prefix + "_attributes");
         auto uniformArray = arrays_.array("prism::catalog::Uniform", prefix + "_uniforms", uniforms);
+        // The SPIR-V's and the other targets' fields only where there are: a gl catalogue stays as it was.
+        const std::string layout =
+            c_.spirvEnv || v.es300 || v.spirv ? spirvLayout(v, prefix, attributeArray) : std::string();
         return "{" + quotedLiteral(v.name) + ", " + defineArray + ", " + stageArray + ", " + attributeArray + ", " +
-               uniformArray + (c_.spirvEnv ? vulkanLayout(v.reflection, prefix) : "") + "}";
+               uniformArray + layout + "}";
     }
 
-    // A Vulkan-client variant's descriptors, push constants and specialisation constants.
-    std::string vulkanLayout(const ProgramReflection& r, const std::string& prefix) {
+    // A stage's text through the pool, its line table and, where there are, its SPIR-V words
+    // (each distinct module once).
+    std::string stageSource(const CatalogStage& st, const std::string& text, const std::string& stageId,
+                            const std::vector<std::uint32_t>* words) {
+        std::vector<std::string> refs;
+        for (const auto& piece : stagePieces(text)) pool_.reference(piece, refs);
+        auto chunks = arrays_.references(stageId + "_chunks", refs);
+        std::vector<std::string> files;
+        for (std::size_t n = 0; n < st.files.size(); ++n)
+            files.push_back("{" + std::to_string(n) + ", " + quotedLiteral(st.files[n].path) +
+                            searchDirField(st.files[n].searchDir) + "}");
+        auto fileArray = arrays_.array("prism::catalog::SourceFile", stageId + "_files", files);
+        const std::string spirv =
+            words ? ", " + arrays_.array("std::uint32_t", stageId + "_spirv", wordLines(*words), false) : "";
+        return "{prism::catalog::Stage::" + std::string(stageEnum(st.stage)) + ", " + chunks + ", " + fileArray +
+               spirv + "}";
+    }
+
+    // The SPIR-V's descriptors (uniform blocks with their members), push constants and
+    // specialisation constants, then the es300 stages and the SPIR-V's vertex inputs.
+    std::string spirvLayout(const CatalogVariant& v, const std::string& prefix, const std::string& attributeArray) {
+        static const ProgramReflection none;
+        const ProgramReflection& r = spirvOf(v) ? *spirvOf(v) : none;
         std::vector<std::string> resources, push, spec;
-        for (const auto& x : r.resources)
-            resources.push_back("{" + quotedLiteral(x.name) + ", " + std::to_string(x.set) + ", " +
-                                std::to_string(x.binding) +
-                                ", prism::catalog::ResourceKind::" + std::string(catalog::resourceKindName(x.kind)) +
-                                ", " + std::to_string(x.size) + ", " + std::to_string(x.arraySize) + "}");
+        for (std::size_t i = 0; i < r.resources.size(); ++i)
+            resources.push_back(resourceRow(r.resources[i], prefix + "_resource" + std::to_string(i) + "_members"));
         for (const auto& p : r.pushConstants)
             push.push_back("{" + quotedLiteral(p.name) + ", " + hexLiteral(p.glType) + ", " + std::to_string(p.offset) +
                            ", " + std::to_string(p.size) + "}");
         for (const auto& c : r.specConstants)
             spec.push_back("{" + quotedLiteral(c.name) + ", " + std::to_string(c.id) + ", " + hexLiteral(c.glType) +
                            ", " + hexLiteral(c.defaultBits) + "}");
+        // The Vulkan client's vertex inputs are `attributes` (its own locations); the spirv target's its own.
+        const std::string inputs = v.spirv       ? attributeRows(v.spirv->attributes, prefix + "_spirv_inputs")
+                                   : c_.spirvEnv ? attributeArray
+                                                 : "std::span<const prism::catalog::Attribute>{}";
         return ", " + arrays_.array("prism::catalog::Resource", prefix + "_resources", resources, false) + ", " +
                arrays_.array("prism::catalog::PushConstant", prefix + "_push_constants", push, false) + ", " +
-               arrays_.array("prism::catalog::SpecConstant", prefix + "_spec_constants", spec, false);
+               arrays_.array("prism::catalog::SpecConstant", prefix + "_spec_constants", spec, false) + ", " +
+               writeEs300(v, prefix) + ", " + inputs;
+    }
+
+    std::string resourceRow(const ReflectedResource& x, const std::string& memberArrayName) {
+        std::vector<std::string> members;
+        for (const auto& m : x.members)
+            members.push_back("{" + quotedLiteral(m.name) + ", " + hexLiteral(m.glType) + ", " +
+                              std::to_string(m.offset) + ", " + std::to_string(m.arraySize) + "}");
+        const std::string memberArray =
+            members.empty() ? "" : ", " + arrays_.array("prism::catalog::BlockMember", memberArrayName, members, false);
+        return "{" + quotedLiteral(x.name) + ", " + std::to_string(x.set) + ", " + std::to_string(x.binding) +
+               ", prism::catalog::ResourceKind::" + std::string(catalog::resourceKindName(x.kind)) + ", " +
+               std::to_string(x.size) + ", " + std::to_string(x.arraySize) + memberArray + "}";
+    }
+
+    std::string attributeRows(const std::vector<ReflectedAttribute>& list, const std::string& name) {
+        std::vector<std::string> rows;
+        for (const auto& a : list)
+            rows.push_back("{" + quotedLiteral(a.name) + ", " + hexLiteral(a.glType) + ", " +
+                           std::to_string(a.location) + "}");
+        return arrays_.array("prism::catalog::Attribute", name, rows);
+    }
+
+    // The es300 stages: their pieces go through the pool, so what they share with the gl
+    // text (every module body) is stored once.
+    std::string writeEs300(const CatalogVariant& v, const std::string& prefix) {
+        if (!v.es300) return "std::span<const prism::catalog::StageSource>{}";
+        std::vector<std::string> stages;
+        for (const auto& st : v.stages)
+            stages.push_back(stageSource(st, es300Text(st.text),
+                                         prefix + "_es300_" + std::string(catalog::stageName(st.stage)), nullptr));
+        return arrays_.array("prism::catalog::StageSource", prefix + "_es300_stages", stages, false);
     }
 
     std::string writeShaders() {

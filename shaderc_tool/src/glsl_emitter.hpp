@@ -1,19 +1,28 @@
 // --emit-glsl: writes each flattened, driver-safe stage as
 // DIR/<shader>.<stage> (DIR/<shader>.<variant>.<stage> for shaders with variants),
-// so the exact text a driver will see can be inspected or fed to other tools.
-// --emit-spirv (Vulkan client): the same names with `.spv` appended, each the stage's
-// SPIR-V words as bytes (little-endian), e.g. DIR/blur.FOG-1.frag.spv.
+// so the exact text a driver will see can be inspected or fed to other tools. A run with
+// more targets than gl names the target in every file: DIR/<shader>[.<variant>].<target>.<stage>,
+// for the shaders each target is produced for (es300 text: es300_target.hpp).
+// --emit-spirv: each stage's SPIR-V (the Vulkan client's or the spirv target's) under the
+// names of a gl-only run with `.spv` appended, the words as little-endian bytes, as
+// spirv-val, spirv-dis and Vulkan loaders read them: e.g. DIR/blur.FOG-1.frag.spv.
 //
-//   if (!emitGlsl("build/glsl", catalog, error)) return error;
+//   std::vector<std::vector<Target>> perShader = {{Target::Gl, Target::Es300}, {Target::Gl}};
+//   emitGlsl(options.emitGlslDir, catalog.data, {Target::Gl, Target::Es300}, perShader, error);
+//   if (!emitSpirv("build/spv", catalog.data, error)) return error;
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "catalog_model.hpp"
+#include "targets.hpp"
 
 namespace prism::shaderc {
 
-bool emitGlsl(const std::string& dir, const CatalogData& catalog, std::string& error);
+// `targets[s]`: the targets shader s is produced for, among the run's `runTargets`.
+bool emitGlsl(const std::string& dir, const CatalogData& catalog, const std::vector<Target>& runTargets,
+              const std::vector<std::vector<Target>>& targets, std::string& error);
 bool emitSpirv(const std::string& dir, const CatalogData& catalog, std::string& error);
 
 }  // namespace prism::shaderc

@@ -148,6 +148,7 @@ class Flattener {
         result.stage.versionNumber = version.number;
         result.stage.text = render(version);
         result.stage.variantPragmas = std::move(variantPragmas_);
+        result.stage.targetsPragma = std::move(targetsPragma_);
         result.diagnostics.insert(result.diagnostics.end(), diagnostics_.begin(), diagnostics_.end());
     }
 
@@ -216,10 +217,40 @@ class Flattener {
         const auto words = splitWhitespace(directive.argument);
         if (words.size() >= 2 && words[1] == "variant")
             return handleVariant(file, line, std::vector<std::string>(words.begin() + 2, words.end()));
+        if (words.size() >= 2 && words[1] == "targets")
+            return handleTargets(file, line, std::vector<std::string>(words.begin() + 2, words.end()));
         if (words.size() == 2 && words[1] == "reinclude") return;  // applied by the preprocessor
         report(Severity::Warning, file, line.firstLine, directiveColumn(line),
                "unknown #pragma prism '" + (words.size() >= 2 ? words[1] : std::string()) +
-                   "' ignored (known: variant, reinclude)");
+                   "' ignored (known: variant, targets, reinclude)");
+    }
+
+    // One declaration per stage: a second one that differs would leave the reader unsure
+    // which wins, so it is an error naming the first.
+    void handleTargets(const EnteredFile& file, const LogicalLine& line, const std::vector<std::string>& words) {
+        TargetsPragma pragma{{}, file.display, line.firstLine};
+        if (auto error = parseTargetList(joinWords(words), pragma.targets); !error.empty()) {
+            report(Severity::Error, file, line.firstLine, directiveColumn(line), "#pragma prism targets: " + error);
+            return;
+        }
+        if (!hasTarget(pragma.targets, Target::Gl)) {
+            report(Severity::Error, file, line.firstLine, directiveColumn(line),
+                   "#pragma prism targets " + targetListText(pragma.targets) +
+                       ": list gl too; the desktop GLSL is the source every other target is made from and the "
+                       "header embeds it for every shader");
+            return;
+        }
+        if (!targetsPragma_) {
+            targetsPragma_ = std::move(pragma);
+            return;
+        }
+        if (targetsPragma_->targets == pragma.targets) return;
+        auto& error =
+            report(Severity::Error, file, line.firstLine, directiveColumn(line),
+                   "#pragma prism targets " + targetListText(pragma.targets) + " conflicts with targets " +
+                       targetListText(targetsPragma_->targets) + " at " +
+                       placeName(targetsPragma_->file, targetsPragma_->line) + "; declare a stage's targets once");
+        error.notes.push_back(makeNote(targetsPragma_->file, targetsPragma_->line, "targets first declared here"));
     }
 
     void handleVariant(const EnteredFile& file, const LogicalLine& line, const std::vector<std::string>& words) {
@@ -270,6 +301,7 @@ class Flattener {
     std::optional<SeenVersion> version_;
     std::vector<OutputPiece> body_;
     std::vector<VariantPragma> variantPragmas_;
+    std::optional<TargetsPragma> targetsPragma_;
     std::vector<Diagnostic> diagnostics_;
 };
 

@@ -9,10 +9,12 @@
 //   replaced by its file and integer-only `#line <line> <source-number>` directives;
 //   source 0 is the stage file, and `files` maps numbers to paths. Conditionals stay
 //   in the text for the compiler. No GL_GOOGLE_* / ARB include extension lines.
-// - `#pragma prism variant NAME [v1 v2 ...]` lines are collected and blanked.
+// - `#pragma prism variant NAME [v1 v2 ...]` and `#pragma prism targets T...` lines are
+//   collected and blanked.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -21,6 +23,7 @@
 #include "glslang_preprocessor.hpp"
 #include "prism/shaderc/build_step.hpp"
 #include "source_reader.hpp"
+#include "targets.hpp"
 
 namespace prism::shaderc {
 
@@ -39,15 +42,23 @@ struct VariantPragma {
     int line = 0;
 };
 
+// `#pragma prism targets gl spirv`: the only targets the stage serves (targets.hpp).
+struct TargetsPragma {
+    std::vector<Target> targets;
+    std::string file;
+    int line = 0;
+};
+
 struct ResolvedStage {
     std::string text;              // the flattened, driver-safe GLSL
     std::string versionDirective;  // e.g. "#version 330 core"
     int versionNumber = 330;
     std::vector<ResolvedFile> files;  // index == source number
     std::vector<VariantPragma> variantPragmas;
-    std::vector<std::string> filesRead;  // display paths of every file read, in order
-    std::string validationKey;           // what the compiler sees (validation_key.hpp), set by resolveVariants
-    bool shared = false;                 // copied from another variant's run (variant_resolution.hpp)
+    std::optional<TargetsPragma> targetsPragma;  // none: the stage serves every target
+    std::vector<std::string> filesRead;          // display paths of every file read, in order
+    std::string validationKey;                   // what the compiler sees (validation_key.hpp), set by resolveVariants
+    bool shared = false;                         // copied from another variant's run (variant_resolution.hpp)
 };
 
 struct ResolveResult {

@@ -8,6 +8,7 @@
 #include "glsl_emitter.hpp"
 #include "header_writer.hpp"
 #include "output_file.hpp"
+#include "shader_targets.hpp"
 
 namespace prism::shaderc {
 
@@ -25,8 +26,13 @@ std::string writeOutputs(const Options& o, const ResolvedCatalog& rc) {
             return error;
         }
     }
-    if (!o.emitGlslDir.empty() && !emitGlsl(o.emitGlslDir, rc.data, error)) return error;
     if (!o.emitSpirvDir.empty() && !emitSpirv(o.emitSpirvDir, rc.data, error)) return error;
+    if (o.emitGlslDir.empty()) return {};
+    std::vector<std::vector<Target>> targets(rc.data.shaders.size());
+    for (std::size_t s = 0; s < targets.size(); ++s)
+        for (const Target t : o.targets)
+            if (producedFor(o, rc, s, t)) targets[s].push_back(t);
+    if (!emitGlsl(o.emitGlslDir, rc.data, o.targets, targets, error)) return error;
     return {};
 }
 

@@ -1,7 +1,7 @@
 // Part of stage 5 (validation_scheduler.hpp): the active attributes and uniforms of a
 // linked program (glslang's reflection), with attribute locations taken from the binding
-// contract. A Vulkan-client program's descriptors, push constants, specialisation constants
-// and SPIR-V are filled in by vulkan_reflection.hpp.
+// contract. The descriptors, push constants, specialisation constants and SPIR-V of a program
+// compiled to SPIR-V (the Vulkan client, the spirv target) are filled in by vulkan_reflection.hpp.
 #pragma once
 
 #include <cstdint>
@@ -30,12 +30,20 @@ struct ReflectedUniform {
     int arraySize = 1;
 };
 
+struct ReflectedBlockMember {
+    std::string name;
+    std::uint32_t glType = 0;
+    std::uint32_t offset = 0;  // bytes from the block's start
+    int arraySize = 1;
+};
+
 struct ReflectedResource {
     std::string name;
     std::uint32_t set = 0, binding = 0;
     catalog::ResourceKind kind = catalog::ResourceKind::UniformBuffer;
     std::uint32_t size = 0;  // bytes of a buffer block; 0 otherwise
     std::uint32_t arraySize = 1;
+    std::vector<ReflectedBlockMember> members = {};  // a uniform block's, by offset
 };
 
 struct ReflectedPushConstant {
@@ -56,7 +64,7 @@ struct StageSpirv {
 struct ProgramReflection {
     std::vector<ReflectedAttribute> attributes;  // sorted by location, then name
     std::vector<ReflectedUniform> uniforms;      // sorted by name
-    // The Vulkan client's (empty for OpenGL):
+    // The SPIR-V's (the Vulkan client, the spirv target; empty for OpenGL GLSL):
     std::vector<ReflectedResource> resources;          // by set, then binding
     std::vector<ReflectedPushConstant> pushConstants;  // by offset
     std::vector<ReflectedSpecConstant> specConstants;  // by id

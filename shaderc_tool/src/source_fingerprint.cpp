@@ -53,6 +53,7 @@ std::string fingerprintOf(const Options& o, const std::vector<std::string>& embe
     h.add("out " + fs::path(o.output).filename().string());
     for (const auto& [name, value] : o.defines) h.add("-D " + name + "=" + value);
     for (const auto& filter : o.variantFilters) h.add("--variant " + filter);
+    if (o.targets != std::vector<Target>{Target::Gl}) h.add("--target " + targetListText(o.targets));
     for (const auto& contract : o.contracts) h.add("--contract " + shown(contract));
     for (const auto& dir : o.includeDirs) h.add("-I " + shown(dir));
     for (const auto& input : o.inputs) h.add("in " + shown(input));

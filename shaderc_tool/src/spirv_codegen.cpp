@@ -5,6 +5,8 @@
 #include <spirv-tools/libspirv.hpp>
 
 #include <array>
+#include <map>
+#include <memory>
 
 namespace prism::shaderc {
 namespace {
@@ -84,17 +86,31 @@ bool generateSpirv(const glslang::TProgram& program, EShLanguage stage, std::vec
     return !words.empty();
 }
 
+namespace {
+
+// One SPIRV-Tools context per environment and thread: building one (its grammar tables)
+// cost more than validating a stage. Validation itself is thread-safe only per context.
+spvtools::SpirvTools& toolsFor(SpirvEnv env) {
+    thread_local std::map<SpirvEnv, std::unique_ptr<spvtools::SpirvTools>> tools;
+    auto& slot = tools[env];
+    if (!slot) slot = std::make_unique<spvtools::SpirvTools>(rowOf(env).tools);
+    return *slot;
+}
+
+}  // namespace
+
 std::vector<Diagnostic> validateSpirv(std::span<const std::uint32_t> words, SpirvEnv env, const std::string& file,
                                       const std::string& what) {
     std::vector<Diagnostic> out;
-    spvtools::SpirvTools tools(rowOf(env).tools);
+    auto& tools = toolsFor(env);
     tools.SetMessageConsumer([&](spv_message_level_t, const char*, const spv_position_t&, const char* message) {
         out.push_back(makeError(
             file, 0, 0,
             "SPIRV-Tools rejected the SPIR-V of " + what + " for " + std::string(spirvEnvName(env)) + ": " + message));
     });
-    if (!tools.Validate(words.data(), words.size()) && out.empty())
-        out.push_back(makeError(file, 0, 0, "SPIRV-Tools rejected the SPIR-V of " + what));
+    const bool valid = tools.Validate(words.data(), words.size());
+    tools.SetMessageConsumer(nullptr);  // it refers to `out`, which ends here
+    if (!valid && out.empty()) out.push_back(makeError(file, 0, 0, "SPIRV-Tools rejected the SPIR-V of " + what));
     return out;
 }
 

@@ -5,7 +5,9 @@
 //   2 up_to_date.hpp           nothing changed? (asked again after stage 4)
 //   3 shader_inputs.hpp        the stage files, and the binding contract (contract.hpp)
 //   4 catalog_builder.hpp      include resolution and variants
-//   5 validation_scheduler.hpp glslang, interface and contract checks, reflection
+//   5 validation_scheduler.hpp glslang, interface and contract checks, reflection; then
+//     shader_targets.hpp, es300_target.hpp, spirv_target.hpp: what each target refuses, the
+//     es300 checks, the SPIR-V
 //   6 outputs.hpp              header and data file, --emit-glsl, depfile and stamp
 // Exit status: 0 success, 1 shader errors, 2 usage or I/O errors.
 #include "prism/shaderc/tool.hpp"
@@ -16,9 +18,12 @@
 #include "catalog_builder.hpp"
 #include "contract.hpp"
 #include "diagnostics.hpp"
+#include "es300_target.hpp"
 #include "outputs.hpp"
 #include "shader_inputs.hpp"
+#include "shader_targets.hpp"
 #include "source_reader.hpp"
+#include "spirv_target.hpp"
 #include "up_to_date.hpp"
 #include "validation_scheduler.hpp"
 
@@ -61,7 +66,10 @@ int runTool(int argc, char** argv) {
         return exitStatus(writeBuildSystemFiles(o, catalog.filesRead));
     }
 
+    if (sink.errorCount() == 0) sink.reportAll(checkShaderTargets(o, catalog));
     if (sink.errorCount() == 0) sink.reportAll(validateCatalog(o, catalog, contract.contract).diagnostics);
+    if (sink.errorCount() == 0) sink.reportAll(validateEs300(o, catalog, contract.contract));
+    if (sink.errorCount() == 0) sink.reportAll(buildSpirvTarget(o, catalog, contract.contract));
     sink.print(std::cerr, o.errorFormat);
     rememberCheckOutcome(o, catalog, sink, disk);
     if (sink.errorCount() > 0) {

@@ -49,8 +49,11 @@ Diagnostic diagnosticFrom(const json& j) {
 // constants and each stage's SPIR-V words.
 json vulkanJson(const ProgramReflection& r) {
     json resources = json::array(), push = json::array(), spec = json::array(), spirv = json::array();
-    for (const auto& x : r.resources)
-        resources.push_back({x.name, x.set, x.binding, static_cast<int>(x.kind), x.size, x.arraySize});
+    for (const auto& x : r.resources) {
+        json members = json::array();
+        for (const auto& m : x.members) members.push_back({m.name, m.glType, m.offset, m.arraySize});
+        resources.push_back({x.name, x.set, x.binding, static_cast<int>(x.kind), x.size, x.arraySize, members});
+    }
     for (const auto& p : r.pushConstants) push.push_back({p.name, p.glType, p.offset, p.size});
     for (const auto& c : r.specConstants) spec.push_back({c.name, c.id, c.glType, c.defaultBits});
     for (const auto& s : r.spirv) spirv.push_back({static_cast<int>(s.stage), s.words});
@@ -58,10 +61,14 @@ json vulkanJson(const ProgramReflection& r) {
 }
 
 void readVulkan(const json& j, ProgramReflection& r) {
-    for (const auto& x : j.at("resources"))
+    for (const auto& x : j.at("resources")) {
         r.resources.push_back({x.at(0).get<std::string>(), x.at(1).get<std::uint32_t>(), x.at(2).get<std::uint32_t>(),
                                static_cast<catalog::ResourceKind>(x.at(3).get<int>()), x.at(4).get<std::uint32_t>(),
                                x.at(5).get<std::uint32_t>()});
+        for (const auto& m : x.at(6))
+            r.resources.back().members.push_back({m.at(0).get<std::string>(), m.at(1).get<std::uint32_t>(),
+                                                  m.at(2).get<std::uint32_t>(), m.at(3).get<int>()});
+    }
     for (const auto& p : j.at("pushConstants"))
         r.pushConstants.push_back({p.at(0).get<std::string>(), p.at(1).get<std::uint32_t>(),
                                    p.at(2).get<std::uint32_t>(), p.at(3).get<std::uint32_t>()});

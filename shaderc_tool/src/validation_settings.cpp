@@ -29,6 +29,7 @@ std::string catalogueCacheKey(const Options& o) {
     h.add(std::to_string(o.glslVersion)).add(o.glslProfile).add(o.baseDir);
     if (o.warnUndocumentedLibraryModules) h.add("warn-undocumented-modules=all");  // more warnings, another record
     if (o.spirvEnv) h.add(spirvEnvName(*o.spirvEnv));
+    if (o.targets != std::vector<Target>{Target::Gl}) h.add("--target " + targetListText(o.targets));
     return h.hex();
 }
 

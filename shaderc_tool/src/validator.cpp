@@ -224,6 +224,11 @@ std::shared_ptr<CompiledStage> compileStage(const StageToValidate& s) {
     const char* text = s.resolved.text.c_str();
     shader->setStrings(&text, 1);
     if (s.spirvEnv) configureShader(*shader, glslangStage(s.stage), *s.spirvEnv);
+    if (s.spirvEnv && s.relaxedRules) {
+        shader->setEnvInputVulkanRulesRelaxed();
+        shader->setAutoMapLocations(true);
+        shader->setAutoMapBindings(true);
+    }
     compiled->ok = shader->parse(GetDefaultResources(), s.resolved.versionNumber,
                                  profileOf(s.resolved.versionDirective), false, false, messagesFor(s));
     if (const char* log = shader->getInfoLog(); log && *log) {  // the line texts only when there is a message
@@ -243,10 +248,11 @@ bool compiledCleanly(const CompiledStage& stage) {
     return stage.ok && stage.diagnostics.empty();
 }
 
-ValidatedVariant validateProgram(const std::vector<StageToValidate>& stages, const Contract& contract) {
+ValidatedVariant validateProgram(const std::vector<StageToValidate>& stages, const Contract& contract,
+                                 const LinkedProgramCheck& check) {
     std::vector<std::shared_ptr<CompiledStage>> compiled;
     for (const auto& s : stages) compiled.push_back(compileStage(s));
-    return validateCompiledProgram(stages, compiled, contract);
+    return validateCompiledProgram(stages, compiled, contract, check);
 }
 
 namespace {
@@ -300,7 +306,7 @@ void emitSpirv(const std::vector<StageToValidate>& stages, glslang::TProgram& pr
 
 // Links the program and reflects it into `result`; link errors become diagnostics.
 void linkAndReflect(const std::vector<StageToValidate>& stages, const std::vector<glslang::TShader*>& shaders,
-                    const Contract& contract, ValidatedVariant& result) {
+                    const Contract& contract, const LinkedProgramCheck& check, ValidatedVariant& result) {
     glslang::TProgram program;
     for (auto* sh : shaders) program.addShader(sh);
     if (!program.link(messagesFor(stages.front()))) {
@@ -314,10 +320,20 @@ void linkAndReflect(const std::vector<StageToValidate>& stages, const std::vecto
             result.diagnostics.push_back(makeError(stages.front().path, 0, 0, "glslang could not link the program"));
         return;
     }
+    // glslang assigns the spirv target's locations and bindings here, before anything reads them.
+    if (stages.front().relaxedRules && !program.mapIO()) {
+        result.diagnostics.push_back(
+            makeError(stages.front().path, 0, 0, "glslang could not assign locations and bindings"));
+        return;
+    }
     if (stages.front().spirvEnv)
         emitSpirv(stages, program, result);
     else
         result.reflection = reflectProgram(program, contract);
+    if (check) {
+        const auto found = check(program, shaders);
+        result.diagnostics.insert(result.diagnostics.end(), found.begin(), found.end());
+    }
     result.ok = true;
     for (const auto& d : result.diagnostics) result.ok = result.ok && d.severity != Severity::Error;
 }
@@ -334,7 +350,7 @@ bool hasClassicInterfaces(const std::vector<StageToValidate>& stages) {
 
 ValidatedVariant validateCompiledProgram(const std::vector<StageToValidate>& stages,
                                          const std::vector<std::shared_ptr<CompiledStage>>& compiledStages,
-                                         const Contract& contract) {
+                                         const Contract& contract, const LinkedProgramCheck& check) {
     ValidatedVariant result;
     bool compiled = true;
     for (std::size_t i = 0; i < stages.size(); ++i) {
@@ -366,7 +382,7 @@ ValidatedVariant validateCompiledProgram(const std::vector<StageToValidate>& sta
     // warning (a near miss of Prism's built-in contract) still links and reflects.
     const auto isError = [](const Diagnostic& d) { return d.severity == Severity::Error; };
     if (std::none_of(interfaceMessages.begin(), interfaceMessages.end(), isError))
-        linkAndReflect(stages, shaders, contract, result);
+        linkAndReflect(stages, shaders, contract, check, result);
     return result;
 }
 

@@ -4,6 +4,7 @@
 // from" chain).
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -17,19 +18,35 @@
 #include "reflection.hpp"
 #include "spirv_codegen.hpp"
 
+namespace glslang {
+class TProgram;
+class TShader;
+}  // namespace glslang
+
 namespace prism::shaderc {
+
+// A further check of a linked program (the es300 limits, es300_limits.hpp): reads the
+// program and its shaders (in stage order), returns what it found.
+using LinkedProgramCheck =
+    std::function<std::vector<Diagnostic>(glslang::TProgram&, const std::vector<glslang::TShader*>&)>;
 
 struct StageToValidate {
     catalog::Stage stage;
     std::string path;  // the stage file, for errors without a line
     ResolvedStage resolved;
-    std::optional<SpirvEnv> spirvEnv = {};  // the Vulkan client's environment; empty: OpenGL driver GLSL
-    std::string program = {};               // the program's name, for SPIR-V messages
+    // Set: compiled to SPIR-V for this environment, validated by SPIRV-Tools and reflected
+    // (vulkan_reflection.hpp); empty: OpenGL driver GLSL.
+    std::optional<SpirvEnv> spirvEnv = {};
+    std::string program = {};  // the program's name, for SPIR-V messages
+    // With spirvEnv, the spirv target's relaxed Vulkan rules (spirv_target.hpp): GL-style
+    // source, its loose uniforms in one std140 block per stage, locations and bindings
+    // assigned by glslang.
+    bool relaxedRules = false;
 };
 
 struct ValidatedVariant {
     bool ok = false;
-    ProgramReflection reflection;  // with the Vulkan client, also each stage's SPIR-V
+    ProgramReflection reflection;  // with a spirvEnv, also each stage's SPIR-V
     std::vector<Diagnostic> diagnostics;
 };
 
@@ -38,7 +55,8 @@ void initializeValidator();
 void finalizeValidator();
 
 // Thread-safe: each call uses its own glslang objects.
-ValidatedVariant validateProgram(const std::vector<StageToValidate>& stages, const Contract& contract);
+ValidatedVariant validateProgram(const std::vector<StageToValidate>& stages, const Contract& contract,
+                                 const LinkedProgramCheck& check = {});
 
 // One stage parsed by glslang, shareable by the programs whose stage has the same
 // token stream (validation_scheduler.hpp). Its diagnostics speak of the text it was
@@ -53,6 +71,6 @@ bool compiledCleanly(const CompiledStage& stage);                           // p
 // with validateProgram, on private stages.
 ValidatedVariant validateCompiledProgram(const std::vector<StageToValidate>& stages,
                                          const std::vector<std::shared_ptr<CompiledStage>>& compiled,
-                                         const Contract& contract);
+                                         const Contract& contract, const LinkedProgramCheck& check = {});
 
 }  // namespace prism::shaderc

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <map>
+#include <tuple>
 
 namespace prism::shaderc {
 namespace {
@@ -44,7 +45,9 @@ std::uint32_t memberSize(const glslang::TType& type) {
     return static_cast<std::uint32_t>(size);
 }
 
-void reflectBlocks(glslang::TProgram& program, ProgramReflection& r, std::vector<int>& pushBlocks) {
+// `blocks[i]`: the resource of glslang's uniform block i, so its members can be listed.
+void reflectBlocks(glslang::TProgram& program, ProgramReflection& r, std::vector<int>& pushBlocks,
+                   std::map<int, std::size_t>& blocks) {
     for (int i = 0; i < program.getNumUniformBlocks(); ++i) {
         const auto& b = program.getUniformBlock(i);
         const auto& type = *b.getType();
@@ -54,6 +57,7 @@ void reflectBlocks(glslang::TProgram& program, ProgramReflection& r, std::vector
         }
         const auto kind = type.getQualifier().storage == glslang::EvqBuffer ? ResourceKind::StorageBuffer
                                                                             : ResourceKind::UniformBuffer;
+        blocks[i] = r.resources.size();
         r.resources.push_back({b.name, setOf(type), static_cast<std::uint32_t>(std::max(0, b.getBinding())), kind,
                                static_cast<std::uint32_t>(std::max(0, b.size)), arraySizeOf(type)});
     }
@@ -65,7 +69,8 @@ void reflectBlocks(glslang::TProgram& program, ProgramReflection& r, std::vector
     }
 }
 
-void reflectUniforms(glslang::TProgram& program, ProgramReflection& r, const std::vector<int>& pushBlocks) {
+void reflectUniforms(glslang::TProgram& program, ProgramReflection& r, const std::vector<int>& pushBlocks,
+                     const std::map<int, std::size_t>& blocks) {
     for (int i = 0; i < program.getNumUniformVariables(); ++i) {
         const auto& u = program.getUniform(i);
         const auto& type = *u.getType();
@@ -75,7 +80,14 @@ void reflectUniforms(glslang::TProgram& program, ProgramReflection& r, const std
         else if (isOpaque(type))
             r.resources.push_back({u.name, setOf(type), static_cast<std::uint32_t>(std::max(0, u.getBinding())),
                                    opaqueKind(type), 0, arraySizeOf(type)});
+        else if (const auto block = blocks.find(u.index); block != blocks.end())
+            r.resources[block->second].members.push_back({u.name, static_cast<std::uint32_t>(u.glDefineType),
+                                                          static_cast<std::uint32_t>(std::max(0, u.offset)),
+                                                          std::max(1, u.size)});
     }
+    for (auto& x : r.resources)
+        std::sort(x.members.begin(), x.members.end(),
+                  [](const auto& a, const auto& b) { return std::tie(a.offset, a.name) < std::tie(b.offset, b.name); });
 }
 
 }  // namespace
@@ -91,8 +103,9 @@ ProgramReflection reflectVulkanProgram(glslang::TProgram& program) {
                                 q.hasLocation() ? static_cast<int>(q.layoutLocation) : -1});
     }
     std::vector<int> pushBlocks;
-    reflectBlocks(program, r, pushBlocks);
-    reflectUniforms(program, r, pushBlocks);
+    std::map<int, std::size_t> blocks;
+    reflectBlocks(program, r, pushBlocks, blocks);
+    reflectUniforms(program, r, pushBlocks, blocks);
     std::sort(r.attributes.begin(), r.attributes.end(), [](const auto& a, const auto& b) {
         return a.location != b.location ? a.location < b.location : a.name < b.name;
     });

@@ -1,6 +1,7 @@
-// Part of stage 5 (validation_scheduler.hpp), Vulkan client only: what a Vulkan program's
-// pipeline layout needs, from a linked glslang program (descriptors with set, binding,
-// kind and size; push-constant members with offsets; vertex inputs with their own
+// Part of stage 5 (validation_scheduler.hpp), for programs compiled to SPIR-V (the Vulkan
+// client, the spirv target): what a Vulkan program's pipeline layout needs, from a linked
+// glslang program (descriptors with set, binding, kind and size, uniform blocks with their
+// members' offsets; push-constant members with offsets; vertex inputs with their own
 // locations) and from its stages' SPIR-V (specialisation constants: glslang's reflection
 // does not list them, so OpDecorate SpecId and OpSpecConstant* are read from the words).
 //

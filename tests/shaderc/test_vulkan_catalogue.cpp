@@ -36,9 +36,13 @@ std::string describe(const prism::catalog::Variant& v) {
     for (const auto& st : v.stages) out << "stage " << prism::catalog::stageName(st.stage) << "\n";
     for (const auto& a : v.attributes)
         out << "input " << a.name << " location " << a.location << " type " << hex(a.glType) << "\n";
-    for (const auto& r : v.resources)
+    for (const auto& r : v.resources) {
         out << "resource " << r.name << " set " << r.set << " binding " << r.binding << " "
             << prism::catalog::resourceKindName(r.kind) << " size " << r.size << " array " << r.arraySize << "\n";
+        for (const auto& m : r.members)
+            out << "  member " << m.name << " offset " << m.offset << " type " << hex(m.glType) << " array "
+                << m.arraySize << "\n";
+    }
     for (const auto& p : v.pushConstants)
         out << "push " << p.name << " offset " << p.offset << " size " << p.size << " type " << hex(p.glType) << "\n";
     for (const auto& c : v.specConstants)
@@ -78,6 +82,12 @@ TEST(VulkanCatalogue, LitReflection) {
     EXPECT_EQ(lit.resources[1].set, 1u);
     EXPECT_EQ(lit.resources[1].kind, ResourceKind::CombinedImageSampler);
     EXPECT_EQ(lit.resources[2].binding, 2u);
+    ASSERT_EQ(lit.resources[0].members.size(), 2u);
+    EXPECT_EQ(lit.resources[0].members[1].offset, 64u);  // vec3 after mat4 (std140)
+    EXPECT_TRUE(lit.resources[1].members.empty());       // a sampler has none
+    // The SPIR-V's vertex inputs are the shader's own, as in `attributes`.
+    ASSERT_EQ(lit.spirvInputs.size(), lit.attributes.size());
+    EXPECT_EQ(lit.spirvInputs.data(), lit.attributes.data());
     ASSERT_EQ(lit.specConstants.size(), 1u);
     EXPECT_EQ(lit.specConstants[0].id, 7u);
     float ambient = 0;

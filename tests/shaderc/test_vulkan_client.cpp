@@ -159,9 +159,34 @@ TEST(VulkanClient, BadTargetEnvIsAUsageError) {
     EXPECT_NE(run.output.find("add --client vulkan or drop --target-env"), std::string::npos) << run.output;
     run = runShaderc("--check --emit-spirv spv " + folder);
     EXPECT_EQ(run.exitCode, 2) << run.output;
-    EXPECT_NE(run.output.find("add --client vulkan or drop --emit-spirv"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("writes SPIR-V, and this run makes none; add the spirv target (--target gl,spirv), "
+                              "or --client vulkan for Vulkan GLSL, or drop --emit-spirv"),
+              std::string::npos)
+        << run.output;
     run = runShaderc("--client metal --check " + folder);
     EXPECT_EQ(run.exitCode, 2) << run.output;
+}
+
+// A Vulkan-client catalogue's output is SPIR-V: --target spirv says so and changes nothing;
+// gl and es300 are OpenGL text, a usage error that names --client opengl.
+TEST(VulkanClient, TargetMayOnlySaySpirv) {
+    const auto folder = (kCases / "vertex_index").string();
+    ScratchDir dir("vulkan-target");
+    ASSERT_EQ(runShaderc("--client vulkan --check --cache-dir none --emit-spirv a " + folder, dir.str()).exitCode, 0);
+    ASSERT_EQ(runShaderc("--client vulkan --target spirv --check --cache-dir none --emit-spirv b " + folder, dir.str())
+                  .exitCode,
+              0);
+    EXPECT_EQ(prism::test::readFile(dir.path() / "a/vertex_index.vert.spv"),
+              prism::test::readFile(dir.path() / "b/vertex_index.vert.spv"));
+    for (const std::string list : {"gl", "gl,spirv", "es300"}) {
+        const auto run = runShaderc("--client vulkan --target " + list + " --check " + folder);
+        EXPECT_EQ(run.exitCode, 2) << run.output;
+        EXPECT_NE(run.output.find("--target " + list +
+                                  " with --client vulkan: a Vulkan-client catalogue's output is "
+                                  "SPIR-V"),
+                  std::string::npos)
+            << run.output;
+    }
 }
 
 // Includes, module paths and "included from" work as with the OpenGL client.

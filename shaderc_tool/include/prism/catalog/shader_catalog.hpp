@@ -116,8 +116,9 @@ struct SourceFile {
 // One stage of one variant: driver-safe GLSL (version on line 1, integer #line only)
 // as pieces of at most 16 KB (MSVC's string-literal limit) that other stages share: the
 // #version/#define block, #line lines, module bodies, the stage's body. Concatenate them.
-// A Vulkan-client catalogue (prism-shaderc --client vulkan) also stores the stage's SPIR-V
-// words (each distinct module once); an OpenGL-client catalogue leaves `spirv` empty.
+// A Vulkan-client catalogue (prism-shaderc --client vulkan) and the spirv target (--target
+// spirv, Vulkan 1.1) also store the stage's SPIR-V words (each distinct module once);
+// otherwise `spirv` is empty.
 struct StageSource {
     Stage stage;
     std::span<const std::string_view> chunks;
@@ -172,8 +173,18 @@ constexpr std::string_view resourceKindName(ResourceKind k) {
     return "?";
 }
 
-// One descriptor of a Vulkan-client variant: `size` is a buffer block's size in bytes (0 for
-// images and samplers); `arraySize` is 1 for non-arrays.
+// A member of a uniform block: `offset` in bytes from the block's start (std140).
+struct BlockMember {
+    std::string_view name;
+    std::uint32_t glType;
+    std::uint32_t offset;
+    std::int32_t arraySize;
+};
+
+// One descriptor of the SPIR-V of a variant: `size` is a buffer block's size in bytes (0 for
+// images and samplers); `arraySize` is 1 for non-arrays. A uniform block lists its members,
+// so an application fills it without another reflection library; the spirv target's loose
+// uniforms are those of `gl_DefaultUniformBlock` (glslang's relaxed Vulkan rules).
 struct Resource {
     std::string_view name;
     std::uint32_t set;
@@ -181,6 +192,7 @@ struct Resource {
     ResourceKind kind;
     std::uint32_t size;
     std::uint32_t arraySize;
+    std::span<const BlockMember> members = {};  // uniform blocks: by offset
 };
 
 // A member of a variant's push-constant block, at `offset` bytes, `size` bytes long.
@@ -211,16 +223,26 @@ struct VariantAxis {
     std::span<const std::string_view> values;
 };
 
-// One validated combination of axis values.
+// One validated combination of axis values. `stages` is the gl target (desktop GLSL, or the
+// Vulkan client's GLSL); each StageSource's `spirv` and the fields from `resources` on are
+// the SPIR-V's (the Vulkan client's, or the spirv target's), `es300Stages` the es300
+// target's: empty when the catalogue was built without them (prism-shaderc --target,
+// docs/targets.md) or the shader opted out.
 struct Variant {
     std::string_view name;                // e.g. "FOG=1,DIRECTIONAL_LIGHTS=4" or "default"
     std::span<const Define> defines;      // one per axis, in axis order
     std::span<const StageSource> stages;  // in pipeline order
     std::span<const Attribute> attributes;
     std::span<const Uniform> uniforms;
-    std::span<const Resource> resources = {};          // Vulkan client: by set, then binding
+    // Descriptors, push constants and specialisation constants of the SPIR-V in `stages`:
+    // the Vulkan client's, or the spirv target's (its loose uniforms in one block per stage).
+    std::span<const Resource> resources = {};          // by set, then binding
     std::span<const PushConstant> pushConstants = {};  // Vulkan client: by offset
     std::span<const SpecConstant> specConstants = {};  // Vulkan client: by id
+    std::span<const StageSource> es300Stages = {};     // es300 target: GLSL ES 3.00, line tables as `stages`
+    // The vertex inputs at the locations the SPIR-V uses: the spirv target's, assigned by
+    // glslang; in a Vulkan-client catalogue the shader's own, as in `attributes`.
+    std::span<const Attribute> spirvInputs = {};
 };
 
 struct Shader {

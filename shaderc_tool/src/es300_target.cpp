@@ -1,0 +1,104 @@
+// The es300 target's text and its validation as GLSL ES 3.00 (es300_target.hpp).
+#include "es300_target.hpp"
+
+#include <prism/catalog/line_directive.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+
+#include "es300_limits.hpp"
+#include "shader_targets.hpp"
+#include "validation_scheduler.hpp"
+#include "validator.hpp"
+
+namespace prism::shaderc {
+namespace {
+
+// ES gives float no default precision in a fragment shader, and these samplers none in
+// any stage (GLSL ES 3.00 §4.5.4). highp keeps the modules' small thresholds (a 1e-20
+// in safeNormalize underflows at mediump); a module's own `precision` line still wins.
+constexpr const char* kHighpDefaults =
+    "precision highp float;\nprecision highp int;\nprecision highp sampler3D;\nprecision highp samplerCubeShadow;\n"
+    "precision highp sampler2DShadow;\nprecision highp sampler2DArray;\nprecision highp sampler2DArrayShadow;\n"
+    "precision highp isampler2D;\nprecision highp isampler3D;\nprecision highp isamplerCube;\n"
+    "precision highp isampler2DArray;\nprecision highp usampler2D;\nprecision highp usampler3D;\n"
+    "precision highp usamplerCube;\nprecision highp usampler2DArray;\n";
+
+constexpr const char* kEsVersion = "#version 300 es";
+
+// `#line N S` names the next line N in ES; before GLSL 3.30 it named N + 1, so such a
+// stage's directives move by one (prism/catalog/line_directive.hpp).
+std::string retargetLineDirectives(const std::string& body, const catalog::GlslVersionTag from) {
+    const auto es = catalog::glslVersionOf(kEsVersion);
+    if (catalog::lineDirectiveNamesNextLine(from) == catalog::lineDirectiveNamesNextLine(es)) return body;
+    std::istringstream in(body);
+    std::string out, line;
+    while (std::getline(in, line)) {
+        unsigned n = 0, s = 0;
+        if (std::sscanf(line.c_str(), "#line %u %u", &n, &s) == 2)
+            line = catalog::lineDirective(catalog::lineAfterDirective(static_cast<int>(n), from), s, es);
+        out += line + "\n";
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string es300Text(const std::string& desktop) {
+    const auto firstLineEnd = desktop.find('\n');
+    const std::string version = desktop.substr(0, firstLineEnd);
+    const std::string body = firstLineEnd == std::string::npos ? "" : desktop.substr(firstLineEnd + 1);
+    return std::string(kEsVersion) + "\n" + kHighpDefaults +
+           retargetLineDirectives(body, catalog::glslVersionOf(version));
+}
+
+ResolvedStage es300Stage(const ResolvedStage& desktop) {
+    ResolvedStage es = desktop;
+    es.versionDirective = kEsVersion;
+    es.versionNumber = 300;
+    es.text = es300Text(desktop.text);
+    return es;
+}
+
+namespace {
+
+using EsProgram = std::pair<std::size_t, std::size_t>;  // shader, variant
+
+std::vector<Diagnostic> validateOne(ResolvedCatalog& rc, const EsProgram& p, const Contract& contract) {
+    std::vector<StageToValidate> stages;
+    const auto& resolved = rc.resolved[p.first][p.second];
+    for (std::size_t st = 0; st < resolved.size(); ++st)
+        stages.push_back({rc.data.shaders[p.first].variants[p.second].stages[st].stage, rc.stagePaths[p.first][st],
+                          es300Stage(resolved[st])});
+    const std::string program = targetProgramName(rc, p.first, p.second);
+    auto result = validateProgram(stages, contract, es300LimitsCheck(program, stages.front().path));
+    noteTarget(result.diagnostics,
+               "for target es300 (GLSL ES 3.00) in program " + program +
+                   "; `#pragma prism targets gl spirv` in a stage file leaves a shader out of es300");
+    rc.data.shaders[p.first].variants[p.second].es300 = result.ok;
+    return std::move(result.diagnostics);
+}
+
+}  // namespace
+
+std::vector<Diagnostic> validateEs300(const Options& o, ResolvedCatalog& rc, const Contract& contract) {
+    std::vector<EsProgram> programs;
+    for (std::size_t s = 0; s < rc.data.shaders.size(); ++s) {
+        if (!producedFor(o, rc, s, Target::Es300)) continue;
+        const auto& variants = rc.data.shaders[s].variants;
+        const bool runnable =
+            !variants.empty() &&
+            std::all_of(variants.front().stages.begin(), variants.front().stages.end(),
+                        [](const CatalogStage& st) { return targetRunsStage(Target::Es300, st.stage); });
+        for (std::size_t v = 0; runnable && v < variants.size(); ++v) programs.emplace_back(s, v);
+    }
+    return runOncePerTokenKey(
+        rc, contract, programs, o.jobs, [&](std::size_t i) { return validateOne(rc, programs[i], contract); },
+        [&](std::size_t from, std::size_t to) {
+            rc.data.shaders[programs[to].first].variants[programs[to].second].es300 =
+                rc.data.shaders[programs[from].first].variants[programs[from].second].es300;
+        });
+}
+
+}  // namespace prism::shaderc
