@@ -2,7 +2,7 @@
 // one per input line, over in-memory stage files of every kind. Oracle: no crash, leak,
 // undefined behaviour or escaping exception; every accepted program has a name that
 // mangles to an identifier demangling back to it, known files, one stage of each kind
-// in pipeline order, a vertex (or compute) stage, a name no other program has, and files
+// in pipeline order, a vertex, compute or mesh stage, a name no other program has, and files
 // that filesNamedBy() lists (so an input folder does not pair them by name too).
 #include <cstddef>
 #include <cstdint>
@@ -27,14 +27,15 @@ namespace {
 void checkProgram(const ShaderInput& p, const MemoryReader& files, std::set<std::string>& names) {
     if (p.name.empty() || !names.insert(p.name).second) fail("empty or repeated program name", p.name);
     if (demangleName(mangleName(p.name)) != p.name) fail("name does not demangle back", p.name);
-    bool vertexOrCompute = false;
+    bool entryStage = false;  // what a pipeline starts from: a vertex, compute or mesh stage
     for (std::size_t i = 0; i < p.stages.size(); ++i) {
         if (!files.canonical(p.stages[i].path)) fail("unknown file accepted", p.stages[i].path);
         if (i > 0 && pipelineOrder(p.stages[i - 1].stage) >= pipelineOrder(p.stages[i].stage))
             fail("stages out of pipeline order or repeated", p.name);
-        vertexOrCompute = vertexOrCompute || p.stages[i].stage == Stage::Vertex || p.stages[i].stage == Stage::Compute;
+        const Stage s = p.stages[i].stage;
+        entryStage = entryStage || s == Stage::Vertex || s == Stage::Compute || s == Stage::Mesh;
     }
-    if (!vertexOrCompute) fail("program without a vertex or compute stage", p.name);
+    if (!entryStage) fail("program without a vertex, compute or mesh stage", p.name);
 }
 
 }  // namespace
