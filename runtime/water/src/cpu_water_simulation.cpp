@@ -1,19 +1,22 @@
-// The CPU water step. Every pass mirrors its compute shader in shader_sources/water/
-// operation by operation (same fp32 operations in the same order, no fused multiply-add:
-// GCC does not contract across statements with -std=c++20 and x86-64 has no FMA without
-// -mfma), so the CPU and GPU steps agree bit for bit where the driver rounds as IEEE 754
-// says. For speed each pass runs on row bands (row_bands.hpp) and splits the grid into
-// the interior, where the loops have no bounds checks and the smoothing runs as unit-
-// stride sweeps the compiler vectorises, and a border that keeps the checks. Both compute
-// each cell with the same operations in the same order, so the thread count and the split
-// change no bit of the water.
+// The CPU water step, fused. A substep's passes (water_rows.hpp: rain and infiltration,
+// flow out, gather, edge velocities, apply, smoothing) run one after the other on each
+// row as soon as the rows it reads are done, so the intermediate water lives in small
+// per-thread rings of rows that stay in cache, and a substep streams only its state:
+// depth pairs, edge velocities, terrain and permeability in, depth pairs and edge
+// velocities out. The grid is split into row bands on threads (row_bands.hpp) with one
+// barrier per substep; a band also computes the few rows of the earlier passes on either
+// side that its later passes read (a halo of smoothing radius + 3 rows), into its rings,
+// never into shared arrays. Every cell is computed with the same operations in the same
+// order as by the per-pass step (tests/water/reference_water_step.cpp), so the thread
+// count, the band split and the fusion change no bit of the water.
 #include <algorithm>
-#include <cmath>
+#include <array>
 #include <cstring>
 #include <functional>
 
 #include "prism/water/water_simulation.hpp"
 #include "row_bands.hpp"
+#include "water_rows.hpp"
 
 #if defined(__x86_64__) || defined(__i386__) || defined(_M_X64)
 #include <xmmintrin.h>
@@ -23,8 +26,9 @@
 namespace prism::water {
 namespace {
 
-constexpr float kAvailableFactor = 0.99999904632568359375f;  // 1 - 2^-20 (modules/water/water_grid.glsl)
-constexpr float kTan22_5 = 0.41421356f;
+using detail::RowAt;
+using detail::Rows3;
+using detail::WaterRow;
 
 // Mesa's llvmpipe runs shaders with denormals flushed to zero (FTZ and DAZ); the
 // reference does the same for the duration of a step (the row bands do it per task).
@@ -43,77 +47,147 @@ class FlushDenormals {
 #endif
 };
 
-inline void twoSum(float a, float b, float& s, float& e) {
-    s = a + b;
-    const float bb = s - a;
-    e = (a - (s - bb)) + (b - bb);
-}
-
-inline void dfAdd(float& hi, float& lo, float d) {
-    float s, e;
-    twoSum(hi, d, s, e);
-    const float l = e + lo;
-    const float h = s + l;
-    lo = l - (h - s);
-    hi = h;
-}
-
-inline float availableWater(float hi, float lo) {
-    const float v = hi + lo;
-    const float a = v * kAvailableFactor;
-    return v > 0.0f ? a : 0.0f;
-}
-
-inline int signOf(float v) {
-    return v > 0.0f ? 1 : (v < 0.0f ? -1 : 0);
-}
-
-// The branch-free helpers below compute every operand first and then select, so the
-// compiler can vectorise them; min(a, b) is written as std::min's (b < a) ? b : a and
-// max(a, b) as std::max's (a < b) ? b : a, which keeps the selected values (signed zeros
-// included) those of the per-cell code.
-inline float edgeVelocity(const StepConstants& k, float q0, float sa, float sb, float availA, float availB) {
-    const float q1 = (q0 + k.waveAccelDt * (sa - sb)) * k.damping;
-    const float saEps = sa + k.epsilon, sbEps = sb + k.epsilon;
-    const bool towardsBPositive = q1 > 0.0f;
-    const bool blocked = (towardsBPositive & (sb >= saEps)) | (!towardsBPositive & (sa >= sbEps));
-    const float q = blocked ? 0.0f : q1;
-    const float capA = availA * k.capPerDt;
-    const float capB = availB * k.capPerDt;
-    const float negCapB = -capB;
-    const float towardsB = capA < q ? capA : q;
-    const float towardsA = q < negCapB ? negCapB : q;
-    return q > 0.0f ? towardsB : towardsA;
-}
-
-// One smoothing exchange between cell i (surface si, water ai) and a neighbour j.
-inline float smoothExchange(float weight, float si, float ai, float sj, float aj) {
-    const float up = weight * (si - sj), capI = weight * ai;
-    const float down = weight * (sj - si), capJ = weight * aj;
-    const float give = capI < up ? capI : up;
-    const float take = capJ < down ? capJ : down;
-    return si > sj ? -give : take;
-}
-
-// Where a pass writes the water of a cell: the compensated pair and the surface and
-// available water the next pass reads (raw pointers, so the compiler can vectorise).
-struct WaterOut {
-    const float* __restrict terrain;
-    float* __restrict hi;
-    float* __restrict lo;
-    float* __restrict surf;
-    float* __restrict avail;
-    void operator()(std::size_t i, float h, float l) const {
-        hi[i] = h;
-        lo[i] = l;
-        surf[i] = terrain[i] + h;
-        avail[i] = availableWater(h, l);
-    }
+// The arrays of the state a substep reads and writes.
+struct StepArrays {
+    const float *hi, *lo, *qEast, *qSouth, *terrain, *permeability;
+    float *hiNext, *loNext, *qEastNext, *qSouthNext;
+    double *infiltratedRow, *lostRow;
 };
 
-inline std::size_t cellIndex(int x, int z, int W) {
-    return static_cast<std::size_t>(z) * static_cast<std::size_t>(W) + static_cast<std::size_t>(x);
-}
+// Rows [begin, end) of the grid that one pass computes for a band.
+struct Span {
+    int begin, end;
+    bool has(int z) const { return z >= begin && z < end; }
+};
+
+// The intermediate rows of one thread: the water after rain, the flow amounts and codes,
+// the water after the gather, the edge velocities of halo rows, the water after the
+// distribution (2r + 1 rows, what the smoothing reads), and scratch rows. A ring row is
+// reused once no later pass reads it (see FusedBand::run for the lags).
+class Rings {
+  public:
+    static constexpr int kShort = 4;
+    void fit(int width, int radius) {
+        width_ = width;
+        applied_ = 2 * radius + 1;
+        const std::size_t w = static_cast<std::size_t>(width);
+        floats_.resize(w * static_cast<std::size_t>(kShort * 4 + kShort + kShort * 4 + kShort * 2 + applied_ * 4 + 3));
+        codes_.resize(w * kShort);
+    }
+    WaterRow rain(int z) { return water(0, kShort, z); }
+    float* amount(int z) { return row(kShort * 4, kShort, z); }
+    std::int32_t* code(int z) { return codes_.data() + static_cast<std::size_t>(z % kShort) * width(); }
+    WaterRow gathered(int z) { return water(kShort * 5, kShort, z); }
+    float* qEast(int z) { return row(kShort * 9, kShort, z); }
+    float* qSouth(int z) { return row(kShort * 10, kShort, z); }
+    WaterRow applied(int z) { return water(kShort * 11, applied_, z); }
+    // Where the last pass puts the surface and available water nobody reads, and the
+    // smoothing's sums.
+    float* scratch(int i) { return row(kShort * 11 + applied_ * 4 + i, 1, 0); }
+
+  private:
+    std::size_t width() const { return static_cast<std::size_t>(width_); }
+    float* row(int first, int slots, int z) {
+        return floats_.data() + static_cast<std::size_t>(first + z % slots) * width();
+    }
+    WaterRow water(int first, int slots, int z) {
+        return {row(first, slots, z), row(first + slots, slots, z), row(first + 2 * slots, slots, z),
+                row(first + 3 * slots, slots, z)};
+    }
+    int width_ = 0, applied_ = 1;
+    std::vector<float> floats_;
+    std::vector<std::int32_t> codes_;
+};
+
+// One band's part of a substep: its own rows [z0, z1) of the new state, and the halo rows
+// of the earlier passes that those read, each pass a method.
+class FusedBand {
+  public:
+    FusedBand(const StepConstants& k, const StepArrays& g, int width, int height, int z0, int z1, Rings& rings)
+        : k_(k), g_(g), W_(width), H_(height), r_(k.smoothRadius), own_{z0, z1}, ring_(rings) {
+        smooth_ = own_;
+        apply_ = r_ > 0 ? widen(own_, r_, r_) : own_;
+        velocity_ = widen(apply_, 1, 0);
+        gather_ = widen(velocity_, 0, 1);
+        flowOut_ = widen(gather_, 1, 1);
+        rain_ = widen(flowOut_, 1, 1);
+        ring_.fit(width, r_);
+    }
+
+    // Pass p on row y - lag(p): every row a pass reads was computed on an earlier
+    // iteration or earlier in this one (flow out reads rain rows z +- 1, the gather flow
+    // rows z +- 1, velocities gathered rows z and z + 1, apply velocities z - 1 and z,
+    // smoothing applied rows z +- r), and no ring row is overwritten while still read.
+    void run() {
+        const int lastRow = own_.end - 1 + 3 + r_;
+        for (int y = rain_.begin; y <= lastRow; ++y) {
+            if (rain_.has(y)) rain(y);
+            if (flowOut_.has(y - 1)) flowOut(y - 1);
+            if (gather_.has(y - 2)) gather(y - 2);
+            if (velocity_.has(y - 3)) velocity(y - 3);
+            if (apply_.has(y - 3)) apply(y - 3);
+            if (r_ > 0 && smooth_.has(y - 3 - r_)) smooth(y - 3 - r_);
+        }
+    }
+
+  private:
+    Span widen(Span s, int up, int down) const { return {std::max(0, s.begin - up), std::min(H_, s.end + down)}; }
+    int clampRow(int z) const { return std::clamp(z, 0, H_ - 1); }
+    std::size_t at(int z) const { return static_cast<std::size_t>(z) * static_cast<std::size_t>(W_); }
+    RowAt rowAt(int z) const { return {W_, H_, z}; }
+    // The new state of an own row, with scratch for what nobody reads.
+    WaterRow final(int z) { return {g_.hiNext + at(z), g_.loNext + at(z), ring_.scratch(0), ring_.scratch(1)}; }
+    float* qEastOf(int z) { return own_.has(z) ? g_.qEastNext + at(z) : ring_.qEast(z); }
+    float* qSouthOf(int z) { return own_.has(z) ? g_.qSouthNext + at(z) : ring_.qSouth(z); }
+
+    void rain(int z) {
+        const double infiltrated = detail::rainRow(k_, W_, g_.hi + at(z), g_.lo + at(z), g_.permeability + at(z),
+                                                   g_.terrain + at(z), ring_.rain(z));
+        if (own_.has(z)) g_.infiltratedRow[z] = infiltrated;
+    }
+    void flowOut(int z) {
+        const Rows3<float> surf{ring_.rain(clampRow(z - 1)).surf, ring_.rain(z).surf, ring_.rain(clampRow(z + 1)).surf};
+        detail::flowOutRow(k_, rowAt(z), surf, ring_.rain(z).avail, g_.terrain + at(z), ring_.amount(z), ring_.code(z));
+    }
+    void gather(int z) {
+        const int n = clampRow(z - 1), s = clampRow(z + 1);
+        const Rows3<float> amount{ring_.amount(n), ring_.amount(z), ring_.amount(s)};
+        const Rows3<std::int32_t> code{ring_.code(n), ring_.code(z), ring_.code(s)};
+        const WaterRow in = ring_.rain(z);
+        const double lost =
+            detail::gatherRow(rowAt(z), amount, code, in.hi, in.lo, g_.terrain + at(z), ring_.gathered(z));
+        if (own_.has(z)) g_.lostRow[z] = lost;
+    }
+    void velocity(int z) {
+        const WaterRow here = ring_.gathered(z), south = ring_.gathered(clampRow(z + 1));
+        detail::velocityRow(k_, rowAt(z), here.surf, south.surf, here.avail, south.avail, g_.qEast + at(z),
+                            g_.qSouth + at(z), qEastOf(z), qSouthOf(z));
+    }
+    void apply(int z) {
+        const WaterRow in = ring_.gathered(z);
+        const WaterRow out = r_ == 0 ? final(z) : ring_.applied(z);
+        detail::applyRow(k_, rowAt(z), qEastOf(z), qSouthOf(z), z > 0 ? qSouthOf(z - 1) : nullptr, in.hi, in.lo,
+                         g_.terrain + at(z), out);
+    }
+    void smooth(int z) {
+        std::array<const float*, 15> surf{}, avail{};
+        for (int dz = -r_; dz <= r_; ++dz)
+            if (z + dz >= 0 && z + dz < H_) {
+                surf[static_cast<std::size_t>(r_ + dz)] = ring_.applied(z + dz).surf;
+                avail[static_cast<std::size_t>(r_ + dz)] = ring_.applied(z + dz).avail;
+            }
+        const WaterRow in = ring_.applied(z);
+        detail::smoothRow(k_, rowAt(z), surf.data(), avail.data(), in.hi, in.lo, g_.terrain + at(z), final(z),
+                          ring_.scratch(2));
+    }
+
+    const StepConstants& k_;
+    const StepArrays& g_;
+    const int W_, H_, r_;
+    const Span own_;
+    Span smooth_{}, apply_{}, velocity_{}, gather_{}, flowOut_{}, rain_{};
+    Rings& ring_;
+};
 
 }  // namespace
 
@@ -135,16 +209,12 @@ void CpuWaterSimulation::resetState(std::span<const glm::vec2> pairs) {
         hi_[i] = pairs[i].x;
         lo_[i] = pairs[i].y;
     }
-    hiOut_.assign(n, 0.0f);
-    loOut_.assign(n, 0.0f);
-    surf_.assign(n, 0.0f);
-    avail_.assign(n, 0.0f);
-    surfOut_.assign(n, 0.0f);
-    availOut_.assign(n, 0.0f);
+    hiNext_.assign(n, 0.0f);
+    loNext_.assign(n, 0.0f);
     qEast_.assign(n, 0.0f);
     qSouth_.assign(n, 0.0f);
-    flowAmount_.assign(n, 0.0f);
-    flowDirection_.assign(n, 4);
+    qEastNext_.assign(n, 0.0f);
+    qSouthNext_.assign(n, 0.0f);
     infiltratedRow_.assign(static_cast<std::size_t>(height()), 0.0);
     lostRow_.assign(static_cast<std::size_t>(height()), 0.0);
     infiltrated_ = lost_ = 0.0;
@@ -167,13 +237,6 @@ void CpuWaterSimulation::lossTotals(double& infiltrated, double& lost) const {
     lost = lost_;
 }
 
-void CpuWaterSimulation::swapWater() {
-    hi_.swap(hiOut_);
-    lo_.swap(loOut_);
-    surf_.swap(surfOut_);
-    avail_.swap(availOut_);
-}
-
 int CpuWaterSimulation::bytesPerCellPerSubstep(bool smoothing) {
     // 4-byte arrays. A pass that writes water reads hi, lo and the terrain and writes hi,
     // lo, surface and available water: 28 bytes, besides the arrays of its own.
@@ -187,32 +250,42 @@ int CpuWaterSimulation::bytesPerCellPerSubstep(bool smoothing) {
     return kRain + kFlowOut + kGather + kVelocity + kApply + (smoothing ? kSmoothing : 0);
 }
 
+int CpuWaterSimulation::bytesStreamedPerCellPerSubstep() {
+    // hi, lo, q east, q south, terrain, permeability read; hi, lo, q east, q south written.
+    return 6 * 4 + 4 * 4;
+}
+
 void CpuWaterSimulation::runSubsteps(const StepConstants& k, long count) {
     FlushDenormals ftz;
     for (long s = 0; s < count; ++s) substep(k);
 }
 
 void CpuWaterSimulation::substep(const StepConstants& k) {
-    const int H = height();
-    auto pass = [&](auto&& body) {
-        const std::function<void(int, int)> task = body;
-        if (bands_)
-            bands_->run(H, task);
-        else
-            task(0, H);
+    const int W = width(), H = height();
+    const StepArrays arrays{hi_.data(),
+                            lo_.data(),
+                            qEast_.data(),
+                            qSouth_.data(),
+                            terrain_.heights.data(),
+                            permeability_.data(),
+                            hiNext_.data(),
+                            loNext_.data(),
+                            qEastNext_.data(),
+                            qSouthNext_.data(),
+                            infiltratedRow_.data(),
+                            lostRow_.data()};
+    const std::function<void(int, int)> band = [&](int z0, int z1) {
+        thread_local Rings rings;
+        FusedBand(k, arrays, W, H, z0, z1, rings).run();
     };
-    pass([&](int z0, int z1) { rainAndInfiltration(k, z0, z1); });
-    swapWater();
-    pass([&](int z0, int z1) { tangentialFlowOut(k, z0, z1); });
-    pass([&](int z0, int z1) { tangentialFlowGather(z0, z1); });
-    swapWater();
-    pass([&](int z0, int z1) { distributionVelocity(k, z0, z1); });
-    pass([&](int z0, int z1) { distributionApply(k, z0, z1); });
-    swapWater();
-    if (k.smoothRadius > 0) {
-        pass([&](int z0, int z1) { smoothing(k, z0, z1); });
-        swapWater();
-    }
+    if (bands_)
+        bands_->run(H, band);
+    else
+        band(0, H);
+    hi_.swap(hiNext_);
+    lo_.swap(loNext_);
+    qEast_.swap(qEastNext_);
+    qSouth_.swap(qSouthNext_);
     double inf = 0.0, lost = 0.0;
     for (int z = 0; z < H; ++z) {
         inf += infiltratedRow_[static_cast<std::size_t>(z)];
@@ -220,361 +293,6 @@ void CpuWaterSimulation::substep(const StepConstants& k) {
     }
     infiltrated_ += inf;
     lost_ += lost;
-}
-
-// 1 + 2 (water_rain_infiltrate.comp): infiltration takes permeability x dt, or all of the
-// (compensated) water when that is as much, so a cell is emptied exactly, never below zero.
-void CpuWaterSimulation::rainAndInfiltration(const StepConstants& k, int z0, int z1) {
-    const WaterOut write{terrain_.heights.data(), hiOut_.data(), loOut_.data(), surfOut_.data(), availOut_.data()};
-    const float* __restrict hiIn = hi_.data();
-    const float* __restrict loIn = lo_.data();
-    const int W = width();
-    // What each cell of the row gave up, as (hi, lo) floats: the cell's whole water when
-    // emptied, else (capacity, +0); summed below in double in cell order, as h + l.
-    thread_local std::vector<float> takenHi, takenLo;
-    takenHi.resize(static_cast<std::size_t>(W));
-    takenLo.resize(static_cast<std::size_t>(W));
-    for (int z = z0; z < z1; ++z) {
-        const std::size_t row = cellIndex(0, z, W);
-        for (int x = 0; x < W; ++x) {
-            const std::size_t i = row + static_cast<std::size_t>(x);
-            float h = hiIn[i], l = loIn[i];
-            dfAdd(h, l, k.rainDepth);
-            const float capacity = permeability_[i] * k.dt;
-            float hLeft = h, lLeft = l;
-            dfAdd(hLeft, lLeft, -capacity);
-            const bool emptied = capacity >= availableWater(h, l);
-            takenHi[static_cast<std::size_t>(x)] = emptied ? h : capacity;
-            takenLo[static_cast<std::size_t>(x)] = emptied ? l : 0.0f;
-            write(i, emptied ? 0.0f : hLeft, emptied ? 0.0f : lLeft);
-        }
-        double infiltrated = 0.0;
-        for (std::size_t x = 0; x < static_cast<std::size_t>(W); ++x)
-            infiltrated += static_cast<double>(takenHi[x]) + static_cast<double>(takenLo[x]);
-        infiltratedRow_[static_cast<std::size_t>(z)] = infiltrated;
-    }
-}
-
-// 3a (water_flow_out.comp): the Sobel gradient of the surface picks the downhill Moore
-// neighbour; interior cells read their 8 neighbours directly, border cells clamp.
-void CpuWaterSimulation::tangentialFlowOut(const StepConstants& k, int z0, int z1) {
-    const int W = width(), H = height();
-    for (int z = z0; z < z1; ++z) {
-        if (z == 0 || z == H - 1 || W < 3) {
-            for (int x = 0; x < W; ++x) flowOutCell(k, x, z);
-            continue;
-        }
-        flowOutCell(k, 0, z);
-        flowOutInteriorRow(k, z);
-        flowOutCell(k, W - 1, z);
-    }
-}
-
-// The decision for one cell, with clamped neighbours and a target that may be off the map.
-void CpuWaterSimulation::flowOutCell(const StepConstants& k, int x, int z) {
-    const int W = width(), H = height();
-    const float* b = terrain_.heights.data();
-    const float* s = surf_.data();
-    auto at = [&](int cx, int cz) { return s[cellIndex(std::clamp(cx, 0, W - 1), std::clamp(cz, 0, H - 1), W)]; };
-    const float nw = at(x - 1, z - 1), n = at(x, z - 1), ne = at(x + 1, z - 1), w = at(x - 1, z), e = at(x + 1, z);
-    const float sw = at(x - 1, z + 1), so = at(x, z + 1), se = at(x + 1, z + 1);
-    const std::size_t i = cellIndex(x, z, W);
-    const float gx = ((ne + 2.0f * e + se) - (nw + 2.0f * w + sw)) * k.invEightCell;
-    const float gz = ((sw + 2.0f * so + se) - (nw + 2.0f * n + ne)) * k.invEightCell;
-    const float slope = std::sqrt(gx * gx + gz * gz);
-    const float dx = -gx, dz = -gz;
-    const int ox = std::abs(dx) > kTan22_5 * std::abs(dz) ? signOf(dx) : 0;
-    const int oz = std::abs(dz) > kTan22_5 * std::abs(dx) ? signOf(dz) : 0;
-    float amount = 0.0f;
-    int code = 4;
-    const int tx = x + ox, tz = z + oz;
-    const bool inside = tx >= 0 && tz >= 0 && tx < W && tz < H;
-    if ((ox != 0 || oz != 0) && slope > 0.0f && (inside || k.openBorder != 0)) {
-        const float si = s[i];
-        const float st = inside ? s[cellIndex(tx, tz, W)] : b[i];
-        const float fraction = std::min(k.maxFlowFraction, k.flowRateDt * slope);
-        const float a = fraction * avail_[i];
-        const float drop = std::max(0.0f, (si - st) * 0.5f);
-        amount = std::min(a, drop);
-        code = (oz + 1) * 3 + (ox + 1);
-    }
-    flowAmount_[i] = amount;
-    flowDirection_[i] = static_cast<std::int32_t>(code);
-}
-
-// Interior: every target is inside; the same decision as flowOutCell(), branch-free, so the
-// loop vectorises (the trip count and the pointers are locals that stay in registers).
-void CpuWaterSimulation::flowOutInteriorRow(const StepConstants& k, int z) {
-    const int W = width();
-    const std::size_t w = static_cast<std::size_t>(W);
-    const std::size_t row = cellIndex(0, z, W);
-    const float* __restrict c = surf_.data() + row;
-    const float* __restrict up = c - w;
-    const float* __restrict down = c + w;
-    const float* __restrict avail = avail_.data() + row;
-    float* __restrict amountOut = flowAmount_.data() + row;
-    std::int32_t* __restrict codeOut = flowDirection_.data() + row;
-    const int interiorEnd = W - 1;
-    for (int x = 1; x < interiorEnd; ++x) {
-        const float nw = up[x - 1], n = up[x], ne = up[x + 1], we = c[x - 1], e = c[x + 1];
-        const float sw = down[x - 1], so = down[x], se = down[x + 1], si = c[x];
-        const float gx = ((ne + 2.0f * e + se) - (nw + 2.0f * we + sw)) * k.invEightCell;
-        const float gz = ((sw + 2.0f * so + se) - (nw + 2.0f * n + ne)) * k.invEightCell;
-        const float slope = std::sqrt(gx * gx + gz * gz);
-        const float dx = -gx, dz = -gz;
-        const float adx = std::abs(dx), adz = std::abs(dz);
-        // ox, oz as flowOutCell(): the sign of the component that is not too small; the
-        // target's surface picked by masks (written as chained selects so the loop
-        // vectorises).
-        const bool useX = adx > kTan22_5 * adz, useZ = adz > kTan22_5 * adx;
-        const bool xPos = useX & (dx > 0.0f), xNeg = useX & (dx < 0.0f);
-        const bool zPos = useZ & (dz > 0.0f), zNeg = useZ & (dz < 0.0f);
-        const int ox = static_cast<int>(xPos) - static_cast<int>(xNeg);
-        const int oz = static_cast<int>(zPos) - static_cast<int>(zNeg);
-        float northRow = n;
-        northRow = xNeg ? nw : northRow;
-        northRow = xPos ? ne : northRow;
-        float centreRow = si;
-        centreRow = xNeg ? we : centreRow;
-        centreRow = xPos ? e : centreRow;
-        float southRow = so;
-        southRow = xNeg ? sw : southRow;
-        southRow = xPos ? se : southRow;
-        float st = centreRow;
-        st = zNeg ? northRow : st;
-        st = zPos ? southRow : st;
-        const float flow = k.flowRateDt * slope;
-        const float fraction = flow < k.maxFlowFraction ? flow : k.maxFlowFraction;
-        const float a = fraction * avail[x];
-        const float half = (si - st) * 0.5f;
-        const float drop = 0.0f < half ? half : 0.0f;
-        const float amount = drop < a ? drop : a;
-        const bool moves = ((ox != 0) | (oz != 0)) & (slope > 0.0f);
-        amountOut[x] = moves ? amount : 0.0f;
-        codeOut[x] = static_cast<std::int32_t>(moves ? (oz + 1) * 3 + (ox + 1) : 4);
-    }
-}
-
-// 3b (water_flow_gather.comp): each cell adds what its neighbours send it and subtracts
-// what it sends; water sent off an open border is counted as lost.
-void CpuWaterSimulation::tangentialFlowGather(int z0, int z1) {
-    const int W = width(), H = height();
-    for (int z = z0; z < z1; ++z) {
-        double lostRow = 0.0;
-        if (z == 0 || z == H - 1 || W < 3) {
-            for (int x = 0; x < W; ++x) lostRow += gatherCell(x, z);
-            lostRow_[static_cast<std::size_t>(z)] = lostRow;
-            continue;
-        }
-        lostRow += gatherCell(0, z);
-        gatherInteriorRow(z);
-        lostRow += gatherCell(W - 1, z);
-        lostRow_[static_cast<std::size_t>(z)] = lostRow;
-    }
-}
-
-// One cell with every neighbour checked against the map's edges.
-float CpuWaterSimulation::gatherCell(int x, int z) {
-    const WaterOut write{terrain_.heights.data(), hiOut_.data(), loOut_.data(), surfOut_.data(), availOut_.data()};
-    const int W = width(), H = height();
-    const float* amountOf = flowAmount_.data();
-    const std::int32_t* codeOf = flowDirection_.data();
-    auto inside = [&](int cx, int cz) { return cx >= 0 && cz >= 0 && cx < W && cz < H; };
-    const std::size_t i = cellIndex(x, z, W);
-    float net = 0.0f, lost = 0.0f;
-    const int code = codeOf[i];
-    if (code != 4 && amountOf[i] > 0.0f) {
-        net = -amountOf[i];
-        if (!inside(x + code % 3 - 1, z + code / 3 - 1)) lost = amountOf[i];
-    }
-    for (int oz = -1; oz <= 1; ++oz)
-        for (int ox = -1; ox <= 1; ++ox) {
-            if (ox == 0 && oz == 0) continue;
-            const int nx = x + ox, nz = z + oz;
-            if (!inside(nx, nz)) continue;
-            const std::size_t j = cellIndex(nx, nz, W);
-            const int ncode = codeOf[j];
-            if (ncode != 4 && ncode % 3 - 1 == -ox && ncode / 3 - 1 == -oz) net = net + amountOf[j];
-        }
-    float h = hi_[i], l = lo_[i];
-    dfAdd(h, l, net);
-    write(i, h, l);
-    return lost;
-}
-
-// Interior: every target is inside, nothing is lost. A neighbour at (ox, oz) sends here when
-// its code points back: (1 - oz) * 3 + (1 - ox). Adding +0 for a neighbour that sends
-// nothing changes no bit: net is never -0 (it starts at +0 or below zero, and amounts are
-// >= +0). Branch-free with local restrict pointers, so the loop vectorises.
-void CpuWaterSimulation::gatherInteriorRow(int z) {
-    const WaterOut put{terrain_.heights.data(), hiOut_.data(), loOut_.data(), surfOut_.data(), availOut_.data()};
-    const int W = width();
-    const std::size_t w = static_cast<std::size_t>(W);
-    const std::size_t row = cellIndex(0, z, W);
-    const float* __restrict am = flowAmount_.data() + row;
-    const float* __restrict amN = am - w;
-    const float* __restrict amS = am + w;
-    const std::int32_t* __restrict cd = flowDirection_.data() + row;
-    const std::int32_t* __restrict cdN = cd - w;
-    const std::int32_t* __restrict cdS = cd + w;
-    const float* __restrict hiRow = hi_.data();
-    const float* __restrict loRow = lo_.data();
-    const int interiorEnd = W - 1;
-    for (int x = 1; x < interiorEnd; ++x) {
-        // Every amount is loaded first, so the selects need no conditional loads.
-        const float out = am[x], fromNw = amN[x - 1], fromN = amN[x], fromNe = amN[x + 1];
-        const float fromW = am[x - 1], fromE = am[x + 1], fromSw = amS[x - 1], fromS = amS[x], fromSe = amS[x + 1];
-        float net = ((cd[x] != 4) & (out > 0.0f)) ? -out : 0.0f;
-        net = net + (cdN[x - 1] == 8 ? fromNw : 0.0f);
-        net = net + (cdN[x] == 7 ? fromN : 0.0f);
-        net = net + (cdN[x + 1] == 6 ? fromNe : 0.0f);
-        net = net + (cd[x - 1] == 5 ? fromW : 0.0f);
-        net = net + (cd[x + 1] == 3 ? fromE : 0.0f);
-        net = net + (cdS[x - 1] == 2 ? fromSw : 0.0f);
-        net = net + (cdS[x] == 1 ? fromS : 0.0f);
-        net = net + (cdS[x + 1] == 0 ? fromSe : 0.0f);
-        const std::size_t i = row + static_cast<std::size_t>(x);
-        float h = hiRow[i], l = loRow[i];
-        dfAdd(h, l, net);
-        put(i, h, l);
-    }
-}
-
-// 4a (water_distribute_velocity.comp)
-void CpuWaterSimulation::distributionVelocity(const StepConstants& k, int z0, int z1) {
-    const int W = width(), H = height();
-    const float* s = surf_.data();
-    const float* a = avail_.data();
-    for (int z = z0; z < z1; ++z) {
-        const std::size_t row = cellIndex(0, z, W);
-        float* east = qEast_.data() + row;
-        for (int x = 0; x + 1 < W; ++x) {
-            const std::size_t i = row + static_cast<std::size_t>(x);
-            east[x] = edgeVelocity(k, east[x], s[i], s[i + 1], a[i], a[i + 1]);
-        }
-        if (z + 1 < H) {
-            float* south = qSouth_.data() + row;
-            const std::size_t w = static_cast<std::size_t>(W);
-            for (int x = 0; x < W; ++x) {
-                const std::size_t i = row + static_cast<std::size_t>(x);
-                south[x] = edgeVelocity(k, south[x], s[i], s[i + w], a[i], a[i + w]);
-            }
-        }
-    }
-}
-
-// 4b (water_distribute_apply.comp)
-void CpuWaterSimulation::distributionApply(const StepConstants& k, int z0, int z1) {
-    const WaterOut write{terrain_.heights.data(), hiOut_.data(), loOut_.data(), surfOut_.data(), availOut_.data()};
-    const float* __restrict hiIn = hi_.data();
-    const float* __restrict loIn = lo_.data();
-    const int W = width(), H = height();
-    const std::size_t w = static_cast<std::size_t>(W);
-    auto cell = [&](int x, int z) {
-        const std::size_t i = cellIndex(x, z, W);
-        const float te = x + 1 < W ? qEast_[i] * k.dt : 0.0f;
-        const float ts = z + 1 < H ? qSouth_[i] * k.dt : 0.0f;
-        const float tw = x > 0 ? qEast_[i - 1] * k.dt : 0.0f;
-        const float tn = z > 0 ? qSouth_[i - w] * k.dt : 0.0f;
-        const float net = (tw + tn) - (te + ts);
-        float h = hiIn[i], l = loIn[i];
-        dfAdd(h, l, net);
-        write(i, h, l);
-    };
-    for (int z = z0; z < z1; ++z) {
-        if (z == 0 || z == H - 1 || W < 3) {
-            for (int x = 0; x < W; ++x) cell(x, z);
-            continue;
-        }
-        cell(0, z);
-        const std::size_t row = cellIndex(0, z, W);
-        const float* __restrict east = qEast_.data() + row;
-        const float* __restrict south = qSouth_.data() + row;
-        const float* __restrict north = qSouth_.data() + row - w;
-        // Locals the lambdas do not capture (by reference): the trip count and the
-        // pointers stay in registers, so the loop vectorises.
-        const int interiorEnd = W - 1;
-        const float dt = k.dt;
-        const float* __restrict hiRow = hiIn + row;
-        const float* __restrict loRow = loIn + row;
-        const float* __restrict ground = terrain_.heights.data() + row;
-        float* __restrict hiDst = hiOut_.data() + row;
-        float* __restrict loDst = loOut_.data() + row;
-        float* __restrict surfDst = surfOut_.data() + row;
-        float* __restrict availDst = availOut_.data() + row;
-        for (int x = 1; x < interiorEnd; ++x) {
-            const float net = (east[x - 1] * dt + north[x] * dt) - (east[x] * dt + south[x] * dt);
-            float h = hiRow[x], l = loRow[x];
-            dfAdd(h, l, net);
-            hiDst[x] = h;
-            loDst[x] = l;
-            surfDst[x] = ground[x] + h;
-            availDst[x] = availableWater(h, l);
-        }
-        cell(W - 1, z);
-    }
-}
-
-// 5 (water_smooth.comp): pairwise exchanges with the (2r+1)^2 neighbours, in the order
-// dz, dx. Interior rows sweep each neighbour offset over the row (unit stride,
-// vectorised), accumulating into one sum per cell in the same order as the per-cell loop.
-void CpuWaterSimulation::smoothing(const StepConstants& k, int z0, int z1) {
-    const WaterOut write{terrain_.heights.data(), hiOut_.data(), loOut_.data(), surfOut_.data(), availOut_.data()};
-    const float* __restrict hiIn = hi_.data();
-    const float* __restrict loIn = lo_.data();
-    const int W = width(), H = height(), r = k.smoothRadius;
-    const float* s = surf_.data();
-    const float* a = avail_.data();
-    auto cell = [&](int x, int z) {
-        const std::size_t i = cellIndex(x, z, W);
-        float net = 0.0f;
-        for (int dz = -r; dz <= r; ++dz) {
-            const int nz = z + dz;
-            if (nz < 0 || nz >= H) continue;
-            for (int dx = -r; dx <= r; ++dx) {
-                if (dx == 0 && dz == 0) continue;
-                const int nx = x + dx;
-                if (nx < 0 || nx >= W) continue;
-                const std::size_t j = cellIndex(nx, nz, W);
-                const float weight = k.smoothWeights[static_cast<std::size_t>(std::abs(dz) * 8 + std::abs(dx))];
-                net = net + smoothExchange(weight, s[i], a[i], s[j], a[j]);
-            }
-        }
-        float h = hiIn[i], l = loIn[i];
-        dfAdd(h, l, net);
-        write(i, h, l);
-    };
-    thread_local std::vector<float> netRow;
-    netRow.assign(static_cast<std::size_t>(W), 0.0f);
-    for (int z = z0; z < z1; ++z) {
-        if (z < r || z >= H - r || W <= 2 * r) {
-            for (int x = 0; x < W; ++x) cell(x, z);
-            continue;
-        }
-        for (int x = 0; x < r; ++x) cell(x, z);
-        const std::size_t row = cellIndex(0, z, W);
-        const float* __restrict si = s + row;
-        const float* __restrict ai = a + row;
-        float* __restrict net = netRow.data();
-        for (int x = r; x < W - r; ++x) net[x] = 0.0f;
-        for (int dz = -r; dz <= r; ++dz) {
-            const float* __restrict sj = s + cellIndex(0, z + dz, W);
-            const float* __restrict aj = a + cellIndex(0, z + dz, W);
-            for (int dx = -r; dx <= r; ++dx) {
-                if (dx == 0 && dz == 0) continue;
-                const float weight = k.smoothWeights[static_cast<std::size_t>(std::abs(dz) * 8 + std::abs(dx))];
-                for (int x = r; x < W - r; ++x)
-                    net[x] = net[x] + smoothExchange(weight, si[x], ai[x], sj[x + dx], aj[x + dx]);
-            }
-        }
-        for (int x = r; x < W - r; ++x) {
-            const std::size_t i = row + static_cast<std::size_t>(x);
-            float h = hiIn[i], l = loIn[i];
-            dfAdd(h, l, net[x]);
-            write(i, h, l);
-        }
-        for (int x = W - r; x < W; ++x) cell(x, z);
-    }
 }
 
 }  // namespace prism::water

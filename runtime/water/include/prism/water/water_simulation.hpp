@@ -202,22 +202,25 @@ class RowBands;
 }
 
 // The CPU reference: fp32 in the GPU's order, denormals flushed to zero during a step as
-// Mesa's llvmpipe does. Each pass runs over row bands on WaterParams::threads threads and
-// over unit-stride rows the compiler vectorises; every cell is computed with the same
-// operations in the same order whatever the thread count, so the depths are bit-identical
-// to one thread (and to the plain per-cell loops of the first version, kept as the test
-// reference in tests/water/reference_water_step.cpp). The ledger's double sums are taken
-// per row, then over rows: within 1e-12 relative of a single running sum.
+// Mesa's llvmpipe does. A substep runs its passes fused row by row (the intermediate water
+// in per-thread rings of rows) over row bands on WaterParams::threads threads, with one
+// barrier per substep; every cell is computed with the same operations in the same order
+// whatever the thread count, so the depths are bit-identical to one thread (and to the
+// plain per-pass, per-cell loops of the first version, kept as the test reference in
+// tests/water/reference_water_step.cpp). The ledger's double sums are taken per row, then
+// over rows: within 1e-12 relative of a single running sum.
 class CpuWaterSimulation final : public WaterSimulation {
   public:
     CpuWaterSimulation(HeightField terrain, std::vector<float> permeability, WaterParams params = {});
     ~CpuWaterSimulation() override;
     // The threads the step runs on (threadsFor(params.threads, cells)).
     int threads() const { return threads_; }
-    // Bytes each substep reads and writes per cell, counting every array a pass streams
-    // once (neighbour reads come from cache): 180 with smoothing, 144 without. The
-    // memory-bound floor of a substep is cells x this / copy bandwidth (bench/water).
+    // Bytes a substep would read and write per cell if each pass streamed every array it
+    // touches once (neighbour reads from cache): 180 with smoothing, 144 without. The
+    // memory floor of bench/water is cells x this / copy bandwidth.
     static int bytesPerCellPerSubstep(bool smoothing);
+    // Bytes the fused step streams per cell and substep: its state in and out (40).
+    static int bytesStreamedPerCellPerSubstep();
 
     std::vector<glm::vec2> depthPairs() const override;
     std::vector<glm::vec2> edgeVelocities() const override;
@@ -230,25 +233,9 @@ class CpuWaterSimulation final : public WaterSimulation {
 
   private:
     void substep(const StepConstants& k);
-    // Each pass works on rows [z0, z1); those that change the water write the *Out arrays.
-    void rainAndInfiltration(const StepConstants& k, int z0, int z1);
-    void tangentialFlowOut(const StepConstants& k, int z0, int z1);
-    void flowOutCell(const StepConstants& k, int x, int z);  // any cell, neighbours clamped
-    void flowOutInteriorRow(const StepConstants& k, int z);  // cells 1 .. W-2 of an inner row
-    void tangentialFlowGather(int z0, int z1);
-    float gatherCell(int x, int z);  // any cell; returns the water it sent off the map
-    void gatherInteriorRow(int z);   // cells 1 .. W-2 of an inner row: nothing is lost
-    void distributionVelocity(const StepConstants& k, int z0, int z1);
-    void distributionApply(const StepConstants& k, int z0, int z1);
-    void smoothing(const StepConstants& k, int z0, int z1);
-    void swapWater();
 
-    // Water as compensated pairs, plus the surface (terrain + hi) and available water of
-    // each cell, computed once by the pass that writes the cell.
-    std::vector<float> hi_, lo_, surf_, avail_, hiOut_, loOut_, surfOut_, availOut_;
-    std::vector<float> qEast_, qSouth_;
-    std::vector<float> flowAmount_;
-    std::vector<std::int32_t> flowDirection_;
+    // The state (compensated depth pairs, edge velocities) and the next substep's.
+    std::vector<float> hi_, lo_, qEast_, qSouth_, hiNext_, loNext_, qEastNext_, qSouthNext_;
     std::vector<double> infiltratedRow_, lostRow_;
     double infiltrated_ = 0.0, lost_ = 0.0;
     int threads_ = 1;
