@@ -53,13 +53,23 @@ inline int signOf(float v) {
     return v > 0.0f ? 1 : (v < 0.0f ? -1 : 0);
 }
 
-// Writes cell x of a row: the pair, and the surface and available water the next pass reads.
-inline void put(const WaterRow& out, const float* terrain, int x, float h, float l) {
-    out.hi[x] = h;
-    out.lo[x] = l;
-    out.surf[x] = terrain[x] + h;
-    out.avail[x] = availableWater(h, l);
-}
+// Writes cell x of a row: the pair, and the surface and available water the next pass
+// reads (restrict members, so the loops that write through it vectorise).
+struct RowWriter {
+    RowWriter(const WaterRow& out, const float* ground)
+        : terrain(ground), hi(out.hi), lo(out.lo), surf(out.surf), avail(out.avail) {}
+    void operator()(int x, float h, float l) const {
+        hi[x] = h;
+        lo[x] = l;
+        surf[x] = terrain[x] + h;
+        avail[x] = availableWater(h, l);
+    }
+    const float* __restrict terrain;
+    float* __restrict hi;
+    float* __restrict lo;
+    float* __restrict surf;
+    float* __restrict avail;
+};
 
 // The branch-free helpers below compute every operand first and then select, so the
 // compiler can vectorise them; min(a, b) is written as std::min's (b < a) ? b : a and
@@ -179,6 +189,7 @@ PRISM_WATER_ROW_PASS void flowOutInterior(const StepConstants& k, int W, Rows3<f
 PRISM_WATER_ROW_PASS float gatherCell(RowAt at, Rows3<float> am, Rows3<std::int32_t> cd, const float* hiIn,
                                       const float* loIn, const float* terrain, const WaterRow& out, int x) {
     const int W = at.width, H = at.height, z = at.z;
+    const RowWriter write(out, terrain);
     auto inside = [&](int cx, int cz) { return cx >= 0 && cz >= 0 && cx < W && cz < H; };
     float net = 0.0f, lost = 0.0f;
     const int code = cd.centre[x];
@@ -196,7 +207,7 @@ PRISM_WATER_ROW_PASS float gatherCell(RowAt at, Rows3<float> am, Rows3<std::int3
         }
     float h = hiIn[x], l = loIn[x];
     dfAdd(h, l, net);
-    put(out, terrain, x, h, l);
+    write(x, h, l);
     return lost;
 }
 
@@ -214,11 +225,7 @@ PRISM_WATER_ROW_PASS void gatherInterior(int W, Rows3<float> amount, Rows3<std::
     const std::int32_t* __restrict cdS = code.south;
     const float* __restrict hiRow = hiIn;
     const float* __restrict loRow = loIn;
-    const float* __restrict ground = terrain;
-    float* __restrict hiDst = out.hi;
-    float* __restrict loDst = out.lo;
-    float* __restrict surfDst = out.surf;
-    float* __restrict availDst = out.avail;
+    const RowWriter write(out, terrain);
     const int interiorEnd = W - 1;
     for (int x = 1; x < interiorEnd; ++x) {
         // Every amount is loaded first, so the selects need no conditional loads.
@@ -235,10 +242,7 @@ PRISM_WATER_ROW_PASS void gatherInterior(int W, Rows3<float> amount, Rows3<std::
         net = net + (cdS[x + 1] == 0 ? fromSe : 0.0f);
         float h = hiRow[x], l = loRow[x];
         dfAdd(h, l, net);
-        hiDst[x] = h;
-        loDst[x] = l;
-        surfDst[x] = ground[x] + h;
-        availDst[x] = availableWater(h, l);
+        write(x, h, l);
     }
 }
 
@@ -251,6 +255,7 @@ PRISM_WATER_ROW_PASS double rainRow(const StepConstants& k, int W, const float* 
     thread_local std::vector<float> takenHi, takenLo;
     takenHi.resize(static_cast<std::size_t>(W));
     takenLo.resize(static_cast<std::size_t>(W));
+    const RowWriter write(out, terrain);
     for (int x = 0; x < W; ++x) {
         float h = hiIn[x], l = loIn[x];
         dfAdd(h, l, k.rainDepth);
@@ -260,7 +265,7 @@ PRISM_WATER_ROW_PASS double rainRow(const StepConstants& k, int W, const float* 
         const bool emptied = capacity >= availableWater(h, l);
         takenHi[static_cast<std::size_t>(x)] = emptied ? h : capacity;
         takenLo[static_cast<std::size_t>(x)] = emptied ? l : 0.0f;
-        put(out, terrain, x, emptied ? 0.0f : hLeft, emptied ? 0.0f : lLeft);
+        write(x, emptied ? 0.0f : hLeft, emptied ? 0.0f : lLeft);
     }
     double infiltrated = 0.0;
     for (std::size_t x = 0; x < static_cast<std::size_t>(W); ++x)
@@ -313,6 +318,7 @@ PRISM_WATER_ROW_PASS void applyRow(const StepConstants& k, RowAt at, const float
                                    const float* qSouthNorth, const float* hiIn, const float* loIn, const float* terrain,
                                    WaterRow out) {
     const int W = at.width, H = at.height, z = at.z;
+    const RowWriter write(out, terrain);
     auto cell = [&](int x) {
         const float te = x + 1 < W ? qEast[x] * k.dt : 0.0f;
         const float ts = z + 1 < H ? qSouth[x] * k.dt : 0.0f;
@@ -321,7 +327,7 @@ PRISM_WATER_ROW_PASS void applyRow(const StepConstants& k, RowAt at, const float
         const float net = (tw + tn) - (te + ts);
         float h = hiIn[x], l = loIn[x];
         dfAdd(h, l, net);
-        put(out, terrain, x, h, l);
+        write(x, h, l);
     };
     if (z == 0 || z == H - 1 || W < 3) {
         for (int x = 0; x < W; ++x) cell(x);
@@ -337,19 +343,11 @@ PRISM_WATER_ROW_PASS void applyRow(const StepConstants& k, RowAt at, const float
     const float dt = k.dt;
     const float* __restrict hiRow = hiIn;
     const float* __restrict loRow = loIn;
-    const float* __restrict ground = terrain;
-    float* __restrict hiDst = out.hi;
-    float* __restrict loDst = out.lo;
-    float* __restrict surfDst = out.surf;
-    float* __restrict availDst = out.avail;
     for (int x = 1; x < interiorEnd; ++x) {
         const float net = (east[x - 1] * dt + north[x] * dt) - (east[x] * dt + south[x] * dt);
         float h = hiRow[x], l = loRow[x];
         dfAdd(h, l, net);
-        hiDst[x] = h;
-        loDst[x] = l;
-        surfDst[x] = ground[x] + h;
-        availDst[x] = availableWater(h, l);
+        write(x, h, l);
     }
     cell(W - 1);
 }
@@ -361,6 +359,7 @@ PRISM_WATER_ROW_PASS void smoothRow(const StepConstants& k, RowAt at, const floa
                                     const float* hiIn, const float* loIn, const float* terrain, WaterRow out,
                                     float* netRow) {
     const int W = at.width, H = at.height, z = at.z, r = k.smoothRadius;
+    const RowWriter write(out, terrain);
     auto weightOf = [&](int dx, int dz) {
         return k.smoothWeights[static_cast<std::size_t>(std::abs(dz) * 8 + std::abs(dx))];
     };
@@ -376,7 +375,7 @@ PRISM_WATER_ROW_PASS void smoothRow(const StepConstants& k, RowAt at, const floa
         }
         float h = hiIn[x], l = loIn[x];
         dfAdd(h, l, net);
-        put(out, terrain, x, h, l);
+        write(x, h, l);
     };
     if (z < r || z >= H - r || W <= 2 * r) {
         for (int x = 0; x < W; ++x) cell(x);
@@ -400,7 +399,7 @@ PRISM_WATER_ROW_PASS void smoothRow(const StepConstants& k, RowAt at, const floa
     for (int x = r; x < W - r; ++x) {
         float h = hiIn[x], l = loIn[x];
         dfAdd(h, l, net[x]);
-        put(out, terrain, x, h, l);
+        write(x, h, l);
     }
     for (int x = W - r; x < W; ++x) cell(x);
 }
