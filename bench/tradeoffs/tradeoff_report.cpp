@@ -1,6 +1,8 @@
 // Table, CSV, Pareto front and SVG plot of prism_bench_tradeoffs (see tradeoff_report.hpp).
 #include "tradeoff_report.hpp"
 
+#include "prism/reference/pareto.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -74,34 +76,26 @@ std::string rowName(const Row& row) {
     return row.shader + " L" + std::to_string(row.level);
 }
 
+namespace {
+std::vector<double> costs(const std::vector<Row>& rows) {
+    std::vector<double> ms;
+    for (const Row& r : rows) ms.push_back(r.medianMs);
+    return ms;
+}
+std::vector<double> errors(const std::vector<Row>& rows, const ErrorOf& error) {
+    std::vector<double> e;
+    for (const Row& r : rows) e.push_back(error(r));
+    return e;
+}
+}  // namespace
+
 std::vector<std::size_t> paretoFront(const std::vector<Row>& rows, const ErrorOf& error) {
-    std::vector<std::size_t> order(rows.size());
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-        if (rows[a].medianMs != rows[b].medianMs) return rows[a].medianMs < rows[b].medianMs;
-        return error(rows[a]) < error(rows[b]);
-    });
-    std::vector<std::size_t> front;
-    double best = INFINITY;
-    for (std::size_t i : order)
-        if (error(rows[i]) < best) {
-            front.push_back(i);
-            best = error(rows[i]);
-        }
-    return front;
+    return reference::paretoFront(costs(rows), errors(rows, error));
 }
 
 std::optional<std::size_t> cheapestWithin(const std::vector<Row>& rows, const ErrorOf& error, double budget,
                                           const std::vector<std::size_t>& candidates) {
-    std::vector<std::size_t> pool = candidates;
-    if (pool.empty()) {
-        pool.resize(rows.size());
-        std::iota(pool.begin(), pool.end(), std::size_t{0});
-    }
-    std::optional<std::size_t> best;
-    for (std::size_t i : pool)
-        if (error(rows[i]) <= budget && (!best || rows[i].medianMs < rows[*best].medianMs)) best = i;
-    return best;
+    return reference::cheapestWithin(costs(rows), errors(rows, error), budget, candidates);
 }
 
 void printTable(std::ostream& out, const std::vector<Row>& rows) {
