@@ -4,6 +4,8 @@
 //                                       [--max-exp 24] [--frames 9] [--backend egl|osmesa]
 //     prism_bench_rain --replot bench/rain/results/rain_bench.csv --subtitle "..." --out DIR
 //                      (redraws the SVG from an earlier run's CSV, measures nothing)
+//     LP_NUM_THREADS=2 prism_bench_rain --trade --out bench/rain/results
+//                      (the speed/accuracy trade instead, rain_trade.hpp)
 //
 // For every count 2^e (e = --min-exp .. --max-exp; 2^23 and 2^24 only when memory allows) one
 // RainSystem of exactly that many particles (fixedCount) in the default 25 m x 20 m
@@ -34,6 +36,7 @@
 #include "prism/gl/gl_context.hpp"
 #include "prism/rain/rain_scene.hpp"
 #include "prism/rain/rain_system.hpp"
+#include "rain_trade.hpp"
 
 namespace {
 
@@ -266,6 +269,12 @@ int main(int argc, char** argv) {
     app.add_option("--backend", o.backend, "egl or osmesa (default: PRISM_GL_BACKEND, else egl)");
     app.add_option("--replot", o.replot, "redraw OUT/rain_bench.svg from this CSV, measure nothing");
     app.add_option("--subtitle", o.subtitle, "with --replot: the plot's subtitle (renderer, threads, size)");
+    bool trade = false;
+    prism::rain::bench::RainTradeOptions tradeOptions;
+    app.add_flag("--trade", trade, "measure the speed/accuracy trade against a dense reference instead");
+    app.add_option("--trade-size", tradeOptions.size, "--trade: framebuffer edge")->check(CLI::Range(16, 2048));
+    app.add_option("--trade-frames", tradeOptions.frames, "--trade: averaged frames per setting")
+        ->check(CLI::Range(1, 1000));
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -297,6 +306,10 @@ int main(int argc, char** argv) {
         const std::string subtitle = ctx->info().renderer + ", LP_NUM_THREADS=" + (threads ? threads : "unset") + ", " +
                                      std::to_string(o.size) + "x" + std::to_string(o.size);
         std::cout << "prism_bench_rain: " << subtitle << "\n";
+        if (trade) {
+            tradeOptions.out = o.out;
+            return prism::rain::bench::runRainTrade(tradeOptions);
+        }
         RainPrograms programs;
         std::vector<Row> rows;
         const auto start = Clock::now();
