@@ -4,11 +4,13 @@
 // Beside the 512^2 CPU figure it prints the memory floor: the bytes a substep's passes
 // read and write (CpuWaterSimulation::bytesPerCellPerSubstep) divided by this machine's
 // copy bandwidth, measured in the same run (a STREAM-like copy of two 64 MiB arrays, best
-// of 7), and the step's ratio to it against the target (at least 60 % of the floor). The CPU-time column is the process CPU time per substep,
-// which a machine busy with other work inflates less than the wall time.
+// of 7), and the step's ratio to it against the target (at least 60 % of the floor). The
+// CPU-time column is the process CPU time per substep, which a machine busy with other
+// work inflates less than the wall time.
 //
 //   prism_bench_water [--grids 128,256,512,1024] [--width 800 --height 600] [--no-gpu]
 //                     [--no-render] [--csv docs/water-bench.csv] [--svg docs/water-bench.svg]
+//   prism_bench_water --trade ...   the speed/accuracy trade instead (water_trade.hpp)
 //
 // Each case: a procedural terrain with procedural permeability, wet from 30 s of
 // cloudburst rain, then timed steps of the largest stable dt (one substep each).
@@ -35,6 +37,7 @@
 #include "prism/water/gpu_water_simulation.hpp"
 #include "prism/water/rain_rates.hpp"
 #include "prism/water/water_scene.hpp"
+#include "water_trade.hpp"
 
 namespace {
 
@@ -60,29 +63,17 @@ int runsFor(int grid) {
     return grid <= 128 ? 21 : grid <= 256 ? 11 : grid <= 512 ? 7 : 5;
 }
 
-HeightField terrainFor(int grid) {
-    // A 64 m square whatever the resolution: finer grids have smaller cells.
-    return proceduralTerrain(
-        {.width = grid, .height = grid, .cellSize = 64.0f / static_cast<float>(grid), .relief = 3.0f, .seed = 1});
-}
-
-double processCpuMs() {
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
-}
-
 template <class Sim>
 double timeSteps(Sim& sim, int runs, bool gpu, double* cpuMs = nullptr) {
     const double dt = maxStableDt(sim.params(), sim.terrain().cellSize);
     std::vector<double> ms, cpu;
     for (int r = 0; r < runs; ++r) {
-        const double cpu0 = processCpuMs();
+        const double cpu0 = bench::processCpuMs();
         const auto start = Clock::now();
         sim.advance(dt);
         if (gpu) glFinish();
         ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
-        cpu.push_back(processCpuMs() - cpu0);
+        cpu.push_back(bench::processCpuMs() - cpu0);
     }
     if (cpuMs) *cpuMs = median(cpu);
     return median(ms);
@@ -208,17 +199,27 @@ int main(int argc, char** argv) {
     app.add_option("--svg", svg, "write the plot as SVG");
     app.add_flag("--no-gpu", noGpu, "skip the compute-shader step");
     app.add_flag("--no-render", noRender, "skip the scene render");
+    bench::WaterTradeOptions trade;
+    bool tradeMode = false;
+    app.add_flag("--trade", tradeMode, "measure the speed/accuracy trade against a fine reference instead");
+    app.add_option("--trade-seconds", trade.seconds, "simulated seconds per trade run")->check(CLI::Range(1.0, 3600.0));
+    app.add_option("--trade-csv", trade.csv, "write the trade table as CSV");
+    app.add_option("--trade-svg", trade.svg, "write the trade plot as SVG");
     CLI11_PARSE(app, argc, argv);
     std::sort(grids.begin(), grids.end());
     try {
         auto context = prism::gl::createContext({.majorVersion = 4, .minorVersion = 3});
         const std::string device = context->info().renderer;
         std::cout << "prism_bench_water on " << device << " (" << context->info().version << ")\n";
+        if (tradeMode) {
+            trade.gpu = !noGpu;
+            return bench::runWaterTrade(trade);
+        }
         std::vector<Row> rows;
         for (int grid : grids) {
             Row row;
             row.grid = grid;
-            const HeightField terrain = terrainFor(grid);
+            const HeightField terrain = bench::benchTerrain(grid);
             const std::vector<float> k = proceduralPermeability(terrain);
             const int runs = runsFor(grid);
             {
