@@ -40,6 +40,24 @@ PLOTS = [
      "the cost grows linearly with the number of cells."),
 ]
 
+
+def rain_and_water_trade_plots():
+    """The speed/accuracy trades of rain and water (prism_bench_rain --trade,
+    prism_bench_water --trade): cost against error, Pareto front filled."""
+    return [
+        ("bench/water/results/water-trade.svg",
+         "Water: wall time per simulated second against the mean depth error after resampling onto a common 64x64 "
+         "grid, per grid size, substep and smoothing kernel, against a 512x512 reference with a quarter of the stable "
+         "substep; filled points form the Pareto front."),
+        ("bench/rain/results/rain_trade.svg",
+         "Rain: frame time against the mean error of the time-averaged rain layer (light added per pixel) per particle "
+         "count, LOD rings and streak technique, against a dense reference without LOD; filled points form the "
+         "Pareto front."),
+    ]
+
+
+PLOTS.extend(rain_and_water_trade_plots())
+
 # The benches' committed tables: (CSV in the repository, columns shown, what to read).
 TABLES = [
     ("docs/tradeoffs.csv", ["shader", "level", "triangles", "median_ms", "mean_err", "pareto_full"],
