@@ -62,16 +62,19 @@ struct Span {
 
 // The intermediate rows of one thread: the water after rain, the flow amounts and codes,
 // the water after the gather, the edge velocities of halo rows, the water after the
-// distribution (2r + 1 rows, what the smoothing reads), and scratch rows. A ring row is
-// reused once no later pass reads it (see FusedBand::run for the lags).
+// distribution (2r + 1 rows, what the smoothing reads), the smoothing's pair exchanges
+// (r + 1 rows of 2r (r + 1) offsets), and scratch rows. A ring row is reused once no later
+// pass reads it (see FusedBand::run for the lags).
 class Rings {
   public:
     static constexpr int kShort = 4;
     void fit(int width, int radius) {
         width_ = width;
         applied_ = 2 * radius + 1;
+        pairSlots_ = radius + 1;
+        pairRows_ = detail::forwardPairs(radius);
         const std::size_t w = static_cast<std::size_t>(width);
-        floats_.resize(w * static_cast<std::size_t>(kShort * 4 + kShort + kShort * 4 + kShort * 2 + applied_ * 4 + 3));
+        floats_.resize(w * static_cast<std::size_t>(pairsFirst() + pairSlots_ * pairRows_));
         codes_.resize(w * kShort);
     }
     WaterRow rain(int z) { return water(0, kShort, z); }
@@ -84,8 +87,10 @@ class Rings {
     // Where the last pass puts the surface and available water nobody reads, and the
     // smoothing's sums.
     float* scratch(int i) { return row(kShort * 11 + applied_ * 4 + i, 1, 0); }
+    float* pairs(int z) { return row(pairsFirst() + (z % pairSlots_) * pairRows_, 1, 0); }
 
   private:
+    int pairsFirst() const { return kShort * 11 + applied_ * 4 + 3; }
     std::size_t width() const { return static_cast<std::size_t>(width_); }
     float* row(int first, int slots, int z) {
         return floats_.data() + static_cast<std::size_t>(first + z % slots) * width();
@@ -94,7 +99,7 @@ class Rings {
         return {row(first, slots, z), row(first + slots, slots, z), row(first + 2 * slots, slots, z),
                 row(first + 3 * slots, slots, z)};
     }
-    int width_ = 0, applied_ = 1;
+    int width_ = 0, applied_ = 1, pairSlots_ = 1, pairRows_ = 0;
     std::vector<float> floats_;
     std::vector<std::int32_t> codes_;
 };
@@ -106,6 +111,7 @@ class FusedBand {
     FusedBand(const StepConstants& k, const StepArrays& g, int width, int height, int z0, int z1, Rings& rings)
         : k_(k), g_(g), W_(width), H_(height), r_(k.smoothRadius), own_{z0, z1}, ring_(rings) {
         smooth_ = own_;
+        pairs_ = widen(own_, r_, 0);
         apply_ = r_ > 0 ? widen(own_, r_, r_) : own_;
         velocity_ = widen(apply_, 1, 0);
         gather_ = widen(velocity_, 0, 1);
@@ -117,7 +123,8 @@ class FusedBand {
     // Pass p on row y - lag(p): every row a pass reads was computed on an earlier
     // iteration or earlier in this one (flow out reads rain rows z +- 1, the gather flow
     // rows z +- 1, velocities gathered rows z and z + 1, apply velocities z - 1 and z,
-    // smoothing applied rows z +- r), and no ring row is overwritten while still read.
+    // pair exchanges applied rows z .. z + r, smoothing applied rows z +- r and pair rows
+    // z - r .. z), and no ring row is overwritten while still read.
     void run() {
         const int lastRow = own_.end - 1 + 3 + r_;
         for (int y = rain_.begin; y <= lastRow; ++y) {
@@ -126,6 +133,7 @@ class FusedBand {
             if (gather_.has(y - 2)) gather(y - 2);
             if (velocity_.has(y - 3)) velocity(y - 3);
             if (apply_.has(y - 3)) apply(y - 3);
+            if (r_ > 0 && pairs_.has(y - 3 - r_)) pairs(y - 3 - r_);
             if (r_ > 0 && smooth_.has(y - 3 - r_)) smooth(y - 3 - r_);
         }
     }
@@ -169,23 +177,35 @@ class FusedBand {
         detail::applyRow(k_, rowAt(z), qEastOf(z), qSouthOf(z), z > 0 ? qSouthOf(z - 1) : nullptr, in.hi, in.lo,
                          g_.terrain + at(z), out);
     }
-    void smooth(int z) {
-        std::array<const float*, 15> surf{}, avail{};
+    // Rows z + dz of the water after the distribution, for |dz| <= r (null off the grid).
+    void neighbourRows(int z, std::array<const float*, 15>& surf, std::array<const float*, 15>& avail) {
         for (int dz = -r_; dz <= r_; ++dz)
             if (z + dz >= 0 && z + dz < H_) {
                 surf[static_cast<std::size_t>(r_ + dz)] = ring_.applied(z + dz).surf;
                 avail[static_cast<std::size_t>(r_ + dz)] = ring_.applied(z + dz).avail;
             }
+    }
+    void pairs(int z) {
+        std::array<const float*, 15> surf{}, avail{};
+        neighbourRows(z, surf, avail);
+        detail::smoothPairsRow(k_, rowAt(z), surf.data(), avail.data(), ring_.pairs(z));
+    }
+    void smooth(int z) {
+        std::array<const float*, 15> surf{}, avail{};
+        std::array<const float*, 8> pairs{};
+        neighbourRows(z, surf, avail);
+        for (int dz = -r_; dz <= 0; ++dz)
+            if (z + dz >= 0) pairs[static_cast<std::size_t>(r_ + dz)] = ring_.pairs(z + dz);
         const WaterRow in = ring_.applied(z);
-        detail::smoothRow(k_, rowAt(z), surf.data(), avail.data(), in.hi, in.lo, g_.terrain + at(z), final(z),
-                          ring_.scratch(2));
+        detail::smoothRow(k_, rowAt(z), surf.data(), avail.data(), pairs.data(), in.hi, in.lo, g_.terrain + at(z),
+                          final(z), ring_.scratch(2));
     }
 
     const StepConstants& k_;
     const StepArrays& g_;
     const int W_, H_, r_;
     const Span own_;
-    Span smooth_{}, apply_{}, velocity_{}, gather_{}, flowOut_{}, rain_{};
+    Span smooth_{}, pairs_{}, apply_{}, velocity_{}, gather_{}, flowOut_{}, rain_{};
     Rings& ring_;
 };
 

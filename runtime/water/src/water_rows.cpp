@@ -9,6 +9,7 @@
 #include "water_rows.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <vector>
@@ -355,12 +356,44 @@ PRISM_WATER_ROW_PASS void applyRow(const StepConstants& k, RowAt at, const float
     cell(W - 1);
 }
 
+int forwardPairs(int radius) {
+    return 2 * radius * (radius + 1);
+}
+
+namespace {
+
+// The index of forward offset (dx, dz) among forwardPairs(r): dz = 0, dx = 1..r first, then
+// rows dz = 1..r with dx = -r..r.
+int forwardIndex(int dx, int dz, int r) {
+    return dz == 0 ? dx - 1 : r + (dz - 1) * (2 * r + 1) + (dx + r);
+}
+
+}  // namespace
+
+PRISM_WATER_ROW_PASS void smoothPairsRow(const StepConstants& k, RowAt at, const float* const* s, const float* const* a,
+                                         float* pairs) {
+    const int W = at.width, H = at.height, z = at.z, r = k.smoothRadius;
+    const float* __restrict si = s[r];
+    const float* __restrict ai = a[r];
+    for (int dz = 0; dz <= r && z + dz < H; ++dz)
+        for (int dx = dz == 0 ? 1 : -r; dx <= r; ++dx) {
+            const float* __restrict sj = s[r + dz];
+            const float* __restrict aj = a[r + dz];
+            float* __restrict out = pairs + static_cast<std::size_t>(forwardIndex(dx, dz, r)) * W;
+            const float weight = k.smoothWeights[static_cast<std::size_t>(dz * 8 + std::abs(dx))];
+            const int begin = std::max(0, -dx), end = std::min(W, W - dx);
+            for (int x = begin; x < end; ++x) out[x] = smoothExchange(weight, si[x], ai[x], sj[x + dx], aj[x + dx]);
+        }
+}
+
 // Pairwise exchanges with the (2r+1)^2 neighbours, in the order dz, dx. Inner rows sweep
-// each neighbour offset over the row (unit stride, vectorised), accumulating into one sum
-// per cell in the same order as the per-cell loop.
+// each neighbour offset over the row (unit stride, vectorised) and add the pair's exchange:
+// row z's own for a forward offset, the neighbour's, negated, for a backward one. The
+// two differ only in the sign of a zero (equal surfaces), which changes no sum: net starts
+// at +0 and a round-to-nearest sum is -0 only when both terms are.
 PRISM_WATER_ROW_PASS void smoothRow(const StepConstants& k, RowAt at, const float* const* s, const float* const* a,
-                                    const float* hiIn, const float* loIn, const float* terrain, WaterRow out,
-                                    float* netRow) {
+                                    const float* const* pairs, const float* hiIn, const float* loIn,
+                                    const float* terrain, WaterRow out, float* netRow) {
     const int W = at.width, H = at.height, z = at.z, r = k.smoothRadius;
     const RowWriter write(out, terrain);
     auto weightOf = [&](int dx, int dz) {
@@ -385,19 +418,36 @@ PRISM_WATER_ROW_PASS void smoothRow(const StepConstants& k, RowAt at, const floa
         return;
     }
     for (int x = 0; x < r; ++x) cell(x);
-    const float* __restrict si = s[r];
-    const float* __restrict ai = a[r];
-    float* __restrict net = netRow;
-    for (int x = r; x < W - r; ++x) net[x] = 0.0f;
-    for (int dz = -r; dz <= r; ++dz) {
-        const float* __restrict sj = s[r + dz];
-        const float* __restrict aj = a[r + dz];
+    // Every offset's term in the per-cell order: a forward one is row z's pair, a backward
+    // one the pair of row z + dz seen from its other end, x - x' = -dx, negated (net - p is
+    // net + (-1 * p) exactly). Summed four offsets per sweep.
+    std::array<const float*, 224> term{};
+    std::array<float, 224> sign{};
+    int terms = 0;
+    for (int dz = -r; dz <= r; ++dz)
         for (int dx = -r; dx <= r; ++dx) {
             if (dx == 0 && dz == 0) continue;
-            const float weight = weightOf(dx, dz);
-            for (int x = r; x < W - r; ++x)
-                net[x] = net[x] + smoothExchange(weight, si[x], ai[x], sj[x + dx], aj[x + dx]);
+            const bool forward = dz > 0 || (dz == 0 && dx > 0);
+            const auto f = static_cast<std::size_t>(forward ? forwardIndex(dx, dz, r) : forwardIndex(-dx, -dz, r));
+            term[static_cast<std::size_t>(terms)] = forward ? pairs[r] + f * W : pairs[r + dz] + f * W + dx;
+            sign[static_cast<std::size_t>(terms++)] = forward ? 1.0f : -1.0f;
         }
+    float* __restrict net = netRow;
+    for (int x = r; x < W - r; ++x) net[x] = 0.0f;
+    int t = 0;
+    for (; t + 4 <= terms; t += 4) {
+        const float* __restrict p0 = term[static_cast<std::size_t>(t)];
+        const float* __restrict p1 = term[static_cast<std::size_t>(t + 1)];
+        const float* __restrict p2 = term[static_cast<std::size_t>(t + 2)];
+        const float* __restrict p3 = term[static_cast<std::size_t>(t + 3)];
+        const float s0 = sign[static_cast<std::size_t>(t)], s1 = sign[static_cast<std::size_t>(t + 1)];
+        const float s2 = sign[static_cast<std::size_t>(t + 2)], s3 = sign[static_cast<std::size_t>(t + 3)];
+        for (int x = r; x < W - r; ++x) net[x] = (((net[x] + s0 * p0[x]) + s1 * p1[x]) + s2 * p2[x]) + s3 * p3[x];
+    }
+    for (; t < terms; ++t) {
+        const float* __restrict p = term[static_cast<std::size_t>(t)];
+        const float sg = sign[static_cast<std::size_t>(t)];
+        for (int x = r; x < W - r; ++x) net[x] = net[x] + sg * p[x];
     }
     for (int x = r; x < W - r; ++x) {
         float h = hiIn[x], l = loIn[x];

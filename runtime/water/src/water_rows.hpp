@@ -56,9 +56,19 @@ void velocityRow(const StepConstants& k, RowAt at, const float* surf, const floa
 // 4b (water_distribute_apply.comp); qSouthNorth is the row above's (unused on row 0).
 void applyRow(const StepConstants& k, RowAt at, const float* qEast, const float* qSouth, const float* qSouthNorth,
               const float* hiIn, const float* loIn, const float* terrain, WaterRow out);
-// 5 (water_smooth.comp): surf[r + dz] and avail[r + dz] are rows z + dz for |dz| <= r
-// (unused outside the grid); net is scratch of `width` floats.
-void smoothRow(const StepConstants& k, RowAt at, const float* const* surf, const float* const* avail, const float* hiIn,
-               const float* loIn, const float* terrain, WaterRow out, float* net);
+// 5 (water_smooth.comp), in two parts. An exchange between two cells is computed the same
+// by both, up to sign (smoothExchange), so each pair is computed once: smoothPairsRow gives
+// row z's exchange with each forward neighbour (dz > 0, or dz = 0 and dx > 0; offset f in
+// smoothRow's order at pairs + f * width, for the cells whose neighbour is on the grid),
+// and smoothRow adds them up per cell in the per-cell order, the backward ones negated
+// from the rows above. surf[r + dz] and avail[r + dz] are rows z + dz for |dz| <= r
+// (unused outside the grid); pairs[r + dz] is smoothPairsRow's row z + dz for dz in [-r, 0];
+// net is scratch of `width` floats.
+int forwardPairs(int radius);  // 2 r (r + 1) offsets
+void smoothPairsRow(const StepConstants& k, RowAt at, const float* const* surf, const float* const* avail,
+                    float* pairs);
+void smoothRow(const StepConstants& k, RowAt at, const float* const* surf, const float* const* avail,
+               const float* const* pairs, const float* hiIn, const float* loIn, const float* terrain, WaterRow out,
+               float* net);
 
 }  // namespace prism::water::detail
