@@ -1,7 +1,8 @@
 // The fast CPU step (passes fused row by row, row bands on threads with halo rows,
 // vectorised interior sweeps) against the first single-threaded per-pass, per-cell step:
-// the depths and edge velocities are bit-identical for every thread count (bands of one
-// row to half the grid, bands thinner than their halo), odd grid shapes, border,
+// the depths and edge velocities are bit-identical for every thread count tried (1 to 16:
+// bands from the whole grid to 8 rows, thinner than the halo of kernel 15), odd grid
+// shapes, border,
 // smoothing kernel and permeability tried, and the ledger's sums (per row, then over
 // rows) agree within 1e-12 relative.
 #include <gtest/gtest.h>
@@ -57,7 +58,7 @@ TEST(FastCpuStep, IsBitIdenticalToTheFirstStepForEveryThreadCount) {
         test::ReferenceWaterSimulation reference(terrain, k, p);
         reference.setRainRate(rain);
         for (int i = 0; i < 12; ++i) reference.advance(1.0);
-        for (int threads : {1, 2, 3, 4, 7, 16, 64}) {
+        for (int threads : {1, 2, 3, 7, 16}) {
             p.threads = threads;
             CpuWaterSimulation fast(terrain, k, p);
             fast.setRainRate(rain);
