@@ -73,7 +73,7 @@ bool sameMesh(const prism::geometry::Mesh& a, const prism::geometry::Mesh& b) {
 std::string LiveViews::meshKey(const std::string& meshName, const prism::geometry::Mesh& mesh) {
     int sameName = 0;
     for (const auto& [key, stored] : meshes_) {
-        if (!key.starts_with(meshName)) continue;
+        if (key != meshName && !key.starts_with(meshName + ".")) continue;
         if (sameMesh(stored, mesh)) return key;
         ++sameName;
     }

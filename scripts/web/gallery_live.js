@@ -262,5 +262,5 @@
   status.textContent = "Renderer: " + gl.getParameter(debug ? debug.UNMASKED_RENDERER_WEBGL : gl.RENDERER) +
                        ". Drawn live from the web catalogue " + data.catalogue +
                        "; beside each view, its agreement with prism-gallery's llvmpipe PNG.";
-  data.shaders.forEach(addView);
+  data.shaders.filter(function (s) { return catalogue.programs[s]; }).forEach(addView);  // those with es300 texts
 })();
