@@ -116,14 +116,16 @@
       return u;
     }
 
-    function drawInteractive() {
+    // `quick` (while dragging) leaves out the read-back for the data-live-* figures.
+    function drawInteractive(quick) {
       var record = baseRecord(state), built = builtFor(state.defines);
       glCanvas.width = canvas.width;
       glCanvas.height = canvas.height;
       gl.bindFramebuffer(gl.FRAMEBUFFER, null);
       D.draw(gl, built, meshOf(record), interactiveUniforms(record, built), record.background, canvas.width, canvas.height);
-      var stats = D.pictureStats(D.readTopDown(gl, canvas.width, canvas.height), record.background);
       ctx2d.drawImage(glCanvas, 0, 0);
+      if (quick) return;
+      var stats = D.pictureStats(D.readTopDown(gl, canvas.width, canvas.height), record.background);
       figure.setAttribute("data-live-variant", built.variant.name);
       figure.setAttribute("data-live-colours", stats.colours);
       figure.setAttribute("data-live-covered", stats.covered.toFixed(4));
@@ -175,10 +177,10 @@
       });
     }
 
-    function update(remeasure) {
+    function update(remeasure, quick) {
       if (!data.loaded[state.mesh]) return withMesh(state.mesh, function () { update(true); });
       try {
-        drawInteractive();
+        drawInteractive(quick);
         if (remeasure) measure();
         markMissing();
         figure.removeAttribute("data-live-error");
@@ -230,13 +232,13 @@
     this.enableRotation = function () {
       var last = null;
       canvas.addEventListener("pointerdown", function (e) { last = [e.clientX, e.clientY]; canvas.setPointerCapture(e.pointerId); });
-      canvas.addEventListener("pointerup", function () { last = null; });
+      canvas.addEventListener("pointerup", function () { last = null; update(false); });
       canvas.addEventListener("pointermove", function (e) {
         if (!last) return;
         state.angleY += (e.clientX - last[0]) * 0.01;
         state.angleX += (e.clientY - last[1]) * 0.01;
         last = [e.clientX, e.clientY];
-        update(false);
+        update(false, true);
       });
     };
     this.start = function () { update(true); };

@@ -73,10 +73,11 @@ window.addEventListener('load', function () {
 </script>"""
 
 # The live views' thresholds against the llvmpipe PNGs (docs/web.md, "Agreement"): measured
-# over every view of a --quick and a full gallery, then set just above the worst case.
+# over all 44 PNGs of a --quick and of a full gallery (measure_live_agreement.py), then set just
+# above the worst case (max 204/255, mean 0.1103/255, 98.644 % within 2/255).
 LIVE_MAX = 210
-LIVE_MEAN = 0.08
-LIVE_WITHIN = 0.994
+LIVE_MEAN = 0.12
+LIVE_WITHIN = 0.986
 LIVE_MIN_COLOURS = 2  # not one flat colour (unicolor draws two: its colour and the background)
 LIVE_MIN_COVERED = 0.05  # share of the canvas off the background
 
