@@ -14,6 +14,8 @@
 #     [VARIANTS SHADER:NAME=VALUE,...]  # emit only these variants of those shaders
 #     [GLSL_VERSION <n>]                # default 330
 #     [TARGETS gl es300 spirv]          # --target: also produce these (docs/targets.md); default gl
+#     [WEB <file.js>]                   # --emit-web: the web catalogue for WebGL2 (needs es300 in TARGETS;
+#                                       # relative to the current binary dir; docs/targets.md, "Web catalogue")
 #     [CLIENT opengl|vulkan]            # default opengl; vulkan stores SPIR-V (docs/shaderc.md, "Clients")
 #     [TARGET_ENV vulkan1.x])           # CLIENT vulkan only: vulkan1.0 ... vulkan1.3, default vulkan1.2
 #
@@ -117,7 +119,7 @@ function(_prism_write_source_tree file ns base_dir module_dirs contracts defines
 endfunction()
 
 function(prism_add_shaders target)
-  cmake_parse_arguments(PARSE_ARGV 1 PAS "" "HEADER;NAMESPACE;GLSL_VERSION;CLIENT;TARGET_ENV"
+  cmake_parse_arguments(PARSE_ARGV 1 PAS "" "HEADER;NAMESPACE;GLSL_VERSION;CLIENT;TARGET_ENV;WEB"
                         "SOURCES;PROGRAMS;MODULE_DIRS;DEFINES;CONTRACT;VARIANTS;TARGETS")
   if(PAS_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "prism_add_shaders(${target}): unknown arguments: ${PAS_UNPARSED_ARGUMENTS}")
@@ -218,12 +220,18 @@ function(prism_add_shaders target)
     list(APPEND args --target ${target_list})
   endif()
 
+  set(web "")
+  if(PAS_WEB)
+    get_filename_component(web ${PAS_WEB} ABSOLUTE BASE_DIR ${CMAKE_CURRENT_BINARY_DIR})
+    list(APPEND args --emit-web ${web})
+  endif()
+
   _prism_write_source_tree(${source_tree} ${PAS_NAMESPACE} ${PROJECT_SOURCE_DIR} "${module_dirs}" "${contracts}"
                            "${PAS_DEFINES}")
 
   add_custom_command(
     OUTPUT ${stamp}
-    BYPRODUCTS ${header} ${data}
+    BYPRODUCTS ${header} ${data} ${web}
     COMMAND Prism::shaderc ${args} ${sources}
     DEPENDS ${depends}
     DEPFILE ${depfile}
@@ -235,7 +243,8 @@ function(prism_add_shaders target)
   set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
   target_include_directories(${target} PUBLIC $<BUILD_INTERFACE:${gen_dir}>)
   target_link_libraries(${target} PUBLIC Prism::catalog)
-  set_target_properties(${target} PROPERTIES PRISM_HEADER ${header} PRISM_NAMESPACE ${PAS_NAMESPACE})
+  set_target_properties(${target} PROPERTIES PRISM_HEADER ${header} PRISM_NAMESPACE ${PAS_NAMESPACE}
+                                             PRISM_WEB "${web}")
   if(COMMAND prism_set_layer)  # inside Prism's own build: catalogues are CPU-layer data
     prism_set_layer(${target} cpu)
   endif()

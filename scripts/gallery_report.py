@@ -16,6 +16,9 @@ import os
 import shutil
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import gallery_live  # noqa: E402
+
 # The benches' committed plots: (file in the repository, what to read from it).
 PLOTS = [
     ("docs/tradeoffs.svg",
@@ -84,6 +87,10 @@ DOCS = [
 
 STYLE = """body{font-family:sans-serif;margin:1.5em;background:#fafafa;color:#222}
 header{border-bottom:1px solid #ccc;margin-bottom:1em}
+.live-view canvas{width:256px;height:256px;border:1px solid #ccc;cursor:grab}
+.live-controls{font-size:12px;max-width:256px}.live-controls label{display:block}
+.live-controls label.missing{color:#aaa}.agreement{font-size:12px;max-width:256px}
+body.live-only>*:not(#live){display:none}
 figure{display:inline-block;margin:.4em;vertical-align:top;max-width:100%}
 figure img{max-width:100%;height:auto;border:1px solid #ccc;background:#000}
 figcaption{font-size:13px;max-width:320px}
@@ -125,9 +132,9 @@ def table_html(path, columns):
     return f"<table><tr>{head}</tr>{body}</table>"
 
 
-def build_html(manifest, plots=(), tables=(), docs=()):
+def build_html(manifest, plots=(), tables=(), docs=(), live=""):
     """The page as a string. plots: (gallery-relative src, sentence); tables: (name, html,
-    sentence); docs: (href, title)."""
+    sentence); docs: (href, title); live: the live views' section (gallery_live.py)."""
     out = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
            f"<title>Prism {esc(manifest['version'])} gallery</title><style>{STYLE}</style></head><body>",
            f"<header><h1>Prism {esc(manifest['version'])}: what it renders</h1>",
@@ -151,6 +158,8 @@ def build_html(manifest, plots=(), tables=(), docs=()):
         width = section.get("thumb_width")
         out.extend(image_html(i, width) for i in section["images"])
         out.append("</section>")
+        if section["id"] == "catalogue" and live:  # the live views next to the catalogue's PNGs
+            out.append(live)
     out.append('<section id="trades"><h2>Trade-offs measured by the benches</h2>')
     for src, sentence in plots:
         out.append(f'<figure class="wide"><a href="{esc(src)}"><img src="{esc(src)}" alt="{esc(src)}" width="720">'
@@ -179,7 +188,7 @@ def write_report(gallery, repo_root):
               for rel, cols, sentence in TABLES if os.path.exists(os.path.join(repo_root, rel))]
     docs = [(os.path.relpath(os.path.join(repo_root, rel), gallery), title) for rel, title in DOCS
             if os.path.exists(os.path.join(repo_root, rel))]
-    page = build_html(manifest, plots, tables, docs)
+    page = build_html(manifest, plots, tables, docs, gallery_live.live_html(gallery))
     path = os.path.join(gallery, "index.html")
     tmp = path + ".tmp"
     with open(tmp, "w") as f:

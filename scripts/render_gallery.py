@@ -20,6 +20,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import gallery_live  # noqa: E402
 import gallery_report  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -172,6 +173,7 @@ def main(argv=None):
         seconds = run_timed(cmd)
         progress.line(label, seconds)
         sections[section]["images"].append(dict(image, seconds=seconds))
+    gallery_live.write_live_data(a.out, b)
     manifest = {"version": version(), "renderer": renderer,
                 "date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
                 "total_seconds": time.monotonic() - start, "sections": [sections[sid] for sid, _, _ in SECTIONS]}

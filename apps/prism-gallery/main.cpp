@@ -2,8 +2,9 @@
 // on a sphere, a torus, a cube and a trefoil knot at 512x512, headlessly, and writes
 // DIR/<shader>-<mesh>.png plus a labelled contact sheet DIR/gallery.png, and
 // DIR/catalogue.tsv (file, shader, variant, mesh, seconds: one row per image, read by
-// scripts/gallery_report.py). It prints "renderer: ..." and one "[k/N] label 0.12 s"
-// line per image. Usage errors (unknown flags, a bad --backend) exit 2.
+// scripts/gallery_report.py) and DIR/live-views.json, what each image was drawn with, for the
+// report's live WebGL2 views (live_views.hpp, docs/web.md). It prints "renderer: ..." and one
+// "[k/N] label 0.12 s" line per image. Usage errors (unknown flags, a bad --backend) exit 2.
 //   prism-gallery --out gallery [--size 512] [--backend egl|osmesa]
 #include <CLI/CLI.hpp>
 
@@ -22,6 +23,8 @@
 #include "prism/image/png_io.hpp"
 #include "prism/render/shader_meshes.hpp"
 #include "prism/shaders.hpp"
+
+#include "live_views.hpp"
 
 namespace {
 
@@ -102,15 +105,18 @@ int main(int argc, char** argv) {
         const std::size_t total = entries.size() * meshes.size();
         std::ofstream tsv(std::filesystem::path(outDir) / "catalogue.tsv");
         tsv << "file\tshader\tvariant\tmesh\tseconds\n";
+        LiveViews live;
         std::vector<prism::image::Image8> shots;
         std::vector<std::string> labels;
         for (const auto& entry : entries) {
             for (const auto& meshName : meshes) {
                 const auto start = std::chrono::steady_clock::now();
-                auto image = prism::render::renderImage8(cache, galleryJob(entry, meshName, size));
+                const auto job = galleryJob(entry, meshName, size);
+                auto image = prism::render::renderImage8(cache, job);
                 const auto path = std::filesystem::path(outDir) / (entry.fileStem + "-" + meshName + ".png");
                 prism::image::writePng(path, image);
                 const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                live.add(path.filename().string(), meshName, cache, job);  // not timed: the report's record
                 const std::string variant =
                     entry.label.size() > entry.shader.size() ? entry.label.substr(entry.shader.size() + 1) : "";
                 tsv << path.filename().string() << '\t' << entry.shader << '\t' << variant << '\t' << meshName << '\t'
@@ -125,6 +131,7 @@ int main(int argc, char** argv) {
         }
         if (!tsv.flush())
             throw std::runtime_error("cannot write " + (std::filesystem::path(outDir) / "catalogue.tsv").string());
+        live.write(std::filesystem::path(outDir) / "live-views.json");
         prism::image::writePng(std::filesystem::path(outDir) / "gallery.png",
                                prism::image::composeContactSheet(shots, labels, static_cast<int>(meshes.size())));
         std::cout << "wrote " << (std::filesystem::path(outDir) / "gallery.png").string() << " (" << shots.size()

@@ -223,7 +223,10 @@ void checkUniform(const Contract& c, std::size_t s, const InterfaceVariable& v, 
 
 }  // namespace
 
-std::uint32_t glTypeOf(const std::string& t) {
+namespace {
+
+// GLSL type names and their GL enums, for both directions of lookup.
+const std::map<std::string, std::uint32_t>& glslTypes() {
     static const std::map<std::string, std::uint32_t> types = {
         {"float", 0x1406},
         {"vec2", 0x8B50},
@@ -260,8 +263,20 @@ std::uint32_t glTypeOf(const std::string& t) {
         {"image2D", 0x904D},
         {"image2DArray", 0x9053},
     };
-    auto it = types.find(t);
-    return it == types.end() ? 0 : it->second;
+    return types;
+}
+
+}  // namespace
+
+std::uint32_t glTypeOf(const std::string& t) {
+    auto it = glslTypes().find(t);
+    return it == glslTypes().end() ? 0 : it->second;
+}
+
+std::string glslTypeNameOf(std::uint32_t glType) {
+    for (const auto& [name, type] : glslTypes())
+        if (type == glType) return name;
+    return "";
 }
 
 ContractLoadResult loadContracts(const std::vector<std::string>& paths, const SourceReader& reader) {

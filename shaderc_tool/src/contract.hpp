@@ -72,4 +72,7 @@ std::vector<Diagnostic> checkContract(const Contract& contract, const std::vecto
 // GL enum of a GLSL type name (GL_FLOAT_VEC3 ...), 0 when unknown.
 std::uint32_t glTypeOf(const std::string& glslType);
 
+// The GLSL type name of a GL enum ("vec3" for GL_FLOAT_VEC3), "" when unknown; glTypeOf's inverse.
+std::string glslTypeNameOf(std::uint32_t glType);
+
 }  // namespace prism::shaderc

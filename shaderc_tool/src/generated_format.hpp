@@ -49,6 +49,11 @@ inline constexpr std::string_view kSourcesRecordFile = "//   ";
 // sources record sit there unless the record is longer.
 inline constexpr std::size_t kRecordTailBytes = 64 * 1024;
 
+// The web catalogue (--emit-web, web_writer.hpp): a plain script that adds one entry, keyed by
+// the catalogue's name, to this global object; the entry's `format` names the layout.
+inline constexpr std::string_view kWebGlobal = "PrismWebCatalogs";
+inline constexpr std::string_view kWebFormat = "prism-web-catalogue 1";
+
 // The data file of header X.hpp is X.cpp.
 inline constexpr std::string_view kDataFileExtension = ".cpp";
 

@@ -9,6 +9,7 @@
 #include "header_writer.hpp"
 #include "output_file.hpp"
 #include "shader_targets.hpp"
+#include "web_writer.hpp"
 
 namespace prism::shaderc {
 
@@ -27,6 +28,10 @@ std::string writeOutputs(const Options& o, const ResolvedCatalog& rc) {
         }
     }
     if (!o.emitSpirvDir.empty() && !emitSpirv(o.emitSpirvDir, rc.data, error)) return error;
+    if (!o.emitWeb.empty() &&
+        writeIfChanged(o.emitWeb, writeWebCatalogue(rc.data, std::filesystem::path(o.emitWeb).stem().string()),
+                       error) == WriteOutcome::Failed)
+        return error;
     if (o.emitGlslDir.empty()) return {};
     std::vector<std::vector<Target>> targets(rc.data.shaders.size());
     for (std::size_t s = 0; s < targets.size(); ++s)

@@ -1,6 +1,7 @@
 // Stage 6 of prism-shaderc: the outputs. First what the catalogue generates: the header
 // and its data file (header_writer.hpp, data_writer.hpp), each written only when its text
-// changed (output_file.hpp), and the flattened stages of --emit-glsl (glsl_emitter.hpp).
+// changed (output_file.hpp), the flattened stages of --emit-glsl (glsl_emitter.hpp) and the web
+// catalogue of --emit-web (web_writer.hpp).
 // Then the build system's files, written by every successful run, a no-op included: the
 // depfile (depfile.hpp) and the --stamp. Each returns "" or the error to report.
 //

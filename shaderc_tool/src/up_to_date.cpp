@@ -36,7 +36,7 @@ std::string readRecord(const std::string& path) {
 
 // Records 1 and 3 belong to runs that write a header and nothing else.
 bool writesHeaderOnly(const Options& o) {
-    return !o.checkOnly && !o.output.empty() && o.emitGlslDir.empty() && o.emitSpirvDir.empty();
+    return !o.checkOnly && !o.output.empty() && o.emitGlslDir.empty() && o.emitSpirvDir.empty() && o.emitWeb.empty();
 }
 
 void removeStaleOutputTemps(const Options& o) {  // nothing to write, but a killed run may have left temp files

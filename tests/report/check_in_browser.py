@@ -21,7 +21,10 @@ import tempfile
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import png_read  # noqa: E402
 
-# Appended to a copy of the page: after 'load', one line per <img> and per <section>.
+# Appended to a copy of the page: after 'load', one line per <img> and per <section>; then,
+# once every live view has measured its agreement, one "live first {...}" line per view, a
+# click on each view's first enabled variant checkbox (the page's own control), and, once
+# measured again, one "live toggled {...}" line per view.
 PROBE = """<script>
 window.addEventListener('load', function () {
   var lines = [];
@@ -33,12 +36,86 @@ window.addEventListener('load', function () {
     imgs.forEach(function (img) { if (img.complete && img.naturalWidth > 0) loaded++; });
     lines.push('section ' + s.id + ' ' + imgs.length + ' ' + loaded);
   });
-  var pre = document.createElement('pre');
-  pre.id = 'browser-probe';
-  pre.textContent = lines.join('\\n');
-  document.body.appendChild(pre);
+  var views = Array.prototype.slice.call(document.querySelectorAll('.live-view'));
+  var status = document.getElementById('live-status');
+  if (status) lines.push('livestatus ' + status.textContent);
+  function settled() {
+    return views.every(function (v) {
+      var s = v.getAttribute('data-agreement-state');
+      return v.hasAttribute('data-live-error') || (s && s !== 'pending');
+    });
+  }
+  function record(tag) {
+    views.forEach(function (v) {
+      var r = {};
+      Array.prototype.forEach.call(v.attributes, function (a) { r[a.name] = a.value; });
+      lines.push('live ' + tag + ' ' + JSON.stringify(r));
+    });
+  }
+  function then(next, tries) {
+    if (settled() || tries > 600) next(); else setTimeout(function () { then(next, tries + 1); }, 50);
+  }
+  then(function () {
+    record('first');
+    views.forEach(function (v) {
+      var box = v.querySelector('input[type=checkbox][data-axis]:not([disabled])');
+      if (box) box.click();
+    });
+    then(function () {
+      record('toggled');
+      var pre = document.createElement('pre');
+      pre.id = 'browser-probe';
+      pre.textContent = lines.join('\\n');
+      document.body.appendChild(pre);
+    }, 0);
+  }, 0);
 });
 </script>"""
+
+# The live views' thresholds against the llvmpipe PNGs (docs/web.md, "Agreement"): measured
+# over all 44 PNGs of a --quick and of a full gallery (measure_live_agreement.py), then set just
+# above the worst case (max 204/255, mean 0.1103/255, 98.644 % within 2/255).
+LIVE_MAX = 210
+LIVE_MEAN = 0.12
+LIVE_WITHIN = 0.986
+LIVE_MIN_COLOURS = 2  # not one flat colour (unicolor draws two: its colour and the background)
+LIVE_MIN_COVERED = 0.05  # share of the canvas off the background
+
+
+def live_failures(records, shaders):
+    """What is wrong with the live views: `records` maps ("first"|"toggled", shader) to the
+    view's attributes; `shaders` are the classic catalogue's."""
+    failures = []
+    for shader in shaders:
+        first, toggled = records.get(("first", shader)), records.get(("toggled", shader))
+        if first is None:
+            failures.append(f"live view of '{shader}' is missing")
+            continue
+        for tag, r in (("first", first), ("toggled", toggled)):
+            failures += view_failures(f"live view '{shader}' ({tag})", r)
+        if toggled.get("data-live-checksum") == first.get("data-live-checksum"):
+            failures.append(f"live view '{shader}': toggling {toggled.get('data-live-variant')} did not change the picture")
+        if toggled.get("data-agreement-png") == first.get("data-agreement-png"):
+            failures.append(f"live view '{shader}': after the toggle it still compares with {first.get('data-agreement-png')}")
+    return failures
+
+
+def view_failures(what, r):
+    if r.get("data-live-error"):
+        return [f"{what}: {r['data-live-error']}"]
+    failures = []
+    if r.get("data-live-float-precision") != "highp":  # SwiftShader runs mediump at 32 bits: no pixel shows it
+        failures.append(f"{what}: its fragment stage defaults floats to {r.get('data-live-float-precision')}, not highp")
+    if int(r.get("data-live-colours", 0)) < LIVE_MIN_COLOURS or float(r.get("data-live-covered", 0)) < LIVE_MIN_COVERED:
+        failures.append(f"{what} looks blank: {r.get('data-live-colours')} colours, "
+                        f"{float(r.get('data-live-covered', 0)):.1%} off the background")
+    if r.get("data-agreement-state") != "done":
+        return failures + [f"{what}: no agreement measured (state {r.get('data-agreement-state')})"]
+    m, mean, within = int(r["data-agreement-max"]), float(r["data-agreement-mean"]), float(r["data-agreement-within"])
+    if m > LIVE_MAX or mean > LIVE_MEAN or within < LIVE_WITHIN:
+        failures.append(f"{what} disagrees with {r['data-agreement-png']}: max {m}/255 (limit {LIVE_MAX}), mean "
+                        f"{mean:.4f}/255 (limit {LIVE_MEAN}), {within:.3%} within 2/255 (limit {LIVE_WITHIN:.3%})")
+    return failures
 
 
 class ImgCounter(html.parser.HTMLParser):
@@ -50,8 +127,28 @@ class ImgCounter(html.parser.HTMLParser):
         self.images += tag == "img"
 
 
+def check_live(raw, manifest):
+    """The live views' failures, from the probe's lines; prints each view's figures."""
+    shaders = sorted({i["shader"] for s in manifest["sections"] if s["id"] == "catalogue"
+                      for i in s["images"] if i.get("shader")})
+    records = {}
+    for line in raw:
+        if line.startswith("livestatus "):
+            print("live:", line[len("livestatus "):])
+        if line.startswith("live "):
+            _, tag, body = line.split(" ", 2)
+            r = json.loads(body)
+            records[(tag, r.get("data-shader"))] = r
+            print(f"live {tag} {r.get('data-shader')} {r.get('data-live-variant')}: against "
+                  f"{r.get('data-agreement-png')} max {r.get('data-agreement-max')} mean {r.get('data-agreement-mean')} "
+                  f"within {r.get('data-agreement-within')}; {r.get('data-live-colours')} colours")
+    return live_failures(records, shaders)
+
+
 def chromium(binary, profile, *args):
-    cmd = [binary, "--headless", "--no-sandbox", "--disable-gpu", "--hide-scrollbars",
+    # WebGL2 on SwiftShader through ANGLE: recent Chromium no longer falls back to it unasked.
+    cmd = [binary, "--headless", "--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
+           "--hide-scrollbars",
            f"--user-data-dir={profile}", *args]
     return subprocess.run(cmd, capture_output=True, text=True, timeout=180)
 
@@ -62,7 +159,8 @@ def check(gallery, screenshot, binary="chromium", scale=1.0):
     with open(page, encoding="utf-8") as f:
         text = f.read()
     with open(os.path.join(gallery, "manifest.json")) as f:
-        systems = [s["id"] for s in json.load(f)["sections"]]
+        manifest = json.load(f)
+    systems = [s["id"] for s in manifest["sections"]]
     counter = ImgCounter()
     counter.feed(text)
     failures = []
@@ -75,7 +173,8 @@ def check(gallery, screenshot, binary="chromium", scale=1.0):
         m = re.search(r'<pre id="browser-probe">(.*?)</pre>', dom.stdout, re.S)
         if not m:
             return [f"chromium --dump-dom gave no probe output (exit {dom.returncode}): {dom.stderr[-500:]}"]
-        lines = [line.split(" ", 3) for line in m.group(1).strip().splitlines()]
+        raw = html.unescape(m.group(1)).strip().splitlines()
+        lines = [line.split(" ", 3) for line in raw]
         imgs = [(int(w), src) for kind, w, src in (line[:3] for line in lines if line[0] == "img")]
         sections = {line[1]: (int(line[2]), int(line[3])) for line in lines if line[0] == "section"}
         if len(imgs) != counter.images:
@@ -86,6 +185,8 @@ def check(gallery, screenshot, binary="chromium", scale=1.0):
                 failures.append(f"section '{sid}' is missing")
             elif sid in systems and sections[sid][1] == 0:
                 failures.append(f"section '{sid}' shows no loaded image")
+        if os.path.exists(os.path.join(gallery, "live-views.json")):
+            failures += check_live(raw, manifest)
         shot = chromium(binary, profile, "--window-size=1000,1300", f"--force-device-scale-factor={scale}",
                         f"--screenshot={os.path.abspath(screenshot)}", "file://" + page)
         if not os.path.exists(screenshot):

@@ -2,7 +2,8 @@
 """Shows that the report's checks fail when the report is broken (CTest
 report.browser_detects_breakage): on copies of a good gallery it corrupts one PNG, drops
 a system's section, blanks the page, and deletes a linked file, and expects
-check_in_browser.py / check_links.py to fail naming the fault.
+check_in_browser.py / check_links.py to fail naming the fault. It also opens the page with
+WebGL disabled and expects the live section's one line saying so (docs/web.md).
 
     python3 tests/report/mutation_check.py GALLERY_DIR
 """
@@ -14,6 +15,8 @@ import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from check_in_browser import chromium  # noqa: E402
 
 
 def run(script, *args):
@@ -33,9 +36,9 @@ def main(argv):
     gallery = argv[1]
     ok = True
     with tempfile.TemporaryDirectory() as tmp:
-        def fresh(name):
+        def fresh(name):  # without the live views, whose checks these faults do not concern (and cost time)
             copy = os.path.join(tmp, name)
-            shutil.copytree(gallery, copy)
+            shutil.copytree(gallery, copy, ignore=shutil.ignore_patterns("live", "live-views.json"))
             return copy
 
         g = fresh("broken-image")
@@ -58,6 +61,16 @@ def main(argv):
             f.write("<!DOCTYPE html><html><body></body></html>\n")
         rc, out = run("check_in_browser.py", g, "--screenshot", os.path.join(tmp, "c.png"))
         ok &= expect_failure("blank page", rc, out, "looks blank")
+
+        # Without WebGL2 the live section says so in one line (and the PNGs are static <img>).
+        dom = chromium("chromium", os.path.join(tmp, "profile"), "--disable-3d-apis", "--virtual-time-budget=10000",
+                       "--dump-dom", "file://" + os.path.abspath(os.path.join(gallery, "index.html"))).stdout
+        line = "This browser has no WebGL2, so the live views are off; every PNG below still shows."
+        if os.path.exists(os.path.join(gallery, "live-views.json")) and line not in dom:
+            print(f"without WebGL2 the page does not say '{line}'")
+            ok = False
+        else:
+            print("without WebGL2: the page says so")
 
         g = fresh("missing-file")
         os.remove(os.path.join(g, "gallery.png"))

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Unit tests of scripts/gallery_report.py and scripts/render_gallery.py's pure parts (CTest
+"""Unit tests of scripts/gallery_report.py, scripts/gallery_live.py and scripts/render_gallery.py's pure parts (CTest
 report.generator, label unit): the page's header, sections, captions, plots, tables, docs
 links, escaping, offline-ness, and the version read from CMakeLists.txt."""
 import html.parser
@@ -13,6 +13,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import check_links  # noqa: E402
+import gallery_live  # noqa: E402
 import gallery_report  # noqa: E402
 import render_gallery  # noqa: E402
 
@@ -157,6 +158,36 @@ class RenderGallery(unittest.TestCase):
             with open(path, "w") as f:
                 json.dump({"camera": {}}, f)
             self.assertEqual(render_gallery.scene_summary(path), "")
+
+
+class GalleryLive(unittest.TestCase):
+    """The live views' data: one plain script per mesh with its exact float32 arrays and its
+    PNGs as data: URIs, and the section placed right after the catalogue's."""
+
+    def test_mesh_parts_keep_the_floats_exactly_and_embed_each_png(self):
+        import base64
+        import struct
+        record = {"meshes": {"torus": {"positions": [0.1, -2.5, 3.0], "normals": [0.0, 1.0, 0.0], "indices": [0]},
+                             "torus.1": {"positions": [1.0, 2.0, 3.0], "normals": [], "indices": [0]}},
+                  "views": [{"png": "p.png", "mesh": "torus.1"}]}
+        with tempfile.TemporaryDirectory() as d:
+            with open(os.path.join(d, "p.png"), "wb") as f:
+                f.write(b"\x89PNG-bytes")
+            parts = gallery_live.mesh_parts(d, record)
+        self.assertEqual(list(parts), ["torus"])
+        floats = struct.unpack("<3f", base64.b64decode(parts["torus"]["meshes"]["torus"]["positions"]))
+        self.assertEqual(floats, struct.unpack("<3f", struct.pack("<3f", 0.1, -2.5, 3.0)))
+        self.assertEqual(parts["torus"]["pngs"]["p.png"],
+                         "data:image/png;base64," + base64.b64encode(b"\x89PNG-bytes").decode())
+
+    def test_live_section_follows_the_catalogue(self):
+        page = gallery_report.build_html(manifest(), live='<section id="live"></section>')
+        self.assertLess(page.index('<section id="catalogue"'), page.index('<section id="live"'))
+        self.assertLess(page.index('<section id="live"'), page.index('<section id="water"'))
+
+    def test_no_live_section_without_its_data(self):
+        with tempfile.TemporaryDirectory() as d:
+            self.assertEqual(gallery_live.live_html(d), "")
 
 
 if __name__ == "__main__":
