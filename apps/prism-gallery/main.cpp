@@ -87,7 +87,8 @@ int main(int argc, char** argv) {
         return app.exit(e) == 0 ? 0 : 2;
     }
     const auto backend = backendName.empty() ? std::nullopt : prism::gl::parseBackend(backendName);
-    if (!backendName.empty() && (!backend || *backend == prism::gl::Backend::Glfw)) {
+    const bool glHeadless = backend && *backend != prism::gl::Backend::Glfw && *backend != prism::gl::Backend::Vulkan;
+    if (!backendName.empty() && !glHeadless) {
         std::cerr << "prism-gallery: error: --backend " << backendName << ": expected egl or osmesa\n";
         return 2;
     }

@@ -1,0 +1,129 @@
+// Shared pieces of the Vulkan tier (see vulkan_test_support.hpp).
+#include "vulkan_test_support.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <iomanip>
+#include <memory>
+#include <sstream>
+
+#include "prism/gl/framebuffer.hpp"
+#include "prism/gl/gl.hpp"
+#include "prism/render/gpu_mesh.hpp"
+#include "prism/render/shader_meshes.hpp"
+#include "prism/shaders.hpp"
+#include "prism/test/gl_test.hpp"
+
+namespace prism::vulkan_test {
+
+Agreement agreementOf(const image::Image8& vulkan, const image::Image8& gl) {
+    const image::ImageComparison cmp = image::compareImages(vulkan, gl, 2);
+    Agreement a;
+    a.sizeMatches = cmp.sizeMatches;
+    if (!cmp.sizeMatches) return a;
+    a.shareWithin2 = 1.0 - cmp.shareOver;
+    a.mean = cmp.meanAbsError;
+    a.max = cmp.maxChannelDiff;
+    a.diff = cmp.diff;
+    return a;
+}
+
+bool agrees(const Agreement& a, const AgreementThresholds& t) {
+    return a.sizeMatches && a.shareWithin2 >= t.minShareWithin2 && a.mean <= t.maxMean && a.max <= t.maxMax;
+}
+
+std::ostream& operator<<(std::ostream& os, const Agreement& a) {
+    if (!a.sizeMatches) return os << "sizes differ";
+    return os << std::fixed << std::setprecision(4) << "within 2/255: " << 100.0 * a.shareWithin2 << " %, mean "
+              << a.mean << "/255, max " << a.max << "/255";
+}
+
+std::string describe(const Agreement& a, const AgreementThresholds& t) {
+    std::ostringstream s;
+    s << a << " (allowed: within 2/255 >= " << 100.0 * t.minShareWithin2 << " %, mean <= " << t.maxMean
+      << ", max <= " << t.maxMax << ")";
+    return s.str();
+}
+
+image::Image8 renderFrameGl(const render::VulkanFrame& frame, bool cullBackFaces) {
+    auto& cache = test::GlTest::suiteResource<render::ProgramCache>(shaders::kCatalog);
+    gl::Framebuffer fb(frame.width, frame.height, gl::ColorFormat::Rgba8);
+    fb.clear({frame.background.r, frame.background.g, frame.background.b, frame.background.a});
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_BLEND);
+    if (cullBackFaces) {
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_BACK);
+        glFrontFace(GL_CCW);
+    }
+    for (const auto& draw : frame.draws) {
+        render::RenderJob job;
+        job.shader = draw.shader;
+        job.variant = draw.variant;
+        job.world = draw.world;
+        job.material = draw.material;
+        job.lights = frame.lights;
+        job.fog = frame.fog;
+        job.camera = frame.camera;
+        job.width = frame.width;
+        job.height = frame.height;
+        render::GpuMesh mesh(draw.mesh, shaders::kCatalog.contractAttributes);
+        render::drawJob(cache, job, mesh);
+    }
+    glDisable(GL_CULL_FACE);
+    glFinish();
+    return fb.readImage8();
+}
+
+render::VulkanRenderer& validatedRenderer() {
+    static auto renderer =
+        std::make_unique<render::VulkanRenderer>(shaders::kCatalog, render::VulkanRenderOptions{.device = {true}});
+    return *renderer;
+}
+
+void expectNoValidationMessages(const render::VulkanRenderer& renderer) {
+    const auto messages = renderer.device().validationMessages();
+    std::string all;
+    for (const auto& m : messages) all += "\n  " + m;
+    EXPECT_TRUE(renderer.device().validating());
+    EXPECT_TRUE(messages.empty()) << messages.size() << " validation messages:" << all;
+}
+
+std::string CatalogueCase::label() const {
+    std::string variantText;
+    for (const auto& [name, value] : variant) variantText += " " + name + "=" + value;
+    return shader + variantText + " / " + mesh;
+}
+
+std::vector<CatalogueCase> catalogueCases() {
+    std::vector<CatalogueCase> cases;
+    for (const auto& s : shaders::kCatalog.shaders) {
+        std::vector<render::VariantValues> variants{{}};
+        for (const auto& axis : s.axes)
+            if (axis.values.size() == 2 && axis.values[0] == "0" && axis.values[1] == "1")
+                variants.push_back({{std::string(axis.name), "1"}});
+        for (const auto& v : variants)
+            for (const char* mesh : {"sphere", "torus", "cube", "trefoil"})
+                cases.push_back({std::string(s.name), v, mesh});
+    }
+    return cases;
+}
+
+render::RenderJob jobOf(const CatalogueCase& c, int size) {
+    render::RenderJob job;
+    job.shader = c.shader;
+    job.variant = c.variant;
+    job.mesh = render::meshForShader(c.shader, render::namedMesh(c.mesh, 3));
+    job.width = job.height = size;
+    job.world = glm::rotate(glm::mat4(1.0f), glm::radians(20.0f), glm::vec3(1, 0, 0)) *
+                glm::rotate(glm::mat4(1.0f), glm::radians(-30.0f), glm::vec3(0, 1, 0));
+    job.material.color = {0.85f, 0.42f, 0.25f, 1.0f};
+    job.material.shininess = 48.0f;
+    job.material.specular = 0.6f;
+    for (const auto& [name, value] : c.variant)
+        if (name == "FOG" && value == "1") job.fog = view::Fog{};
+    return job;
+}
+
+}  // namespace prism::vulkan_test

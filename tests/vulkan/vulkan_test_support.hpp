@@ -1,0 +1,63 @@
+// Shared pieces of the Vulkan tier (tests/vulkan): the agreement measure and its thresholds
+// (docs/vulkan.md), the same frame drawn through GL for comparison, the suite's Vulkan
+// renderer with the validation layer on, and the catalogue cases of the gallery.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "prism/image/image_compare.hpp"
+#include "prism/render/vulkan_render.hpp"
+
+namespace prism::vulkan_test {
+
+// How far a Vulkan render is from a GL one: the share of pixels whose every channel is
+// within 2/255, the mean absolute error over all channels (8-bit units) and the largest
+// channel difference.
+struct Agreement {
+    double shareWithin2 = 0.0;
+    double mean = 0.0;
+    int max = 0;
+    bool sizeMatches = false;
+    image::Image8 diff;
+};
+Agreement agreementOf(const image::Image8& vulkan, const image::Image8& gl);
+
+// The thresholds of the tier, set just above the differences measured on lavapipe against
+// llvmpipe (docs/vulkan.md states them and the command that measured them).
+struct AgreementThresholds {
+    double minShareWithin2;
+    double maxMean;
+    int maxMax;
+};
+bool agrees(const Agreement& a, const AgreementThresholds& t);
+std::string describe(const Agreement& a, const AgreementThresholds& t);
+std::ostream& operator<<(std::ostream& os, const Agreement& a);
+
+// `frame` drawn through GL with the suite's program cache: each draw as drawJob() draws a
+// RenderJob, into one framebuffer cleared to the frame's background (needs a GlTest).
+// cullBackFaces enables GL_CULL_FACE (back faces, counter-clockwise front), as
+// VulkanRenderOptions::cull = VK_CULL_MODE_BACK_BIT does.
+image::Image8 renderFrameGl(const render::VulkanFrame& frame, bool cullBackFaces = false);
+
+// A renderer with VK_LAYER_KHRONOS_validation on, for the running test program.
+render::VulkanRenderer& validatedRenderer();
+// Fails the test when `renderer`'s device has recorded any validation message, listing them.
+void expectNoValidationMessages(const render::VulkanRenderer& renderer);
+
+// One gallery image: a catalogue shader, one of its variants (the default or one boolean axis
+// switched on, as prism-gallery lists them) and a gallery mesh.
+struct CatalogueCase {
+    std::string shader;
+    render::VariantValues variant;
+    std::string mesh;
+    std::string label() const;  // "phong BLINN=1 / torus"
+};
+// Every classic catalogue shader x variant x gallery mesh (sphere, torus, cube, trefoil).
+std::vector<CatalogueCase> catalogueCases();
+// The case framed as prism-gallery frames it, at `size` pixels square.
+render::RenderJob jobOf(const CatalogueCase& c, int size);
+
+}  // namespace prism::vulkan_test
