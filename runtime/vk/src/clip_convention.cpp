@@ -29,4 +29,13 @@ void ClipConvention::chainDepthRange(VkPipelineViewportStateCreateInfo& state,
     state.pNext = &control;
 }
 
+void ClipConvention::chainProvokingVertex(VkPipelineRasterizationStateCreateInfo& state,
+                                          VkPipelineRasterizationProvokingVertexStateCreateInfoEXT& provoking) const {
+    provoking = {VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_PROVOKING_VERTEX_STATE_CREATE_INFO_EXT};
+    provoking.provokingVertexMode =
+        glProvokingVertex ? VK_PROVOKING_VERTEX_MODE_LAST_VERTEX_EXT : VK_PROVOKING_VERTEX_MODE_FIRST_VERTEX_EXT;
+    provoking.pNext = state.pNext;
+    state.pNext = &provoking;
+}
+
 }  // namespace prism::vk

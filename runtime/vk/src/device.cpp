@@ -92,8 +92,18 @@ int graphicsFamily(VkPhysicalDevice device) {
     return -1;
 }
 
-// A usable device, GPUs before CPU implementations: Vulkan 1.1, a graphics queue and
-// VK_EXT_depth_clip_control (GL's depth range, prism/vk/clip_convention.hpp).
+// The device extensions GL's conventions need (prism/vk/clip_convention.hpp): its depth
+// range and its provoking vertex.
+constexpr const char* kRequiredExtensions[] = {VK_EXT_DEPTH_CLIP_CONTROL_EXTENSION_NAME,
+                                               VK_EXT_PROVOKING_VERTEX_EXTENSION_NAME};
+
+bool hasRequiredExtensions(VkPhysicalDevice device) {
+    return std::all_of(std::begin(kRequiredExtensions), std::end(kRequiredExtensions),
+                       [&](const char* name) { return hasDeviceExtension(device, name); });
+}
+
+// A usable device, GPUs before CPU implementations: Vulkan 1.1, a graphics queue and the
+// required extensions.
 VkPhysicalDevice pickPhysicalDevice(VkInstance instance) {
     std::uint32_t count = 0;
     vkEnumeratePhysicalDevices(instance, &count, nullptr);
@@ -111,14 +121,14 @@ VkPhysicalDevice pickPhysicalDevice(VkInstance instance) {
     for (auto d : devices) {
         VkPhysicalDeviceProperties p;
         vkGetPhysicalDeviceProperties(d, &p);
-        if (p.apiVersion >= VK_API_VERSION_1_1 && graphicsFamily(d) >= 0 &&
-            hasDeviceExtension(d, VK_EXT_DEPTH_CLIP_CONTROL_EXTENSION_NAME))
-            return d;
+        if (p.apiVersion >= VK_API_VERSION_1_1 && graphicsFamily(d) >= 0 && hasRequiredExtensions(d)) return d;
         refused += std::string(refused.empty() ? "" : ", ") + p.deviceName;
     }
     if (devices.empty()) throw NoDeviceError(std::string("no Vulkan device found; ") + kInstallDriver);
-    throw NoDeviceError("no Vulkan device has Vulkan 1.1, a graphics queue and VK_EXT_depth_clip_control (found: " +
-                        refused + "); " + kInstallDriver);
+    throw NoDeviceError(
+        "no Vulkan device has Vulkan 1.1, a graphics queue, VK_EXT_depth_clip_control and VK_EXT_provoking_vertex "
+        "(found: " +
+        refused + "); " + kInstallDriver);
 }
 
 LogicalDevice createLogicalDevice(VkInstance instance, VkPhysicalDevice physical, std::uint32_t family) {
@@ -127,16 +137,19 @@ LogicalDevice createLogicalDevice(VkInstance instance, VkPhysicalDevice physical
     queue.queueFamilyIndex = family;
     queue.queueCount = 1;
     queue.pQueuePriorities = &priority;
+    VkPhysicalDeviceProvokingVertexFeaturesEXT provoking{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROVOKING_VERTEX_FEATURES_EXT};
+    provoking.provokingVertexLast = VK_TRUE;
     VkPhysicalDeviceDepthClipControlFeaturesEXT clipControl{
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DEPTH_CLIP_CONTROL_FEATURES_EXT};
     clipControl.depthClipControl = VK_TRUE;
-    const char* extensions[] = {VK_EXT_DEPTH_CLIP_CONTROL_EXTENSION_NAME};
+    clipControl.pNext = &provoking;
     VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
     info.pNext = &clipControl;
     info.queueCreateInfoCount = 1;
     info.pQueueCreateInfos = &queue;
-    info.enabledExtensionCount = 1;
-    info.ppEnabledExtensionNames = extensions;
+    info.enabledExtensionCount = static_cast<std::uint32_t>(std::size(kRequiredExtensions));
+    info.ppEnabledExtensionNames = kRequiredExtensions;
     VkDevice device = VK_NULL_HANDLE;
     check(vkCreateDevice(physical, &info, nullptr, &device), "vkCreateDevice");
     return LogicalDevice(instance, device);

@@ -108,6 +108,7 @@ struct FixedState {
     VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
     VkPipelineViewportDepthClipControlCreateInfoEXT depthRange{};
     VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+    VkPipelineRasterizationProvokingVertexStateCreateInfoEXT provoking{};
     VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
     VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
     VkPipelineColorBlendAttachmentState blendAttachment{};
@@ -124,6 +125,7 @@ struct FixedState {
         raster.cullMode = options.cull;
         raster.frontFace = options.clip.frontFace();
         raster.lineWidth = 1.0f;
+        options.clip.chainProvokingVertex(raster, provoking);
         multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
         depth.depthTestEnable = VK_TRUE;
         depth.depthWriteEnable = VK_TRUE;

@@ -8,13 +8,16 @@
 // | clip-space depth      | -1..1 -> window 0..1       | 0..1, below 0 clipped       | VK_EXT_depth_clip_control   |
 // | front face            | counter-clockwise (window) | as set; y flip mirrors it   | counter-clockwise           |
 // | read-back row 0       | bottom                     | top                         | top, as prism::image        |
+// | flat shading's vertex | the last of the triangle   | the first                   | VK_EXT_provoking_vertex     |
 //
 // The negative height (core since Vulkan 1.1) puts NDC y = +1 at row 0, the top, so the
 // winding a GL programmer sees is kept and VK_FRONT_FACE_COUNTER_CLOCKWISE matches
 // glFrontFace(GL_CCW). depth_clip_control's negativeOneToOne maps z = -1..1 to depth 0..1
 // exactly as GL does, so depth values, near/far clipping and depth-test ties agree too
 // (a projection matrix rewritten for 0..1 would change the float rounding of every depth).
-// `gl_FragCoord.y` still counts from the top in Vulkan (OriginUpperLeft): a shader that
+// A `flat` output takes the provoking vertex's value: GL's is a triangle's last vertex,
+// Vulkan's its first, unless VK_EXT_provoking_vertex says last (the flat shader's colour
+// differs per vertex under a point light). `gl_FragCoord.y` still counts from the top in Vulkan (OriginUpperLeft): a shader that
 // reads it sees GL's y mirrored.
 //
 // Usage (snippet: examples/snippets/vk_clip_convention.cpp):
@@ -24,8 +27,8 @@
 //     VkViewport viewport = gl.viewport(160, 120);       // y = 120, height = -120
 //     prism::vk::ClipConvention broken{.flipY = false};  // a fault for the tests that must catch it
 //
-// The members exist to inject faults: the agreement tests show a wrong y flip or a wrong
-// depth range fails them (docs/vulkan.md).
+// The members exist to inject faults: the agreement tests show a wrong y flip, a wrong
+// depth range or the wrong provoking vertex fails them (docs/vulkan.md).
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -33,8 +36,9 @@
 namespace prism::vk {
 
 struct ClipConvention {
-    bool flipY = true;    // false: Vulkan's y down (GL images upside down)
-    bool glDepth = true;  // false: Vulkan's 0..1 depth (GL's near half clipped away)
+    bool flipY = true;              // false: Vulkan's y down (GL images upside down)
+    bool glDepth = true;            // false: Vulkan's 0..1 depth (GL's near half clipped away)
+    bool glProvokingVertex = true;  // false: Vulkan's first vertex feeds `flat` outputs
 
     // The viewport for a `width` x `height` target.
     VkViewport viewport(int width, int height) const;
@@ -43,6 +47,9 @@ struct ClipConvention {
     // Chains `control` (which must outlive the pipeline's creation) into `state`.
     void chainDepthRange(VkPipelineViewportStateCreateInfo& state,
                          VkPipelineViewportDepthClipControlCreateInfoEXT& control) const;
+    // Chains `provoking` (which must outlive the pipeline's creation) into `state`.
+    void chainProvokingVertex(VkPipelineRasterizationStateCreateInfo& state,
+                              VkPipelineRasterizationProvokingVertexStateCreateInfoEXT& provoking) const;
 };
 
 }  // namespace prism::vk

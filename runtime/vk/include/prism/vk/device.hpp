@@ -10,8 +10,9 @@
 //     device.submit([](VkCommandBuffer) { /* record commands */ });  // runs them and waits
 //     std::size_t messages = device.validationMessages().size();     // 0 when all is well
 //
-// No Vulkan driver (or no device with a graphics queue and VK_EXT_depth_clip_control, see
-// prism/vk/clip_convention.hpp) throws NoDeviceError saying what to install; asking for
+// No Vulkan driver (or no device with a graphics queue, VK_EXT_depth_clip_control and
+// VK_EXT_provoking_vertex, see prism/vk/clip_convention.hpp) throws NoDeviceError saying
+// what to install; asking for
 // validation without the layer installed throws VkError naming its package.
 #pragma once
 
