@@ -169,15 +169,13 @@ int writeStochasticScene(const Arguments& a, const prism::scene::Scene& scene) {
     return kExitOk;
 }
 
-// A scene through Vulkan; SceneError (a system without a Vulkan path) is bad input.
-int drawSceneVulkan(const Arguments& a, const prism::scene::Scene& scene) {
+// Runs a Vulkan draw: bad input (a bad name or variant, a scene system without a Vulkan
+// path) exits 2, any other failure (no Vulkan driver) 1.
+template <class Draw>
+int guardedVulkan(const Draw& draw) {
     try {
-        const prism::render::VulkanFrame frame = prism::scene::vulkanFrameOf(scene);
-        prism::render::VulkanRenderer vulkan(prism::shaders::kCatalog);
-        prism::image::writePng(a.out, vulkan.render(frame));
-        std::cout << "prism-render: wrote " << a.out << " (vulkan on " << vulkan.device().name() << ", "
-                  << frame.draws.size() << " draws, " << vulkan.pipelineCount() << " pipelines)\n";
-    } catch (const std::invalid_argument& e) {
+        draw();
+    } catch (const std::invalid_argument& e) {  // also UnknownShaderError
         return badInput(e.what());
     } catch (const prism::scene::SceneError& e) {
         return badInput(e.what());
@@ -186,6 +184,17 @@ int drawSceneVulkan(const Arguments& a, const prism::scene::Scene& scene) {
         return kExitFailure;
     }
     return kExitOk;
+}
+
+// A scene through Vulkan; a system without a Vulkan path is bad input.
+int drawSceneVulkan(const Arguments& a, const prism::scene::Scene& scene) {
+    return guardedVulkan([&] {
+        const prism::render::VulkanFrame frame = prism::scene::vulkanFrameOf(scene);
+        prism::render::VulkanRenderer vulkan(prism::shaders::kCatalog);
+        prism::image::writePng(a.out, vulkan.render(frame));
+        std::cout << "prism-render: wrote " << a.out << " (vulkan on " << vulkan.device().name() << ", "
+                  << frame.draws.size() << " draws, " << vulkan.pipelineCount() << " pipelines)\n";
+    });
 }
 
 int drawScene(const Arguments& a, const prism::scene::Scene& scene, std::optional<prism::gl::Backend> backend) {
@@ -307,17 +316,11 @@ Stop catalogueJob(const Arguments& a, prism::render::RenderJob& job) {
 // The catalogue render through Vulkan, from the catalogue's SPIR-V.
 int drawCatalogueVulkan(const Arguments& a, const prism::render::RenderJob& job) {
     if (a.checkFinite) return badInput("--check-finite renders RGBA32F through GL; use --backend egl or osmesa");
-    try {
+    return guardedVulkan([&] {
         prism::render::VulkanRenderer vulkan(prism::shaders::kCatalog);
         prism::image::writePng(a.out, vulkan.render(job));
         std::cout << "prism-render: wrote " << a.out << " (vulkan on " << vulkan.device().name() << ")\n";
-    } catch (const std::invalid_argument& e) {  // also UnknownShaderError: a bad name or variant
-        return badInput(e.what());
-    } catch (const std::exception& e) {
-        std::cerr << "prism-render: error: " << e.what() << "\n";
-        return kExitFailure;
-    }
-    return kExitOk;
+    });
 }
 
 // The catalogue render: RGBA8, or RGBA32F checked for NaN and Inf with --check-finite.

@@ -53,7 +53,7 @@ TEST_F(VulkanAgreement, EveryClassicShaderVariantAndGalleryMeshMatchesGl) {
     const auto cases = catalogueCases();
     ASSERT_GE(cases.size(), 40u);
     for (const auto& c : cases) {
-        const render::RenderJob job = jobOf(c, kSize);
+        const render::RenderJob job = c.job(kSize);
         check(c.label(), vulkan.render(job), render::renderImage8(cache, job), kAgreementThresholds);
     }
     expectNoValidationMessages(vulkan);
@@ -132,7 +132,7 @@ TEST_F(VulkanAgreement, VulkansProvokingVertexFailsIt) {
 // shifted by one float) fails the agreement; so does one off by a whole vec4.
 TEST_F(VulkanAgreement, AUniformMemberAtAWrongOffsetFailsIt) {
     auto& cache = suiteResource<render::ProgramCache>(shaders::kCatalog);
-    const render::RenderJob job = jobOf({"phong", {}, "torus"}, kSize);
+    const render::RenderJob job = render::galleryJob({"phong", {}, "phong", "phong"}, "torus", kSize);
     const image::Image8 gl = render::renderImage8(cache, job);
     for (int fault : {4, 16}) {
         render::VulkanRenderer faulty(shaders::kCatalog, {.device = {true}, .uniformOffsetFault = fault});

@@ -1,8 +1,6 @@
 // Shared pieces of the Vulkan tier (see vulkan_test_support.hpp).
 #include "vulkan_test_support.hpp"
 
-#include <glm/gtc/matrix_transform.hpp>
-
 #include <iomanip>
 #include <memory>
 #include <sstream>
@@ -10,7 +8,6 @@
 #include "prism/gl/framebuffer.hpp"
 #include "prism/gl/gl.hpp"
 #include "prism/render/gpu_mesh.hpp"
-#include "prism/render/shader_meshes.hpp"
 #include "prism/shaders.hpp"
 #include "prism/test/gl_test.hpp"
 
@@ -58,18 +55,8 @@ image::Image8 renderFrameGl(const render::VulkanFrame& frame, bool cullBackFaces
         glFrontFace(GL_CCW);
     }
     for (const auto& draw : frame.draws) {
-        render::RenderJob job;
-        job.shader = draw.shader;
-        job.variant = draw.variant;
-        job.world = draw.world;
-        job.material = draw.material;
-        job.lights = frame.lights;
-        job.fog = frame.fog;
-        job.camera = frame.camera;
-        job.width = frame.width;
-        job.height = frame.height;
         render::GpuMesh mesh(draw.mesh, shaders::kCatalog.contractAttributes);
-        render::drawJob(cache, job, mesh);
+        render::drawJob(cache, render::jobOf(frame, draw), mesh);
     }
     glDisable(GL_CULL_FACE);
     glFinish();
@@ -90,40 +77,11 @@ void expectNoValidationMessages(const render::VulkanRenderer& renderer) {
     EXPECT_TRUE(messages.empty()) << messages.size() << " validation messages:" << all;
 }
 
-std::string CatalogueCase::label() const {
-    std::string variantText;
-    for (const auto& [name, value] : variant) variantText += " " + name + "=" + value;
-    return shader + variantText + " / " + mesh;
-}
-
 std::vector<CatalogueCase> catalogueCases() {
     std::vector<CatalogueCase> cases;
-    for (const auto& s : shaders::kCatalog.shaders) {
-        std::vector<render::VariantValues> variants{{}};
-        for (const auto& axis : s.axes)
-            if (axis.values.size() == 2 && axis.values[0] == "0" && axis.values[1] == "1")
-                variants.push_back({{std::string(axis.name), "1"}});
-        for (const auto& v : variants)
-            for (const char* mesh : {"sphere", "torus", "cube", "trefoil"})
-                cases.push_back({std::string(s.name), v, mesh});
-    }
+    for (const auto& entry : render::galleryEntries(shaders::kCatalog))
+        for (const auto& mesh : render::kGalleryMeshes) cases.push_back({entry, mesh});
     return cases;
-}
-
-render::RenderJob jobOf(const CatalogueCase& c, int size) {
-    render::RenderJob job;
-    job.shader = c.shader;
-    job.variant = c.variant;
-    job.mesh = render::meshForShader(c.shader, render::namedMesh(c.mesh, 3));
-    job.width = job.height = size;
-    job.world = glm::rotate(glm::mat4(1.0f), glm::radians(20.0f), glm::vec3(1, 0, 0)) *
-                glm::rotate(glm::mat4(1.0f), glm::radians(-30.0f), glm::vec3(0, 1, 0));
-    job.material.color = {0.85f, 0.42f, 0.25f, 1.0f};
-    job.material.shininess = 48.0f;
-    job.material.specular = 0.6f;
-    for (const auto& [name, value] : c.variant)
-        if (name == "FOG" && value == "1") job.fog = view::Fog{};
-    return job;
 }
 
 }  // namespace prism::vulkan_test

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "prism/image/image_compare.hpp"
+#include "prism/render/gallery.hpp"
 #include "prism/render/vulkan_render.hpp"
 
 namespace prism::vulkan_test {
@@ -52,17 +53,15 @@ render::VulkanRenderer& validatedRenderer();
 // Fails the test when `renderer`'s device has recorded any validation message, listing them.
 void expectNoValidationMessages(const render::VulkanRenderer& renderer);
 
-// One gallery image: a catalogue shader, one of its variants (the default or one boolean axis
-// switched on, as prism-gallery lists them) and a gallery mesh.
+// One gallery image (prism/render/gallery.hpp): a catalogue shader, one of its variants and a
+// gallery mesh.
 struct CatalogueCase {
-    std::string shader;
-    render::VariantValues variant;
+    render::GalleryEntry entry;
     std::string mesh;
-    std::string label() const;  // "phong BLINN=1 / torus"
+    std::string label() const { return entry.label + " / " + mesh; }  // "phong BLINN=1 / torus"
+    render::RenderJob job(int size) const { return render::galleryJob(entry, mesh, size); }
 };
 // Every classic catalogue shader x variant x gallery mesh (sphere, torus, cube, trefoil).
 std::vector<CatalogueCase> catalogueCases();
-// The case framed as prism-gallery frames it, at `size` pixels square.
-render::RenderJob jobOf(const CatalogueCase& c, int size);
 
 }  // namespace prism::vulkan_test

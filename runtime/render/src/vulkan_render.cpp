@@ -41,6 +41,22 @@ VulkanFrame frameOf(const RenderJob& job) {
     return frame;
 }
 
+RenderJob jobOf(const VulkanFrame& frame, const VulkanDraw& draw) {
+    RenderJob job;
+    job.shader = draw.shader;
+    job.variant = draw.variant;
+    job.mesh = draw.mesh;
+    job.world = draw.world;
+    job.material = draw.material;
+    job.lights = frame.lights;
+    job.fog = frame.fog;
+    job.camera = frame.camera;
+    job.width = frame.width;
+    job.height = frame.height;
+    job.background = frame.background;
+    return job;
+}
+
 VulkanRenderer::VulkanRenderer(const catalog::Catalog& catalog, VulkanRenderOptions options)
     : variants_(catalog), options_(options), device_(options.device) {}
 

@@ -225,26 +225,26 @@ DescriptorSets::DescriptorSets(const Device& device, const Pipeline& pipeline) :
     check(vkAllocateDescriptorSets(device_, &allocate, sets_.data()), "vkAllocateDescriptorSets");
 }
 
-void DescriptorSets::bindBuffer(const catalog::Resource& resource, const Buffer& buffer) {
-    VkDescriptorBufferInfo info{buffer.get(), 0, VK_WHOLE_SIZE};
+void DescriptorSets::write(const catalog::Resource& resource, const VkDescriptorBufferInfo* buffer,
+                           const VkDescriptorImageInfo* image) {
     VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     write.dstSet = sets_.at(resource.set);
     write.dstBinding = resource.binding;
     write.descriptorCount = 1;
     write.descriptorType = descriptorType(resource.kind);
-    write.pBufferInfo = &info;
+    write.pBufferInfo = buffer;
+    write.pImageInfo = image;
     vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
 }
 
+void DescriptorSets::bindBuffer(const catalog::Resource& resource, const Buffer& buffer) {
+    const VkDescriptorBufferInfo info{buffer.get(), 0, VK_WHOLE_SIZE};
+    write(resource, &info, nullptr);
+}
+
 void DescriptorSets::bindImage(const catalog::Resource& resource, VkImageView view, VkSampler sampler) {
-    VkDescriptorImageInfo info{sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    write.dstSet = sets_.at(resource.set);
-    write.dstBinding = resource.binding;
-    write.descriptorCount = 1;
-    write.descriptorType = descriptorType(resource.kind);
-    write.pImageInfo = &info;
-    vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
+    const VkDescriptorImageInfo info{sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    write(resource, nullptr, &info);
 }
 
 void DescriptorSets::bind(VkCommandBuffer cmd, const Pipeline& pipeline) const {

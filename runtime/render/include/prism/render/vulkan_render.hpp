@@ -53,8 +53,9 @@ struct VulkanFrame {
     std::vector<VulkanDraw> draws;
 };
 
-// The job as a one-draw frame.
+// The job as a one-draw frame, and one draw of a frame as a job (for GL's drawJob).
 VulkanFrame frameOf(const RenderJob& job);
+RenderJob jobOf(const VulkanFrame& frame, const VulkanDraw& draw);
 
 struct VulkanRenderOptions {
     vk::DeviceOptions device;

@@ -88,6 +88,8 @@ class DescriptorSets {
     void bind(VkCommandBuffer cmd, const Pipeline& pipeline) const;
 
   private:
+    void write(const catalog::Resource& resource, const VkDescriptorBufferInfo* buffer,
+               const VkDescriptorImageInfo* image);
     VkDevice device_;
     DescriptorPool pool_;
     std::vector<VkDescriptorSet> sets_;
