@@ -132,6 +132,7 @@ def build_html(manifest, plots=(), tables=(), docs=()):
             out.append(f"<p>{esc(section['intro'])}</p>")
         width = section.get("thumb_width")
         out.extend(image_html(i, width) for i in section["images"])
+        out.append(section.get("html", ""))  # a section's own markup (the Vulkan grid)
         out.append("</section>")
     out.append('<section id="trades"><h2>Trade-offs measured by the benches</h2>')
     for src, sentence in plots:
