@@ -61,6 +61,7 @@ DOCS = [
     ("docs/bluenoise.md", "blue-noise sampling"),
     ("docs/tradeoffs.md", "speed against accuracy"),
     ("docs/variants.md", "minimal variants against an uber-shader"),
+    ("docs/vulkan.md", "Vulkan: the catalogue's SPIR-V, checked against GL"),
     ("docs/architecture.md", "architecture"),
 ]
 
