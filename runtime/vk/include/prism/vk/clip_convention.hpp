@@ -17,8 +17,8 @@
 // (a projection matrix rewritten for 0..1 would change the float rounding of every depth).
 // A `flat` output takes the provoking vertex's value: GL's is a triangle's last vertex,
 // Vulkan's its first, unless VK_EXT_provoking_vertex says last (the flat shader's colour
-// differs per vertex under a point light). `gl_FragCoord.y` still counts from the top in Vulkan (OriginUpperLeft): a shader that
-// reads it sees GL's y mirrored.
+// differs per vertex under a point light). `gl_FragCoord.y` still counts from the top in
+// Vulkan (OriginUpperLeft): a shader that reads it sees GL's y mirrored.
 //
 // Usage (snippet: examples/snippets/vk_clip_convention.cpp):
 //
