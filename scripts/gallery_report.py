@@ -82,6 +82,7 @@ DOCS = [
     ("docs/bluenoise.md", "blue-noise sampling"),
     ("docs/tradeoffs.md", "speed against accuracy"),
     ("docs/variants.md", "minimal variants against an uber-shader"),
+    ("docs/vulkan.md", "Vulkan: the catalogue's SPIR-V, checked against GL"),
     ("docs/architecture.md", "architecture"),
 ]
 
@@ -157,6 +158,7 @@ def build_html(manifest, plots=(), tables=(), docs=(), live=""):
             out.append(f"<p>{esc(section['intro'])}</p>")
         width = section.get("thumb_width")
         out.extend(image_html(i, width) for i in section["images"])
+        out.append(section.get("html", ""))  # a section's own markup (the Vulkan grid)
         out.append("</section>")
         if section["id"] == "catalogue" and live:  # the live views next to the catalogue's PNGs
             out.append(live)

@@ -8,7 +8,8 @@ gallery/manifest.json and then gallery/index.html (scripts/gallery_report.py).
 --quick renders small images and short sequences (the browser test's fixture).
 Systems: the classic catalogue (prism-gallery), every examples/scenes/*.json
 (prism-render), the blue-noise samplers at 1 spp and accumulated (prism-bluenoise), and
-8-frame rain and water sequences shown as strips (prism-rain, water).
+8-frame rain and water sequences shown as strips (prism-rain, water), and every catalogue
+image through GL and Vulkan compared (prism-agreement, scripts/gallery_vulkan.py).
 """
 import argparse
 import datetime
@@ -22,6 +23,7 @@ import time
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import gallery_live  # noqa: E402
 import gallery_report  # noqa: E402
+import gallery_vulkan  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -40,6 +42,7 @@ SECTIONS = [
     ("bluenoise", "Blue-noise sampling",
      "The soft-shadow demo with white noise, a blue-noise mask and sorted (retargeted) seeds, at 1 spp "
      "(frame 0) and accumulated over frames (docs/bluenoise.md)."),
+    gallery_vulkan.SECTION,
 ]
 
 
@@ -149,14 +152,14 @@ def main(argv=None):
     b = a.build_dir
     bins = {"gallery": f"{b}/apps/prism-gallery", "render": f"{b}/apps/prism-render",
             "bluenoise": f"{b}/apps/prism-bluenoise/prism-bluenoise", "rain": f"{b}/examples/rain/prism-rain",
-            "water": f"{b}/examples/water/water"}
+            "water": f"{b}/examples/water/water", "agreement": f"{b}/apps/prism-agreement"}
     missing = [path for path in bins.values() if not os.access(path, os.X_OK)]
     if missing:
         sys.exit("render_gallery: build these first: " + ", ".join(missing))
     start = time.monotonic()
     for sub in ("scenes", "bluenoise"):
         os.makedirs(os.path.join(a.out, sub), exist_ok=True)
-    jobs = jobs_after_catalogue(a, bins, a.out)
+    jobs = jobs_after_catalogue(a, bins, a.out) + [gallery_vulkan.job(bins, a.out, a.quick)]
     accumulated = 4 if a.quick else 32
     renderer, progress, catalogue = render_catalogue(bins, a.out, a.quick, len(jobs))
     sections = {sid: {"id": sid, "title": t, "intro": i, "images": []} for sid, t, i in SECTIONS}
@@ -164,7 +167,8 @@ def main(argv=None):
         {"src": "gallery.png", "note": "contact sheet of the catalogue", "wide": True}]
     glance = {"catalogue": "phong.BLINN-1-torus.png", "scenes": "scenes/four_lights.png",
               "rain": "scenes/rain.png", "water": "scenes/puddles_closeup.png",
-              "diffraction": "scenes/diffraction_cd.png", "bluenoise": f"bluenoise/sorted-{accumulated}.png"}
+              "diffraction": "scenes/diffraction_cd.png", "bluenoise": f"bluenoise/sorted-{accumulated}.png",
+              "vulkan": gallery_vulkan.PAIR}
     for sid in sections:  # the header's one image per system
         sections[sid]["glance"] = glance[sid]
     for sid in sections:  # thumbnails; wide strips keep their size
@@ -174,6 +178,7 @@ def main(argv=None):
         progress.line(label, seconds)
         sections[section]["images"].append(dict(image, seconds=seconds))
     gallery_live.write_live_data(a.out, b)
+    sections["vulkan"]["html"] = gallery_vulkan.grid_html(a.out)
     manifest = {"version": version(), "renderer": renderer,
                 "date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
                 "total_seconds": time.monotonic() - start, "sections": [sections[sid] for sid, _, _ in SECTIONS]}

@@ -13,5 +13,5 @@ bash scripts/setup.sh
 BUILD_DIR=${BUILD_DIR:-build}
 OUT_DIR=${1:-gallery}
 cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPRISM_BUILD_RUNTIME=ON -DPRISM_BUILD_EXAMPLES=ON
-cmake --build "$BUILD_DIR" -j "$(nproc)" --target prism-gallery prism-render prism-bluenoise prism-rain water
+cmake --build "$BUILD_DIR" -j "$(nproc)" --target prism-gallery prism-render prism-bluenoise prism-rain water prism-agreement
 python3 scripts/render_gallery.py --build-dir "$BUILD_DIR" --out "$OUT_DIR"

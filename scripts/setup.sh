@@ -11,6 +11,8 @@ PACKAGES=(
   glslc spirv-tools spirv-cross libspirv-cross-c-shared-dev
   libglfw3-dev libglm-dev libimgui-dev
   libosmesa6-dev libegl1-mesa-dev libgl1-mesa-dri libgles-dev
+  # prism::vk (docs/vulkan.md): the Vulkan loader and headers, lavapipe (Vulkan on the CPU), the Khronos validation layer
+  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
   libpng-dev python3-glad
   libkissfft-dev colord-data
   libgtest-dev libgmock-dev libbenchmark-dev

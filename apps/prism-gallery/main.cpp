@@ -8,8 +8,6 @@
 //   prism-gallery --out gallery [--size 512] [--backend egl|osmesa]
 #include <CLI/CLI.hpp>
 
-#include <glm/gtc/matrix_transform.hpp>
-
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -19,63 +17,13 @@
 
 #include "prism/image/contact_sheet.hpp"
 #include "prism/gl/gl_context.hpp"
+#include "prism/render/gallery.hpp"
 #include "prism/render/offscreen_render.hpp"
 #include "prism/image/png_io.hpp"
 #include "prism/render/shader_meshes.hpp"
 #include "prism/shaders.hpp"
 
 #include "live_views.hpp"
-
-namespace {
-
-struct GalleryEntry {
-    std::string shader;
-    prism::render::VariantValues variant;
-    std::string fileStem;  // "phong" or "phong.BLINN-1"
-    std::string label;     // "phong" or "phong BLINN=1"
-};
-
-// One row per shader with the variant its lights need (derived by the renderer), then
-// one row per other boolean axis switched on (phong BLINN=1, every FOG=1).
-std::vector<GalleryEntry> galleryEntries() {
-    std::vector<GalleryEntry> entries;
-    for (const auto& s : prism::shaders::kCatalog.shaders) {
-        const std::string name(s.name);
-        entries.push_back({name, {}, name, name});
-        for (const auto& axis : s.axes) {
-            const bool boolean = axis.values.size() == 2 && axis.values[0] == "0" && axis.values[1] == "1";
-            if (!boolean) continue;  // light counts follow the scene
-            const std::string a(axis.name);
-            entries.push_back({name, {{a, "1"}}, name + "." + a + "-1", name + " " + a + "=1"});
-        }
-    }
-    return entries;
-}
-
-bool wantsFog(const GalleryEntry& e) {
-    for (const auto& [name, value] : e.variant)
-        if (name == "FOG" && value == "1") return true;
-    return false;
-}
-
-// One image of the sheet: the entry's shader and variant on a mesh, turned so that three
-// faces of the cube and the torus's hole show.
-prism::render::RenderJob galleryJob(const GalleryEntry& entry, const std::string& meshName, int size) {
-    prism::render::RenderJob job;
-    job.shader = entry.shader;
-    job.variant = entry.variant;
-    job.mesh = prism::render::meshForShader(entry.shader, prism::render::namedMesh(meshName, 3));
-    job.width = job.height = size;
-    job.world = glm::rotate(glm::mat4(1.0f), glm::radians(20.0f), glm::vec3(1, 0, 0)) *
-                glm::rotate(glm::mat4(1.0f), glm::radians(-30.0f), glm::vec3(0, 1, 0));
-    job.material.color = {0.85f, 0.42f, 0.25f, 1.0f};
-    job.material.shininess = 48.0f;
-    job.material.specular = 0.6f;
-    if (wantsFog(entry)) job.fog = prism::view::Fog{};
-    return job;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
     std::string outDir = "gallery", backendName;
@@ -90,7 +38,8 @@ int main(int argc, char** argv) {
         return app.exit(e) == 0 ? 0 : 2;
     }
     const auto backend = backendName.empty() ? std::nullopt : prism::gl::parseBackend(backendName);
-    if (!backendName.empty() && (!backend || *backend == prism::gl::Backend::Glfw)) {
+    const bool glHeadless = backend && *backend != prism::gl::Backend::Glfw && *backend != prism::gl::Backend::Vulkan;
+    if (!backendName.empty() && !glHeadless) {
         std::cerr << "prism-gallery: error: --backend " << backendName << ": expected egl or osmesa\n";
         return 2;
     }
@@ -100,8 +49,8 @@ int main(int argc, char** argv) {
         std::cout << "renderer: " << context->info().renderer << " | " << context->info().version << "\n";
         std::filesystem::create_directories(outDir);
         prism::render::ProgramCache cache(prism::shaders::kCatalog);
-        const std::vector<std::string> meshes = {"sphere", "torus", "cube", "trefoil"};
-        const auto entries = galleryEntries();
+        const auto& meshes = prism::render::kGalleryMeshes;
+        const auto entries = prism::render::galleryEntries(prism::shaders::kCatalog);
         const std::size_t total = entries.size() * meshes.size();
         std::ofstream tsv(std::filesystem::path(outDir) / "catalogue.tsv");
         tsv << "file\tshader\tvariant\tmesh\tseconds\n";
@@ -111,7 +60,7 @@ int main(int argc, char** argv) {
         for (const auto& entry : entries) {
             for (const auto& meshName : meshes) {
                 const auto start = std::chrono::steady_clock::now();
-                const auto job = galleryJob(entry, meshName, size);
+                const auto job = prism::render::galleryJob(entry, meshName, size);
                 auto image = prism::render::renderImage8(cache, job);
                 const auto path = std::filesystem::path(outDir) / (entry.fileStem + "-" + meshName + ".png");
                 prism::image::writePng(path, image);

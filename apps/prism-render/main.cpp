@@ -1,7 +1,7 @@
 // prism-render: renders one catalogue shader on one mesh, or a JSON scene
 // (--scene FILE.json, docs/scenes.md), into a PNG, headlessly.
 //   prism-render --shader phong --mesh torus --subdiv 3 --shininess 64
-//                --light-dir -1,-1,-1 --size 512x512 --out phong.png [--backend egl or osmesa]
+//                --light-dir -1,-1,-1 --size 512x512 --out phong.png [--backend egl, osmesa or vulkan]
 //   prism-render --scene examples/scenes/soft_shadows.json --spp 1 --sampler sorted --frames 8 --out s.png
 // --spp, --sampler, --frame and --frames override the scene's "stochastic" settings (a
 // usage error for a scene without them): --frame K renders frame K of the sequence,
@@ -12,6 +12,9 @@
 // the CPU: no flag is silently ignored.
 // --check-finite renders to RGBA32F and exits 3, printing the count, if any pixel is
 // NaN or Inf. Bad input exits 2 with a message and writes no image.
+// --backend vulkan (or PRISM_GL_BACKEND=vulkan without --backend) draws the catalogue's
+// SPIR-V through prism::vk (docs/vulkan.md); a scene with a system that has no Vulkan path
+// exits 2 naming it.
 #include <CLI/CLI.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -28,6 +31,8 @@
 #include "prism/scene/scene_renderer.hpp"
 #include "prism/scene/stochastic.hpp"
 #include "prism/render/shader_meshes.hpp"
+#include "prism/render/vulkan_render.hpp"
+#include "prism/scene/vulkan_scene.hpp"
 #include "prism/shaders.hpp"
 
 namespace {
@@ -61,12 +66,25 @@ int badInput(const std::string& message) {
     return kExitBadInput;
 }
 
+// --backend, else PRISM_GL_BACKEND (createContext's own choice), else nullopt: EGL, then OSMesa.
 std::optional<prism::gl::Backend> backendOf(const Arguments& a, bool& ok) {
     ok = true;
-    if (a.backend.empty()) return std::nullopt;
+    if (a.backend.empty()) {
+        try {
+            return prism::gl::backendFromEnvironment();
+        } catch (const prism::gl::ContextError&) {
+            return std::nullopt;  // createContext() reports the bad value as it always has
+        }
+    }
     auto backend = prism::gl::parseBackend(a.backend);
     ok = backend && *backend != prism::gl::Backend::Glfw;
     return backend;
+}
+
+constexpr const char* kBackends = "expected egl, osmesa or vulkan";
+
+bool isVulkan(std::optional<prism::gl::Backend> backend) {
+    return backend == prism::gl::Backend::Vulkan;
 }
 
 // Each stage below returns the exit code when the program must stop, nullopt to go on.
@@ -151,7 +169,36 @@ int writeStochasticScene(const Arguments& a, const prism::scene::Scene& scene) {
     return kExitOk;
 }
 
+// Runs a Vulkan draw: bad input (a bad name or variant, a scene system without a Vulkan
+// path) exits 2, any other failure (no Vulkan driver) 1.
+template <class Draw>
+int guardedVulkan(const Draw& draw) {
+    try {
+        draw();
+    } catch (const std::invalid_argument& e) {  // also UnknownShaderError
+        return badInput(e.what());
+    } catch (const prism::scene::SceneError& e) {
+        return badInput(e.what());
+    } catch (const std::exception& e) {
+        std::cerr << "prism-render: error: " << e.what() << "\n";
+        return kExitFailure;
+    }
+    return kExitOk;
+}
+
+// A scene through Vulkan; a system without a Vulkan path is bad input.
+int drawSceneVulkan(const Arguments& a, const prism::scene::Scene& scene) {
+    return guardedVulkan([&] {
+        const prism::render::VulkanFrame frame = prism::scene::vulkanFrameOf(scene);
+        prism::render::VulkanRenderer vulkan(prism::shaders::kCatalog);
+        prism::image::writePng(a.out, vulkan.render(frame));
+        std::cout << "prism-render: wrote " << a.out << " (vulkan on " << vulkan.device().name() << ", "
+                  << frame.draws.size() << " draws, " << vulkan.pipelineCount() << " pipelines)\n";
+    });
+}
+
 int drawScene(const Arguments& a, const prism::scene::Scene& scene, std::optional<prism::gl::Backend> backend) {
+    if (isVulkan(backend)) return drawSceneVulkan(a, scene);
     try {
         auto context = backend ? prism::gl::createContext(*backend) : prism::gl::createContext();
         prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
@@ -175,7 +222,7 @@ int renderScene(const Arguments& a) {
     if (const Stop stop = checkSceneFlags(a)) return *stop;
     bool backendOk = true;
     auto backend = backendOf(a, backendOk);
-    if (!backendOk) return badInput("--backend " + a.backend + ": expected egl or osmesa");
+    if (!backendOk) return badInput("--backend " + a.backend + ": " + kBackends);
     prism::scene::Scene scene;
     if (const Stop stop = loadScene(a, scene)) return *stop;
     if (const Stop stop = applyStochasticFlags(a, scene)) return *stop;
@@ -200,7 +247,7 @@ Stop parseArguments(int argc, char** argv, Arguments& a) {
     app.add_option("--scale", a.scale, "world scale x,y,z")->capture_default_str();
     app.add_option("--size", a.size, "image size WxH")->capture_default_str();
     app.add_option("--out", a.out, "output PNG");
-    app.add_option("--backend", a.backend, "egl|osmesa (default: egl, else osmesa)");
+    app.add_option("--backend", a.backend, "egl|osmesa|vulkan (default: PRISM_GL_BACKEND, else egl, else osmesa)");
     using prism::scene::kMaxStochasticFrame, prism::scene::kMaxStochasticFrames, prism::scene::kMaxStochasticSpp;
     app.add_option("--spp", a.spp, "with --scene: samples per pixel of its stochastic effect")
         ->check(CLI::Range(1, static_cast<int>(kMaxStochasticSpp)));
@@ -266,8 +313,19 @@ Stop catalogueJob(const Arguments& a, prism::render::RenderJob& job) {
     return std::nullopt;
 }
 
+// The catalogue render through Vulkan, from the catalogue's SPIR-V.
+int drawCatalogueVulkan(const Arguments& a, const prism::render::RenderJob& job) {
+    if (a.checkFinite) return badInput("--check-finite renders RGBA32F through GL; use --backend egl or osmesa");
+    return guardedVulkan([&] {
+        prism::render::VulkanRenderer vulkan(prism::shaders::kCatalog);
+        prism::image::writePng(a.out, vulkan.render(job));
+        std::cout << "prism-render: wrote " << a.out << " (vulkan on " << vulkan.device().name() << ")\n";
+    });
+}
+
 // The catalogue render: RGBA8, or RGBA32F checked for NaN and Inf with --check-finite.
 int drawCatalogue(const Arguments& a, const prism::render::RenderJob& job, std::optional<prism::gl::Backend> backend) {
+    if (isVulkan(backend)) return drawCatalogueVulkan(a, job);
     try {
         auto context = backend ? prism::gl::createContext(*backend) : prism::gl::createContext();
         prism::render::ProgramCache cache(prism::shaders::kCatalog);
@@ -300,7 +358,7 @@ int renderCatalogue(const Arguments& a) {
     if (const Stop stop = catalogueJob(a, job)) return *stop;
     bool backendOk = true;
     const auto backend = backendOf(a, backendOk);
-    if (!backendOk) return badInput("--backend " + a.backend + ": expected egl or osmesa");
+    if (!backendOk) return badInput("--backend " + a.backend + ": " + kBackends);
     try {
         job.mesh = prism::render::meshForShader(a.shader, prism::render::namedMesh(a.mesh, a.subdiv));
     } catch (const prism::geometry::ObjLoadError& e) {

@@ -1,5 +1,5 @@
 // Flags are never silently ignored (issue 15): every app (prism-render, prism-gallery,
-// prism-bluenoise, prism-diffraction, prism-rain, water, custom_flat_from_modules) runs with
+// prism-agreement, prism-bluenoise, prism-diffraction, prism-rain, water, custom_flat_from_modules) runs with
 // flags its mode would not use, and must exit 2 with a message naming the flag, writing
 // nothing; and with the modes that do use them, and must write its files. Each case is one
 // test. EveryHelpFlagHasACase reads each program's (and subcommand's) --help and fails when
@@ -171,6 +171,10 @@ const Row kRows[] = {
      "{D}"}, 2, "error:", {}, ""},
     {"water_rejects_fog_billboards_nan", "water", {"--grid", "32", "--steps", "20", "--fog", "0.01", "--fog-billboards",
      "nan", "--out", "{D}"}, 2, "error:", {}, ""},
+    {"prism_agreement_writes_its_table", "prism-agreement", {"--out", "{D}", "--size", "16"}, 0, "",
+     {"{D}/agreement.tsv", "{D}/agreement-pair.png"}, ""},
+    {"prism_agreement_rejects_size_8", "prism-agreement", {"--out", "{D}", "--size", "8"}, 2, "--size", {}, ""},
+    {"prism_agreement_rejects_bogus", "prism-agreement", {"--out", "{D}", "--bogus"}, 2, "--bogus", {}, ""},
 };
 // clang-format on
 

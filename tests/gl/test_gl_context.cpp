@@ -47,10 +47,22 @@ TEST(ContextNames, ParseAndPrint) {
     EXPECT_EQ(prism::gl::parseBackend("egl"), Backend::Egl);
     EXPECT_EQ(prism::gl::parseBackend("OSMesa"), Backend::OsMesa);
     EXPECT_EQ(prism::gl::parseBackend("glfw"), Backend::Glfw);
-    EXPECT_EQ(prism::gl::parseBackend("vulkan"), std::nullopt);
+    EXPECT_EQ(prism::gl::parseBackend("Vulkan"), Backend::Vulkan);  // prism-render draws it through prism::vk
+    EXPECT_EQ(prism::gl::parseBackend("metal"), std::nullopt);
     EXPECT_EQ(prism::gl::parseBackend(""), std::nullopt);
-    for (Backend b : {Backend::Egl, Backend::OsMesa, Backend::Glfw})
+    for (Backend b : {Backend::Egl, Backend::OsMesa, Backend::Glfw, Backend::Vulkan})
         EXPECT_EQ(prism::gl::parseBackend(prism::gl::backendName(b)), b);
+}
+
+// Vulkan is a name a program reads to draw through prism::vk; it makes no GL context.
+TEST(ContextNames, VulkanMakesNoGlContextAndSaysWhereItDraws) {
+    try {
+        prism::gl::createContext(Backend::Vulkan);
+        FAIL() << "a GL context was made for the vulkan backend";
+    } catch (const ContextError& e) {
+        EXPECT_NE(std::string(e.what()).find("prism-render --backend vulkan"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(prism::gl::isBackendCompiledIn(Backend::Vulkan));
 }
 
 TEST(ContextNames, EnvironmentOverride) {
@@ -69,7 +81,7 @@ TEST(ContextNames, EnvironmentOverride) {
             FAIL() << "a bad PRISM_GL_BACKEND was accepted";
         } catch (const ContextError& e) {
             EXPECT_NE(std::string(e.what()).find("PRISM_GL_BACKEND='directx'"), std::string::npos) << e.what();
-            EXPECT_NE(std::string(e.what()).find("egl, osmesa or glfw"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("egl, osmesa, glfw or vulkan"), std::string::npos) << e.what();
         }
     }
 }

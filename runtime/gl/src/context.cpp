@@ -32,6 +32,7 @@ std::string_view backendName(Backend backend) {
         case Backend::Egl: return "egl";
         case Backend::OsMesa: return "osmesa";
         case Backend::Glfw: return "glfw";
+        case Backend::Vulkan: return "vulkan";
     }
     return "?";
 }
@@ -39,7 +40,7 @@ std::string_view backendName(Backend backend) {
 std::optional<Backend> parseBackend(std::string_view name) {
     std::string lower;
     for (char c : name) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    for (Backend b : {Backend::Egl, Backend::OsMesa, Backend::Glfw})
+    for (Backend b : {Backend::Egl, Backend::OsMesa, Backend::Glfw, Backend::Vulkan})
         if (lower == backendName(b)) return b;
     return std::nullopt;
 }
@@ -49,7 +50,7 @@ std::optional<Backend> backendFromEnvironment() {
     if (!value || !*value) return std::nullopt;
     if (auto b = parseBackend(value)) return b;
     throw ContextError("prism: PRISM_GL_BACKEND='" + std::string(value) +
-                       "' is not a backend; use egl, osmesa or glfw (or unset it)");
+                       "' is not a backend; use egl, osmesa, glfw or vulkan (or unset it)");
 }
 
 bool isBackendCompiledIn(Backend backend) {
@@ -92,6 +93,11 @@ std::unique_ptr<Context> createContext(Backend backend, const ContextOptions& op
             throwNotCompiledIn(backend, "libglfw3-dev");
 #endif
             break;
+        case Backend::Vulkan:
+            throw ContextError(
+                "prism: the vulkan backend draws through Vulkan and makes no GL context (prism-render "
+                "--backend vulkan, prism::render::VulkanRenderer; docs/vulkan.md); this program needs GL: use egl "
+                "or osmesa");
     }
     const detail::CurrentGlInfo gl = detail::queryCurrentGlInfo();
     ctx->info_.backend = backend;

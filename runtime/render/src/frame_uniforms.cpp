@@ -1,4 +1,5 @@
-// The contract's uniforms from camera, lights, world matrix and material.
+// The contract's uniforms from camera, lights, world matrix and material, for a GL program
+// or a Vulkan uniform block: one template, so both APIs get the same values.
 #include "prism/render/frame_uniforms.hpp"
 
 #include <glm/mat3x3.hpp>
@@ -16,15 +17,16 @@ namespace {
 namespace contract = shaders::contract;
 
 // The number of elements of a uniform array (the program answers to a[0]..a[n-1]).
-int capacityOf(const gl::Program& p, std::string_view arrayName) {
+template <class Target>
+int capacityOf(const Target& p, std::string_view arrayName) {
     int n = 0;
     while (n < 1024 && p.hasUniform(std::string(arrayName) + "[" + std::to_string(n) + "]")) ++n;
     return n;
 }
 
 // One kind of light: its count and two arrays of vec3 (direction or position, colour).
-template <class Count, class Array>
-void setLightArray(gl::Program& p, const Count& count, const Array& firstArray, const Array& secondArray,
+template <class Target, class Count, class Array>
+void setLightArray(Target& p, const Count& count, const Array& firstArray, const Array& secondArray,
                    const std::vector<glm::vec3>& first, const std::vector<glm::vec3>& second) {
     if (!p.hasUniform(count.name)) return;
     const int capacity = capacityOf(p, firstArray.name);
@@ -38,10 +40,10 @@ void setLightArray(gl::Program& p, const Count& count, const Array& firstArray, 
     p.set(secondArray, second);
 }
 
-}  // namespace
-
-void setFrameUniforms(gl::Program& p, const view::Camera& camera, float aspect, const view::Lights& lights,
-                      const glm::mat4& world, const view::Material& material, const view::Fog* fog) {
+// `Target` is gl::Program or vk::UniformBlock: set(handle, value), hasUniform(name), label().
+template <class Target>
+void setContractUniforms(Target& p, const view::Camera& camera, float aspect, const view::Lights& lights,
+                         const glm::mat4& world, const view::Material& material, const view::Fog* fog) {
     const glm::mat4 view = camera.view();
     p.set(contract::u_world, world);
     p.set(contract::u_view, view);
@@ -68,6 +70,18 @@ void setFrameUniforms(gl::Program& p, const view::Camera& camera, float aspect, 
                   colors);
     setLightArray(p, contract::u_pointLightCount, contract::u_pointLightPosition, contract::u_pointLightColor,
                   positions, pointColors);
+}
+
+}  // namespace
+
+void setFrameUniforms(gl::Program& program, const view::Camera& camera, float aspect, const view::Lights& lights,
+                      const glm::mat4& world, const view::Material& material, const view::Fog* fog) {
+    setContractUniforms(program, camera, aspect, lights, world, material, fog);
+}
+
+void setFrameUniforms(vk::UniformBlock& block, const view::Camera& camera, float aspect, const view::Lights& lights,
+                      const glm::mat4& world, const view::Material& material, const view::Fog* fog) {
+    setContractUniforms(block, camera, aspect, lights, world, material, fog);
 }
 
 }  // namespace prism::render

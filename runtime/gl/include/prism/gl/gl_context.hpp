@@ -21,6 +21,9 @@
 //           framebuffer (options.width x height) but render into Framebuffers anyway.
 //   Glfw    a window (libglfw3-dev). Needs an X display: on a headless machine run
 //           the program under `xvfb-run -a ./program`.
+//   Vulkan  no GL context at all: the name a program reads from --backend or
+//           PRISM_GL_BACKEND to draw through prism::vk instead (prism-render does,
+//           docs/vulkan.md); createContext(Vulkan) throws ContextError saying so.
 //
 // createContext(options) without a backend picks PRISM_GL_BACKEND (egl, osmesa or glfw)
 // when that is set, else tries EGL and falls back to OSMesa. Every failure throws
@@ -39,21 +42,22 @@
 
 namespace prism::gl {
 
-enum class Backend { Egl, OsMesa, Glfw };
+enum class Backend { Egl, OsMesa, Glfw, Vulkan };
 
 class ContextError : public std::runtime_error {
   public:
     using std::runtime_error::runtime_error;
 };
 
-// "egl", "osmesa", "glfw"
+// "egl", "osmesa", "glfw", "vulkan"
 std::string_view backendName(Backend backend);
-// Parses "egl" | "osmesa" | "glfw" (case-insensitive); nullopt for anything else.
+// Parses "egl" | "osmesa" | "glfw" | "vulkan" (case-insensitive); nullopt for anything else.
 std::optional<Backend> parseBackend(std::string_view name);
 // The backend named by PRISM_GL_BACKEND; nullopt when unset or empty. Throws
 // ContextError when it is set to something that is not a backend name.
 std::optional<Backend> backendFromEnvironment();
-// Whether this build of Prism includes `backend` (it may still fail at run time).
+// Whether this build of Prism includes `backend` as a GL context (it may still fail at run
+// time); false for Vulkan, which makes none.
 bool isBackendCompiledIn(Backend backend);
 
 struct ContextOptions {
