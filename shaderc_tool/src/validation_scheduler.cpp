@@ -5,17 +5,15 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <filesystem>
 #include <functional>
 #include <iostream>
 #include <map>
 #include <mutex>
 #include <optional>
 
-#include <glslang/Public/ShaderLang.h>
-
 #include "prism/hash/content_hash.hpp"
 #include "job_pool.hpp"
+#include "tool_identity.hpp"
 #include "validation_settings.hpp"
 
 namespace prism::shaderc {
@@ -28,25 +26,6 @@ std::vector<StageToValidate> stagesOf(const ResolvedCatalog& rc, std::size_t s, 
         stages.push_back({rc.data.shaders[s].variants[v].stages[st].stage, rc.stagePaths[s][st], resolved[st],
                           rc.data.spirvEnv, rc.data.shaders[s].name});
     return stages;
-}
-
-// What makes two builds of the tool validate alike: its version, glslang's, and this
-// executable's size and time (a rebuilt tool never trusts an older build's results).
-std::string toolIdentity() {
-    static const std::string identity = [] {
-        const auto v = glslang::GetVersion();
-        std::string id = std::string(PRISM_VERSION) + " glslang " + std::to_string(v.major) + "." +
-                         std::to_string(v.minor) + "." + std::to_string(v.patch);
-        std::error_code ec;
-        const auto exe = std::filesystem::canonical("/proc/self/exe", ec);
-        if (!ec) {
-            const auto size = std::filesystem::file_size(exe, ec);
-            const auto time = std::filesystem::last_write_time(exe, ec).time_since_epoch().count();
-            if (!ec) id += " " + std::to_string(size) + " " + std::to_string(time);
-        }
-        return id;
-    }();
-    return identity;
 }
 
 }  // namespace
