@@ -76,6 +76,17 @@ TEST(Targets, Es300RefusesAGeometryStageNamingShaderFileAndTarget) {
     EXPECT_EQ(runShaderc(scratchArgs(dir, "gl"), dir.str()).exitCode, 0);
 }
 
+TEST(Targets, Es300RefusesAComputeStageNamingShaderFileAndTarget) {
+    ScratchDir dir("targets-comp");
+    dir.write("sh/blur.comp", "// blur\n#version 430 core\nlayout(local_size_x = 8) in;\nvoid main() {}\n");
+    dir.write("mods/.keep.glsl", "// nothing\n");
+    const auto run = runShaderc(scratchArgs(dir, "gl,es300"), dir.str());
+    EXPECT_EQ(run.exitCode, 1) << run.output;
+    EXPECT_NE(run.output.find("sh/blur.comp: error: shader 'blur' has a compute stage, which es300"), std::string::npos)
+        << run.output;
+    EXPECT_EQ(runShaderc(scratchArgs(dir, "gl,spirv"), dir.str()).exitCode, 0);
+}
+
 TEST(Targets, PragmaLeavesTheShaderOutOfEs300AndKeepsItForGl) {
     ScratchDir dir("targets-pragma");
     writeGeometryShader(dir, "#pragma prism targets gl spirv");
