@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <iostream>
 #include <sstream>
 
 #include "es300_limits.hpp"
@@ -95,6 +96,14 @@ std::vector<Diagnostic> validateOne(ResolvedCatalog& rc, const EsProgram& p, con
     return std::move(result.diagnostics);
 }
 
+// --stats: how much of the es300 validation was shared, as for gl.
+void printEs300Stats(const std::vector<std::size_t>& representatives, std::size_t stagesParsed) {
+    std::size_t shared = 0;
+    for (std::size_t i = 0; i < representatives.size(); ++i) shared += representatives[i] != i;
+    std::cerr << "prism-shaderc: es300: validated " << representatives.size() << " programs (" << shared
+              << " shared a token stream; " << stagesParsed << " stages parsed)\n";
+}
+
 }  // namespace
 
 std::vector<Diagnostic> validateEs300(const Options& o, ResolvedCatalog& rc, const Contract& contract) {
@@ -113,7 +122,7 @@ std::vector<Diagnostic> validateEs300(const Options& o, ResolvedCatalog& rc, con
     for (std::size_t i = 0; i < programs.size(); ++i)
         if (representatives[i] == i) lists[i] = es300Stages(rc, programs[i]);
     SharedStageParses parses(lists);
-    return runOncePerTokenKey(
+    auto diagnostics = runOncePerTokenKey(
         representatives, o.jobs,
         [&](std::size_t i) {
             if (representatives[i] == i) return validateOne(rc, programs[i], contract, lists[i], &parses, i);
@@ -123,6 +132,8 @@ std::vector<Diagnostic> validateEs300(const Options& o, ResolvedCatalog& rc, con
             rc.data.shaders[programs[to].first].variants[programs[to].second].es300 =
                 rc.data.shaders[programs[from].first].variants[programs[from].second].es300;
         });
+    if (o.printStats && !programs.empty()) printEs300Stats(representatives, parses.parsed());
+    return diagnostics;
 }
 
 }  // namespace prism::shaderc

@@ -35,7 +35,10 @@ SharedStageParses::~SharedStageParses() = default;
 std::vector<std::shared_ptr<CompiledStage>> SharedStageParses::acquire(std::size_t program) {
     std::vector<std::shared_ptr<CompiledStage>> stages;
     for (const auto k : refs_[program]) {
-        std::call_once(slots_[k].parsed, [&] { slots_[k].compiled = compileStage(*distinct_[k]); });
+        std::call_once(slots_[k].parsed, [&] {
+            slots_[k].compiled = compileStage(*distinct_[k]);
+            ++parsed_;
+        });
         stages.push_back(slots_[k].compiled);
     }
     return stages;
@@ -48,6 +51,10 @@ void SharedStageParses::release(std::size_t program) {
 
 std::size_t SharedStageParses::distinct() const {
     return distinct_.size();
+}
+
+std::size_t SharedStageParses::parsed() const {
+    return parsed_;
 }
 
 }  // namespace prism::shaderc

@@ -13,6 +13,7 @@
 //   });
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <memory>
 #include <vector>
@@ -34,12 +35,14 @@ class SharedStageParses {
     void release(std::size_t program);
 
     std::size_t distinct() const;  // distinct stages among the lists
+    std::size_t parsed() const;    // glslang parses run so far (at most distinct())
 
   private:
     struct Slot;
     std::vector<const StageToValidate*> distinct_;  // points into lists_
     std::vector<std::vector<std::size_t>> refs_;    // [program]: indices into distinct_ and slots_
     std::unique_ptr<Slot[]> slots_;
+    std::atomic<std::size_t> parsed_{0};
 };
 
 }  // namespace prism::shaderc

@@ -158,6 +158,24 @@ TEST(Targets, EsOnlyErrorsAreReportedAtTheModuleLine) {
     EXPECT_NE(run.output.find("for target es300 (GLSL ES 3.00) in program 'ivary'"), std::string::npos) << run.output;
 }
 
+// es300 parses each distinct stage once, as gl does (shared_stage_parses.hpp): two variants
+// that differ in the fragment stage only parse the vertex stage once, 3 parses for 4 stages.
+TEST(Targets, Es300ParsesEachDistinctStageOnce) {
+    ScratchDir dir("targets-es-shared");
+    dir.write("sh/fog.vert",
+              "// fog\n#version 330 core\nin vec3 a_position;\n"
+              "void main() { gl_Position = vec4(a_position, 1.0); }\n");
+    dir.write("sh/fog.frag",
+              "// fog: two variants\n#version 330 core\n#pragma prism variant FOG 0 1\nout vec4 o_color;\n"
+              "void main() { o_color = vec4(float(FOG)); }\n");
+    dir.write("mods/.keep.glsl", "// nothing\n");
+    const auto run = runShaderc(scratchArgs(dir, "gl,es300") + " --stats", dir.str());
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("es300: validated 2 programs (0 shared a token stream; 3 stages parsed)"),
+              std::string::npos)
+        << run.output;
+}
+
 TEST(Targets, PackingRuleOfTheEsSpec) {
     EXPECT_EQ(packedRows({{4, 4, 1}}), 4);                     // mat4
     EXPECT_EQ(packedRows({{1, 3, 2}, {1, 1, 2}}), 2);          // two vec3 rows take two floats
