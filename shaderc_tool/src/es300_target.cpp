@@ -5,10 +5,12 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <iostream>
 #include <sstream>
 
 #include "es300_limits.hpp"
 #include "shader_targets.hpp"
+#include "shared_stage_parses.hpp"
 #include "validation_scheduler.hpp"
 #include "validator.hpp"
 
@@ -65,19 +67,41 @@ namespace {
 
 using EsProgram = std::pair<std::size_t, std::size_t>;  // shader, variant
 
-std::vector<Diagnostic> validateOne(ResolvedCatalog& rc, const EsProgram& p, const Contract& contract) {
+std::vector<StageToValidate> es300Stages(const ResolvedCatalog& rc, const EsProgram& p) {
     std::vector<StageToValidate> stages;
     const auto& resolved = rc.resolved[p.first][p.second];
     for (std::size_t st = 0; st < resolved.size(); ++st)
         stages.push_back({rc.data.shaders[p.first].variants[p.second].stages[st].stage, rc.stagePaths[p.first][st],
                           es300Stage(resolved[st])});
+    return stages;
+}
+
+// A program's first run takes the shared parses of its stages; a message, or a program
+// that runs again for its own lines, means a run on private ones (as for gl).
+std::vector<Diagnostic> validateOne(ResolvedCatalog& rc, const EsProgram& p, const Contract& contract,
+                                    const std::vector<StageToValidate>& stages, SharedStageParses* shared,
+                                    std::size_t index) {
     const std::string program = targetProgramName(rc, p.first, p.second);
-    auto result = validateProgram(stages, contract, es300LimitsCheck(program, stages.front().path));
+    const auto limits = es300LimitsCheck(program, stages.front().path);
+    ValidatedVariant result;
+    if (shared) {
+        result = validateCompiledProgram(stages, shared->acquire(index), contract, limits);
+        shared->release(index);
+    }
+    if (!shared || !result.diagnostics.empty()) result = validateProgram(stages, contract, limits);
     noteTarget(result.diagnostics,
                "for target es300 (GLSL ES 3.00) in program " + program +
                    "; `#pragma prism targets gl spirv` in a stage file leaves a shader out of es300");
     rc.data.shaders[p.first].variants[p.second].es300 = result.ok;
     return std::move(result.diagnostics);
+}
+
+// --stats: how much of the es300 validation was shared, as for gl.
+void printEs300Stats(const std::vector<std::size_t>& representatives, std::size_t stagesParsed) {
+    std::size_t shared = 0;
+    for (std::size_t i = 0; i < representatives.size(); ++i) shared += representatives[i] != i;
+    std::cerr << "prism-shaderc: es300: validated " << representatives.size() << " programs (" << shared
+              << " shared a token stream; " << stagesParsed << " stages parsed)\n";
 }
 
 }  // namespace
@@ -93,12 +117,23 @@ std::vector<Diagnostic> validateEs300(const Options& o, ResolvedCatalog& rc, con
                         [](const CatalogStage& st) { return targetRunsStage(Target::Es300, st.stage); });
         for (std::size_t v = 0; runnable && v < variants.size(); ++v) programs.emplace_back(s, v);
     }
-    return runOncePerTokenKey(
-        rc, contract, programs, o.jobs, [&](std::size_t i) { return validateOne(rc, programs[i], contract); },
+    const auto representatives = tokenRepresentatives(rc, contract, programs);
+    std::vector<std::vector<StageToValidate>> lists(programs.size());  // the representatives' stages
+    for (std::size_t i = 0; i < programs.size(); ++i)
+        if (representatives[i] == i) lists[i] = es300Stages(rc, programs[i]);
+    SharedStageParses parses(lists);
+    auto diagnostics = runOncePerTokenKey(
+        representatives, o.jobs,
+        [&](std::size_t i) {
+            if (representatives[i] == i) return validateOne(rc, programs[i], contract, lists[i], &parses, i);
+            return validateOne(rc, programs[i], contract, es300Stages(rc, programs[i]), nullptr, i);  // own lines
+        },
         [&](std::size_t from, std::size_t to) {
             rc.data.shaders[programs[to].first].variants[programs[to].second].es300 =
                 rc.data.shaders[programs[from].first].variants[programs[from].second].es300;
         });
+    if (o.printStats && !programs.empty()) printEs300Stats(representatives, parses.parsed());
+    return diagnostics;
 }
 
 }  // namespace prism::shaderc

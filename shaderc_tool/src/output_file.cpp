@@ -63,19 +63,11 @@ WriteOutcome writeIfChanged(const std::string& path, const std::string& content,
     return WriteOutcome::Written;
 }
 
-bool touchFile(const std::string& path, std::string& error) {
+bool touchFile(const std::string& path, const std::string& content, std::string& error) {
+    const auto outcome = writeIfChanged(path, content, error);
+    if (outcome != WriteOutcome::Unchanged) return outcome == WriteOutcome::Written;
     std::error_code ec;
-    fs::path target(path);
-    if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
-    if (!fs::exists(target, ec)) {
-        std::ofstream out(target);
-        if (!out) {
-            error = path + ": cannot create stamp file";
-            return false;
-        }
-        return true;
-    }
-    fs::last_write_time(target, fs::file_time_type::clock::now(), ec);
+    fs::last_write_time(path, fs::file_time_type::clock::now(), ec);
     if (ec) {
         error = path + ": cannot update the time stamp (" + ec.message() + ")";
         return false;

@@ -19,7 +19,8 @@ WriteOutcome writeIfChanged(const std::string& path, const std::string& content,
 // process no longer exists); a live writer's temp file is kept.
 void removeStaleTemps(const std::filesystem::path& path);
 
-// Sets the modification time of `path` to now, creating it empty if needed.
-bool touchFile(const std::string& path, std::string& error);
+// Makes `path` hold `content` with the modification time now, whether or not it held it
+// before (a build system's stamp must be newer than the inputs that made it run).
+bool touchFile(const std::string& path, const std::string& content, std::string& error);
 
 }  // namespace prism::shaderc

@@ -8,6 +8,7 @@
 #include "glsl_emitter.hpp"
 #include "header_writer.hpp"
 #include "output_file.hpp"
+#include "tool_identity.hpp"
 #include "shader_targets.hpp"
 #include "web_writer.hpp"
 
@@ -47,7 +48,7 @@ std::string writeBuildSystemFiles(const Options& o, const std::vector<std::strin
     if (!o.depfile.empty() && !target.empty() &&
         writeIfChanged(o.depfile, makeDepfile(target, filesRead), error) == WriteOutcome::Failed)
         return error;
-    if (!o.stamp.empty() && !touchFile(o.stamp, error)) return error;
+    if (!o.stamp.empty() && !touchFile(o.stamp, stampText(), error)) return error;
     return {};
 }
 

@@ -12,6 +12,7 @@
 #include "program_declarations.hpp"
 #include "shader_inputs.hpp"
 #include "shown_path.hpp"
+#include "tool_identity.hpp"
 
 namespace prism::shaderc {
 namespace {
@@ -43,7 +44,9 @@ std::string fingerprintOf(const Options& o, const std::vector<std::string>& embe
     hash::ContentHash h;
     h.add(PRISM_VERSION);
     h.add(format::kLayoutVersion);
-    if (key == ContentKey::Code) h.add("code signatures");  // never equal to a text record
+    // A code record lives in the cache directory, not in an output, so it can name the build
+    // that checked (tool_identity.hpp); a text record is in the data file, which must not.
+    if (key == ContentKey::Code) h.add("code signatures").add(toolIdentity());  // never equal to a text record
     // Only the options that change the generated files, with paths as embedded (never
     // --depfile, --stamp, --emit-glsl, -j or the error format).
     const auto shown = [&](const std::string& dir) { return recordedName(dir, o); };

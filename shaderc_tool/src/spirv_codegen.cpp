@@ -7,6 +7,11 @@
 #include <array>
 #include <map>
 #include <memory>
+#include <mutex>
+#include <set>
+#include <string_view>
+
+#include "prism/hash/content_hash.hpp"
 
 namespace prism::shaderc {
 namespace {
@@ -99,8 +104,45 @@ spvtools::SpirvTools& toolsFor(SpirvEnv env) {
 
 }  // namespace
 
+namespace {
+
+// The modules SPIRV-Tools accepted in this process, by their words' content hash and the
+// environment. Programs of a catalogue often compile a stage to the same words (variants
+// whose axis only the other stage reads), and the validator's result depends on the words
+// and the environment alone; a rejected module is not kept, so its messages are its own.
+class AcceptedModules {
+  public:
+    static std::string keyOf(std::span<const std::uint32_t> words, SpirvEnv env) {
+        hash::ContentHash key;
+        key.add(spirvEnvName(env))
+            .addBytes(std::string_view(reinterpret_cast<const char*>(words.data()), words.size_bytes()));
+        return key.hex();
+    }
+    bool contains(const std::string& key) const {
+        const std::lock_guard lock(mutex_);
+        return keys_.count(key) != 0;
+    }
+    void add(std::string key) {
+        const std::lock_guard lock(mutex_);
+        keys_.insert(std::move(key));
+    }
+
+  private:
+    mutable std::mutex mutex_;
+    std::set<std::string> keys_;
+};
+
+AcceptedModules& acceptedModules() {
+    static AcceptedModules accepted;
+    return accepted;
+}
+
+}  // namespace
+
 std::vector<Diagnostic> validateSpirv(std::span<const std::uint32_t> words, SpirvEnv env, const std::string& file,
                                       const std::string& what) {
+    const std::string key = AcceptedModules::keyOf(words, env);
+    if (acceptedModules().contains(key)) return {};
     std::vector<Diagnostic> out;
     auto& tools = toolsFor(env);
     tools.SetMessageConsumer([&](spv_message_level_t, const char*, const spv_position_t&, const char* message) {
@@ -111,6 +153,7 @@ std::vector<Diagnostic> validateSpirv(std::span<const std::uint32_t> words, Spir
     const bool valid = tools.Validate(words.data(), words.size());
     tools.SetMessageConsumer(nullptr);  // it refers to `out`, which ends here
     if (!valid && out.empty()) out.push_back(makeError(file, 0, 0, "SPIRV-Tools rejected the SPIR-V of " + what));
+    if (valid && out.empty()) acceptedModules().add(key);
     return out;
 }
 

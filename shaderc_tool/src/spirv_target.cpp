@@ -32,7 +32,7 @@ std::vector<Diagnostic> buildSpirvTarget(const Options& o, ResolvedCatalog& rc, 
         rc.data.shaders[programs[to].first].variants[programs[to].second].spirv =
             rc.data.shaders[programs[from].first].variants[programs[from].second].spirv;
     };
-    return runOncePerTokenKey(rc, contract, programs, o.jobs, run, share);
+    return runOncePerTokenKey(tokenRepresentatives(rc, contract, programs), o.jobs, run, share);
 }
 
 }  // namespace prism::shaderc

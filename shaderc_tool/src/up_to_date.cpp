@@ -10,6 +10,7 @@
 #include "generated_format.hpp"
 #include "output_file.hpp"
 #include "source_fingerprint.hpp"
+#include "tool_identity.hpp"
 
 namespace prism::shaderc {
 namespace {
@@ -39,6 +40,13 @@ bool writesHeaderOnly(const Options& o) {
     return !o.checkOnly && !o.output.empty() && o.emitGlslDir.empty() && o.emitSpirvDir.empty() && o.emitWeb.empty();
 }
 
+// The outputs on disk were written by this build of the tool: a rebuilt prism-shaderc must
+// not trust what an older build generated. Its identity is in the stamp (tool_identity.hpp),
+// not in the outputs; a run without --stamp (by hand) has only the outputs to go by.
+bool writtenByThisTool(const Options& o) {
+    return o.stamp.empty() || readWholeFile(o.stamp) == stampText();
+}
+
 void removeStaleOutputTemps(const Options& o) {  // nothing to write, but a killed run may have left temp files
     removeStaleTemps(o.output);
     removeStaleTemps(dataPathFor(o.output));
@@ -47,7 +55,7 @@ void removeStaleOutputTemps(const Options& o) {  // nothing to write, but a kill
 }  // namespace
 
 std::optional<Unchanged> unchangedBeforeResolution(const Options& o, const SourceReader& reader) {
-    if (writesHeaderOnly(o))
+    if (writesHeaderOnly(o) && writtenByThisTool(o))
         if (const auto record = readRecord(dataPathFor(o.output)); headerMatchesData(readWholeFile(o.output), record))
             if (auto files = unchangedSources(o, record, reader)) {
                 removeStaleOutputTemps(o);
@@ -70,7 +78,7 @@ void fillRecords(const Options& o, ResolvedCatalog& catalog, const SourceReader&
 // between the two leaves a stale record that the next run does not trust.
 // The header must be the one the data file records (not deleted, edited or left stale).
 bool outputsAreCurrent(const Options& o, const ResolvedCatalog& catalog) {
-    if (!writesHeaderOnly(o)) return false;
+    if (!writesHeaderOnly(o) || !writtenByThisTool(o)) return false;
     const auto data = readWholeFile(dataPathFor(o.output));
     if (!headerMatchesData(readWholeFile(o.output), data) || recordedFingerprint(data) != catalog.data.fingerprint)
         return false;

@@ -17,6 +17,9 @@
 //      would be the same.
 //   4. The validation cache (validation_cache.hpp), asked inside stage 5 for each program
 //      and not for the run: a program whose token stream passed before is not validated.
+// Records 1 and 2 answer only for the build of the tool that wrote them (tool_identity.hpp):
+// record 2 names it, and with --stamp the stamp names the build that wrote the outputs
+// (records 1 and 3), so a rebuilt prism-shaderc regenerates what an older one left.
 // When 1, 2 or 3 answers, only the depfile and stamp are written (stage 6).
 //
 //   if (auto unchanged = unchangedBeforeResolution(options, reader)) return write(unchanged->filesRead);

@@ -3,19 +3,16 @@
 #include "validation_scheduler.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
-#include <filesystem>
 #include <functional>
 #include <iostream>
 #include <map>
-#include <mutex>
 #include <optional>
-
-#include <glslang/Public/ShaderLang.h>
 
 #include "prism/hash/content_hash.hpp"
 #include "job_pool.hpp"
+#include "shared_stage_parses.hpp"
+#include "tool_identity.hpp"
 #include "validation_settings.hpp"
 
 namespace prism::shaderc {
@@ -28,25 +25,6 @@ std::vector<StageToValidate> stagesOf(const ResolvedCatalog& rc, std::size_t s, 
         stages.push_back({rc.data.shaders[s].variants[v].stages[st].stage, rc.stagePaths[s][st], resolved[st],
                           rc.data.spirvEnv, rc.data.shaders[s].name});
     return stages;
-}
-
-// What makes two builds of the tool validate alike: its version, glslang's, and this
-// executable's size and time (a rebuilt tool never trusts an older build's results).
-std::string toolIdentity() {
-    static const std::string identity = [] {
-        const auto v = glslang::GetVersion();
-        std::string id = std::string(PRISM_VERSION) + " glslang " + std::to_string(v.major) + "." +
-                         std::to_string(v.minor) + "." + std::to_string(v.patch);
-        std::error_code ec;
-        const auto exe = std::filesystem::canonical("/proc/self/exe", ec);
-        if (!ec) {
-            const auto size = std::filesystem::file_size(exe, ec);
-            const auto time = std::filesystem::last_write_time(exe, ec).time_since_epoch().count();
-            if (!ec) id += " " + std::to_string(size) + " " + std::to_string(time);
-        }
-        return id;
-    }();
-    return identity;
 }
 
 }  // namespace
@@ -123,64 +101,30 @@ std::vector<std::size_t> lookUpGroups(const std::vector<Program>& programs, Grou
     return toValidate;
 }
 
-// Phase 4: each distinct stage (kind, #version, token stream) of the groups to validate,
-// and which of them each group's program uses.
-struct StagePlan {
-    std::vector<std::vector<StageToValidate>> lists;  // [i]: the stages of group toValidate[i]
-    std::vector<const StageToValidate*> distinct;     // points into `lists`
-    std::vector<std::vector<std::size_t>> refs;       // [i]: indices into `distinct`
-};
-
-StagePlan planStages(const ResolvedCatalog& rc, const std::vector<Program>& programs, const Groups& groups,
-                     const std::vector<std::size_t>& toValidate) {
-    StagePlan plan;
-    plan.lists.resize(toValidate.size());
-    plan.refs.resize(toValidate.size());
+// Phase 4: the stages of each group to validate ([i]: group toValidate[i]'s).
+std::vector<std::vector<StageToValidate>> stageLists(const ResolvedCatalog& rc, const std::vector<Program>& programs,
+                                                     const Groups& groups, const std::vector<std::size_t>& toValidate) {
+    std::vector<std::vector<StageToValidate>> lists(toValidate.size());
     for (std::size_t i = 0; i < toValidate.size(); ++i) {
         const Program& p = programs[groups.representatives[toValidate[i]]];
-        plan.lists[i] = stagesOf(rc, p.shader, p.variant);
+        lists[i] = stagesOf(rc, p.shader, p.variant);
     }
-    std::map<std::string, std::size_t> index;
-    for (std::size_t i = 0; i < toValidate.size(); ++i)
-        for (const auto& st : plan.lists[i]) {
-            const std::string key = std::to_string(static_cast<int>(st.stage)) + " " + st.resolved.versionDirective +
-                                    " " + st.resolved.validationKey +
-                                    (st.spirvEnv ? " " + std::string(spirvEnvName(*st.spirvEnv)) : "");
-            auto [it, fresh] = index.try_emplace(key, plan.distinct.size());
-            if (fresh) plan.distinct.push_back(&st);
-            plan.refs[i].push_back(it->second);
-        }
-    return plan;
+    return lists;
 }
 
-// Phase 5: validates the groups on -j threads and stores their results. A stage is parsed
-// by the first program that needs it and freed after the last one: glslang's trees of
-// every stage at once cost more in fresh memory than the parses.
+// Phase 5: validates the groups on -j threads, each distinct stage parsed once
+// (shared_stage_parses.hpp), and stores their results.
 void validateGroups(const std::vector<Program>& programs, Groups& groups, const std::vector<std::size_t>& toValidate,
-                    const StagePlan& plan, const Contract& contract, int jobs, ValidationCache& cache) {
-    struct StageSlot {
-        std::once_flag parsed;
-        std::shared_ptr<CompiledStage> compiled;
-        std::atomic<std::size_t> users{0};
-    };
-    std::vector<StageSlot> slots(plan.distinct.size());
-    for (const auto& refs : plan.refs)
-        for (auto k : refs) ++slots[k].users;
+                    const std::vector<std::vector<StageToValidate>>& lists, SharedStageParses& parses,
+                    const Contract& contract, int jobs, ValidationCache& cache) {
     runPool(toValidate.size(), jobs, [&](std::size_t i) {
         auto& result = groups.results[toValidate[i]];
-        std::vector<std::shared_ptr<CompiledStage>> mine;
-        for (auto k : plan.refs[i]) {
-            std::call_once(slots[k].parsed, [&] { slots[k].compiled = compileStage(*plan.distinct[k]); });
-            mine.push_back(slots[k].compiled);
-        }
-        result = validateCompiledProgram(plan.lists[i], mine, contract);
+        result = validateCompiledProgram(lists[i], parses.acquire(i), contract);
+        parses.release(i);
         // Messages must speak of this program's own text, and a failed link leaves state
         // in shared stages: any message means a private run.
-        if (!result->diagnostics.empty()) result = validateProgram(plan.lists[i], contract);
+        if (!result->diagnostics.empty()) result = validateProgram(lists[i], contract);
         cache.store(programs[groups.representatives[toValidate[i]]].key, *result);
-        mine.clear();
-        for (auto k : plan.refs[i])
-            if (--slots[k].users == 0) slots[k].compiled.reset();
     });
 }
 
@@ -235,8 +179,9 @@ ValidationStats validateCatalogScheduled(ResolvedCatalog& rc, const Contract& co
     auto groups = groupByTokens(programs);
     const auto toValidate = lookUpGroups(programs, groups, cache);
     if (!toValidate.empty()) initializeValidator();
-    const auto plan = planStages(rc, programs, groups, toValidate);
-    validateGroups(programs, groups, toValidate, plan, contract, jobs, cache);
+    const auto lists = stageLists(rc, programs, groups, toValidate);
+    SharedStageParses parses(lists);
+    validateGroups(programs, groups, toValidate, lists, parses, contract, jobs, cache);
     std::vector<std::size_t> ownRuns;
     auto results = programResults(programs, groups, cache, ownRuns);
     if (!ownRuns.empty() && toValidate.empty()) initializeValidator();
@@ -252,25 +197,30 @@ ValidationStats validateCatalogScheduled(ResolvedCatalog& rc, const Contract& co
     stats.distinct = groups.representatives.size();
     stats.fromCache = groups.representatives.size() - toValidate.size();
     stats.validated = toValidate.size() + ownRuns.size();
-    stats.stagesCompiled = plan.distinct.size();
+    stats.stagesCompiled = parses.distinct();
     stats.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     reportResults(rc, programs, results, sink);
     return stats;
 }
 
-std::vector<Diagnostic> runOncePerTokenKey(const ResolvedCatalog& rc, const Contract& contract,
-                                           const std::vector<std::pair<std::size_t, std::size_t>>& programs, int jobs,
-                                           const ProgramRun& run, const ProgramShare& share) {
-    if (programs.empty()) return {};
+std::vector<std::size_t> tokenRepresentatives(const ResolvedCatalog& rc, const Contract& contract,
+                                              const std::vector<std::pair<std::size_t, std::size_t>>& programs) {
     std::vector<std::size_t> representative(programs.size());
     std::map<std::string, std::size_t> firstOfKey;
     for (std::size_t i = 0; i < programs.size(); ++i)
         representative[i] =
             firstOfKey.try_emplace(programKey(rc, contract, programs[i].first, programs[i].second).tokens, i)
                 .first->second;
-    std::vector<std::vector<Diagnostic>> found(programs.size());
+    return representative;
+}
+
+std::vector<Diagnostic> runOncePerTokenKey(const std::vector<std::size_t>& representative, int jobs,
+                                           const ProgramRun& run, const ProgramShare& share) {
+    if (representative.empty()) return {};
+    const std::size_t count = representative.size();
+    std::vector<std::vector<Diagnostic>> found(count);
     std::vector<std::size_t> own, others;
-    for (std::size_t i = 0; i < programs.size(); ++i) (representative[i] == i ? own : others).push_back(i);
+    for (std::size_t i = 0; i < count; ++i) (representative[i] == i ? own : others).push_back(i);
     initializeValidator();
     runPool(own.size(), jobs, [&](std::size_t k) { found[own[k]] = run(own[k]); });
     std::vector<std::size_t> rerun;

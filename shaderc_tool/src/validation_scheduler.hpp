@@ -46,15 +46,17 @@ Validation validateCatalog(const Options& options, ResolvedCatalog& catalog, con
 ValidationStats validateCatalogScheduled(ResolvedCatalog& catalog, const Contract& contract, int jobs,
                                          ValidationCache& cache, DiagnosticSink& sink);
 
-// The other targets' scheduling (es300_target.hpp, spirv_target.hpp): `programs` are
-// (shader, variant) pairs; the first of each token key (programKey) runs `run(i)` on -j
-// threads and the others take its clean result through `share(from, to)`. A program whose
+// The other targets' scheduling (es300_target.hpp, spirv_target.hpp). `programs` are
+// (shader, variant) pairs; tokenRepresentatives gives each the first of them with its token
+// key (programKey). runOncePerTokenKey runs `run(i)` for each representative on -j threads,
+// and the others take its clean result through `share(from, to)`. A program whose
 // representative reported anything runs itself, so every message speaks of its own lines.
 // Returns the diagnostics in `programs` order. Initialises and finalises glslang.
 using ProgramRun = std::function<std::vector<Diagnostic>(std::size_t program)>;
 using ProgramShare = std::function<void(std::size_t from, std::size_t to)>;
-std::vector<Diagnostic> runOncePerTokenKey(const ResolvedCatalog& catalog, const Contract& contract,
-                                           const std::vector<std::pair<std::size_t, std::size_t>>& programs, int jobs,
+std::vector<std::size_t> tokenRepresentatives(const ResolvedCatalog& catalog, const Contract& contract,
+                                              const std::vector<std::pair<std::size_t, std::size_t>>& programs);
+std::vector<Diagnostic> runOncePerTokenKey(const std::vector<std::size_t>& representatives, int jobs,
                                            const ProgramRun& run, const ProgramShare& share);
 
 // The content key of one variant's program (exposed for tests).

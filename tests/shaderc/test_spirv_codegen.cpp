@@ -110,5 +110,22 @@ TEST(SpirvCodegen, BrokenWordsAreAnErrorNamingTheStage) {
     EXPECT_FALSE(validateSpirv(words, SpirvEnv::Vulkan1_0, "a.vert", "program a").empty());
 }
 
+// The validator's verdict is remembered per process for accepted words only: the same
+// words in another environment are judged again, and a rejected module says so every time,
+// naming the stage that asked.
+TEST(SpirvCodegen, AnAcceptedModuleIsRememberedByItsWordsAndEnvironmentOnly) {
+    auto words = vertexWords(SpirvEnv::Vulkan1_2);
+    ASSERT_GT(words.size(), 5u);
+    EXPECT_TRUE(validateSpirv(words, SpirvEnv::Vulkan1_2, "a.vert", "program a").empty());
+    EXPECT_TRUE(validateSpirv(words, SpirvEnv::Vulkan1_2, "a.vert", "program a").empty());
+    EXPECT_FALSE(validateSpirv(words, SpirvEnv::Vulkan1_0, "a.vert", "program a").empty());
+    words[3] = 2;  // the id bound below the ids in use
+    EXPECT_FALSE(validateSpirv(words, SpirvEnv::Vulkan1_2, "a.vert", "program a").empty());
+    const auto again = validateSpirv(words, SpirvEnv::Vulkan1_2, "b.vert", "program b");
+    ASSERT_FALSE(again.empty());
+    EXPECT_EQ(again[0].file, "b.vert");
+    EXPECT_NE(again[0].message.find("program b"), std::string::npos) << again[0].message;
+}
+
 }  // namespace
 }  // namespace prism::shaderc

@@ -76,6 +76,17 @@ TEST(Targets, Es300RefusesAGeometryStageNamingShaderFileAndTarget) {
     EXPECT_EQ(runShaderc(scratchArgs(dir, "gl"), dir.str()).exitCode, 0);
 }
 
+TEST(Targets, Es300RefusesAComputeStageNamingShaderFileAndTarget) {
+    ScratchDir dir("targets-comp");
+    dir.write("sh/blur.comp", "// blur\n#version 430 core\nlayout(local_size_x = 8) in;\nvoid main() {}\n");
+    dir.write("mods/.keep.glsl", "// nothing\n");
+    const auto run = runShaderc(scratchArgs(dir, "gl,es300"), dir.str());
+    EXPECT_EQ(run.exitCode, 1) << run.output;
+    EXPECT_NE(run.output.find("sh/blur.comp: error: shader 'blur' has a compute stage, which es300"), std::string::npos)
+        << run.output;
+    EXPECT_EQ(runShaderc(scratchArgs(dir, "gl,spirv"), dir.str()).exitCode, 0);
+}
+
 TEST(Targets, PragmaLeavesTheShaderOutOfEs300AndKeepsItForGl) {
     ScratchDir dir("targets-pragma");
     writeGeometryShader(dir, "#pragma prism targets gl spirv");
@@ -145,6 +156,24 @@ TEST(Targets, EsOnlyErrorsAreReportedAtTheModuleLine) {
     EXPECT_NE(run.output.find("sh/ivary.vert:4:5: error: 'int': must be qualified as flat"), std::string::npos)
         << run.output;
     EXPECT_NE(run.output.find("for target es300 (GLSL ES 3.00) in program 'ivary'"), std::string::npos) << run.output;
+}
+
+// es300 parses each distinct stage once, as gl does (shared_stage_parses.hpp): two variants
+// that differ in the fragment stage only parse the vertex stage once, 3 parses for 4 stages.
+TEST(Targets, Es300ParsesEachDistinctStageOnce) {
+    ScratchDir dir("targets-es-shared");
+    dir.write("sh/fog.vert",
+              "// fog\n#version 330 core\nin vec3 a_position;\n"
+              "void main() { gl_Position = vec4(a_position, 1.0); }\n");
+    dir.write("sh/fog.frag",
+              "// fog: two variants\n#version 330 core\n#pragma prism variant FOG 0 1\nout vec4 o_color;\n"
+              "void main() { o_color = vec4(float(FOG)); }\n");
+    dir.write("mods/.keep.glsl", "// nothing\n");
+    const auto run = runShaderc(scratchArgs(dir, "gl,es300") + " --stats", dir.str());
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("es300: validated 2 programs (0 shared a token stream; 3 stages parsed)"),
+              std::string::npos)
+        << run.output;
 }
 
 TEST(Targets, PackingRuleOfTheEsSpec) {

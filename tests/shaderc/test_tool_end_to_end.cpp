@@ -180,6 +180,37 @@ TEST(ToolOutputs, NoOpChecksTheRecordedSources) {
     EXPECT_NE(readFile(header).find("    extra = "), std::string::npos);
 }
 
+// The no-op trusts only outputs that this build of the tool wrote (tool_identity.hpp: its
+// identity is in the stamp and the clean-check record, not in the outputs): a rebuilt
+// prism-shaderc generates and checks again what an older build left, though no source changed.
+TEST(ToolOutputs, ARebuiltToolDoesNotTrustAnOlderBuildsOutputs) {
+    ScratchDir dir("rebuilt-tool");
+    fs::copy(kFixture, dir.path() / "fx", fs::copy_options::recursive);
+    const auto tool = dir.path() / "prism-shaderc";
+    fs::copy_file(PRISM_SHADERC_EXE, tool);
+    const std::string inputs =
+        " --stats --stamp out.stamp --base-dir . -I fx/modules --contract fx/contract.json fx/shaders";
+    const auto generate = [&] { return prism::test::runShell(tool.string() + " -o out.hpp" + inputs, dir.str()); };
+    const auto check = [&] { return prism::test::runShell(tool.string() + " --check" + inputs, dir.str()); };
+    const auto worked = [](const prism::test::ToolRun& run) {
+        return run.output.find("resolved ") != std::string::npos;
+    };
+    ASSERT_TRUE(worked(generate()));
+    const std::string outputs = readFile(dir.path() / "out.hpp") + readFile(dir.path() / "out.cpp");
+    EXPECT_NE(readFile(dir.path() / "out.stamp").find("prism-shaderc "), std::string::npos);
+    EXPECT_FALSE(worked(generate())) << "the same build's second run is not a no-op";
+    ASSERT_TRUE(worked(check()));
+    EXPECT_FALSE(worked(check())) << "the same build's second check is not a no-op";
+
+    fs::last_write_time(tool, fs::last_write_time(tool) + std::chrono::hours(1));  // a rebuild
+    const auto regenerated = generate();
+    EXPECT_TRUE(worked(regenerated)) << "a rebuilt tool trusted an older build's outputs\n" << regenerated.output;
+    EXPECT_TRUE(worked(check())) << "a rebuilt tool trusted an older build's clean check";
+    EXPECT_FALSE(worked(generate()));
+    EXPECT_EQ(readFile(dir.path() / "out.hpp") + readFile(dir.path() / "out.cpp"), outputs)
+        << "the tool's identity leaked into the outputs";
+}
+
 TEST(ToolOutputs, EmittedGlslIsDriverSafe) {
     ScratchDir dir("emit");
     auto run = runShaderc("--emit-glsl glsl " + fixtureArgs(), dir.str());
