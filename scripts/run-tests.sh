@@ -17,7 +17,7 @@ ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$(nproc)" --timeout 900
 
 # Sanitizer tier: the unit and GL tests again, built with Clang 14, ASan and UBSan; then
 # the fuzz tier (label fuzz): each libFuzzer harness over its committed corpus and for
-# PRISM_FUZZ_SECONDS (30) s, in the same build.
+# PRISM_FUZZ_SECONDS (15) s, in the same build.
 SAN_BUILD_DIR=${SAN_BUILD_DIR:-build-san}
 bash scripts/run-sanitizer-tests.sh --build-dir "$SAN_BUILD_DIR"
 cmake --build "$SAN_BUILD_DIR" --target prism_fuzzers -j "$(nproc)"
