@@ -240,7 +240,9 @@ function(prism_add_shaders target)
   add_custom_target(${target}_generate DEPENDS ${stamp})
   add_library(${target} ${PRISM_SHADERS_LIBRARY_TYPE} ${data})
   add_dependencies(${target} ${target}_generate)
-  set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+  # UNITY_BUILD OFF under CMAKE_UNITY_BUILD too: a module edit compiles the data file itself,
+  # one unit, not a unity file that includes it.
+  set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON UNITY_BUILD OFF)
   target_include_directories(${target} PUBLIC $<BUILD_INTERFACE:${gen_dir}>)
   target_link_libraries(${target} PUBLIC Prism::catalog)
   set_target_properties(${target} PROPERTIES PRISM_HEADER ${header} PRISM_NAMESPACE ${PAS_NAMESPACE}

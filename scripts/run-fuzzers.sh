@@ -2,7 +2,7 @@
 # Runs Prism's libFuzzer harnesses (tests/fuzz, docs/reliability.md).
 #
 #   scripts/run-fuzzers.sh                      build (Clang 14, ASan+UBSan+libFuzzer) and fuzz
-#                                               every harness for 30 s, as CI does
+#                                               every harness for 15 s, as CI does
 #   scripts/run-fuzzers.sh --seconds 600 obj_loader      longer local run of one harness
 #   scripts/run-fuzzers.sh --corpus-only        run each committed corpus input once
 #
@@ -19,7 +19,7 @@ cd "$(dirname "$0")/.."
 ROOT=$PWD
 BUILD_DIR=build-san
 BUILD=1
-SECONDS_EACH=30
+SECONDS_EACH=15
 CORPUS_ONLY=0
 TARGETS=()
 while [ $# -gt 0 ]; do

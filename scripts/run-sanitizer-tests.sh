@@ -30,6 +30,7 @@ TEST_TARGETS=(prism_shaderc_tests prism_shaderc_gl_tests prism_geometry_tests pr
 if [ "$BUILD" = 1 ]; then
   bash scripts/configure-sanitizer-build.sh "$BUILD_DIR"
   cmake --build "$BUILD_DIR" --target "${TEST_TARGETS[@]}" -j "$(nproc)"
+  echo "run-sanitizer-tests: configured and built in $SECONDS s"
 fi
 
 # Mesa's EGL unloads its driver at eglTerminate; memory the driver's globals still

@@ -8,17 +8,26 @@
 # (see docs/).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# Each phase's wall time, printed as it ends (CI's budget: docs/ci.md).
+phase_start=$SECONDS
+phase() { echo "run-tests: phase '$1' took $((SECONDS - phase_start)) s (total $SECONDS s)"; phase_start=$SECONDS; }
 bash scripts/setup.sh
+phase setup
 BUILD_DIR=${BUILD_DIR:-build}
 cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DPRISM_BUILD_RUNTIME=ON -DPRISM_BUILD_TESTS=ON -DPRISM_BUILD_EXAMPLES=ON -DPRISM_BUILD_BENCH=ON
 cmake --build "$BUILD_DIR" -j "$(nproc)"
+phase "main build"
 ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$(nproc)" --timeout 900
+phase "main tests"
 
 # Sanitizer tier: the unit and GL tests again, built with Clang 14, ASan and UBSan; then
 # the fuzz tier (label fuzz): each libFuzzer harness over its committed corpus and for
-# PRISM_FUZZ_SECONDS (30) s, in the same build.
+# PRISM_FUZZ_SECONDS (15) s, in the same build.
 SAN_BUILD_DIR=${SAN_BUILD_DIR:-build-san}
 bash scripts/run-sanitizer-tests.sh --build-dir "$SAN_BUILD_DIR"
+phase "sanitizer build and tests"
 cmake --build "$SAN_BUILD_DIR" --target prism_fuzzers -j "$(nproc)"
+phase "fuzz build"
 ctest --test-dir "$SAN_BUILD_DIR" -L '^fuzz$' --output-on-failure -j "$(nproc)"
+phase "fuzz tests"

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Integration test of Prism's CMake step: builds examples/consumer (a standalone project
 # with two prism_add_shaders() catalogues) against this source tree with FetchContent
-# (SOURCE_DIR, no network) under Ninja and Unix Makefiles, Prism's runtime off, and
-# checks that Prism is a lean subproject (issue 29): the Ninja build's `cmake --install`
-# holds nothing of Prism's, and a configure with Prism's defaults (runtime on), whose
+# (SOURCE_DIR, no network) under Ninja, Prism's runtime off, and under Unix Makefiles
+# against an install of this build (find_package; it compiles no second prism-shaderc,
+# which would cost CI a minute), and checks that Prism is a lean subproject (issue 29):
+# the Ninja build's `cmake --install` holds nothing of Prism's, and a configure with Prism's defaults (runtime on), whose
 # build graph is read but not built, has at most MAX_LEAN_STEPS steps for a consumer that
 # links Prism::render, no Prism program, no object of a system it does not link (rain,
 # water, diffraction, blue noise, scene) and no install rule of Prism's. Both builds check
@@ -17,19 +18,20 @@
 #   - an include error fails the build with a GCC-style diagnostic at tint.glsl and
 #     leaves the previous header intact; fixing it recovers;
 #   - a module added to lit's module dir re-runs lit_shaders only;
-# then installs Prism from the Makefiles build (-DPRISM_INSTALL=ON there) and builds the
-# consumer with find_package(Prism), also as a project with an old cmake_minimum_required().
-# Works on copies of the consumer under --work; never modifies the source tree.
+# then builds the consumer with Ninja and find_package(Prism) against the same install,
+# also as a project with an old cmake_minimum_required().
+# Works on copies of the consumer under --work; never modifies the source or build tree.
 #
-# Usage: consumer_build.sh --source <prism source dir> --work <scratch dir>
+# Usage: consumer_build.sh --source <prism source dir> --build <prism build dir> --work <scratch dir>
 #          [--cmake <cmake>] [--cxx <compiler>] [--cc <compiler>] [--jobs <n>]
 # Prints PASS/FAIL per check; exits 1 when any check failed.
 set -uo pipefail
 
-SOURCE="" WORK="" CMAKE=cmake CXX_COMPILER="" C_COMPILER="" JOBS=2
+SOURCE="" BUILD="" WORK="" CMAKE=cmake CXX_COMPILER="" C_COMPILER="" JOBS=2
 while [ $# -gt 0 ]; do
   case "$1" in
     --source) SOURCE=$2; shift 2 ;;
+    --build) BUILD=$2; shift 2 ;;
     --work) WORK=$2; shift 2 ;;
     --cmake) CMAKE=$2; shift 2 ;;
     --cxx) CXX_COMPILER=$2; shift 2 ;;
@@ -38,8 +40,9 @@ while [ $# -gt 0 ]; do
     *) echo "consumer_build.sh: unknown argument '$1'" >&2; exit 2 ;;
   esac
 done
-if [ -z "$SOURCE" ] || [ -z "$WORK" ] || [ ! -f "$SOURCE/examples/consumer/CMakeLists.txt" ]; then
-  echo "usage: consumer_build.sh --source <prism source dir> --work <scratch dir> [--cmake <cmake>] [--jobs <n>]" >&2
+if [ -z "$SOURCE" ] || [ -z "$BUILD" ] || [ -z "$WORK" ] || [ ! -f "$SOURCE/examples/consumer/CMakeLists.txt" ]; then
+  echo "usage: consumer_build.sh --source <prism source dir> --build <prism build dir> --work <scratch dir>" \
+       "[--cmake <cmake>] [--jobs <n>]" >&2
   exit 2
 fi
 SOURCE=$(cd "$SOURCE" && pwd -P)
@@ -49,17 +52,20 @@ mkdir -p "$WORK" && WORK=$(cd "$WORK" && pwd -P)
 # default generator from the environment.
 unset MAKEFLAGS MFLAGS MAKELEVEL DESTDIR CMAKE_GENERATOR CMAKE_BUILD_PARALLEL_LEVEL
 
-# Only the build graph is under test: -O0 without debug info keeps the two builds of
+# Only the build graph is under test: -O0 without debug info keeps the build of
 # prism-shaderc fast on CI's two cores.
 COMMON_ARGS=(-DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-O0 -DCMAKE_C_FLAGS_DEBUG=-O0)
 [ -n "$CXX_COMPILER" ] && COMMON_ARGS+=("-DCMAKE_CXX_COMPILER=$CXX_COMPILER")
 [ -n "$C_COMPILER" ] && COMMON_ARGS+=("-DCMAKE_C_COMPILER=$C_COMPILER")
-# Both builds take the tool alone; the Makefiles build installs it for check_installed.
+# The FetchContent build takes the tool alone.
 PRISM_ARGS=(-DPRISM_BUILD_RUNTIME=OFF)
-# The lean graph has 113 steps (the tool; gl, render and the CPU libraries under them;
-# Prism's classic catalogue; the consumer's two catalogues and three programs); without
-# Prism's EXCLUDE_FROM_ALL it is 186 (every library and catalogue of Prism's).
-MAX_LEAN_STEPS=130
+# This build's install, for the find_package builds (install_prism).
+PREFIX=$WORK/prefix
+# The lean graph has 55 steps (the tool; gl, render and the CPU libraries under them, in
+# unity batches, PRISM_UNITY_BUILD; Prism's classic catalogue; the consumer's two
+# catalogues and three programs); without Prism's EXCLUDE_FROM_ALL it is 105 (every library
+# and catalogue of Prism's).
+MAX_LEAN_STEPS=70
 
 FAILURES=0
 pass() { echo "PASS: $*"; }
@@ -125,9 +131,12 @@ run_consumer() {
   fi
 }
 
-# check_generator <tag> <generator>: the add_subdirectory build and its incremental checks.
+# check_generator <tag> <generator> <Prism's module dir> <how> <cmake args for Prism...>:
+# the consumer's build with Prism as <how> says (FetchContent or installed) and its
+# incremental checks.
 check_generator() {
-  local tag=$1 gen=$2
+  local tag=$1 gen=$2 moddir=$3 how=$4
+  shift 4
   local dir=$WORK/$tag
   local src=$dir/consumer bld=$dir/build logs=$dir/logs
   local started=$SECONDS
@@ -139,12 +148,8 @@ check_generator() {
   local lit_data=$bld/lit_shaders_generated/consumer/lit_shaders.cpp
   local plain_hdr=$bld/plain_shaders_generated/consumer/plain_shaders.hpp
   local exe=$bld/prism_consumer
-  echo "== $gen: FetchContent_Declare(prism SOURCE_DIR $SOURCE)"
-
-  local prism_args=("${PRISM_ARGS[@]}")
-  [ "$tag" = make ] && prism_args+=(-DPRISM_INSTALL=ON)
-  if ! step "$logs/1-configure.log" "$CMAKE" -S "$src" -B "$bld" -G "$gen" -DPRISM_SOURCE_DIR="$SOURCE" \
-         "${prism_args[@]}" "${COMMON_ARGS[@]}"; then
+  echo "== $gen: $how"
+  if ! step "$logs/1-configure.log" "$CMAKE" -S "$src" -B "$bld" -G "$gen" "$@" "${COMMON_ARGS[@]}"; then
     fail "$gen: configure the consumer"; show_log "$logs/1-configure.log"; return
   fi
   pass "$gen: configure the consumer"
@@ -157,7 +162,7 @@ check_generator() {
     [ -f "$f" ] || { fail "$gen: expected build output $f"; missing=1; }
   done
   [ $missing = 0 ] || return
-  run_consumer "$bld" "$src" "$SOURCE/modules" "$logs/2-run.log" "$gen"
+  run_consumer "$bld" "$src" "$moddir" "$logs/2-run.log" "$gen"
   [ "$tag" = ninja ] && check_consumer_install "$bld" "$logs" "$dir/install"
 
   # Nothing changed: nothing to do.
@@ -212,7 +217,7 @@ check_generator() {
   check "$gen: edit tint.glsl -> plain_shaders stamp unchanged" same_time "$(mtime "$plain_stamp")" "$a_plain"
   check "$gen: edit tint.glsl -> plain header untouched" same_time "$(mtime "$plain_hdr")" "$a_plainh"
   check "$gen: edit tint.glsl -> prism_consumer rebuilt" later_time "$(mtime "$exe")" "$a_exe"
-  if run_consumer "$bld" "$src" "$SOURCE/modules" "$logs/6-run.log" "$gen: after the edit"; then
+  if run_consumer "$bld" "$src" "$moddir" "$logs/6-run.log" "$gen: after the edit"; then
     check "$gen: rebuilt prism_consumer prints the edited description" grep -q "^  module tint: .*$token" "$logs/6-run.log"
   fi
 
@@ -255,7 +260,7 @@ check_generator() {
   if step "$logs/9-fixed.log" build "$bld"; then
     pass "$gen: build recovers once the include error is removed"
     check "$gen: recovered header equals the header before the error" cmp -s "$lit_hdr" "$dir/lit_before_error.hpp"
-    run_consumer "$bld" "$src" "$SOURCE/modules" "$logs/9-run.log" "$gen: after the fix"
+    run_consumer "$bld" "$src" "$moddir" "$logs/9-run.log" "$gen: after the fix"
   else
     fail "$gen: build recovers once the include error is removed"; show_log "$logs/9-fixed.log"
   fi
@@ -269,7 +274,7 @@ check_generator() {
     check "$gen: new module -> lit header rewritten and lists it" \
       grep -q "integration_glow" "$lit_hdr"
     check "$gen: new module -> plain_shaders stamp unchanged" same_time "$(mtime "$plain_stamp")" "$a_plain"
-    run_consumer "$bld" "$src" "$SOURCE/modules" "$logs/10-run.log" "$gen: after the new module"
+    run_consumer "$bld" "$src" "$moddir" "$logs/10-run.log" "$gen: after the new module"
   else
     fail "$gen: build after adding a module"; show_log "$logs/10-new-module.log"
   fi
@@ -319,28 +324,36 @@ check_lean() {
   echo "   (lean checks took $((SECONDS - started)) s)"
 }
 
-# check_installed: installs Prism from the Makefiles build's FetchContent subproject
-# (runtime off, PRISM_INSTALL on; this reuses its prism-shaderc instead of compiling a
-# third one) and builds a fresh copy of the consumer with find_package.
+# install_prism: installs this build (--build) into $PREFIX for the find_package builds;
+# returns 1 when there is nothing usable to build against.
+install_prism() {
+  local log=$WORK/install-prism.log
+  echo "== cmake --install $BUILD --prefix $PREFIX"
+  rm -rf "$PREFIX"
+  if [ ! -x "$BUILD/shaderc_tool/prism-shaderc" ]; then
+    fail "install: no Prism build to install from ($BUILD)"; return 1
+  fi
+  if ! step "$log" "$CMAKE" --install "$BUILD" --prefix "$PREFIX"; then
+    fail "install: cmake --install Prism into $PREFIX"; show_log "$log"; return 1
+  fi
+  pass "install: cmake --install Prism into $PREFIX"
+  local config; config=$(find "$PREFIX" -name PrismConfig.cmake -print -quit)
+  check "install: prefix has bin/prism-shaderc" test -x "$PREFIX/bin/prism-shaderc"
+  check "install: prefix has include/prism/catalog/shader_catalog.hpp" \
+    test -f "$PREFIX/include/prism/catalog/shader_catalog.hpp"
+  check "install: prefix has share/prism/modules/contract.json" test -f "$PREFIX/share/prism/modules/contract.json"
+  check "install: prefix has PrismConfig.cmake and PrismShaders.cmake" \
+    test -n "$config" -a -f "$(dirname "${config:-/nonexistent}")/PrismShaders.cmake"
+}
+
+# check_installed: builds a fresh copy of the consumer with Ninja and find_package against
+# install_prism's prefix.
 check_installed() {
-  local from=$WORK/make/build/_deps/prism-build dir=$WORK/installed
-  local prefix=$dir/prefix src=$dir/consumer bld=$dir/build logs=$dir/logs
+  local prefix=$PREFIX dir=$WORK/installed
+  local src=$dir/consumer bld=$dir/build logs=$dir/logs
   local started=$SECONDS
   echo "== Ninja: find_package(Prism) from an install prefix"
   rm -rf "$dir"; mkdir -p "$logs"
-  if [ ! -x "$from/shaderc_tool/prism-shaderc" ]; then
-    fail "install: no Prism build to install from ($from)"; return
-  fi
-  if ! step "$logs/1-install.log" "$CMAKE" --install "$from" --prefix "$prefix"; then
-    fail "install: cmake --install Prism into $prefix"; show_log "$logs/1-install.log"; return
-  fi
-  pass "install: cmake --install Prism into $prefix"
-  local config; config=$(find "$prefix" -name PrismConfig.cmake -print -quit)
-  check "install: prefix has bin/prism-shaderc" test -x "$prefix/bin/prism-shaderc"
-  check "install: prefix has include/prism/catalog/shader_catalog.hpp" test -f "$prefix/include/prism/catalog/shader_catalog.hpp"
-  check "install: prefix has share/prism/modules/contract.json" test -f "$prefix/share/prism/modules/contract.json"
-  check "install: prefix has PrismConfig.cmake and PrismShaders.cmake" \
-    test -n "$config" -a -f "$(dirname "${config:-/nonexistent}")/PrismShaders.cmake"
 
   cp -R "$SOURCE/examples/consumer" "$src"
   if ! step "$logs/2-configure.log" "$CMAKE" -S "$src" -B "$bld" -G Ninja -DCMAKE_PREFIX_PATH="$prefix" \
@@ -394,13 +407,17 @@ check_installed() {
 echo "consumer_build: Prism at $SOURCE, scratch $WORK, mtime tick ${TICK}s"
 have_ninja=1
 command -v ninja >/dev/null 2>&1 || { fail "Ninja: 'ninja' not found (scripts/setup.sh installs ninja-build)"; have_ninja=0; }
-[ $have_ninja = 1 ] && check_generator ninja Ninja
-if command -v make >/dev/null 2>&1; then
-  check_generator make "Unix Makefiles"
-else
+[ $have_ninja = 1 ] && check_generator ninja Ninja "$SOURCE/modules" "FetchContent_Declare(prism SOURCE_DIR $SOURCE)" \
+  -DPRISM_SOURCE_DIR="$SOURCE" "${PRISM_ARGS[@]}"
+installed=0
+install_prism && installed=1
+if ! command -v make >/dev/null 2>&1; then
   fail "Unix Makefiles: 'make' not found (scripts/setup.sh installs build-essential)"
+elif [ $installed = 1 ]; then
+  check_generator make "Unix Makefiles" "$PREFIX/share/prism/modules" "find_package(Prism) from $PREFIX" \
+    -DCMAKE_PREFIX_PATH="$PREFIX"
 fi
-[ $have_ninja = 1 ] && check_installed
+[ $have_ninja = 1 ] && [ $installed = 1 ] && check_installed
 [ $have_ninja = 1 ] && check_lean
 
 echo "consumer_build: $FAILURES failed check(s) in $SECONDS s"

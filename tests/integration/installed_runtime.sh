@@ -38,6 +38,8 @@ fi
 unset MAKEFLAGS MFLAGS MAKELEVEL DESTDIR CMAKE_GENERATOR CMAKE_BUILD_PARALLEL_LEVEL
 rm -rf "$WORK" && mkdir -p "$WORK"
 ROOT=$WORK/deb-root PREFIX=$WORK/deb-root/usr
+# The package's library folder: Debian's multiarch one, lib/x86_64-linux-gnu.
+LIBDIR=lib/$(dpkg-architecture -qDEB_HOST_MULTIARCH)
 FAILURES=0
 pass() { echo "PASS: $*"; }
 fail() { echo "FAIL: $*"; FAILURES=$((FAILURES + 1)); }
@@ -73,10 +75,18 @@ fi
 for f in include/prism/gl/program.hpp include/prism/render/gpu_mesh.hpp include/prism/geometry/mesh.hpp \
          include/prism/image/png_io.hpp include/prism/view/camera.hpp include/prism/scene/scene_loader.hpp \
          include/prism/catalog/shader_catalog.hpp include/prism/shaders.hpp include/prism-glad/glad/gl.h \
-         lib/libprism_gl.a lib/libprism_render.a lib/cmake/Prism/PrismTargets.cmake bin/prism-shaderc \
-         lib/pkgconfig/prism.pc; do
+         "$LIBDIR/libprism_gl.a" "$LIBDIR/libprism_render.a" "$LIBDIR/cmake/Prism/PrismTargets.cmake" \
+         bin/prism-shaderc \
+         "$LIBDIR/pkgconfig/prism.pc"; do
   if [ -e "$PREFIX/$f" ]; then pass "prefix has $f"; else fail "prefix lacks $f"; fi
 done
+# Libraries in Debian's multiarch folder, none in lib/ itself (Debian policy, lintian).
+stray=$(find "$PREFIX/lib" -maxdepth 1 -type f -print -quit)
+if [ -z "$stray" ] && [ "$LIBDIR" != lib/ ]; then
+  pass "libraries under $LIBDIR, none in lib/"
+else
+  fail "libraries in lib/ ($stray), not under $LIBDIR"
+fi
 # Glad's headers stay out of include/, where they would shadow a consumer's own glad.
 if [ -e "$PREFIX/include/glad" ] || [ -e "$PREFIX/include/KHR" ]; then
   fail "prefix has include/glad or include/KHR (glad's headers belong in include/prism-glad)"
@@ -88,7 +98,7 @@ fi
 check_pkg_config() {
   local src=$WORK/pkg-config/consumer bld=$WORK/pkg-config/build
   mkdir -p "$WORK/pkg-config" && cp -r "$SOURCE/examples/consumer" "$src"
-  if PKG_CONFIG_PATH=$PREFIX/lib/pkgconfig make -C "$src" BUILD="$bld" CXXFLAGS=-O1 \
+  if PKG_CONFIG_PATH=$PREFIX/$LIBDIR/pkgconfig make -C "$src" BUILD="$bld" CXXFLAGS=-O1 \
        >"$WORK/pkg-config/build.log" 2>&1; then
     pass "pkg-config: make builds the consumer's renderer with prism.pc"
   else

@@ -23,19 +23,19 @@ using prism::test::ScratchDir;
 
 namespace {
 
-const std::string kSource = PRISM_SOURCE_DIR;
-const std::string kFixture = kSource + "/tests/shaderc/fixtures/variants";
+const std::string kSourceDir = PRISM_SOURCE_DIR;
+const std::string kVariantsDir = kSourceDir + "/tests/shaderc/fixtures/variants";
 
 // The project catalogue with the light counts pinned (2 directional, 1 point), so the
 // baseline stays small: the other light variants differ only in their #defines.
 std::string catalogueArgs() {
-    return "--base-dir " + kSource + " --variant '*:DIRECTIONAL_LIGHTS=2,POINT_LIGHTS=1' -I " + kSource +
-           "/modules --contract " + kSource + "/modules/contract.json " + kSource + "/shader_sources";
+    return "--base-dir " + kSourceDir + " --variant '*:DIRECTIONAL_LIGHTS=2,POINT_LIGHTS=1' -I " + kSourceDir +
+           "/modules --contract " + kSourceDir + "/modules/contract.json " + kSourceDir + "/shader_sources";
 }
 
 std::string fixtureArgs() {
-    return "--base-dir " + kSource + " -I " + kFixture + "/modules --contract " + kFixture + "/contract.json " +
-           kFixture + "/shaders";
+    return "--base-dir " + kSourceDir + " -I " + kVariantsDir + "/modules --contract " + kVariantsDir +
+           "/contract.json " + kVariantsDir + "/shaders";
 }
 
 }  // namespace
@@ -121,7 +121,7 @@ TEST(ToolDeterminism, TwoRunsAndJobCountsGiveIdenticalBytes) {
 
 TEST(ToolOutputs, UnchangedHeaderKeepsItsTimestampAndErrorsWriteNothing) {
     ScratchDir dir("mtime");
-    fs::copy(kFixture, dir.path() / "fx", fs::copy_options::recursive);
+    fs::copy(kVariantsDir, dir.path() / "fx", fs::copy_options::recursive);
     const std::string args = "-o out.hpp --base-dir . -I fx/modules --contract fx/contract.json fx/shaders";
     ASSERT_EQ(runShaderc(args, dir.str()).exitCode, 0);
     const auto header = dir.path() / "out.hpp";
@@ -146,7 +146,7 @@ TEST(ToolOutputs, UnchangedHeaderKeepsItsTimestampAndErrorsWriteNothing) {
 // any change to a file read, or a new module in an -I folder, rebuilds.
 TEST(ToolOutputs, NoOpChecksTheRecordedSources) {
     ScratchDir dir("noop");
-    fs::copy(kFixture, dir.path() / "fx", fs::copy_options::recursive);
+    fs::copy(kVariantsDir, dir.path() / "fx", fs::copy_options::recursive);
     const std::string args =
         "-o out.hpp --depfile out.d --base-dir . -I fx/modules --contract fx/contract.json fx/shaders";
     ASSERT_EQ(runShaderc(args, dir.str()).exitCode, 0);
@@ -235,7 +235,7 @@ TEST(ToolOutputs, EmittedGlslIsDriverSafe) {
 
 TEST(ToolOutputs, DepfileEscapesPathsWithSpaces) {
     ScratchDir dir("dep");
-    fs::copy(kFixture, dir.path() / "my fx$#", fs::copy_options::recursive);
+    fs::copy(kVariantsDir, dir.path() / "my fx$#", fs::copy_options::recursive);
     const std::string fx = "'" + (dir.path() / "my fx$#").string() + "'";
     auto run = runShaderc(
         "-o out.hpp --depfile out.d -I " + fx + "/modules --contract " + fx + "/contract.json " + fx + "/shaders",
@@ -331,8 +331,8 @@ TEST(GoldenHeader, TwoCheckoutsGiveByteIdenticalHeaders) {
     const std::string roots[2] = {dir.str() + "/a", dir.str() + "/deeper/checkout/b"};
     for (int i = 0; i < 2; ++i) {
         fs::create_directories(roots[i]);
-        fs::copy(kSource + "/modules", roots[i] + "/modules", fs::copy_options::recursive);
-        fs::copy(kSource + "/shader_sources", roots[i] + "/shader_sources", fs::copy_options::recursive);
+        fs::copy(kSourceDir + "/modules", roots[i] + "/modules", fs::copy_options::recursive);
+        fs::copy(kSourceDir + "/shader_sources", roots[i] + "/shader_sources", fs::copy_options::recursive);
         const std::string args = "-o gen/catalogue.hpp --emit-glsl " + roots[i] + "/glsl --depfile " + roots[i] +
                                  "/c.d --stamp " + roots[i] + "/c.stamp --base-dir " + roots[i] + " -I " + roots[i] +
                                  "/modules --contract " + roots[i] + "/modules/contract.json " + roots[i] +
@@ -358,8 +358,8 @@ TEST(GoldenHeader, TwoCheckoutsGiveByteIdenticalHeaders) {
 // folder the tool runs in).
 TEST(GoldenHeader, BuildSystemOptionsDoNotChangeTheOutputs) {
     ScratchDir dir("options");
-    const std::string base = "--base-dir " + kSource + " -I " + kFixture + "/modules --contract " + kFixture +
-                             "/contract.json " + kFixture + "/shaders";
+    const std::string base = "--base-dir " + kSourceDir + " -I " + kVariantsDir + "/modules --contract " +
+                             kVariantsDir + "/contract.json " + kVariantsDir + "/shaders";
     const std::string extras[] = {"", "--depfile out.d", "--stamp out.stamp", "--emit-glsl glsl",
                                   "--depfile x/y.d --stamp z.stamp --emit-glsl g2 -j 1"};
     std::string first;
@@ -380,7 +380,7 @@ TEST(GoldenHeader, BuildSystemOptionsDoNotChangeTheOutputs) {
 // a new module changes a declaration (ModuleId) and rewrites the header.
 TEST(ToolOutputs, ModuleTextEditRewritesOnlyTheDataFile) {
     ScratchDir dir("split");
-    fs::copy(kFixture, dir.path() / "fx", fs::copy_options::recursive);
+    fs::copy(kVariantsDir, dir.path() / "fx", fs::copy_options::recursive);
     const std::string args = "-o gen/out.hpp --base-dir . -I fx/modules --contract fx/contract.json fx/shaders";
     ASSERT_EQ(runShaderc(args, dir.str()).exitCode, 0);
     const auto header = dir.path() / "gen/out.hpp", data = dir.path() / "gen/out.cpp";
@@ -405,8 +405,8 @@ TEST(ToolOutputs, ModuleTextEditRewritesOnlyTheDataFile) {
 // at most a quarter of the 1.2 MB the one-header layout took (module texts per variant).
 TEST(ToolOutputs, ProjectCatalogueStoresEachModuleOnce) {
     ScratchDir dir("size");
-    auto run = runShaderc("-o catalogue.hpp --base-dir " + kSource + " -I " + kSource + "/modules --contract " +
-                              kSource + "/modules/contract.json " + kSource + "/shader_sources",
+    auto run = runShaderc("-o catalogue.hpp --base-dir " + kSourceDir + " -I " + kSourceDir + "/modules --contract " +
+                              kSourceDir + "/modules/contract.json " + kSourceDir + "/shader_sources",
                           dir.str());
     ASSERT_EQ(run.exitCode, 0) << run.output;
     const auto bytes = fs::file_size(dir.path() / "catalogue.hpp") + fs::file_size(dir.path() / "catalogue.cpp");
@@ -414,7 +414,7 @@ TEST(ToolOutputs, ProjectCatalogueStoresEachModuleOnce) {
     // A line only modules/lighting.glsl has, used by most of the 150+ variants, appears once.
     const auto data = readFile(dir.path() / "catalogue.cpp");
     const std::string line = "vec3 specularTerm(vec3 toLight, vec3 toEye, vec3 normal) {";
-    ASSERT_NE(readFile(kSource + "/modules/lighting.glsl").find(line), std::string::npos);
+    ASSERT_NE(readFile(kSourceDir + "/modules/lighting.glsl").find(line), std::string::npos);
     std::size_t n = 0;
     for (auto pos = data.find(line); pos != std::string::npos; pos = data.find(line, pos + 1)) ++n;
     EXPECT_EQ(n, 1u);
@@ -432,9 +432,9 @@ TEST(GoldenHeader, ModulesOutsideTheBaseDirAreNamedByTheirIncludeDir) {
     for (int i = 0; i < 2; ++i) {
         fs::create_directories(projects[i]);
         fs::create_directories(fs::path(prefixes[i]).parent_path());
-        fs::copy(kFixture + "/modules", prefixes[i], fs::copy_options::recursive);
-        fs::copy(kFixture + "/shaders", projects[i] + "/shaders", fs::copy_options::recursive);
-        fs::copy(kFixture + "/contract.json", projects[i] + "/contract.json");
+        fs::copy(kVariantsDir + "/modules", prefixes[i], fs::copy_options::recursive);
+        fs::copy(kVariantsDir + "/shaders", projects[i] + "/shaders", fs::copy_options::recursive);
+        fs::copy(kVariantsDir + "/contract.json", projects[i] + "/contract.json");
         const std::string args = "-o gen/out.hpp --depfile out.d --base-dir " + projects[i] + " -I " + prefixes[i] +
                                  " --contract contract.json shaders";
         auto run = runShaderc(args, projects[i]);
@@ -454,7 +454,7 @@ TEST(GoldenHeader, ModulesOutsideTheBaseDirAreNamedByTheirIncludeDir) {
         prism::test::writeFile(prefixes[i] + "/fog.glsl", readFile(prefixes[i] + "/fog.glsl") + "// edited outside\n");
         ASSERT_EQ(runShaderc(args, projects[i]).exitCode, 0);
         EXPECT_NE(readFile(projects[i] + "/gen/out.cpp").find("// edited outside"), std::string::npos);
-        prism::test::writeFile(prefixes[i] + "/fog.glsl", readFile(kFixture + "/modules/fog.glsl"));
+        prism::test::writeFile(prefixes[i] + "/fog.glsl", readFile(kVariantsDir + "/modules/fog.glsl"));
         ASSERT_EQ(runShaderc(args, projects[i]).exitCode, 0);
         outputs[i] = readFile(projects[i] + "/gen/out.hpp") + readFile(projects[i] + "/gen/out.cpp");
     }
@@ -466,7 +466,7 @@ TEST(GoldenHeader, ModulesOutsideTheBaseDirAreNamedByTheirIncludeDir) {
 // comment, the no-op prints nothing and rewrites nothing.
 TEST(ToolOutputs, NoOpOnALargeDataFileStopsBeforeResolving) {
     ScratchDir dir("large");
-    fs::copy(kFixture, dir.path() / "fx", fs::copy_options::recursive);
+    fs::copy(kVariantsDir, dir.path() / "fx", fs::copy_options::recursive);
     std::string big = "float bigValue() { return 1.0; }\n";
     for (int i = 0; i < 4000; ++i)
         big += "// filler line " + std::to_string(i) + " of a big module, so that the data file is large\n";
