@@ -47,9 +47,14 @@ NOT_BUILT='(example|snippets|architecture|hotreload|diffraction|bluenoise)\..*'
 # Endurance runs that repeat, for minutes under ASan, code that shorter tests of this tier
 # already cover: 10,000-step mass ledgers (the step itself: water.WaterStep.*, water.Cases/GpuCpuAgreement.*), the
 # fast CPU step at every thread count (one count: water.FastCpuStep.*; races are not ASan's
-# to find), and the CLI render of the CD disc (the same scene as the CD golden, which runs).
+# to find), the CD disc (79 s here; its code is the grating's and the snake's, whose goldens
+# run: only its tables are larger), the puddles close-up (22 s; the water and rain goldens
+# run its code), and every system drawn before rain (36 s; each system's own tests and
+# draw_state.DrawStateTest.SceneRendererRestoresTheState run the same save and restore).
 # They run in the main build's tier.
 ENDURANCE='water\.MassLedger\..*|water\.WaterGlTest\.GpuMassLedgerHoldsOver10000Steps|'
-ENDURANCE+='water\.FastCpuStep\.IsBitIdenticalToTheFirstStepForEveryThreadCount|SceneCli\.render_diffraction_cd'
+ENDURANCE+='water\.FastCpuStep\.IsBitIdenticalToTheFirstStepForEveryThreadCount|SceneCli\.render_diffraction_cd|'
+ENDURANCE+='ExampleScenes/SceneGolden\.MatchesTheGoldenImage/"(diffraction_cd|puddles_closeup)"|'
+ENDURANCE+='draw_state\.DrawStateTest\.RainAfterEveryOtherSystemMatchesRainAlone'
 ctest --test-dir "$BUILD_DIR" -L '^(unit|gl)$' -E "^($NOT_BUILT|$ENDURANCE)\$" --output-on-failure -j "$(nproc)" \
   --timeout 900 "$@"
