@@ -61,8 +61,7 @@
 
   // One WebGL2 context draws every view (a context is costly to make, and meshes and programs
   // are then uploaded and compiled once); each view shows its picture in a 2D canvas of its own.
-  var glCanvas = document.createElement("canvas");
-  var gl = glCanvas.getContext("webgl2", {antialias: false, preserveDrawingBuffer: true});
+  var context = D.sharedContext(), glCanvas = context && context.canvas, gl = context && context.gl;
   var meshes = {}, programs = {}, loading = {};
 
   // Runs `then` once mesh `name`'s file (live/mesh-<name>.js: its meshes and PNGs) has loaded.
