@@ -100,28 +100,11 @@
     // Compares `pixels` with the record's PNG when the state is exactly the record's frame.
     function measure(pixels, uniforms) {
       var record = recordOf();
-      ["png", "max", "mean", "within"].forEach(function (k) { figure.removeAttribute("data-agreement-" + k); });
-      if (!record || !sameUniforms(uniforms, record.uniforms)) {
-        figure.setAttribute("data-agreement-state", "no-reference");
-        info.textContent = "no PNG of this state to compare with (the main job writes 1 spp, frame 0, the scene's light)";
-        return;
-      }
-      figure.setAttribute("data-agreement-state", "pending");
-      D.decodePng(data.pngs[record.png], function (png) {
-        if (!sameUniforms(uniformsOf(), uniforms)) return;  // the controls moved on meanwhile
-        if (!png || png.length !== pixels.length) {
-          figure.setAttribute("data-agreement-state", "error");
-          info.textContent = "cannot decode " + record.png;
-          return;
-        }
-        var a = D.agreement(pixels, png);
-        figure.setAttribute("data-agreement-png", record.png);
-        figure.setAttribute("data-agreement-max", a.max);
-        figure.setAttribute("data-agreement-mean", a.mean.toFixed(4));
-        figure.setAttribute("data-agreement-within", a.within.toFixed(5));
-        figure.setAttribute("data-agreement-state", "done");
-        info.textContent = "against " + record.png + " (prism-bluenoise, CPU): max " + a.max + "/255, mean " +
-                           a.mean.toFixed(3) + "/255, " + (100 * a.within).toFixed(2) + " % of pixels within 2/255";
+      if (!record || !sameUniforms(uniforms, record.uniforms))
+        return D.noReference(figure, info, "no PNG of this state to compare with (the main job's are 1 spp, frame 0, " +
+                                           "the scene's light)");
+      D.compareWithPng(figure, info, record.png, data.pngs[record.png], "prism-bluenoise, CPU", pixels, function () {
+        return sameUniforms(uniformsOf(), uniforms);
       });
     }
 

@@ -132,6 +132,36 @@ var PrismLiveDraw = (function () {
     return {max: max, mean: sum / (3 * n), within: within / n};
   }
 
+  // A view that has no PNG to compare with: no figures, state "no-reference", `why` shown.
+  function noReference(figure, info, why) {
+    ["png", "max", "mean", "within"].forEach(function (k) { figure.removeAttribute("data-agreement-" + k); });
+    figure.setAttribute("data-agreement-state", "no-reference");
+    info.textContent = why;
+  }
+
+  // Decodes the PNG `png` (data: URI `uri`, drawn by `source`), compares it with `pixels` (top
+  // row first) and writes the figures into the view's element (data-agreement-*) and `info`;
+  // a result for which `current()` is false (the controls moved on meanwhile) is dropped.
+  function compareWithPng(figure, info, png, uri, source, pixels, current) {
+    figure.setAttribute("data-agreement-state", "pending");
+    decodePng(uri, function (decoded) {
+      if (!current()) return;
+      if (!decoded || decoded.length !== pixels.length) {
+        figure.setAttribute("data-agreement-state", "error");
+        info.textContent = "cannot decode " + png;
+        return;
+      }
+      var a = agreement(pixels, decoded);
+      figure.setAttribute("data-agreement-png", png);
+      figure.setAttribute("data-agreement-max", a.max);
+      figure.setAttribute("data-agreement-mean", a.mean.toFixed(4));
+      figure.setAttribute("data-agreement-within", a.within.toFixed(5));
+      figure.setAttribute("data-agreement-state", "done");
+      info.textContent = "against " + png + " (" + source + "): max " + a.max + "/255, mean " + a.mean.toFixed(3) +
+                         "/255, " + (100 * a.within).toFixed(2) + " % of pixels within 2/255";
+    });
+  }
+
   function decodePng(uri, done) {
     var img = new Image();
     img.onload = function () {
@@ -161,5 +191,6 @@ var PrismLiveDraw = (function () {
 
   return {mul4: mul4, rotation: rotation, normalMatrix: normalMatrix, uploadMesh: uploadMesh, draw: draw,
           offscreen: offscreen, drawExact: drawExact, sharedContext: sharedContext, agreement: agreement,
-          decodePng: decodePng, pictureStats: pictureStats, readTopDown: readTopDown};
+          noReference: noReference, compareWithPng: compareWithPng, decodePng: decodePng, pictureStats: pictureStats,
+          readTopDown: readTopDown};
 })();
