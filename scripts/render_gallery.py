@@ -90,6 +90,8 @@ def jobs_after_catalogue(a, bins, out):
                    "--out", os.path.join(out, src)]
             if frames > 1:
                 cmd += ["--frames", str(frames)]
+            elif sampler in gallery_live.BLUENOISE_SAMPLERS:  # the live view's record of this frame
+                cmd += ["--live-record", os.path.join(out, gallery_live.bluenoise_record(src))]
             label = "1 spp, frame 0" if frames == 1 else f"1 spp, mean of {frames} frames"
             jobs.append(("bluenoise", f"bluenoise {sampler} {label}", cmd,
                          {"src": src, "sampler": sampler, "note": label}))

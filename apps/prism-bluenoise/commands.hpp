@@ -48,6 +48,7 @@ struct RenderArgs {
     std::string scene = "classic";
     int reference = 0;
     std::string out;
+    std::string liveRecord;  // also write the shader's inputs as JSON (live_record.hpp)
 };
 
 void addGenerate(CLI::App& app, GenerateArgs& args);

@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "live_record.hpp"
 #include "prism/bluenoise/gray_png.hpp"
 #include "prism/bluenoise/soft_shadows.hpp"
 #include "prism/bluenoise/void_and_cluster.hpp"
@@ -36,6 +37,8 @@ void addRender(CLI::App& app, RenderArgs& args) {
     cmd->add_option("--reference", args.reference, "render the N-sample stratified reference instead")
         ->check(CLI::Range(1, 1 << 20));
     cmd->add_option("--out", args.out, "PNG path (8-bit grey, clamped to [0, 1])")->required();
+    cmd->add_option("--live-record", args.liveRecord,
+                    "also write the GPU shader's inputs of this frame (JSON) for the report's live view (docs/web.md)");
     cmd->callback([cmd, &args] { checkRenderFlags(*cmd, args); });
 }
 
@@ -44,8 +47,9 @@ void checkRenderFlags(const CLI::App& cmd, const RenderArgs& args) {
     auto given = [&cmd](const char* flag) { return cmd.count(flag) > 0; };
     const auto refuse = [](const std::string& flag, const std::string& why) { throw UsageError(flag + ": " + why); };
     if (args.reference > 0) {
-        for (const char* f : {"--spp", "--sampler", "--stack-depth", "--frame", "--frames", "--mask-size", "--block",
-                              "--a-posteriori", "--no-retarget", "--schedule", "--epochs", "--retarget-cache"})
+        for (const char* f :
+             {"--spp", "--sampler", "--stack-depth", "--frame", "--frames", "--mask-size", "--block", "--a-posteriori",
+              "--no-retarget", "--schedule", "--epochs", "--retarget-cache", "--live-record"})
             if (given(f)) refuse(f, "--reference renders the stratified reference, which uses no sampler settings");
         return;
     }
@@ -58,6 +62,8 @@ void checkRenderFlags(const CLI::App& cmd, const RenderArgs& args) {
         if (given(f) && args.sampler == "sorted" && !retargets)
             refuse(f, "this render does not retarget (frame 0 alone, --no-retarget or --a-posteriori)");
     if (args.noRetarget && args.aPosteriori) refuse("--no-retarget", "--a-posteriori never retargets");
+    if (given("--live-record") && (args.frames > 1 || (args.sampler != "white" && args.sampler != "bluenoise")))
+        refuse("--live-record", "the live view draws one frame of the white or bluenoise sampler (docs/web.md)");
     if (given("--frame") && given("--frames"))
         refuse("--frame", "--frames K renders the mean of frames 0..K-1; give one of them");
 }
@@ -103,6 +109,7 @@ int runRender(const RenderArgs& args) {
                                                         : loadOrComputeRetarget(setup.mask, r, args.retargetCache);
         }
         image = renderSoftShadows(scene, setup, options);
+        if (!args.liveRecord.empty()) writeLiveRecord(args.liveRecord, args.out, scene, setup, options);
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     GrayImage png{image.width, image.height, 8, {}};

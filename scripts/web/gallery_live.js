@@ -61,8 +61,7 @@
 
   // One WebGL2 context draws every view (a context is costly to make, and meshes and programs
   // are then uploaded and compiled once); each view shows its picture in a 2D canvas of its own.
-  var glCanvas = document.createElement("canvas");
-  var gl = glCanvas.getContext("webgl2", {antialias: false, preserveDrawingBuffer: true});
+  var context = D.sharedContext(), glCanvas = context && context.canvas, gl = context && context.gl;
   var meshes = {}, programs = {}, loading = {};
 
   // Runs `then` once mesh `name`'s file (live/mesh-<name>.js: its meshes and PNGs) has loaded.
@@ -135,29 +134,11 @@
 
     function measure() {
       var record = exactRecord(state);
-      figure.setAttribute("data-agreement-state", "pending");
-      if (!record || !data.pngs[record.png]) {
-        ["png", "max", "mean", "within"].forEach(function (k) { figure.removeAttribute("data-agreement-" + k); });
-        figure.setAttribute("data-agreement-state", "no-reference");
-        info.textContent = "no llvmpipe PNG of this combination to compare with";
-        return;
-      }
+      if (!record || !data.pngs[record.png])
+        return D.noReference(figure, info, "no llvmpipe PNG of this combination to compare with");
       var pixels = D.drawExact(gl, builtFor(record.defines), meshOf(record), record);
-      D.decodePng(data.pngs[record.png], function (png) {
-        if (exactRecord(state) !== record) return;  // the controls moved on meanwhile
-        if (!png || png.length !== pixels.length) {
-          figure.setAttribute("data-agreement-state", "error");
-          info.textContent = "cannot decode " + record.png;
-          return;
-        }
-        var a = D.agreement(pixels, png);
-        figure.setAttribute("data-agreement-png", record.png);
-        figure.setAttribute("data-agreement-max", a.max);
-        figure.setAttribute("data-agreement-mean", a.mean.toFixed(4));
-        figure.setAttribute("data-agreement-within", a.within.toFixed(5));
-        figure.setAttribute("data-agreement-state", "done");
-        info.textContent = "against " + record.png + " (llvmpipe): max " + a.max + "/255, mean " + a.mean.toFixed(3) +
-                           "/255, " + (100 * a.within).toFixed(2) + " % of pixels within 2/255";
+      D.compareWithPng(figure, info, record.png, data.pngs[record.png], "llvmpipe", pixels, function () {
+        return exactRecord(state) === record;
       });
     }
 

@@ -1,7 +1,8 @@
 // PrismLiveDraw: the drawing and measuring pieces of the gallery report's live views
-// (gallery_live.js, docs/web.md): meshes from base64 data, a draw with a program that
-// prism_web.js built, the exact view of an llvmpipe PNG drawn off-screen and read back top
-// row first, the PNG decoded into a canvas, and the agreement figures. A plain script.
+// (gallery_live.js and live_bluenoise.js, docs/web.md): the page's one WebGL2 context, meshes
+// from base64 data, a draw with a program that prism_web.js built, the exact view of a PNG
+// drawn off-screen and read back top row first, the PNG decoded into a canvas, and the
+// agreement figures. A plain script.
 var PrismLiveDraw = (function () {
   "use strict";
 
@@ -76,23 +77,42 @@ var PrismLiveDraw = (function () {
     return out;
   }
 
-  // Draws the exact view of `record` off-screen and returns its pixels, top row first.
-  function drawExact(gl, built, mesh, record) {
-    var w = record.width, h = record.height, fb = gl.createFramebuffer();
-    var colour = gl.createRenderbuffer(), depth = gl.createRenderbuffer();
+  // Runs `drawInto(width, height)` with an RGBA8 framebuffer (and a depth buffer) bound and
+  // returns its pixels, top row first.
+  function offscreen(gl, width, height, drawInto) {
+    var fb = gl.createFramebuffer(), colour = gl.createRenderbuffer(), depth = gl.createRenderbuffer();
     gl.bindRenderbuffer(gl.RENDERBUFFER, colour);
-    gl.renderbufferStorage(gl.RENDERBUFFER, gl.RGBA8, w, h);
+    gl.renderbufferStorage(gl.RENDERBUFFER, gl.RGBA8, width, height);
     gl.bindRenderbuffer(gl.RENDERBUFFER, depth);
-    gl.renderbufferStorage(gl.RENDERBUFFER, gl.DEPTH_COMPONENT24, w, h);
+    gl.renderbufferStorage(gl.RENDERBUFFER, gl.DEPTH_COMPONENT24, width, height);
     gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
     gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.RENDERBUFFER, colour);
     gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, depth);
-    draw(gl, built, mesh, record.uniforms, record.background, w, h);
-    var pixels = readTopDown(gl, w, h);
+    drawInto(width, height);
+    var pixels = readTopDown(gl, width, height);
     gl.bindFramebuffer(gl.FRAMEBUFFER, null);
-    [fb].forEach(gl.deleteFramebuffer, gl);
+    gl.deleteFramebuffer(fb);
     [colour, depth].forEach(gl.deleteRenderbuffer, gl);
     return pixels;
+  }
+
+  // Draws the exact view of `record` off-screen and returns its pixels, top row first.
+  function drawExact(gl, built, mesh, record) {
+    return offscreen(gl, record.width, record.height, function (w, h) {
+      draw(gl, built, mesh, record.uniforms, record.background, w, h);
+    });
+  }
+
+  // One WebGL2 context for every live view of the page (a context is costly to make, and the
+  // browser caps how many live at once), drawing into an off-screen canvas; null without WebGL2.
+  var shared;
+  function sharedContext() {
+    if (shared === undefined) {
+      var canvas = document.createElement("canvas");
+      var gl = canvas.getContext("webgl2", {antialias: false, preserveDrawingBuffer: true});
+      shared = gl ? {canvas: canvas, gl: gl} : null;
+    }
+    return shared;
   }
 
   // Largest channel difference (in 1/255), mean difference (in 1/255) and the share of pixels
@@ -110,6 +130,36 @@ var PrismLiveDraw = (function () {
       if (worst <= 2) ++within;
     }
     return {max: max, mean: sum / (3 * n), within: within / n};
+  }
+
+  // A view that has no PNG to compare with: no figures, state "no-reference", `why` shown.
+  function noReference(figure, info, why) {
+    ["png", "max", "mean", "within"].forEach(function (k) { figure.removeAttribute("data-agreement-" + k); });
+    figure.setAttribute("data-agreement-state", "no-reference");
+    info.textContent = why;
+  }
+
+  // Decodes the PNG `png` (data: URI `uri`, drawn by `source`), compares it with `pixels` (top
+  // row first) and writes the figures into the view's element (data-agreement-*) and `info`;
+  // a result for which `current()` is false (the controls moved on meanwhile) is dropped.
+  function compareWithPng(figure, info, png, uri, source, pixels, current) {
+    figure.setAttribute("data-agreement-state", "pending");
+    decodePng(uri, function (decoded) {
+      if (!current()) return;
+      if (!decoded || decoded.length !== pixels.length) {
+        figure.setAttribute("data-agreement-state", "error");
+        info.textContent = "cannot decode " + png;
+        return;
+      }
+      var a = agreement(pixels, decoded);
+      figure.setAttribute("data-agreement-png", png);
+      figure.setAttribute("data-agreement-max", a.max);
+      figure.setAttribute("data-agreement-mean", a.mean.toFixed(4));
+      figure.setAttribute("data-agreement-within", a.within.toFixed(5));
+      figure.setAttribute("data-agreement-state", "done");
+      info.textContent = "against " + png + " (" + source + "): max " + a.max + "/255, mean " + a.mean.toFixed(3) +
+                         "/255, " + (100 * a.within).toFixed(2) + " % of pixels within 2/255";
+    });
   }
 
   function decodePng(uri, done) {
@@ -140,6 +190,7 @@ var PrismLiveDraw = (function () {
   }
 
   return {mul4: mul4, rotation: rotation, normalMatrix: normalMatrix, uploadMesh: uploadMesh, draw: draw,
-          drawExact: drawExact, agreement: agreement, decodePng: decodePng, pictureStats: pictureStats,
+          offscreen: offscreen, drawExact: drawExact, sharedContext: sharedContext, agreement: agreement,
+          noReference: noReference, compareWithPng: compareWithPng, decodePng: decodePng, pictureStats: pictureStats,
           readTopDown: readTopDown};
 })();

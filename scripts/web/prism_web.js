@@ -74,6 +74,10 @@ var PrismWeb = (function () {
       case "ivec2": gl.uniform2iv(u.location, v); break;
       case "ivec3": gl.uniform3iv(u.location, v); break;
       case "ivec4": gl.uniform4iv(u.location, v); break;
+      case "uint": gl.uniform1uiv(u.location, v); break;
+      case "uvec2": gl.uniform2uiv(u.location, v); break;
+      case "uvec3": gl.uniform3uiv(u.location, v); break;
+      case "uvec4": gl.uniform4uiv(u.location, v); break;
       default: gl.uniform1iv(u.location, v.map(function (x) { return Math.round(x); }));  // int, bool, samplers
     }
     return true;

@@ -151,6 +151,11 @@ const Row kRows[] = {
     {"water_61", "water", {"--window", "--out", "{D}"}, 2, "--out does not apply to --window", {}, ""},
     {"water_62", "water", {"--window", "--sequence", "2"}, 2, "--sequence does not apply to --window", {}, ""},
     {"water_63", "water", {"--window", "--dt", "2"}, 2, "--dt with --window needs --frames", {}, ""},
+    // The report's live blue-noise view takes one frame of the white or bluenoise sampler (docs/web.md).
+    {"prism_bluenoise_render_live_record", "prism-bluenoise render", {"--sampler", "bluenoise", "--size", "8x8",
+     "--mask-size", "8", "--live-record", "{D}.json", "--out", "{D}.png"}, 0, "", {"{D}.png", "{D}.json"}, ""},
+    {"prism_bluenoise_render_live_record_sorted", "prism-bluenoise render", {"--sampler", "sorted", "--size", "8x8",
+     "--live-record", "{D}.json", "--out", "{D}.png"}, 2, "--live-record: the live view draws one frame", {}, ""},
     // An example program: an argument it would not use is a usage error.
     {"custom_flat_rejects_two_paths", "custom_flat_from_modules", {"a.png", "b.png"}, 2, "usage", {}, ""},
     {"custom_flat_rejects_size", "custom_flat_from_modules", {"--size"}, 2, "usage", {}, ""},

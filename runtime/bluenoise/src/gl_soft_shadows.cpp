@@ -54,9 +54,7 @@ GlSoftShadows::GlSoftShadows(int width, int height) : gl_(std::make_unique<Resou
 GlSoftShadows::~GlSoftShadows() = default;
 
 RealImage GlSoftShadows::render(const SoftShadowScene& scene, StochasticSetup& setup, const RenderOptions& options) {
-    if (scene.spheres.size() > 3)
-        throw std::invalid_argument("prism::bluenoise::GlSoftShadows: at most 3 spheres, the scene has " +
-                                    std::to_string(scene.spheres.size()));
+    const SoftShadowShaderInputs inputs = softShadowShaderInputs(scene);  // throws for more than 3 spheres
     const gl::ScopedDrawState keep;  // the caller's framebuffer, viewport, bindings and unit, put back on return
     if (options.width != gl_->framebuffer.width() || options.height != gl_->framebuffer.height())
         throw std::invalid_argument("prism::bluenoise::GlSoftShadows: options size differs from the framebuffer's");
@@ -70,17 +68,12 @@ RealImage GlSoftShadows::render(const SoftShadowScene& scene, StochasticSetup& s
     program.set(soft_shadows::u_spp, options.spp);
     program.set(soft_shadows::u_imageSize,
                 glm::vec2(static_cast<float>(options.width), static_cast<float>(options.height)));
-    program.set(soft_shadows::u_extent, static_cast<float>(scene.extent));
-    program.set(soft_shadows::u_light,
-                glm::vec4(scene.lightHeight, scene.lightHalfLength, scene.lightHalfWidth, irradianceScale(scene)));
-    const decltype(soft_shadows::u_sphere0)* spheres[] = {&soft_shadows::u_sphere0, &soft_shadows::u_sphere1,
-                                                          &soft_shadows::u_sphere2};
-    for (std::size_t i = 0; i < 3; ++i) {
-        const glm::vec4 s = i < scene.spheres.size() ? glm::vec4(scene.spheres[i].x, scene.spheres[i].y,
-                                                                 scene.spheres[i].z, scene.spheres[i].radius)
-                                                     : glm::vec4(0.0f);
-        program.set(*spheres[i], s);
-    }
+    program.set(soft_shadows::u_extent, inputs.extent);
+    const auto vec4 = [](const std::array<float, 4>& v) { return glm::vec4(v[0], v[1], v[2], v[3]); };
+    program.set(soft_shadows::u_light, vec4(inputs.light));
+    program.set(soft_shadows::u_sphere0, vec4(inputs.spheres[0]));
+    program.set(soft_shadows::u_sphere1, vec4(inputs.spheres[1]));
+    program.set(soft_shadows::u_sphere2, vec4(inputs.spheres[2]));
     gl_->mask.upload(0, setup.tables.maskWidth, setup.tables.maskHeight, setup.tables.mask);
     gl_->stack.upload(2, setup.tables.stackWidth, setup.tables.stackHeight * setup.tables.stackDepth,
                       setup.tables.stack);

@@ -135,6 +135,22 @@ double irradianceScale(const SoftShadowScene& scene) {
     return norm > 0.0 ? scene.radiance / norm : 0.0;
 }
 
+SoftShadowShaderInputs softShadowShaderInputs(const SoftShadowScene& scene) {
+    if (scene.spheres.size() > 3)
+        throw std::invalid_argument("prism::bluenoise: the soft-shadow shader takes at most 3 spheres, the scene has " +
+                                    std::to_string(scene.spheres.size()));
+    SoftShadowShaderInputs in;
+    in.extent = static_cast<float>(scene.extent);
+    in.light = {static_cast<float>(scene.lightHeight), static_cast<float>(scene.lightHalfLength),
+                static_cast<float>(scene.lightHalfWidth), static_cast<float>(irradianceScale(scene))};
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+        const Sphere& s = scene.spheres[i];
+        in.spheres[i] = {static_cast<float>(s.x), static_cast<float>(s.y), static_cast<float>(s.z),
+                         static_cast<float>(s.radius)};
+    }
+    return in;
+}
+
 RealImage renderSoftShadows(const SoftShadowScene& scene, StochasticSetup& setup, const RenderOptions& o) {
     validate(o);
     const double scale = irradianceScale(scene);

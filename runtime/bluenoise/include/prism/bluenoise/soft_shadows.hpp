@@ -27,6 +27,7 @@
 // sorting pass alone on a static scene).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -85,6 +86,17 @@ RealImage runSoftShadowPipeline(StochasticSetup& setup, const RenderOptions& opt
 
 // Irradiance scale of the scene: radiance / the unoccluded irradiance below the light.
 double irradianceScale(const SoftShadowScene& scene);
+
+// The scene as the soft-shadow shader takes it (shader_sources/bluenoise/soft_shadows.frag's
+// u_extent, u_light and u_sphere0..2), in float: GlSoftShadows sets these, and
+// `prism-bluenoise render --live-record` writes them for the report's live view (docs/web.md),
+// so both draw the same scene. Throws std::invalid_argument for more than 3 spheres.
+struct SoftShadowShaderInputs {
+    float extent = 0.0f;
+    std::array<float, 4> light{};                   // height, half-length (x), half-width (y), irradiance scale
+    std::array<std::array<float, 4>, 3> spheres{};  // xyz centre, radius (radius 0: none)
+};
+SoftShadowShaderInputs softShadowShaderInputs(const SoftShadowScene& scene);
 
 struct Reference {
     RealImage image;
