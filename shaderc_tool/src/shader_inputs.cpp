@@ -35,7 +35,7 @@ std::string siblingPath(const std::string& stagePath, std::string_view ext) {
     return fs::path(stagePath).replace_extension(std::string(ext)).string();
 }
 
-bool hasStage(const ShaderInput& s, catalog::Stage st) {
+bool hasStage(const ShaderInput& s, Stage st) {
     return std::any_of(s.stages.begin(), s.stages.end(), [&](const StageFile& f) { return f.stage == st; });
 }
 
@@ -112,7 +112,7 @@ std::map<std::string, ShaderInput> pairByName(const std::vector<std::string>& fi
 
 }  // namespace
 
-std::optional<catalog::Stage> stageOfPath(const fs::path& p) {
+std::optional<Stage> stageOfPath(const fs::path& p) {
     const auto ext = p.extension().string();
     if (ext.size() < 2) return std::nullopt;
     for (auto stage : kGlStageKinds)
@@ -164,7 +164,7 @@ void checkCompleteness(const ShaderInput& s, const std::string& where, std::vect
     if (std::any_of(s.stages.begin(), s.stages.end(), [](const StageFile& f) { return isRayTracingStage(f.stage); }))
         return checkRayTracing(s, where, out);
     if (hasStage(s, Stage::Mesh) || hasStage(s, Stage::Task)) return checkMeshPipeline(s, where, out);
-    if (hasStage(s, catalog::Stage::Compute)) {
+    if (hasStage(s, Stage::Compute)) {
         if (s.stages.size() > 1)
             out.push_back(makeError(where, 0, 0,
                                     "shader '" + s.name +
@@ -172,14 +172,14 @@ void checkCompleteness(const ShaderInput& s, const std::string& where, std::vect
                                         "make them two programs"));
         return;
     }
-    if (!hasStage(s, catalog::Stage::Vertex))
+    if (!hasStage(s, Stage::Vertex))
         out.push_back(makeError(where, 0, 0,
                                 "shader '" + s.name + "' has no vertex stage (nor a compute stage): expected " +
                                     siblingPath(any, ".vert")));
-    if (!hasStage(s, catalog::Stage::Fragment))
+    if (!hasStage(s, Stage::Fragment))
         out.push_back(makeError(
             where, 0, 0, "shader '" + s.name + "' has no fragment stage: expected " + siblingPath(any, ".frag")));
-    if (hasStage(s, catalog::Stage::TessControl) && !hasStage(s, catalog::Stage::TessEvaluation))
+    if (hasStage(s, Stage::TessControl) && !hasStage(s, Stage::TessEvaluation))
         out.push_back(makeError(where, 0, 0,
                                 "shader '" + s.name +
                                     "' has a tessellation control stage but no evaluation stage: expected " +
