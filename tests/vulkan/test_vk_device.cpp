@@ -20,7 +20,8 @@ TEST(VulkanObjects, NothingLeaksAfterRendersOfSeveralDraws) {
         job.mesh = render::meshForShader("phong", render::namedMesh("torus", 1));
         (void)vulkan.render(job);
         render::VulkanFrame frame = render::frameOf(job);
-        frame.draws.push_back({"flat", {}, render::meshForShader("flat", render::namedMesh("cube")), {}, {}});
+        frame.draws.push_back(
+            {"flat", {}, render::meshForShader("flat", render::namedMesh("cube")), {}, {}, nullptr, nullptr});
         (void)vulkan.render(frame);
         EXPECT_EQ(vulkan.pipelineCount(), 2u);
         expectNoValidationMessages(vulkan);

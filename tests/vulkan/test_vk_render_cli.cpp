@@ -1,5 +1,6 @@
 // prism-render --backend vulkan: a catalogue render, the choice through PRISM_GL_BACKEND as
-// through --backend, and scenes whose systems have no Vulkan path refused (exit 2) by name.
+// through --backend, a classic scene, and scenes whose systems have no Vulkan path refused
+// (exit 2) by name (the diffraction scenes are drawn by test_vk_agreement.cpp).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -39,12 +40,16 @@ TEST(VulkanRenderCli, TheEnvironmentVariableChoosesVulkanToo) {
     EXPECT_NE(r.out.find("(vulkan on "), std::string::npos) << r;
 }
 
-TEST(VulkanRenderCli, AClassicSceneDrawsThroughVulkan) {
-    const std::string out = outPng("four_lights.png");
-    const auto r = prism::test::runCommand({PRISM_RENDER_EXECUTABLE, "--backend", "vulkan", "--scene",
-                                            scene("four_lights"), "--size", "64x48", "--out", out});
-    EXPECT_EQ(r.exitCode, 0) << r;
-    EXPECT_NE(r.out.find("3 draws, 2 pipelines"), std::string::npos) << r;
+TEST(VulkanRenderCli, ClassicAndDiffractionScenesDrawThroughVulkan) {
+    for (const auto& [name, drawn] :
+         {std::pair{"four_lights", "3 draws, 2 pipelines"}, std::pair{"diffraction_snake", "1 draws, 1 pipelines"}}) {
+        const std::string out = outPng(std::string(name) + ".png");
+        const auto r = prism::test::runCommand(
+            {PRISM_RENDER_EXECUTABLE, "--backend", "vulkan", "--scene", scene(name), "--size", "64x48", "--out", out});
+        EXPECT_EQ(r.exitCode, 0) << r;
+        EXPECT_NE(r.out.find(drawn), std::string::npos) << r;
+        EXPECT_TRUE(fs::exists(out)) << name;
+    }
 }
 
 // Each scene's system without a Vulkan path is named; nothing is written.
@@ -53,7 +58,6 @@ TEST(VulkanRenderCli, ScenesWithAGlOnlySystemExit2NamingIt) {
         {"fog", "fog billboards"},
         {"rain", "the rain system"},
         {"water", "the water system"},
-        {"diffraction_grating", "the diffraction system"},
         {"soft_shadows", "is drawn on the CPU"},  // prism-render refuses any backend for it
     };
     for (const auto& [name, system] : cases) {

@@ -2,7 +2,15 @@
 // prism/scene/vulkan_scene.hpp).
 #include "prism/scene/vulkan_scene.hpp"
 
+#include <algorithm>
+#include <iterator>
+#include <memory>
+#include <utility>
+
+#include "prism/diffraction/diffraction_vk.hpp"
+#include "prism/diffraction_shaders.hpp"
 #include "prism/render/shader_meshes.hpp"
+#include "prism/scene/diffraction_object.hpp"
 #include "prism/scene/scene_loader.hpp"
 
 namespace prism::scene {
@@ -15,11 +23,33 @@ std::string glOnlySystem(const Scene& scene) {
     if (scene.rain) return "the rain system (\"rain\"), GL particles";
     if (scene.fog && scene.fogBillboards && *scene.fogBillboards > 0.0f)
         return "the rain system's fog billboards (\"fog\": {\"billboards\"})";
-    for (const auto& object : scene.objects)
-        if (object.shader == "diffraction")
-            return "the diffraction system (an object with \"shader\": \"diffraction\", at " +
-                   (object.diffractionPointer.empty() ? std::string("/objects") : object.diffractionPointer) + ")";
     return {};
+}
+
+// The tables of one material, uploaded once per frame however many objects use it.
+using BuiltTables = std::vector<std::pair<diffraction::DiffractionMaterial, std::shared_ptr<render::VulkanDrawExtras>>>;
+
+// A diffraction object: the diffraction catalogue's program for its material's path, drawn from
+// the tables SceneRenderer's GL path builds too (buildDiffractionTables).
+render::VulkanDraw diffractionDraw(const Scene& scene, const SceneObject& object, BuiltTables& built) {
+    render::VulkanDraw draw{"diffraction",
+                            object.variantOverrides,
+                            render::meshForShader("diffraction", render::namedMesh(object.mesh, object.subdivision)),
+                            object.world,
+                            object.material,
+                            &diffraction_shaders::kCatalog,
+                            nullptr};
+    DiffractionObjectTables tables = buildDiffractionTables(scene, object);      // throws, naming the object
+    draw.variant.emplace_back("DIFFRACTION_PATH", tables.uniforms().variant());  // the material decides the path
+    const diffraction::DiffractionMaterial& m = *object.diffraction;
+    auto same = std::find_if(built.begin(), built.end(), [&](const auto& b) { return b.first == m; });
+    if (same == built.end()) {
+        built.emplace_back(m, std::make_shared<diffraction::VulkanDiffractionTables>(std::move(tables.tables),
+                                                                                     m.tangent, m.radialTangent));
+        same = std::prev(built.end());
+    }
+    draw.extras = same->second;
+    return draw;
 }
 
 }  // namespace
@@ -35,10 +65,16 @@ render::VulkanFrame vulkanFrameOf(const Scene& scene) {
     frame.width = scene.width;
     frame.height = scene.height;
     frame.background = scene.fog ? glm::vec4(scene.fog->color, 1.0f) : scene.background;
-    for (const auto& object : scene.objects)
+    BuiltTables built;
+    for (const auto& object : scene.objects) {
+        if (object.shader == "diffraction") {
+            frame.draws.push_back(diffractionDraw(scene, object, built));
+            continue;
+        }
         frame.draws.push_back({object.shader, object.variantOverrides,
                                render::meshForShader(object.shader, render::namedMesh(object.mesh, object.subdivision)),
-                               object.world, object.material});
+                               object.world, object.material, nullptr, nullptr});
+    }
     return frame;
 }
 
