@@ -11,11 +11,13 @@
 #include <filesystem>
 #include <iostream>
 
+#include "prism/bluenoise/gl_soft_shadows.hpp"
 #include "prism/diffraction/diffraction_vk.hpp"
 #include "prism/image/png_io.hpp"
 #include "prism/render/shader_meshes.hpp"
 #include "prism/scene/scene_loader.hpp"
 #include "prism/scene/scene_renderer.hpp"
+#include "prism/scene/stochastic.hpp"
 #include "prism/scene/vulkan_scene.hpp"
 #include "prism/shaders.hpp"
 #include "prism/test/env_flag.hpp"
@@ -160,6 +162,53 @@ TEST_F(VulkanAgreement, DiffractionTablesSampledNearestFailIt) {
     scene::SceneRenderer gl(shaders::kCatalog);
     const Agreement a = agreementOf(vulkan.render(frame), gl.render(s));
     EXPECT_FALSE(agrees(a, kDiffractionThresholds)) << "nearest filtering went unnoticed: " << a;
+    expectNoValidationMessages(vulkan);
+}
+
+// The blue-noise soft shadows (examples/scenes/soft_shadows.json, 128x128, frame 0 of each
+// sampler, and the sorted sampler's mean of 4 frames): each frame drawn from the blue-noise
+// catalogue's SPIR-V, against the same frames through GL (GlSoftShadows, the same shader's GL
+// text) and against the scene goldens, which the CPU renders (SceneGolden). Measured identical
+// (max 0/255) in every case, so the classic thresholds hold them.
+scene::Scene softShadowScene(const char* sampler, int frames) {
+    scene::Scene s = scene::loadScene(std::string(PRISM_SCENES_DIR) + "/soft_shadows.json");
+    s.stochastic->sampler = *scene::parseStochasticSampler(sampler);
+    s.stochastic->frames = frames;
+    return s;
+}
+
+image::Image8 softShadowsGl(const scene::Scene& s) {
+    scene::StochasticRun run = scene::prepareStochastic(*s.stochastic, s.width, s.height);
+    bluenoise::GlSoftShadows gl(s.width, s.height);
+    return scene::toGreyImage(gl.render(s.stochastic->light, run.setup, run.options));
+}
+
+TEST_F(VulkanAgreement, TheSoftShadowScenesMatchGlAndTheirGoldens) {
+    auto& vulkan = validatedRenderer();
+    for (const auto& [sampler, frames] :
+         {std::pair{"white", 1}, std::pair{"bluenoise", 1}, std::pair{"sorted", 1}, std::pair{"sorted", 4}}) {
+        const scene::Scene s = softShadowScene(sampler, frames);
+        const image::Image8 vk = scene::renderStochasticVulkan(*s.stochastic, s.width, s.height, vulkan.device());
+        const std::string name = std::string("soft_shadows ") + sampler + " frames " + std::to_string(frames);
+        check("scene " + name, vk, softShadowsGl(s), kAgreementThresholds);
+        if (frames == 1)
+            check("scene golden " + name, vk,
+                  image::readPng(fs::path(PRISM_GOLDEN_DIR) / "scenes" /
+                                 ("soft_shadows_" + std::string(sampler) + ".png")),
+                  kAgreementThresholds);
+    }
+    expectNoValidationMessages(vulkan);
+}
+
+// Vulkan's row order for the soft-shadow pass (its gl_FragCoord.y counts from the top) draws the
+// picture upside down: it fails the agreement.
+TEST_F(VulkanAgreement, SoftShadowsInVulkansRowOrderFailIt) {
+    const scene::Scene s = softShadowScene("bluenoise", 1);
+    auto& vulkan = validatedRenderer();
+    const image::Image8 flipped =
+        scene::renderStochasticVulkan(*s.stochastic, s.width, s.height, vulkan.device(), vk::ClipConvention{});
+    const Agreement a = agreementOf(flipped, softShadowsGl(s));
+    EXPECT_FALSE(agrees(a, kAgreementThresholds)) << "Vulkan's row order went unnoticed: " << a;
     expectNoValidationMessages(vulkan);
 }
 

@@ -130,6 +130,27 @@ StochasticSetup StochasticSetup::make(const Mask& mask) {
     return setup;
 }
 
+SoftShadowUniforms softShadowUniforms(const SoftShadowScene& scene, const SamplerTables& tables,
+                                      const RenderOptions& options) {
+    if (scene.spheres.size() > kGpuSpheres)
+        throw std::invalid_argument("prism::bluenoise: the GPU soft shadows draw at most 3 spheres, the scene has " +
+                                    std::to_string(scene.spheres.size()));
+    SoftShadowUniforms u;
+    u.stackDepth = tables.stackDepth;
+    u.sampler = static_cast<int>(options.sampler);
+    u.spp = options.spp;
+    u.imageSize = {static_cast<float>(options.width), static_cast<float>(options.height)};
+    u.extent = static_cast<float>(scene.extent);
+    u.light = {static_cast<float>(scene.lightHeight), static_cast<float>(scene.lightHalfLength),
+               static_cast<float>(scene.lightHalfWidth), static_cast<float>(irradianceScale(scene))};
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+        const Sphere& sp = scene.spheres[i];
+        u.spheres[i] = {static_cast<float>(sp.x), static_cast<float>(sp.y), static_cast<float>(sp.z),
+                        static_cast<float>(sp.radius)};
+    }
+    return u;
+}
+
 double irradianceScale(const SoftShadowScene& scene) {
     const double norm = normaliser(scene);
     return norm > 0.0 ? scene.radiance / norm : 0.0;

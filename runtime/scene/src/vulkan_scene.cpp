@@ -5,20 +5,22 @@
 #include <algorithm>
 #include <iterator>
 #include <memory>
+#include <stdexcept>
 #include <utility>
 
+#include "prism/bluenoise/vk_soft_shadows.hpp"
 #include "prism/diffraction/diffraction_vk.hpp"
 #include "prism/diffraction_shaders.hpp"
 #include "prism/render/shader_meshes.hpp"
 #include "prism/scene/diffraction_object.hpp"
 #include "prism/scene/scene_loader.hpp"
+#include "prism/scene/stochastic.hpp"
 
 namespace prism::scene {
 namespace {
 
 // The first system of `scene` that only GL draws, as "what (JSON key)"; empty when none.
 std::string glOnlySystem(const Scene& scene) {
-    if (scene.stochastic) return "the stochastic soft shadows (\"stochastic\"), drawn on the CPU";
     if (scene.water) return "the water system (\"water\"), a GL compute simulation";
     if (scene.rain) return "the rain system (\"rain\"), GL particles";
     if (scene.fog && scene.fogBillboards && *scene.fogBillboards > 0.0f)
@@ -55,6 +57,10 @@ render::VulkanDraw diffractionDraw(const Scene& scene, const SceneObject& object
 }  // namespace
 
 render::VulkanFrame vulkanFrameOf(const Scene& scene) {
+    if (scene.stochastic)
+        throw std::invalid_argument(scene.file +
+                                    ": a \"stochastic\" scene is no frame of draws; "
+                                    "draw it with renderStochasticVulkan");
     if (const std::string system = glOnlySystem(scene); !system.empty())
         throw SceneError(scene.file + ": " + system +
                          " has no Vulkan path; render this scene with --backend egl or osmesa");
@@ -76,6 +82,13 @@ render::VulkanFrame vulkanFrameOf(const Scene& scene) {
                                object.world, object.material, nullptr, nullptr});
     }
     return frame;
+}
+
+image::Image8 renderStochasticVulkan(const StochasticSettings& settings, int width, int height,
+                                     const vk::Device& device, vk::ClipConvention clip) {
+    StochasticRun run = prepareStochastic(settings, width, height);
+    bluenoise::VulkanSoftShadows gpu(device, width, height, clip);
+    return toGreyImage(gpu.render(settings.light, run.setup, run.options));
 }
 
 }  // namespace prism::scene

@@ -27,6 +27,8 @@
 // sorting pass alone on a static scene).
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -85,6 +87,22 @@ RealImage runSoftShadowPipeline(StochasticSetup& setup, const RenderOptions& opt
 
 // Irradiance scale of the scene: radiance / the unoccluded irradiance below the light.
 double irradianceScale(const SoftShadowScene& scene);
+
+// The GPU version's uniforms (shader_sources/bluenoise/soft_shadows.frag) but u_frame, as
+// the GL and the Vulkan frame renderers both set them. Throws std::invalid_argument for more
+// than kGpuSpheres spheres.
+inline constexpr std::size_t kGpuSpheres = 3;
+struct SoftShadowUniforms {
+    int stackDepth = 1;                                       // u_blueNoiseStackDepth
+    int sampler = 0;                                          // u_blueNoiseSampler (SamplerKind)
+    int spp = 1;                                              // u_spp
+    std::array<float, 2> imageSize{};                         // u_imageSize
+    float extent = 0.0f;                                      // u_extent
+    std::array<float, 4> light{};                             // u_light: height, half-length, half-width, scale
+    std::array<std::array<float, 4>, kGpuSpheres> spheres{};  // u_sphere0..2: centre, radius (0: none)
+};
+SoftShadowUniforms softShadowUniforms(const SoftShadowScene& scene, const SamplerTables& tables,
+                                      const RenderOptions& options);
 
 struct Reference {
     RealImage image;
