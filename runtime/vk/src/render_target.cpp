@@ -23,14 +23,7 @@ ImageObject createImage(const Device& device, VkFormat format, VkImageUsageFlags
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = usage;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    VkImage image = VK_NULL_HANDLE;
-    check(vkCreateImage(device.device(), &info, nullptr, &image), "vkCreateImage");
-    ImageObject owned(device.device(), image);
-    VkMemoryRequirements requirements;
-    vkGetImageMemoryRequirements(device.device(), image, &requirements);
-    memory = allocateMemory(device, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    check(vkBindImageMemory(device.device(), image, memory.get(), 0), "vkBindImageMemory");
-    return owned;
+    return createDeviceImage(device, info, memory);
 }
 
 ImageView createView(const Device& device, VkImage image, VkFormat format, VkImageAspectFlags aspect) {

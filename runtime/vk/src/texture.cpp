@@ -22,14 +22,7 @@ ImageObject createImage(const Device& device, const TextureDescription& d, Memor
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    VkImage image = VK_NULL_HANDLE;
-    check(vkCreateImage(device.device(), &info, nullptr, &image), "vkCreateImage of a texture");
-    ImageObject owned(device.device(), image);
-    VkMemoryRequirements requirements;
-    vkGetImageMemoryRequirements(device.device(), image, &requirements);
-    memory = allocateMemory(device, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    check(vkBindImageMemory(device.device(), image, memory.get(), 0), "vkBindImageMemory of a texture");
-    return owned;
+    return createDeviceImage(device, info, memory);
 }
 
 void transition(VkCommandBuffer cmd, VkImage image, std::uint32_t layers, VkImageLayout from, VkImageLayout to) {
