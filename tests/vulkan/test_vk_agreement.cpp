@@ -1,8 +1,10 @@
 // Vulkan and GL agree: every classic catalogue shader x variant x gallery mesh, drawn from
 // the catalogue's SPIR-V on lavapipe and from its GL text on llvmpipe, compared pixel by
-// pixel; the same against the GL goldens, and the Vulkan-capable example scenes. The
-// thresholds sit just above the differences measured here (docs/vulkan.md). A uniform member
-// at a wrong offset fails it (the clip-space faults fail test_vk_clip_convention.cpp).
+// pixel; the same against the GL goldens, and the Vulkan-capable example scenes (classic,
+// diffraction, blue-noise soft shadows). The thresholds sit just above the differences
+// measured here (docs/vulkan.md). A uniform member at a wrong offset, diffraction tables
+// sampled nearest and the soft shadows in Vulkan's row order each fail it (the clip-space
+// faults fail test_vk_clip_convention.cpp).
 //
 // PRISM_VULKAN_REPORT=1 prints every case's numbers (how docs/vulkan.md's table was made).
 #include <gtest/gtest.h>

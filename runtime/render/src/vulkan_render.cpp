@@ -1,6 +1,8 @@
 // Catalogue renders through Vulkan (see prism/render/vulkan_render.hpp).
 #include "prism/render/vulkan_render.hpp"
 
+#include <stdexcept>
+
 #include "prism/render/feature_variants.hpp"
 #include "prism/render/frame_uniforms.hpp"
 
@@ -110,6 +112,8 @@ VulkanRenderer::DrawResources VulkanRenderer::prepare(const VulkanFrame& frame, 
         r.uniforms = vk::Buffer(device_, uniforms.bytes().size(), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
         r.uniforms.write(uniforms.bytes().data(), uniforms.bytes().size());
         r.sets->bindBuffer(*block, r.uniforms);
+    } else if (draw.extras) {  // its uniforms and textures would be silently dropped
+        throw std::invalid_argument(label + ": the draw carries extras, but the shader has no uniform block for them");
     }
     return r;
 }
