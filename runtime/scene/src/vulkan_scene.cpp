@@ -28,8 +28,9 @@ std::string glOnlySystem(const Scene& scene) {
     return {};
 }
 
-// The tables of one material, uploaded once per frame however many objects use it.
-using BuiltTables = std::vector<std::pair<diffraction::DiffractionMaterial, std::shared_ptr<render::VulkanDrawExtras>>>;
+// The tables of one material, built once per frame however many objects use it.
+using BuiltTables =
+    std::vector<std::pair<diffraction::DiffractionMaterial, std::shared_ptr<diffraction::VulkanDiffractionTables>>>;
 
 // A diffraction object: the diffraction catalogue's program for its material's path, drawn from
 // the tables SceneRenderer's GL path builds too (buildDiffractionTables).
@@ -41,15 +42,16 @@ render::VulkanDraw diffractionDraw(const Scene& scene, const SceneObject& object
                             object.material,
                             &diffraction_shaders::kCatalog,
                             nullptr};
-    DiffractionObjectTables tables = buildDiffractionTables(scene, object);      // throws, naming the object
-    draw.variant.emplace_back("DIFFRACTION_PATH", tables.uniforms().variant());  // the material decides the path
+    if (!object.diffraction) (void)buildDiffractionTables(scene, object);  // throws, naming the object
     const diffraction::DiffractionMaterial& m = *object.diffraction;
     auto same = std::find_if(built.begin(), built.end(), [&](const auto& b) { return b.first == m; });
     if (same == built.end()) {
+        DiffractionObjectTables tables = buildDiffractionTables(scene, object);
         built.emplace_back(m, std::make_shared<diffraction::VulkanDiffractionTables>(std::move(tables.tables),
                                                                                      m.tangent, m.radialTangent));
         same = std::prev(built.end());
     }
+    draw.variant.emplace_back("DIFFRACTION_PATH", same->second->uniforms().variant());  // the material decides it
     draw.extras = same->second;
     return draw;
 }
