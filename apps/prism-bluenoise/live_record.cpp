@@ -12,21 +12,21 @@ namespace prism::bluenoise::app {
 void writeLiveRecord(const std::string& path, const std::string& png, const SoftShadowScene& scene,
                      const StochasticSetup& setup, const RenderOptions& options) {
     using Json = nlohmann::ordered_json;
-    const SoftShadowShaderInputs in = softShadowShaderInputs(scene);
+    const SoftShadowUniforms u = softShadowUniforms(scene, setup.tables, options);
     // Every uniform of soft_shadows.frag, as a list of components; samplers name texture units.
     const Json uniforms = {{"u_frame", {options.frame}},
-                           {"u_spp", {options.spp}},
-                           {"u_imageSize", {options.width, options.height}},
-                           {"u_extent", {in.extent}},
-                           {"u_light", in.light},
-                           {"u_sphere0", in.spheres[0]},
-                           {"u_sphere1", in.spheres[1]},
-                           {"u_sphere2", in.spheres[2]},
-                           {"u_blueNoiseSampler", {static_cast<int>(options.sampler)}},
+                           {"u_spp", {u.spp}},
+                           {"u_imageSize", u.imageSize},
+                           {"u_extent", {u.extent}},
+                           {"u_light", u.light},
+                           {"u_sphere0", u.spheres[0]},
+                           {"u_sphere1", u.spheres[1]},
+                           {"u_sphere2", u.spheres[2]},
+                           {"u_blueNoiseSampler", {u.sampler}},
                            {"u_blueNoiseMask", {0}},
                            {"u_blueNoiseSeeds", {1}},
                            {"u_blueNoiseStack", {2}},
-                           {"u_blueNoiseStackDepth", {setup.tables.stackDepth}}};
+                           {"u_blueNoiseStackDepth", {u.stackDepth}}};
     const Json record = {
         {"png", std::filesystem::path(png).filename().string()},
         {"width", options.width},

@@ -1,6 +1,6 @@
 // `prism-bluenoise render --live-record PATH`: what the GPU soft-shadow shader
 // (shader_sources/bluenoise/soft_shadows.frag) needs to draw the frame just rendered: its
-// uniforms (from softShadowShaderInputs, the values GlSoftShadows sets) and the blue-noise
+// uniforms (from softShadowUniforms, the values GlSoftShadows sets) and the blue-noise
 // mask as the R32UI texture holds it. scripts/gallery_live.py embeds it in the report, whose
 // live blue-noise view draws that exact frame through WebGL2 and compares it with the PNG
 // (docs/web.md).

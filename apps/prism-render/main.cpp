@@ -8,13 +8,13 @@
 // --frames K the mean of frames 0..K-1.
 // With --scene, --size WxH overrides the scene's "image" size; the flags that only
 // describe a catalogue render (--mesh, --subdiv, --variant, --shininess, --specular,
-// --color, --light-dir, --scale) are usage errors, as is --backend for a scene drawn on
-// the CPU: no flag is silently ignored.
+// --color, --light-dir, --scale) are usage errors, as is a GL --backend for a "stochastic"
+// scene, drawn on the CPU or through --backend vulkan: no flag is silently ignored.
 // --check-finite renders to RGBA32F and exits 3, printing the count, if any pixel is
 // NaN or Inf. Bad input exits 2 with a message and writes no image.
 // --backend vulkan (or PRISM_GL_BACKEND=vulkan without --backend) draws the catalogue's
-// SPIR-V through prism::vk (docs/vulkan.md); a scene with a system that has no Vulkan path
-// exits 2 naming it.
+// SPIR-V through prism::vk (docs/vulkan.md), also a "stochastic" scene's soft shadows; a scene
+// with a system that has no Vulkan path exits 2 naming it.
 #include <CLI/CLI.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -147,16 +147,24 @@ Stop applyStochasticFlags(const Arguments& a, prism::scene::Scene& scene) {
     return std::nullopt;
 }
 
-// A "stochastic" scene: on the CPU, no GL context.
-int writeStochasticScene(const Arguments& a, const prism::scene::Scene& scene) {
-    if (!a.backend.empty())
+// A "stochastic" scene: on the CPU, no GL context; or each frame through Vulkan.
+int writeStochasticScene(const Arguments& a, const prism::scene::Scene& scene,
+                         std::optional<prism::gl::Backend> backend) {
+    if (!a.backend.empty() && !isVulkan(backend))
         return badInput("--backend: " + a.scene +
-                        " is drawn on the CPU (a \"stochastic\" scene); it uses no GL backend");
+                        " is drawn on the CPU (a \"stochastic\" scene), or through --backend vulkan; it uses no GL "
+                        "backend");
     try {
         const auto& st = *scene.stochastic;
-        prism::image::writePng(a.out, prism::scene::renderStochastic(st, scene.width, scene.height));
-        std::cout << "prism-render: wrote " << a.out << " (soft shadows, "
-                  << prism::scene::stochasticSamplerName(st.sampler) << ", " << st.spp << " spp, "
+        if (isVulkan(backend)) {
+            const prism::vk::Device device;
+            prism::image::writePng(a.out, prism::scene::renderStochasticVulkan(st, scene.width, scene.height, device));
+        } else {
+            prism::image::writePng(a.out, prism::scene::renderStochastic(st, scene.width, scene.height));
+        }
+        std::cout << "prism-render: wrote " << a.out << " (soft shadows"
+                  << (isVulkan(backend) ? " through vulkan, " : ", ") << prism::scene::stochasticSamplerName(st.sampler)
+                  << ", " << st.spp << " spp, "
                   << (st.frames > 1 ? "mean of frames 0.." + std::to_string(st.frames - 1)
                                     : "frame " + std::to_string(st.frame))
                   << ")\n";
@@ -226,7 +234,7 @@ int renderScene(const Arguments& a) {
     prism::scene::Scene scene;
     if (const Stop stop = loadScene(a, scene)) return *stop;
     if (const Stop stop = applyStochasticFlags(a, scene)) return *stop;
-    if (scene.stochastic) return writeStochasticScene(a, scene);
+    if (scene.stochastic) return writeStochasticScene(a, scene, backend);
     return drawScene(a, scene, backend);
 }
 

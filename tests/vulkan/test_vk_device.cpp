@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "prism/render/shader_meshes.hpp"
+#include "prism/scene/vulkan_scene.hpp"
 #include "prism/shaders.hpp"
 #include "prism/test/run_command.hpp"
 #include "prism/vk/buffer.hpp"
@@ -20,9 +21,16 @@ TEST(VulkanObjects, NothingLeaksAfterRendersOfSeveralDraws) {
         job.mesh = render::meshForShader("phong", render::namedMesh("torus", 1));
         (void)vulkan.render(job);
         render::VulkanFrame frame = render::frameOf(job);
-        frame.draws.push_back({"flat", {}, render::meshForShader("flat", render::namedMesh("cube")), {}, {}});
+        frame.draws.push_back(
+            {"flat", {}, render::meshForShader("flat", render::namedMesh("cube")), {}, {}, nullptr, nullptr});
         (void)vulkan.render(frame);
         EXPECT_EQ(vulkan.pipelineCount(), 2u);
+        // Textures, samplers and an RGBA32F target: the soft shadows' frames (two, sorted).
+        scene::StochasticSettings soft;
+        soft.sampler = bluenoise::SamplerKind::Sorted;
+        soft.frames = 2;
+        soft.maskSize = 16;
+        (void)scene::renderStochasticVulkan(soft, 24, 16, vulkan.device());
         expectNoValidationMessages(vulkan);
     }
     const vk::ObjectCounts after = vk::objectCounts();
@@ -32,7 +40,8 @@ TEST(VulkanObjects, NothingLeaksAfterRendersOfSeveralDraws) {
     }
     // Every kind a render needs was made (and so counted) at least once.
     for (auto kind : {vk::ObjectKind::Instance, vk::ObjectKind::Device, vk::ObjectKind::Buffer, vk::ObjectKind::Image,
-                      vk::ObjectKind::Pipeline, vk::ObjectKind::DescriptorPool, vk::ObjectKind::Fence})
+                      vk::ObjectKind::ImageView, vk::ObjectKind::Sampler, vk::ObjectKind::Pipeline,
+                      vk::ObjectKind::DescriptorPool, vk::ObjectKind::Fence})
         EXPECT_GT(after.created(kind), before.created(kind)) << "object kind " << static_cast<int>(kind);
 }
 

@@ -1,5 +1,6 @@
 // prism-render --backend vulkan: a catalogue render, the choice through PRISM_GL_BACKEND as
-// through --backend, and scenes whose systems have no Vulkan path refused (exit 2) by name.
+// through --backend, a classic scene, the soft shadows, and scenes whose systems have no Vulkan
+// path refused (exit 2) by name (the diffraction scenes are drawn by test_vk_agreement.cpp).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -47,14 +48,28 @@ TEST(VulkanRenderCli, AClassicSceneDrawsThroughVulkan) {
     EXPECT_NE(r.out.find("3 draws, 2 pipelines"), std::string::npos) << r;
 }
 
+// The soft shadows go through Vulkan with --backend vulkan, and a GL backend is still refused.
+TEST(VulkanRenderCli, TheSoftShadowSceneDrawsThroughVulkanOnly) {
+    const std::string out = outPng("soft_shadows.png");
+    const auto r = prism::test::runCommand({PRISM_RENDER_EXECUTABLE, "--backend", "vulkan", "--scene",
+                                            scene("soft_shadows"), "--frames", "2", "--out", out});
+    EXPECT_EQ(r.exitCode, 0) << r;
+    EXPECT_NE(r.out.find("through vulkan, bluenoise, 1 spp, mean of frames 0..1"), std::string::npos) << r;
+    EXPECT_TRUE(fs::exists(out));
+    const std::string refused = outPng("soft_shadows_egl.png");
+    const auto egl = prism::test::runCommand(
+        {PRISM_RENDER_EXECUTABLE, "--backend", "egl", "--scene", scene("soft_shadows"), "--out", refused});
+    EXPECT_EQ(egl.exitCode, 2) << egl;
+    EXPECT_NE(egl.err.find("or through --backend vulkan"), std::string::npos) << egl;
+    EXPECT_FALSE(fs::exists(refused));
+}
+
 // Each scene's system without a Vulkan path is named; nothing is written.
 TEST(VulkanRenderCli, ScenesWithAGlOnlySystemExit2NamingIt) {
     const std::pair<const char*, const char*> cases[] = {
         {"fog", "fog billboards"},
         {"rain", "the rain system"},
         {"water", "the water system"},
-        {"diffraction_grating", "the diffraction system"},
-        {"soft_shadows", "is drawn on the CPU"},  // prism-render refuses any backend for it
     };
     for (const auto& [name, system] : cases) {
         const std::string out = outPng(std::string(name) + ".png");

@@ -54,7 +54,7 @@ GlSoftShadows::GlSoftShadows(int width, int height) : gl_(std::make_unique<Resou
 GlSoftShadows::~GlSoftShadows() = default;
 
 RealImage GlSoftShadows::render(const SoftShadowScene& scene, StochasticSetup& setup, const RenderOptions& options) {
-    const SoftShadowShaderInputs inputs = softShadowShaderInputs(scene);  // throws for more than 3 spheres
+    const SoftShadowUniforms u = softShadowUniforms(scene, setup.tables, options);  // throws for > 3 spheres
     const gl::ScopedDrawState keep;  // the caller's framebuffer, viewport, bindings and unit, put back on return
     if (options.width != gl_->framebuffer.width() || options.height != gl_->framebuffer.height())
         throw std::invalid_argument("prism::bluenoise::GlSoftShadows: options size differs from the framebuffer's");
@@ -63,17 +63,18 @@ RealImage GlSoftShadows::render(const SoftShadowScene& scene, StochasticSetup& s
     program.set(soft_shadows::u_blueNoiseMask, 0);
     program.set(soft_shadows::u_blueNoiseSeeds, 1);
     program.set(soft_shadows::u_blueNoiseStack, 2);
-    program.set(soft_shadows::u_blueNoiseStackDepth, setup.tables.stackDepth);
-    program.set(soft_shadows::u_blueNoiseSampler, static_cast<int>(options.sampler));
-    program.set(soft_shadows::u_spp, options.spp);
-    program.set(soft_shadows::u_imageSize,
-                glm::vec2(static_cast<float>(options.width), static_cast<float>(options.height)));
-    program.set(soft_shadows::u_extent, inputs.extent);
-    const auto vec4 = [](const std::array<float, 4>& v) { return glm::vec4(v[0], v[1], v[2], v[3]); };
-    program.set(soft_shadows::u_light, vec4(inputs.light));
-    program.set(soft_shadows::u_sphere0, vec4(inputs.spheres[0]));
-    program.set(soft_shadows::u_sphere1, vec4(inputs.spheres[1]));
-    program.set(soft_shadows::u_sphere2, vec4(inputs.spheres[2]));
+    program.set(soft_shadows::u_blueNoiseStackDepth, u.stackDepth);
+    program.set(soft_shadows::u_blueNoiseSampler, u.sampler);
+    program.set(soft_shadows::u_spp, u.spp);
+    program.set(soft_shadows::u_imageSize, glm::vec2(u.imageSize[0], u.imageSize[1]));
+    program.set(soft_shadows::u_extent, u.extent);
+    program.set(soft_shadows::u_light, glm::vec4(u.light[0], u.light[1], u.light[2], u.light[3]));
+    const decltype(soft_shadows::u_sphere0)* spheres[] = {&soft_shadows::u_sphere0, &soft_shadows::u_sphere1,
+                                                          &soft_shadows::u_sphere2};
+    for (std::size_t i = 0; i < kGpuSpheres; ++i) {
+        const auto& sp = u.spheres[i];
+        program.set(*spheres[i], glm::vec4(sp[0], sp[1], sp[2], sp[3]));
+    }
     gl_->mask.upload(0, setup.tables.maskWidth, setup.tables.maskHeight, setup.tables.mask);
     gl_->stack.upload(2, setup.tables.stackWidth, setup.tables.stackHeight * setup.tables.stackDepth,
                       setup.tables.stack);

@@ -130,25 +130,30 @@ StochasticSetup StochasticSetup::make(const Mask& mask) {
     return setup;
 }
 
+SoftShadowUniforms softShadowUniforms(const SoftShadowScene& scene, const SamplerTables& tables,
+                                      const RenderOptions& options) {
+    if (scene.spheres.size() > kGpuSpheres)
+        throw std::invalid_argument("prism::bluenoise: the GPU soft shadows draw at most 3 spheres, the scene has " +
+                                    std::to_string(scene.spheres.size()));
+    SoftShadowUniforms u;
+    u.stackDepth = tables.stackDepth;
+    u.sampler = static_cast<int>(options.sampler);
+    u.spp = options.spp;
+    u.imageSize = {static_cast<float>(options.width), static_cast<float>(options.height)};
+    u.extent = static_cast<float>(scene.extent);
+    u.light = {static_cast<float>(scene.lightHeight), static_cast<float>(scene.lightHalfLength),
+               static_cast<float>(scene.lightHalfWidth), static_cast<float>(irradianceScale(scene))};
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+        const Sphere& sp = scene.spheres[i];
+        u.spheres[i] = {static_cast<float>(sp.x), static_cast<float>(sp.y), static_cast<float>(sp.z),
+                        static_cast<float>(sp.radius)};
+    }
+    return u;
+}
+
 double irradianceScale(const SoftShadowScene& scene) {
     const double norm = normaliser(scene);
     return norm > 0.0 ? scene.radiance / norm : 0.0;
-}
-
-SoftShadowShaderInputs softShadowShaderInputs(const SoftShadowScene& scene) {
-    if (scene.spheres.size() > 3)
-        throw std::invalid_argument("prism::bluenoise: the soft-shadow shader takes at most 3 spheres, the scene has " +
-                                    std::to_string(scene.spheres.size()));
-    SoftShadowShaderInputs in;
-    in.extent = static_cast<float>(scene.extent);
-    in.light = {static_cast<float>(scene.lightHeight), static_cast<float>(scene.lightHalfLength),
-                static_cast<float>(scene.lightHalfWidth), static_cast<float>(irradianceScale(scene))};
-    for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
-        const Sphere& s = scene.spheres[i];
-        in.spheres[i] = {static_cast<float>(s.x), static_cast<float>(s.y), static_cast<float>(s.z),
-                         static_cast<float>(s.radius)};
-    }
-    return in;
 }
 
 RealImage renderSoftShadows(const SoftShadowScene& scene, StochasticSetup& setup, const RenderOptions& o) {

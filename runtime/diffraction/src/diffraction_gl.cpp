@@ -27,18 +27,12 @@ gl::Texture makeArray(int size, int layers, GLenum internalFormat, GLenum format
 
 }  // namespace
 
-DiffractionTextures::DiffractionTextures(const SpectralTables& t)
-    : path_(0), size_(t.size), terms_(t.terms), extent_(t.frequencyExtent), heightScale_(t.heightScaleNm) {
+DiffractionTextures::DiffractionTextures(const SpectralTables& t) : uniforms_(tableUniforms(t)) {
     tables_ = makeArray(t.size, t.terms + 1, GL_RG32F, GL_RG, t.texels);
-    std::vector<float> row;
-    for (const WavelengthRgb& w : t.wavelengths) {
-        row.insert(row.end(), {static_cast<float>(w.weight.r), static_cast<float>(w.weight.g),
-                               static_cast<float>(w.weight.b), static_cast<float>(w.wavelengthNm)});
-    }
-    wavelengthCount_ = static_cast<int>(t.wavelengths.size());
+    const std::vector<float> row = wavelengthTexels(t);
     wavelengths_ = gl::Texture::create();
     glBindTexture(GL_TEXTURE_2D, wavelengths_.id());
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, wavelengthCount_, 1, 0, GL_RGBA, GL_FLOAT, row.data());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, uniforms_.wavelengthCount, 1, 0, GL_RGBA, GL_FLOAT, row.data());
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glBindTexture(GL_TEXTURE_2D, 0);
@@ -46,14 +40,12 @@ DiffractionTextures::DiffractionTextures(const SpectralTables& t)
     bytes_ = t.bytes() + row.size() * sizeof(float);
 }
 
-DiffractionTextures::DiffractionTextures(const IntegratedTables& t)
-    : path_(1), size_(t.size), terms_(t.terms), extent_(kIntegratedExtent) {
+DiffractionTextures::DiffractionTextures(const IntegratedTables& t) : uniforms_(tableUniforms(t)) {
     tables_ = makeArray(t.size, 2 * t.terms + 1, GL_RGB32F, GL_RGB, t.texels);
     bytes_ = t.bytes();
 }
 
-DiffractionTextures::DiffractionTextures(const VolumeTables& t)
-    : path_(2), size_(t.size), slices_(t.slices), extent_(kIntegratedExtent) {
+DiffractionTextures::DiffractionTextures(const VolumeTables& t) : uniforms_(tableUniforms(t)) {
     tables_ = gl::Texture::create();
     glBindTexture(GL_TEXTURE_3D, tables_.id());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
@@ -70,23 +62,24 @@ DiffractionTextures::DiffractionTextures(const VolumeTables& t)
 
 void DiffractionTextures::apply(gl::Program& program, int unit) const {
     glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
-    program.set(diffraction_shaders::contract::u_diffractionTableSize, static_cast<float>(size_));
-    program.set(diffraction_shaders::contract::u_diffractionExtent, static_cast<float>(extent_));
-    if (path_ == 2) {
+    const TableUniforms& u = uniforms_;
+    program.set(diffraction_shaders::contract::u_diffractionTableSize, static_cast<float>(u.size));
+    program.set(diffraction_shaders::contract::u_diffractionExtent, static_cast<float>(u.extent));
+    if (u.path == 2) {
         glBindTexture(GL_TEXTURE_3D, tables_.id());
         program.set(diffraction_shaders::contract::u_diffractionVolume, unit);
-        program.set(diffraction_shaders::contract::u_diffractionSlices, static_cast<float>(slices_));
+        program.set(diffraction_shaders::contract::u_diffractionSlices, static_cast<float>(u.slices));
     } else {
         glBindTexture(GL_TEXTURE_2D_ARRAY, tables_.id());
         program.set(diffraction_shaders::contract::u_diffractionTables, unit);
-        program.set(diffraction_shaders::contract::u_diffractionTerms, terms_);
+        program.set(diffraction_shaders::contract::u_diffractionTerms, u.terms);
     }
-    if (path_ == 0) {
+    if (u.path == 0) {
         glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit + 1));
         glBindTexture(GL_TEXTURE_2D, wavelengths_.id());
         program.set(diffraction_shaders::contract::u_diffractionWavelengths, unit + 1);
-        program.set(diffraction_shaders::contract::u_diffractionHeightScale, static_cast<float>(heightScale_));
-        program.set(diffraction_shaders::contract::u_diffractionWavelengthCount, wavelengthCount_);
+        program.set(diffraction_shaders::contract::u_diffractionHeightScale, static_cast<float>(u.heightScaleNm));
+        program.set(diffraction_shaders::contract::u_diffractionWavelengthCount, u.wavelengthCount);
     }
     glActiveTexture(GL_TEXTURE0);
 }

@@ -227,4 +227,36 @@ LinearRgb shadeReference(const StamBrdf& brdf, Direction wi, Direction wr, const
     return xyzToLinearSrgb(brdf.xyz(wi, wr, weights));
 }
 
+TableUniforms tableUniforms(const SpectralTables& t) {
+    return {.path = 0,
+            .size = t.size,
+            .extent = t.frequencyExtent,
+            .terms = t.terms,
+            .heightScaleNm = t.heightScaleNm,
+            .wavelengthCount = static_cast<int>(t.wavelengths.size())};
+}
+
+TableUniforms tableUniforms(const IntegratedTables& t) {
+    return {.path = 1, .size = t.size, .extent = kIntegratedExtent, .terms = t.terms};
+}
+
+TableUniforms tableUniforms(const VolumeTables& t) {
+    return {.path = 2, .size = t.size, .extent = kIntegratedExtent, .slices = t.slices};
+}
+
+std::vector<float> wavelengthTexels(const SpectralTables& t) {
+    std::vector<float> row;
+    for (const WavelengthRgb& w : t.wavelengths)
+        row.insert(row.end(), {static_cast<float>(w.weight.r), static_cast<float>(w.weight.g),
+                               static_cast<float>(w.weight.b), static_cast<float>(w.wavelengthNm)});
+    return row;
+}
+
+std::vector<float> rgbaTexels(const std::vector<float>& rgb) {
+    std::vector<float> rgba;
+    rgba.reserve(rgb.size() / 3 * 4);
+    for (std::size_t i = 0; i + 2 < rgb.size(); i += 3) rgba.insert(rgba.end(), {rgb[i], rgb[i + 1], rgb[i + 2], 1.0f});
+    return rgba;
+}
+
 }  // namespace prism::diffraction

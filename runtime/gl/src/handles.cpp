@@ -1,7 +1,6 @@
 // Creation, deletion and counting of GL object names (see prism/gl/handles.hpp).
 #include "prism/gl/handles.hpp"
 
-#include <atomic>
 #include <string>
 
 #include "prism/gl/gl.hpp"
@@ -9,8 +8,7 @@
 namespace prism::gl {
 namespace {
 
-constexpr int kKinds = static_cast<int>(ObjectKind::Count);
-std::array<std::atomic<std::uint64_t>, kKinds> g_created{}, g_live{};
+counters::ObjectCounters<ObjectKind> g_counters;
 
 const char* kindName(ObjectKind kind) {
     constexpr const char* names[] = {"buffer",       "texture", "vertex array", "framebuffer",
@@ -21,12 +19,7 @@ const char* kindName(ObjectKind kind) {
 }  // namespace
 
 ObjectCounts objectCounts() {
-    ObjectCounts counts;
-    for (int k = 0; k < kKinds; ++k) {
-        counts.createdByKind[k] = g_created[k].load();
-        counts.liveByKind[k] = g_live[k].load();
-    }
-    return counts;
+    return g_counters.counts();
 }
 
 unsigned detail::createObject(ObjectKind kind, unsigned shaderType) {
@@ -43,8 +36,7 @@ unsigned detail::createObject(ObjectKind kind, unsigned shaderType) {
         case ObjectKind::Count: break;
     }
     if (id == 0) throw GlError(std::string("GL could not create a ") + kindName(kind) + " (is a context current?)");
-    ++g_created[static_cast<int>(kind)];
-    ++g_live[static_cast<int>(kind)];
+    g_counters.created(kind);
     return id;
 }
 
@@ -71,7 +63,7 @@ void detail::deleteObject(ObjectKind kind, unsigned id) noexcept {
         case ObjectKind::Query: glDeleteQueries(1, &name); break;
         case ObjectKind::Count: break;
     }
-    --g_live[static_cast<int>(kind)];
+    g_counters.destroyed(kind);
 }
 
 }  // namespace prism::gl

@@ -1,9 +1,10 @@
 // Catalogue renders through Vulkan (see prism/render/vulkan_render.hpp).
 #include "prism/render/vulkan_render.hpp"
 
+#include <stdexcept>
+
 #include "prism/render/feature_variants.hpp"
 #include "prism/render/frame_uniforms.hpp"
-#include "prism/vk/uniform_block.hpp"
 
 namespace prism::render {
 
@@ -12,6 +13,7 @@ struct VulkanRenderer::DrawResources {
     const vk::Pipeline* pipeline = nullptr;
     vk::Buffer positions, normals, indices, uniforms;
     std::unique_ptr<vk::DescriptorSets> sets;
+    std::vector<vk::Texture> textures;  // the draw's extras' images, bound in sets
     std::uint32_t indexCount = 0;
 };
 
@@ -37,7 +39,7 @@ VulkanFrame frameOf(const RenderJob& job) {
     frame.width = job.width;
     frame.height = job.height;
     frame.background = job.background;
-    frame.draws.push_back({job.shader, job.variant, job.mesh, job.world, job.material});
+    frame.draws.push_back({job.shader, job.variant, job.mesh, job.world, job.material, nullptr, nullptr});
     return frame;
 }
 
@@ -73,15 +75,23 @@ const vk::Pipeline& VulkanRenderer::pipelineFor(const catalog::Variant& variant,
     return *it->second;
 }
 
+ProgramCache& VulkanRenderer::variantsOf(const catalog::Catalog* catalog) {
+    if (catalog == nullptr || catalog == &variants_.catalog()) return variants_;
+    auto& cache = otherCatalogs_[catalog];
+    if (!cache) cache = std::make_unique<ProgramCache>(*catalog);
+    return *cache;
+}
+
 // The draw's variant, pipeline, vertex buffers (a constant (0, 0, 1) normal without
 // normals, as GpuMesh) and uniform block, filled as GL's setFrameUniforms fills a program.
 VulkanRenderer::DrawResources VulkanRenderer::prepare(const VulkanFrame& frame, const VulkanDraw& draw,
                                                       const vk::RenderTarget& target) {
     geometry::requireValidMesh(draw.mesh, "VulkanRenderer");
-    const auto* shader = catalog::findShader(variants_.catalog(), draw.shader);
-    if (!shader) (void)variants_.variantOf(draw.shader, {});  // throws UnknownShaderError with the list
+    ProgramCache& variants = variantsOf(draw.catalog);
+    const auto* shader = catalog::findShader(variants.catalog(), draw.shader);
+    if (!shader) (void)variants.variantOf(draw.shader, {});  // throws UnknownShaderError with the list
     const VariantValues values = variantFor(*shader, featuresOf(frame.lights, frame.fog.has_value()), draw.variant);
-    const catalog::Variant& variant = variants_.variantOf(draw.shader, values);
+    const catalog::Variant& variant = variants.variantOf(draw.shader, values);
     const std::string label = draw.shader + " (" + std::string(variant.name) + ")";
     DrawResources r;
     r.pipeline = &pipelineFor(variant, label, target);
@@ -98,9 +108,12 @@ VulkanRenderer::DrawResources VulkanRenderer::prepare(const VulkanFrame& frame, 
         const float aspect = static_cast<float>(frame.width) / static_cast<float>(frame.height);
         setFrameUniforms(uniforms, frame.camera, aspect, frame.lights, draw.world, draw.material,
                          frame.fog ? &*frame.fog : nullptr);
+        if (draw.extras) r.textures = draw.extras->apply(device_, *r.pipeline, uniforms, *r.sets);
         r.uniforms = vk::Buffer(device_, uniforms.bytes().size(), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
         r.uniforms.write(uniforms.bytes().data(), uniforms.bytes().size());
         r.sets->bindBuffer(*block, r.uniforms);
+    } else if (draw.extras) {  // its uniforms and textures would be silently dropped
+        throw std::invalid_argument(label + ": the draw carries extras, but the shader has no uniform block for them");
     }
     return r;
 }

@@ -1,5 +1,6 @@
 // Scene drawing with minimal, shared programs (see prism/scene_renderer.hpp).
 #include "prism/scene/scene_renderer.hpp"
+#include "prism/scene/diffraction_object.hpp"
 #include "prism/scene/stochastic.hpp"
 
 #include "prism/diffraction/diffraction_gl.hpp"
@@ -153,35 +154,25 @@ void SceneRenderer::drawWater(const Scene& scene, water::HeightField terrain) {
 
 void SceneRenderer::drawDiffraction(const Scene& scene, const SceneObject& object, const render::FeatureSet& features,
                                     float aspect) {
-    const std::string pointer = object.diffractionPointer.empty() ? "/objects" : object.diffractionPointer;
-    if (!object.diffraction)
-        throw SceneError(scene.file + ": " + pointer + ": expected the diffraction parameters of a diffraction object");
+    if (!object.diffraction) (void)buildDiffractionTables(scene, object);  // throws, naming the object
     const diffraction::DiffractionMaterial& m = *object.diffraction;
     auto cached = std::find_if(diffractionTables_.begin(), diffractionTables_.end(),
                                [&](const auto& set) { return set->material == m; });
     if (cached == diffractionTables_.end()) {
-        std::optional<diffraction::DiffractionTextures> built;
-        int builtTerms = 0;
-        try {  // the height field, N from its range, and the tables of the material's path only
-            const diffraction::StamBrdf brdf = diffraction::makeBrdf(m);
-            builtTerms = brdf.terms();
-            const diffraction::MaterialTables tables = diffraction::buildMaterialTables(m, brdf);
-            if (tables.spectral) {
-                built.emplace(*tables.spectral);
-            } else if (tables.integrated) {
-                built.emplace(*tables.integrated);
-            } else {
-                built.emplace(*tables.volume);
-            }
-        } catch (const diffraction::MaterialError& e) {  // "terms: ..." or "tolerance: ..."
-            throw SceneError(scene.file + ": " + pointer + "/" + e.what());
-        } catch (const std::invalid_argument& e) {  // e.g. an unreadable PNG height field
-            throw SceneError(scene.file + ": " + pointer + "/height_field: " + e.what());
+        DiffractionObjectTables built = buildDiffractionTables(scene, object);
+        const int builtTerms = built.terms;
+        std::optional<diffraction::DiffractionTextures> uploaded;
+        if (built.tables.spectral) {
+            uploaded.emplace(*built.tables.spectral);
+        } else if (built.tables.integrated) {
+            uploaded.emplace(*built.tables.integrated);
+        } else {
+            uploaded.emplace(*built.tables.volume);
         }
         ++diffractionTablesBuilt_;
         if (diffractionTables_.size() == kDiffractionTablesKept) diffractionTables_.erase(diffractionTables_.begin());
         diffractionTables_.push_back(
-            std::make_unique<DiffractionTableSet>(DiffractionTableSet{m, builtTerms, std::move(*built)}));
+            std::make_unique<DiffractionTableSet>(DiffractionTableSet{m, builtTerms, std::move(*uploaded)}));
         cached = std::prev(diffractionTables_.end());
     }
     const diffraction::DiffractionTextures* textures = &(*cached)->textures;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "prism/bluenoise/retarget.hpp"
 #include "prism/bluenoise/void_and_cluster.hpp"
@@ -27,7 +28,7 @@ const char* stochasticSamplerName(bluenoise::SamplerKind kind) {
     return "stack";
 }
 
-bluenoise::RealImage renderStochasticValues(const StochasticSettings& s, int width, int height) {
+StochasticRun prepareStochastic(const StochasticSettings& s, int width, int height) {
     namespace bn = prism::bluenoise;
     if (!parseStochasticSampler(stochasticSamplerName(s.sampler)))
         throw std::invalid_argument("stochastic: sampler must be white, bluenoise or sorted");
@@ -62,11 +63,20 @@ bluenoise::RealImage renderStochasticValues(const StochasticSettings& s, int wid
     o.frame = s.frame;
     o.frames = s.frames;
     o.block = s.block;
-    return bn::renderSoftShadows(s.light, setup, o);
+    return {std::move(setup), o};
+}
+
+bluenoise::RealImage renderStochasticValues(const StochasticSettings& s, int width, int height) {
+    StochasticRun run = prepareStochastic(s, width, height);
+    return bluenoise::renderSoftShadows(s.light, run.setup, run.options);
 }
 
 image::Image8 renderStochastic(const StochasticSettings& s, int width, int height) {
-    const bluenoise::RealImage values = renderStochasticValues(s, width, height);
+    return toGreyImage(renderStochasticValues(s, width, height));
+}
+
+image::Image8 toGreyImage(const bluenoise::RealImage& values) {
+    const int width = values.width, height = values.height;
     image::Image8 out(width, height, {0, 0, 0, 255});
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {

@@ -18,6 +18,17 @@ Memory allocateMemory(const Device& device, const VkMemoryRequirements& requirem
     return Memory(device.device(), memory);
 }
 
+ImageObject createDeviceImage(const Device& device, const VkImageCreateInfo& info, Memory& memory) {
+    VkImage image = VK_NULL_HANDLE;
+    check(vkCreateImage(device.device(), &info, nullptr, &image), "vkCreateImage");
+    ImageObject owned(device.device(), image);
+    VkMemoryRequirements requirements;
+    vkGetImageMemoryRequirements(device.device(), image, &requirements);
+    memory = allocateMemory(device, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    check(vkBindImageMemory(device.device(), image, memory.get(), 0), "vkBindImageMemory");
+    return owned;
+}
+
 Buffer::Buffer(const Device& device, VkDeviceSize bytes, VkBufferUsageFlags usage) : bytes_(bytes) {
     VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
     info.size = bytes == 0 ? 4 : bytes;  // Vulkan refuses empty buffers

@@ -7,8 +7,8 @@ VkViewport ClipConvention::viewport(int width, int height) const {
     VkViewport v{};
     v.x = 0.0f;
     v.width = static_cast<float>(width);
-    v.y = flipY ? static_cast<float>(height) : 0.0f;
-    v.height = flipY ? -static_cast<float>(height) : static_cast<float>(height);
+    v.y = negativeViewport() ? static_cast<float>(height) : 0.0f;
+    v.height = negativeViewport() ? -static_cast<float>(height) : static_cast<float>(height);
     v.minDepth = 0.0f;
     v.maxDepth = 1.0f;
     return v;
@@ -17,8 +17,10 @@ VkViewport ClipConvention::viewport(int width, int height) const {
 VkFrontFace ClipConvention::frontFace() const {
     // Vulkan computes facing in framebuffer coordinates (y down), after the viewport: the
     // flip turns a triangle counter-clockwise in GL's y-up window into one counter-clockwise
-    // there too. Without the flip (a fault) every facing is reversed as well.
-    return VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    // there too. Without the flip (a fault) every facing is reversed as well. In GL's row
+    // order framebuffer y points up, as GL's window y, so GL's counter-clockwise is Vulkan's
+    // clockwise there.
+    return glRowOrder ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE;
 }
 
 void ClipConvention::chainDepthRange(VkPipelineViewportStateCreateInfo& state,

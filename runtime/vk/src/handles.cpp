@@ -1,16 +1,13 @@
 // Destruction and counting of Vulkan objects, and VkResult names (see prism/vk/handles.hpp).
 #include "prism/vk/handles.hpp"
 
-#include <atomic>
-
 namespace prism::vk {
 namespace {
 
-constexpr int kKinds = static_cast<int>(ObjectKind::Count);
-std::array<std::atomic<std::uint64_t>, kKinds> g_created{}, g_live{};
+counters::ObjectCounters<ObjectKind> g_counters;
 
 void gone(ObjectKind kind) {
-    --g_live[static_cast<int>(kind)];
+    g_counters.destroyed(kind);
 }
 
 }  // namespace
@@ -43,24 +40,12 @@ void check(VkResult result, const std::string& what) {
     if (result != VK_SUCCESS) throw VkError(what + " failed: " + resultName(result));
 }
 
-std::uint64_t ObjectCounts::liveTotal() const {
-    std::uint64_t n = 0;
-    for (auto live : liveByKind) n += live;
-    return n;
-}
-
 ObjectCounts objectCounts() {
-    ObjectCounts counts;
-    for (int k = 0; k < kKinds; ++k) {
-        counts.createdByKind[k] = g_created[k].load();
-        counts.liveByKind[k] = g_live[k].load();
-    }
-    return counts;
+    return g_counters.counts();
 }
 
 void detail::counted(ObjectKind kind) {
-    ++g_created[static_cast<int>(kind)];
-    ++g_live[static_cast<int>(kind)];
+    g_counters.created(kind);
 }
 
 void detail::destroy(VkInstance, VkInstance object) noexcept {

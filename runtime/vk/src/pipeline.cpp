@@ -194,6 +194,16 @@ const catalog::Resource* Pipeline::uniformBlock() const {
     return nullptr;
 }
 
+const catalog::Resource& Pipeline::resource(std::string_view name) const {
+    std::string known;
+    for (const auto& r : variant_->resources) {
+        if (r.name == name) return r;
+        known += (known.empty() ? "" : ", ") + std::string(r.name);
+    }
+    throw std::invalid_argument(options_.label + ": the shader has no descriptor '" + std::string(name) +
+                                "' (it has: " + known + ")");
+}
+
 void Pipeline::bind(VkCommandBuffer cmd, int width, int height) const {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
     const VkViewport viewport = options_.clip.viewport(width, height);

@@ -23,14 +23,7 @@ ImageObject createImage(const Device& device, VkFormat format, VkImageUsageFlags
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = usage;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    VkImage image = VK_NULL_HANDLE;
-    check(vkCreateImage(device.device(), &info, nullptr, &image), "vkCreateImage");
-    ImageObject owned(device.device(), image);
-    VkMemoryRequirements requirements;
-    vkGetImageMemoryRequirements(device.device(), image, &requirements);
-    memory = allocateMemory(device, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    check(vkBindImageMemory(device.device(), image, memory.get(), 0), "vkBindImageMemory");
-    return owned;
+    return createDeviceImage(device, info, memory);
 }
 
 ImageView createView(const Device& device, VkImage image, VkFormat format, VkImageAspectFlags aspect) {
@@ -45,9 +38,9 @@ ImageView createView(const Device& device, VkImage image, VkFormat format, VkIma
 }
 
 // Colour: cleared, stored, left ready to copy from. Depth: cleared, not kept.
-RenderPass createRenderPass(const Device& device) {
+RenderPass createRenderPass(const Device& device, VkFormat colorFormat) {
     VkAttachmentDescription attachments[2]{};
-    attachments[0].format = RenderTarget::kColorFormat;
+    attachments[0].format = colorFormat;
     attachments[0].samples = VK_SAMPLE_COUNT_1_BIT;
     attachments[0].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
     attachments[0].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
@@ -88,18 +81,20 @@ RenderPass createRenderPass(const Device& device) {
 
 }  // namespace
 
-RenderTarget::RenderTarget(const Device& device, int width, int height)
-    : device_(&device), width_(width), height_(height) {
+RenderTarget::RenderTarget(const Device& device, int width, int height, VkFormat colorFormat)
+    : device_(&device), width_(width), height_(height), colorFormat_(colorFormat) {
     if (width < 1 || height < 1 || width > 16384 || height > 16384)
         throw std::invalid_argument("render size must be between 1x1 and 16384x16384, not " + std::to_string(width) +
                                     "x" + std::to_string(height));
-    color_ = createImage(device, kColorFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+    if (colorFormat != kColorFormat && colorFormat != kFloatColorFormat)
+        throw std::invalid_argument("prism::vk::RenderTarget: the colour format must be RGBA8 or RGBA32F");
+    color_ = createImage(device, colorFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                          width, height, colorMemory_);
     depth_ =
         createImage(device, kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, width, height, depthMemory_);
-    colorView_ = createView(device, color_.get(), kColorFormat, VK_IMAGE_ASPECT_COLOR_BIT);
+    colorView_ = createView(device, color_.get(), colorFormat, VK_IMAGE_ASPECT_COLOR_BIT);
     depthView_ = createView(device, depth_.get(), kDepthFormat, VK_IMAGE_ASPECT_DEPTH_BIT);
-    renderPass_ = createRenderPass(device);
+    renderPass_ = createRenderPass(device, colorFormat);
     VkImageView views[] = {colorView_.get(), depthView_.get()};
     VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
     info.renderPass = renderPass_.get();
@@ -130,8 +125,13 @@ void RenderTarget::end(VkCommandBuffer cmd) const {
     vkCmdEndRenderPass(cmd);
 }
 
-image::Image8 RenderTarget::readImage8() const {
-    const std::size_t bytes = static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_) * 4;
+std::vector<std::byte> RenderTarget::readBytes(VkFormat expected, const ClipConvention& clip) const {
+    if (colorFormat_ != expected)
+        throw std::logic_error(
+            "prism::vk::RenderTarget: read back as the wrong format (readImage8 for RGBA8, "
+            "readImageF for RGBA32F)");
+    const std::size_t rowBytes = static_cast<std::size_t>(width_) * (expected == kColorFormat ? 4 : 16);
+    const std::size_t bytes = rowBytes * static_cast<std::size_t>(height_);
     Buffer readBack(*device_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     device_->submit([&](VkCommandBuffer cmd) {
         VkBufferImageCopy region{};
@@ -144,8 +144,25 @@ image::Image8 RenderTarget::readImage8() const {
         vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr,
                              0, nullptr);
     });
+    std::vector<std::byte> out(bytes);
+    for (std::size_t row = 0; row < static_cast<std::size_t>(height_); ++row) {  // row 0 at the top
+        const std::size_t from = clip.glRowOrder ? static_cast<std::size_t>(height_) - 1 - row : row;
+        std::memcpy(out.data() + row * rowBytes, readBack.data() + from * rowBytes, rowBytes);
+    }
+    return out;
+}
+
+image::Image8 RenderTarget::readImage8(const ClipConvention& clip) const {
+    const std::vector<std::byte> bytes = readBytes(kColorFormat, clip);
     image::Image8 image(width_, height_);
-    std::memcpy(image.data.data(), readBack.data(), bytes);  // row 0 is the top row already
+    std::memcpy(image.data.data(), bytes.data(), bytes.size());
+    return image;
+}
+
+image::ImageF RenderTarget::readImageF(const ClipConvention& clip) const {
+    const std::vector<std::byte> bytes = readBytes(kFloatColorFormat, clip);
+    image::ImageF image(width_, height_);
+    std::memcpy(image.data.data(), bytes.data(), bytes.size());
     return image;
 }
 

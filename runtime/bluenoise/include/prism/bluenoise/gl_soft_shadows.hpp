@@ -18,7 +18,7 @@
 //
 // The mask, seeds and stack go to R32UI textures (units 0, 1 and 2), the frame is drawn into an
 // RGBA32F framebuffer and read back; the sorted sampler's sorting and retargeting run on
-// the CPU between frames, as in renderSoftShadows. Up to 3 spheres (more throw; softShadowShaderInputs).
+// the CPU between frames, as in renderSoftShadows. Up to 3 spheres (more throw; softShadowUniforms).
 #pragma once
 
 #include <memory>

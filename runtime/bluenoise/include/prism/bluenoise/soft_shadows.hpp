@@ -28,6 +28,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -87,16 +88,23 @@ RealImage runSoftShadowPipeline(StochasticSetup& setup, const RenderOptions& opt
 // Irradiance scale of the scene: radiance / the unoccluded irradiance below the light.
 double irradianceScale(const SoftShadowScene& scene);
 
-// The scene as the soft-shadow shader takes it (shader_sources/bluenoise/soft_shadows.frag's
-// u_extent, u_light and u_sphere0..2), in float: GlSoftShadows sets these, and
-// `prism-bluenoise render --live-record` writes them for the report's live view (docs/web.md),
-// so both draw the same scene. Throws std::invalid_argument for more than 3 spheres.
-struct SoftShadowShaderInputs {
-    float extent = 0.0f;
-    std::array<float, 4> light{};                   // height, half-length (x), half-width (y), irradiance scale
-    std::array<std::array<float, 4>, 3> spheres{};  // xyz centre, radius (radius 0: none)
+// The GPU version's uniforms (shader_sources/bluenoise/soft_shadows.frag) but u_frame, as
+// the GL and the Vulkan frame renderers both set them and `prism-bluenoise render
+// --live-record` writes them for the report's live view (docs/web.md): all three draw the
+// same scene. Throws std::invalid_argument for more
+// than kGpuSpheres spheres.
+inline constexpr std::size_t kGpuSpheres = 3;
+struct SoftShadowUniforms {
+    int stackDepth = 1;                                       // u_blueNoiseStackDepth
+    int sampler = 0;                                          // u_blueNoiseSampler (SamplerKind)
+    int spp = 1;                                              // u_spp
+    std::array<float, 2> imageSize{};                         // u_imageSize
+    float extent = 0.0f;                                      // u_extent
+    std::array<float, 4> light{};                             // u_light: height, half-length, half-width, scale
+    std::array<std::array<float, 4>, kGpuSpheres> spheres{};  // u_sphere0..2: centre, radius (0: none)
 };
-SoftShadowShaderInputs softShadowShaderInputs(const SoftShadowScene& scene);
+SoftShadowUniforms softShadowUniforms(const SoftShadowScene& scene, const SamplerTables& tables,
+                                      const RenderOptions& options);
 
 struct Reference {
     RealImage image;

@@ -34,19 +34,17 @@ class DiffractionTextures {
     DiffractionTextures(const DiffractionTextures&) = delete;
     DiffractionTextures& operator=(const DiffractionTextures&) = delete;
 
-    bool integrated() const { return path_ != 0; }
+    bool integrated() const { return uniforms_.path != 0; }
     // The DIFFRACTION_PATH variant value these tables need: "0" (a), "1" (b) or "2" (c).
-    const char* variant() const { return path_ == 0 ? "0" : path_ == 1 ? "1" : "2"; }
+    const char* variant() const { return uniforms_.variant(); }
     std::size_t bytes() const { return bytes_; }  // GPU memory of the tables
     // Binds the tables to texture unit `unit` (and the wavelengths to unit + 1 on path a) and
     // sets the program's u_diffraction* uniforms.
     void apply(gl::Program& program, int unit = 0) const;
 
   private:
-    int path_ = 0;
+    TableUniforms uniforms_;
     gl::Texture tables_, wavelengths_;
-    int size_ = 0, terms_ = 0, wavelengthCount_ = 0, slices_ = 0;
-    double extent_ = 0.0, heightScale_ = 0.0;
     std::size_t bytes_ = 0;
 };
 

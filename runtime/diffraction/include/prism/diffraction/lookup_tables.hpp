@@ -78,6 +78,29 @@ LinearRgb shadeSpectral(const SpectralTables& tables, Direction toLight, Directi
 LinearRgb shadeIntegrated(const IntegratedTables& tables, Direction toLight, Direction toViewer);
 LinearRgb shadeVolume(const VolumeTables& tables, Direction toLight, Direction toViewer);
 
+// What modules/diffraction/stam.glsl needs beside one path's textures: the DIFFRACTION_PATH
+// variant value and its u_diffraction* scalars (the fields the path does not use stay 0).
+// Both the GL and the Vulkan upload set the uniforms from this.
+struct TableUniforms {
+    int path = 0;  // 0 (a), 1 (b) or 2 (c)
+    int size = 0;
+    double extent = 0.0;         // u_diffractionExtent
+    int terms = 0;               // u_diffractionTerms, paths a and b
+    int slices = 0;              // u_diffractionSlices, path c
+    double heightScaleNm = 0.0;  // u_diffractionHeightScale, path a
+    int wavelengthCount = 0;     // u_diffractionWavelengthCount, path a
+    const char* variant() const { return path == 0 ? "0" : path == 1 ? "1" : "2"; }
+};
+TableUniforms tableUniforms(const SpectralTables& tables);
+TableUniforms tableUniforms(const IntegratedTables& tables);
+TableUniforms tableUniforms(const VolumeTables& tables);
+
+// Path a's wavelengths as one row of RGBA floats (u_diffractionWavelengths): rgb = the weight,
+// a = the wavelength in nm.
+std::vector<float> wavelengthTexels(const SpectralTables& tables);
+// RGB texels (paths b and c) as RGBA with alpha 1, for an API that samples no RGB32F image (Vulkan).
+std::vector<float> rgbaTexels(const std::vector<float>& rgb);
+
 // The table-free reference: xyzToLinearSrgb(brdf.xyz(...)).
 LinearRgb shadeReference(const StamBrdf& brdf, Direction toLight, Direction toViewer,
                          const std::vector<SpectralWeight>& weights);

@@ -26,16 +26,14 @@
 #include <cstdint>
 #include <utility>
 
+#include "prism/counters/object_counters.hpp"
+
 namespace prism::gl {
 
 enum class ObjectKind : int { Buffer, Texture, VertexArray, Framebuffer, Renderbuffer, Shader, Program, Query, Count };
 
-// Objects created since start-up and alive now, per kind.
-struct ObjectCounts {
-    std::array<std::uint64_t, static_cast<int>(ObjectKind::Count)> createdByKind{}, liveByKind{};
-    std::uint64_t created(ObjectKind kind) const { return createdByKind[static_cast<int>(kind)]; }
-    std::uint64_t live(ObjectKind kind) const { return liveByKind[static_cast<int>(kind)]; }
-};
+// Objects created since start-up and alive now, per kind (prism/counters/object_counters.hpp).
+using ObjectCounts = counters::Counts<ObjectKind>;
 ObjectCounts objectCounts();
 
 namespace detail {

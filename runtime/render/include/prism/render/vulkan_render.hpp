@@ -18,6 +18,9 @@
 // --backend vulkan scenes). Each draw runs the variant its lights and fog ask for
 // (prism/render/feature_variants.hpp), its uniforms filled by name from the variant's
 // reflection (setFrameUniforms). Pipelines are kept per variant. No GL context is needed.
+// A draw may name another catalogue (a system's, e.g. the diffraction catalogue) and carry
+// VulkanDrawExtras: the system's own uniforms and textures, set by name and bound at the
+// set and binding the variant's reflection gives.
 #pragma once
 
 #include <map>
@@ -30,8 +33,22 @@
 #include "prism/vk/clip_convention.hpp"
 #include "prism/vk/device.hpp"
 #include "prism/vk/pipeline.hpp"
+#include "prism/vk/texture.hpp"
+#include "prism/vk/uniform_block.hpp"
 
 namespace prism::render {
+
+// What a system adds to a draw beyond the frame uniforms (its lookup tables, its own
+// uniforms), held on the CPU. apply() runs once per draw while the frame is prepared, after
+// setFrameUniforms: it sets its uniforms by name, makes its textures on the renderer's device
+// and binds them; it returns them, and the renderer keeps them until the frame is read back
+// (so no Vulkan object outlives the renderer's device).
+class VulkanDrawExtras {
+  public:
+    virtual ~VulkanDrawExtras() = default;
+    virtual std::vector<vk::Texture> apply(const vk::Device& device, const vk::Pipeline& pipeline,
+                                           vk::UniformBlock& uniforms, vk::DescriptorSets& sets) const = 0;
+};
 
 // One object of a frame: its catalogue shader, variant overrides, mesh (prepared with
 // meshForShader()), world matrix and material.
@@ -41,6 +58,8 @@ struct VulkanDraw {
     geometry::Mesh mesh;
     glm::mat4 world{1.0f};
     view::Material material;
+    const catalog::Catalog* catalog = nullptr;  // the shader's catalogue; nullptr: the renderer's
+    std::shared_ptr<VulkanDrawExtras> extras;   // nullptr: frame uniforms only
 };
 
 struct VulkanFrame {
@@ -80,9 +99,11 @@ class VulkanRenderer {
     struct DrawResources;
     const vk::Pipeline& pipelineFor(const catalog::Variant& variant, const std::string& label,
                                     const vk::RenderTarget& target);
+    ProgramCache& variantsOf(const catalog::Catalog* catalog);
     DrawResources prepare(const VulkanFrame& frame, const VulkanDraw& draw, const vk::RenderTarget& target);
 
     ProgramCache variants_;  // its variant lookup only: no GL program is built
+    std::map<const catalog::Catalog*, std::unique_ptr<ProgramCache>> otherCatalogs_;  // the draws' own
     VulkanRenderOptions options_;
     vk::Device device_;
     std::map<const catalog::Variant*, std::unique_ptr<vk::Pipeline>> pipelines_;

@@ -15,6 +15,7 @@
 #include <string>
 
 #include "prism/bluenoise/metrics.hpp"
+#include "prism/bluenoise/soft_shadows.hpp"
 #include "prism/image/image.hpp"
 #include "prism/scene/scene.hpp"
 
@@ -30,8 +31,20 @@ inline constexpr unsigned kMaxSortedFrame = 100000;
 std::optional<bluenoise::SamplerKind> parseStochasticSampler(const std::string& name);
 const char* stochasticSamplerName(bluenoise::SamplerKind kind);
 
+// The settings checked and turned into what a frame renderer runs: the mask and sampler
+// tables (retargeted for the sorted sampler's later frames) and the render options. Throws
+// std::invalid_argument for settings out of range. The CPU render below and the Vulkan one
+// (prism/scene/vulkan_scene.hpp) both start here.
+struct StochasticRun {
+    bluenoise::StochasticSetup setup;
+    bluenoise::RenderOptions options;
+};
+StochasticRun prepareStochastic(const StochasticSettings& settings, int width, int height);
+
 // The irradiance estimate, width x height values, not clamped (for metrics and means).
 bluenoise::RealImage renderStochasticValues(const StochasticSettings& settings, int width, int height);
+// An estimate as an opaque grey image, clamped to [0, 1] (NaN and Inf as 0).
+image::Image8 toGreyImage(const bluenoise::RealImage& values);
 // The same as an opaque grey image, clamped to [0, 1]. Throws std::invalid_argument for
 // settings out of range (e.g. a sorted frame past kMaxSortedFrame).
 image::Image8 renderStochastic(const StochasticSettings& settings, int width, int height);

@@ -23,6 +23,8 @@ namespace prism::vk {
 
 // Memory for `requirements` with `properties` (vkAllocateMemory); throws VkError.
 Memory allocateMemory(const Device& device, const VkMemoryRequirements& requirements, VkMemoryPropertyFlags properties);
+// The image `info` describes, bound to DEVICE_LOCAL `memory` allocated for it; throws VkError.
+ImageObject createDeviceImage(const Device& device, const VkImageCreateInfo& info, Memory& memory);
 
 class Buffer {
   public:

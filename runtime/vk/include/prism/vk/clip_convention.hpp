@@ -17,8 +17,12 @@
 // (a projection matrix rewritten for 0..1 would change the float rounding of every depth).
 // A `flat` output takes the provoking vertex's value: GL's is a triangle's last vertex,
 // Vulkan's its first, unless VK_EXT_provoking_vertex says last (the flat shader's colour
-// differs per vertex under a point light). `gl_FragCoord.y` still counts from the top in
-// Vulkan (OriginUpperLeft): a shader that reads it sees GL's y mirrored.
+// differs per vertex under a point light). `gl_FragCoord.y` counts from the top in Vulkan
+// (OriginUpperLeft, which SPIR-V for Vulkan must use) and from the bottom in GL. A pass whose
+// shader reads it (the blue-noise soft shadows) sets glRowOrder: the target's rows are then
+// stored bottom-up as GL stores them, with no viewport flip (so row r has gl_FragCoord.y =
+// r + 0.5 in both APIs), a clockwise front face (Vulkan's facing in those rows), and
+// RenderTarget's read-back reverses the rows, as Prism's GL read-back does.
 //
 // Usage (snippet: examples/snippets/vk_clip_convention.cpp):
 //
@@ -27,8 +31,9 @@
 //     VkViewport viewport = gl.viewport(160, 120);       // y = 120, height = -120
 //     prism::vk::ClipConvention broken{.flipY = false};  // a fault for the tests that must catch it
 //
-// The members exist to inject faults: the agreement tests show a wrong y flip, a wrong
-// depth range or the wrong provoking vertex fails them (docs/vulkan.md).
+// glRowOrder chooses the row order; the other members exist to inject faults: the agreement
+// tests show a wrong y flip, a wrong depth range or the wrong provoking vertex fails them
+// (docs/vulkan.md).
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -39,6 +44,10 @@ struct ClipConvention {
     bool flipY = true;              // false: Vulkan's y down (GL images upside down)
     bool glDepth = true;            // false: Vulkan's 0..1 depth (GL's near half clipped away)
     bool glProvokingVertex = true;  // false: Vulkan's first vertex feeds `flat` outputs
+    bool glRowOrder = false;        // true: rows bottom-up as GL's, for shaders that read gl_FragCoord
+
+    // Whether the viewport has a negative height: flipY, unless the rows are GL's already.
+    bool negativeViewport() const { return flipY != glRowOrder; }
 
     // The viewport for a `width` x `height` target.
     VkViewport viewport(int width, int height) const;

@@ -26,6 +26,8 @@
 #include <string>
 #include <utility>
 
+#include "prism/counters/object_counters.hpp"
+
 namespace prism::vk {
 
 // Every failure of prism::vk: the call, its VkResult, and what to do.
@@ -60,13 +62,8 @@ enum class ObjectKind : int {
     Count
 };
 
-// Objects created since start-up and alive now, per kind.
-struct ObjectCounts {
-    std::array<std::uint64_t, static_cast<int>(ObjectKind::Count)> createdByKind{}, liveByKind{};
-    std::uint64_t created(ObjectKind kind) const { return createdByKind[static_cast<int>(kind)]; }
-    std::uint64_t live(ObjectKind kind) const { return liveByKind[static_cast<int>(kind)]; }
-    std::uint64_t liveTotal() const;
-};
+// Objects created since start-up and alive now, per kind (prism/counters/object_counters.hpp).
+using ObjectCounts = counters::Counts<ObjectKind>;
 ObjectCounts objectCounts();
 
 namespace detail {

@@ -64,6 +64,10 @@ class Pipeline {
     const std::string& label() const { return options_.label; }
     // The variant's uniform buffer (gl_DefaultUniformBlock for the spirv target); nullptr when it has none.
     const catalog::Resource* uniformBlock() const;
+    // The variant's descriptor named `name` (a sampler uniform such as "u_diffractionTables"),
+    // with the set and binding its SPIR-V uses; throws std::invalid_argument naming the
+    // pipeline and the descriptors it has.
+    const catalog::Resource& resource(std::string_view name) const;
 
     // Binds the pipeline and sets the viewport and scissor of a `width` x `height` target.
     void bind(VkCommandBuffer cmd, int width, int height) const;
