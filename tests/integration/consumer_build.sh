@@ -7,7 +7,8 @@
 # the Ninja build's `cmake --install` holds nothing of Prism's, and a configure with Prism's defaults (runtime on), whose
 # build graph is read but not built, has at most MAX_LEAN_STEPS steps for a consumer that
 # links Prism::render, no Prism program, no object of a system it does not link (rain,
-# water, diffraction, blue noise, scene) and no install rule of Prism's. Both builds check
+# water, diffraction, blue noise, scene), no install rule of Prism's, and the tool's code
+# at -Og (PRISM_SHADERC_OPT_FLAGS) while the runtime keeps the build type's. Both builds check
 # the dependency graph through file timestamps:
 #   - a rebuild with nothing changed does nothing;
 #   - touching tint.glsl (read only by lit_shaders) re-runs prism-shaderc for lit_shaders
@@ -52,8 +53,9 @@ mkdir -p "$WORK" && WORK=$(cd "$WORK" && pwd -P)
 # default generator from the environment.
 unset MAKEFLAGS MFLAGS MAKELEVEL DESTDIR CMAKE_GENERATOR CMAKE_BUILD_PARALLEL_LEVEL
 
-# Only the build graph is under test: -O0 without debug info keeps the build of
-# prism-shaderc fast on CI's two cores.
+# Only the build graph is under test: -O0 without debug info for the consumer's files, and
+# prism-shaderc at -Og, Prism's default for a subproject (PRISM_SHADERC_OPT_FLAGS), which
+# compiles in less CPU time than -O0 on CI's two cores.
 COMMON_ARGS=(-DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-O0 -DCMAKE_C_FLAGS_DEBUG=-O0)
 [ -n "$CXX_COMPILER" ] && COMMON_ARGS+=("-DCMAKE_CXX_COMPILER=$CXX_COMPILER")
 [ -n "$C_COMPILER" ] && COMMON_ARGS+=("-DCMAKE_C_COMPILER=$C_COMPILER")
@@ -61,11 +63,11 @@ COMMON_ARGS=(-DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-O0 -DCMAKE_C_FLAG
 PRISM_ARGS=(-DPRISM_BUILD_RUNTIME=OFF)
 # This build's install, for the find_package builds (install_prism).
 PREFIX=$WORK/prefix
-# The lean graph has 55 steps (the tool; gl, render and the CPU libraries under them, in
+# The lean graph has 46 steps (the tool; gl, render and the CPU libraries under them, in
 # unity batches, PRISM_UNITY_BUILD; Prism's classic catalogue; the consumer's two
-# catalogues and three programs); without Prism's EXCLUDE_FROM_ALL it is 105 (every library
+# catalogues and three programs); without Prism's EXCLUDE_FROM_ALL it is 98 (every library
 # and catalogue of Prism's).
-MAX_LEAN_STEPS=70
+MAX_LEAN_STEPS=50
 
 FAILURES=0
 pass() { echo "PASS: $*"; }
@@ -294,6 +296,14 @@ check_consumer_install() {
   fi
 }
 
+# last_opt_levels <commands> <object dir>: the distinct last -O flags of the compile commands
+# that write objects under <object dir> of Prism's build, one line each.
+last_opt_levels() {
+  grep -F -e "-o _deps/prism-build/$2/" "$1" | while IFS= read -r line; do
+    grep -o -E -e " -O[^ ]*" <<<"$line" | tail -n 1 | tr -d ' '
+  done | sort -u
+}
+
 # check_lean: configures a fresh copy of the consumer with Prism's defaults as a
 # subproject (runtime on) and reads its build graph without building it (issue 29,
 # item 1): the consumer links Prism::render, so the graph must hold the tool, render and
@@ -319,6 +329,14 @@ check_lean() {
   local systems; systems=$(grep -o -E "_deps/prism-build/runtime/(rain|water|diffraction|bluenoise|scene|reference)/" \
                            "$cmds" | sort -u | head -n 3)
   check "lean: no system the consumer does not link in the graph${systems:+ (has: $systems)}" test -z "$systems"
+  # The tool's code compiles at PRISM_SHADERC_OPT_FLAGS' -Og (the last -O of its compiles
+  # wins); the runtime the consumer links at the consumer's build type (-O0 here).
+  local tool_o render_o
+  tool_o=$(last_opt_levels "$cmds" shaderc_tool/CMakeFiles/prism_shaderc_lib.dir)
+  render_o=$(last_opt_levels "$cmds" runtime/render/CMakeFiles/prism_render.dir)
+  check "lean: prism_shaderc_lib compiles at -Og (its compiles' last -O: ${tool_o:-none})" test "$tool_o" = -Og
+  check "lean: prism_render compiles at the build type's -O0 (its compiles' last -O: ${render_o:-none})" \
+    test "$render_o" = -O0
   local rules; rules=$(grep -l -r "file(INSTALL" "$prism" --include=cmake_install.cmake | head -n 3)
   check "lean: no install rule of Prism's${rules:+ (in: $rules)}" test -z "$rules"
   echo "   (lean checks took $((SECONDS - started)) s)"

@@ -1,6 +1,8 @@
 // Mesh helpers: bounds, structural validation and splitting vertices per face.
 #include "prism/geometry/mesh.hpp"
 
+#include "finite.hpp"
+
 #include <glm/common.hpp>
 
 #include <cmath>
@@ -8,19 +10,11 @@
 
 namespace prism::geometry {
 
-namespace {
-
-bool isFinite(const glm::vec3& p) {
-    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-}
-
-}  // namespace
-
 Bounds computeBounds(const Mesh& mesh) {
     Bounds bounds;
     bool any = false;
     for (const glm::vec3& p : mesh.positions) {
-        if (!isFinite(p)) continue;
+        if (!detail::isFinite(p)) continue;
         if (!any) {
             bounds.min = bounds.max = p;
             any = true;

@@ -2,6 +2,8 @@
 // prism/geometry/normals.hpp for the rules).
 #include "prism/geometry/normals.hpp"
 
+#include "finite.hpp"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -14,10 +16,6 @@ namespace prism::geometry {
 namespace {
 
 const glm::vec3 kDefaultFallback{0.0f, 0.0f, 1.0f};
-
-bool isFinite(const glm::vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
 
 // Unit vector of `sum` if it is clearly longer than `reference` * ratio (no
 // cancellation, no division by ~0); nullopt otherwise.
@@ -42,7 +40,7 @@ bool isZero(const glm::dvec3& v) {
 }  // namespace
 
 glm::vec3 safeNormalize(const glm::vec3& v, const glm::vec3& fallback) {
-    if (!isFinite(v)) return fallback;
+    if (!detail::isFinite(v)) return fallback;
     const glm::dvec3 d(v);
     const double length = glm::length(d);  // no overflow or underflow for float input
     if (!(length > 0.0)) return fallback;
@@ -50,7 +48,7 @@ glm::vec3 safeNormalize(const glm::vec3& v, const glm::vec3& fallback) {
 }
 
 glm::dvec3 triangleCrossProduct(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
-    if (!isFinite(a) || !isFinite(b) || !isFinite(c)) return glm::dvec3(0.0);
+    if (!detail::isFinite(a) || !detail::isFinite(b) || !detail::isFinite(c)) return glm::dvec3(0.0);
     const glm::dvec3 pa(a), pb(b), pc(c);
     const glm::dvec3 ab = pb - pa, ac = pc - pa, bc = pc - pb;
     const glm::dvec3 cross = glm::cross(ab, ac);
