@@ -44,12 +44,32 @@ void saveFailure(const std::string& name, const image::Image8& vulkan, const Agr
     if (a.sizeMatches) image::writePng(fs::path(PRISM_VULKAN_OUT) / (file + ".diff.png"), a.diff);
 }
 
+// Compares with `t` where Vulkan and the reference share a rasteriser (lavapipe and llvmpipe
+// in CI), else with thresholdsFor's looser bounds across rasterisers (docs/gpu.md).
 void check(const std::string& name, const image::Image8& vulkan, const image::Image8& gl,
-           const AgreementThresholds& t) {
+           const AgreementThresholds& sameRasteriser, Reference from = Reference::LiveGl) {
+    const std::string reference =
+        from == Reference::LlvmpipeGolden ? "llvmpipe" : test::GlTest::context().info().renderer;
+    const AgreementThresholds t = thresholdsFor(sameRasteriser, validatedRenderer().device().name(), reference);
     const Agreement a = agreementOf(vulkan, gl);
     if (test::envFlag("PRISM_VULKAN_REPORT")) std::cout << name << ": " << a << "\n";
     if (!agrees(a, t)) saveFailure(name, vulkan, a);
     EXPECT_TRUE(agrees(a, t)) << name << ": " << describe(a, t);
+}
+
+// One rasteriser family keeps the tight thresholds (CI: lavapipe and llvmpipe, or a GPU's
+// Vulkan and GL); only a pairing across families loosens them, and only to the stated bounds.
+TEST(VulkanAgreementThresholds, LoosenOnlyAcrossRasteriserFamilies) {
+    const AgreementThresholds same =
+        thresholdsFor(kAgreementThresholds, "llvmpipe (LLVM 15.0.6, 256 bits)", "llvmpipe (LLVM 15.0.6, 256 bits)");
+    EXPECT_EQ(same.maxMax, kAgreementThresholds.maxMax);
+    EXPECT_EQ(same.maxMean, kAgreementThresholds.maxMean);
+    EXPECT_EQ(thresholdsFor(kAgreementThresholds, "NVIDIA H200", "NVIDIA H200/PCIe/SSE2").maxMax, 2);
+    const AgreementThresholds across = thresholdsFor(kAgreementThresholds, "NVIDIA H200", "llvmpipe");
+    EXPECT_EQ(across.maxMax, kAcrossRasterisersThresholds.maxMax);
+    EXPECT_EQ(across.minShareWithin2, kAcrossRasterisersThresholds.minShareWithin2);
+    EXPECT_EQ(thresholdsFor(kDiffractionThresholds, "NVIDIA H200", "llvmpipe").maxMean,
+              kAcrossRasterisersThresholds.maxMean);
 }
 
 TEST_F(VulkanAgreement, EveryClassicShaderVariantAndGalleryMeshMatchesGl) {
@@ -94,7 +114,7 @@ TEST_F(VulkanAgreement, TheGlGoldensOfTheSphereCasesMatch) {
         job.lights.directional.at(0).direction = {0.5f, -0.6f, -0.65f};
         const fs::path golden = fs::path(PRISM_GOLDEN_DIR) / g.label / g.file;
         check(std::string("golden ") + g.label + "/" + g.file, vulkan.render(job), image::readPng(golden),
-              kAgreementThresholds);
+              kAgreementThresholds, Reference::LlvmpipeGolden);
     }
     expectNoValidationMessages(vulkan);
 }
@@ -115,7 +135,7 @@ TEST_F(VulkanAgreement, TheClassicScenesMatchGlAndTheirGoldens) {
         if (std::string(name) != "fog")
             check(std::string("scene golden ") + name, vk,
                   image::readPng(fs::path(PRISM_GOLDEN_DIR) / "scenes" / (std::string(name) + ".png")),
-                  kAgreementThresholds);
+                  kAgreementThresholds, Reference::LlvmpipeGolden);
     }
     expectNoValidationMessages(vulkan);
 }
@@ -147,7 +167,7 @@ TEST_F(VulkanAgreement, TheDiffractionScenesMatchGlAndTheirGoldens) {
         if (name != "diffraction_grating") check("scene " + name, vk, gl.render(s), kDiffractionThresholds);
         if (name != "diffraction_cd")
             check("scene golden " + name, vk, image::readPng(fs::path(PRISM_GOLDEN_DIR) / "scenes" / (name + ".png")),
-                  kDiffractionThresholds);
+                  kDiffractionThresholds, Reference::LlvmpipeGolden);
     }
     expectNoValidationMessages(vulkan);
 }
@@ -197,7 +217,7 @@ TEST_F(VulkanAgreement, TheSoftShadowScenesMatchGlAndTheirGoldens) {
             check("scene golden " + name, vk,
                   image::readPng(fs::path(PRISM_GOLDEN_DIR) / "scenes" /
                                  ("soft_shadows_" + std::string(sampler) + ".png")),
-                  kAgreementThresholds);
+                  kAgreementThresholds, Reference::LlvmpipeGolden);
     }
     expectNoValidationMessages(vulkan);
 }

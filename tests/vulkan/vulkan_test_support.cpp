@@ -1,6 +1,7 @@
 // Shared pieces of the Vulkan tier (see vulkan_test_support.hpp).
 #include "vulkan_test_support.hpp"
 
+#include <algorithm>
 #include <iomanip>
 #include <memory>
 #include <sstream>
@@ -61,6 +62,15 @@ image::Image8 renderFrameGl(const render::VulkanFrame& frame, bool cullBackFaces
     glDisable(GL_CULL_FACE);
     glFinish();
     return fb.readImage8();
+}
+
+AgreementThresholds thresholdsFor(const AgreementThresholds& t, const std::string& vulkanDevice,
+                                  const std::string& referenceRasteriser) {
+    const auto family = [](const std::string& name) { return name.substr(0, name.find(' ')); };
+    if (family(vulkanDevice) == family(referenceRasteriser)) return t;
+    const AgreementThresholds& across = kAcrossRasterisersThresholds;
+    return {std::min(t.minShareWithin2, across.minShareWithin2), std::max(t.maxMean, across.maxMean),
+            std::max(t.maxMax, across.maxMax)};
 }
 
 render::VulkanRenderer& validatedRenderer() {

@@ -42,6 +42,23 @@ inline constexpr AgreementThresholds kAgreementThresholds{0.9999, 0.005, 2};
 // identical or within 1/255; the snake has one pixel of 49152 at 7/255, every other within
 // 2/255, mean 0.0001/255. Allowed: 99.99 % within 2/255 (4 pixels), mean 0.005/255, max 8/255.
 inline constexpr AgreementThresholds kDiffractionThresholds{0.9999, 0.005, 8};
+// Across rasterisers (a GPU's Vulkan against llvmpipe's GL or the llvmpipe goldens; docs/gpu.md,
+// "Vulkan"): measured on an NVIDIA H200 (driver 580.159.04) with scripts/gpu-vulkan-agreement.sh,
+// 62 comparisons: at least 99.9959 % of pixels within 2/255 and a mean of at most 0.0182/255,
+// but the rasterisers cover a silhouette pixel or two differently, so those differ by up to
+// the full contrast (71/255 in four_lights, 57/255 in the diffraction snake). So the share and
+// the mean are bounded (99.99 %: 1 pixel of a 128x128 image, 4 of 256x192; mean 0.025/255),
+// and the maximum is not.
+inline constexpr AgreementThresholds kAcrossRasterisersThresholds{0.9999, 0.025, 255};
+// Where the compared image comes from: a live GL render in this process, or a golden PNG
+// (rendered on llvmpipe).
+enum class Reference { LiveGl, LlvmpipeGolden };
+// `t` when the Vulkan device and the reference's rasteriser are one implementation family
+// (the first word of the device name and GL_RENDERER: "llvmpipe" for lavapipe and llvmpipe,
+// "NVIDIA" for NVIDIA's Vulkan and GL drivers); else the looser of `t` and
+// kAcrossRasterisersThresholds in each bound.
+AgreementThresholds thresholdsFor(const AgreementThresholds& t, const std::string& vulkanDevice,
+                                  const std::string& referenceRasteriser);
 bool agrees(const Agreement& a, const AgreementThresholds& t);
 std::string describe(const Agreement& a, const AgreementThresholds& t);
 std::ostream& operator<<(std::ostream& os, const Agreement& a);

@@ -40,6 +40,19 @@ class UintTexture {
     gl::Texture texture_;
 };
 
+// The full-screen triangle writes every pixel as the shader computes it, whatever state the
+// caller left: an enabled depth test against the never-cleared depth buffer, blending or
+// culling would keep or mix in stale pixels (docs/gpu.md, "Vulkan": seen on NVIDIA and on
+// llvmpipe after other draws in the same context). ScopedDrawState puts the caller's back.
+void disableFixedFunctionTests() {
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
 }  // namespace
 
 struct GlSoftShadows::Resources {
@@ -85,6 +98,7 @@ RealImage GlSoftShadows::render(const SoftShadowScene& scene, StochasticSetup& s
         program.set(soft_shadows::u_frame, static_cast<unsigned>(frame));
         program.reportUnsetUniforms();
         gl_->framebuffer.bind();
+        disableFixedFunctionTests();
         glBindVertexArray(gl_->vao.id());
         glDrawArrays(GL_TRIANGLES, 0, 3);
         const image::ImageF pixels = gl_->framebuffer.readImageF();
