@@ -42,7 +42,7 @@ run() {
     local name=$1; shift
     env "$@" "$g/bin/prism_vulkan_vk_tests" > "$out/$name.txt" 2>&1 || status=1
     echo "=== $name ($*): $(grep -E '^\[  (PASSED|FAILED)  \] [0-9]' "$out/$name.txt" | tr '\n' ' ')"
-    if [ -d "$build/tests/vulkan/out" ]; then  # the failing cases' Vulkan and difference images
+    if [ -d "$build/tests/vulkan/out" ]; then  # the tier's images: the CLI renders, and a failing case's Vulkan and difference images
       tar -C "$build/tests/vulkan" -czf "$out/$name.failures.tgz" out && rm -rf "$build/tests/vulkan/out"
     fi
   }
