@@ -1,0 +1,47 @@
+#!/usr/bin/env python3
+"""Times one compile of a build tree at several optimisation levels (docs/ci.md).
+
+    scripts/time-batch-compile.py BUILD_DIR OBJECT_SUBSTRING FLAG [FLAG...]
+    scripts/time-batch-compile.py build prism_shaderc_tests.dir/Unity/unity_1_ -O3 -O1
+
+Takes the first command of BUILD_DIR/compile_commands.json whose text contains
+OBJECT_SUBSTRING, drops its precompiled header (built for one level only), adds each FLAG
+last, writes to a scratch object, and prints the wall time of each compile.
+"""
+import json
+import shlex
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+
+def main() -> int:
+    if len(sys.argv) < 4:
+        print(__doc__.strip(), file=sys.stderr)
+        return 2
+    build, needle, flags = Path(sys.argv[1]), sys.argv[2], sys.argv[3:]
+    entries = json.loads((build / "compile_commands.json").read_text())
+    entry = next((e for e in entries if needle in e["command"]), None)
+    if entry is None:
+        print(f"{build / 'compile_commands.json'}: no command contains '{needle}'", file=sys.stderr)
+        return 1
+    args = shlex.split(entry["command"])
+    if "-include" in args:
+        at = args.index("-include")
+        del args[at:at + 2]
+    args = [a for a in args if a not in ("-Winvalid-pch",)]
+    out = args.index("-o")
+    with tempfile.TemporaryDirectory() as scratch:
+        args[out + 1] = str(Path(scratch) / "batch.o")
+        for flag in flags:
+            start = time.monotonic()
+            result = subprocess.run(args[:out] + [flag] + args[out:], cwd=entry["directory"], capture_output=True)
+            status = "" if result.returncode == 0 else f" (failed: {result.stderr.decode()[-200:]})"
+            print(f"{flag}: {time.monotonic() - start:.1f} s{status}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
