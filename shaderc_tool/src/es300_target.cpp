@@ -11,7 +11,7 @@
 #include "es300_limits.hpp"
 #include "shader_targets.hpp"
 #include "shared_stage_parses.hpp"
-#include "validation_scheduler.hpp"
+#include "target_scheduler.hpp"
 #include "validator.hpp"
 
 namespace prism::shaderc {
@@ -76,11 +76,10 @@ std::vector<StageToValidate> es300Stages(const ResolvedCatalog& rc, const EsProg
     return stages;
 }
 
-// A program's first run takes the shared parses of its stages; a message, or a program
-// that runs again for its own lines, means a run on private ones (as for gl).
-std::vector<Diagnostic> validateOne(ResolvedCatalog& rc, const EsProgram& p, const Contract& contract,
-                                    const std::vector<StageToValidate>& stages, SharedStageParses* shared,
-                                    std::size_t index) {
+// A group's first run takes the shared parses of its stages; a message, or a program
+// that runs on its own for its own lines, means a run on private ones (as for gl).
+ValidatedVariant validateOne(const ResolvedCatalog& rc, const EsProgram& p, const Contract& contract,
+                             const std::vector<StageToValidate>& stages, SharedStageParses* shared, std::size_t index) {
     const std::string program = targetProgramName(rc, p.first, p.second);
     const auto limits = es300LimitsCheck(program, stages.front().path);
     ValidatedVariant result;
@@ -92,21 +91,20 @@ std::vector<Diagnostic> validateOne(ResolvedCatalog& rc, const EsProgram& p, con
     noteTarget(result.diagnostics,
                "for target es300 (GLSL ES 3.00) in program " + program +
                    "; `#pragma prism targets gl spirv` in a stage file leaves a shader out of es300");
-    rc.data.shaders[p.first].variants[p.second].es300 = result.ok;
-    return std::move(result.diagnostics);
+    result.reflection = {};  // es300 keeps only the verdict; the gl reflection serves it
+    return result;
 }
 
-// --stats: how much of the es300 validation was shared, as for gl.
-void printEs300Stats(const std::vector<std::size_t>& representatives, std::size_t stagesParsed) {
+// --stats: how much of the es300 validation was shared or cached, as for gl.
+void printEs300Stats(const TargetPrograms& scheduled, std::size_t stagesParsed) {
     std::size_t shared = 0;
-    for (std::size_t i = 0; i < representatives.size(); ++i) shared += representatives[i] != i;
-    std::cerr << "prism-shaderc: es300: validated " << representatives.size() << " programs (" << shared
-              << " shared a token stream; " << stagesParsed << " stages parsed)\n";
+    for (std::size_t i = 0; i < scheduled.programs.size(); ++i) shared += scheduled.representatives[i] != i;
+    std::cerr << "prism-shaderc: es300: validated " << scheduled.programs.size() << " programs (" << shared
+              << " shared a token stream, " << scheduled.fromCache() << " from the cache; " << stagesParsed
+              << " stages parsed)\n";
 }
 
-}  // namespace
-
-std::vector<Diagnostic> validateEs300(const Options& o, ResolvedCatalog& rc, const Contract& contract) {
+std::vector<EsProgram> es300Programs(const Options& o, const ResolvedCatalog& rc) {
     std::vector<EsProgram> programs;
     for (std::size_t s = 0; s < rc.data.shaders.size(); ++s) {
         if (!producedFor(o, rc, s, Target::Es300)) continue;
@@ -117,22 +115,27 @@ std::vector<Diagnostic> validateEs300(const Options& o, ResolvedCatalog& rc, con
                         [](const CatalogStage& st) { return targetRunsStage(Target::Es300, st.stage); });
         for (std::size_t v = 0; runnable && v < variants.size(); ++v) programs.emplace_back(s, v);
     }
-    const auto representatives = tokenRepresentatives(rc, contract, programs);
-    std::vector<std::vector<StageToValidate>> lists(programs.size());  // the representatives' stages
-    for (std::size_t i = 0; i < programs.size(); ++i)
-        if (representatives[i] == i) lists[i] = es300Stages(rc, programs[i]);
+    return programs;
+}
+
+}  // namespace
+
+std::vector<Diagnostic> validateEs300(const Options& o, ResolvedCatalog& rc, const Contract& contract) {
+    auto scheduled = scheduleTarget(o, rc, contract, Target::Es300, es300Programs(o, rc));
+    const auto& programs = scheduled.programs;
+    std::vector<std::vector<StageToValidate>> lists(programs.size());  // the first runs' stages
+    for (const auto i : scheduled.firstRuns()) lists[i] = es300Stages(rc, programs[i]);
     SharedStageParses parses(lists);
-    auto diagnostics = runOncePerTokenKey(
-        representatives, o.jobs,
-        [&](std::size_t i) {
-            if (representatives[i] == i) return validateOne(rc, programs[i], contract, lists[i], &parses, i);
+    auto diagnostics = runTarget(
+        scheduled, o.jobs,
+        [&](std::size_t i, bool groupRun) {
+            if (groupRun) return validateOne(rc, programs[i], contract, lists[i], &parses, i);
             return validateOne(rc, programs[i], contract, es300Stages(rc, programs[i]), nullptr, i);  // own lines
         },
-        [&](std::size_t from, std::size_t to) {
-            rc.data.shaders[programs[to].first].variants[programs[to].second].es300 =
-                rc.data.shaders[programs[from].first].variants[programs[from].second].es300;
+        [&](std::size_t i, const ValidatedVariant& result) {
+            rc.data.shaders[programs[i].first].variants[programs[i].second].es300 = result.ok;
         });
-    if (o.printStats && !programs.empty()) printEs300Stats(representatives, parses.parsed());
+    if (o.printStats && !programs.empty()) printEs300Stats(scheduled, parses.parsed());
     return diagnostics;
 }
 

@@ -51,4 +51,13 @@ bool generateSpirv(const glslang::TProgram& program, EShLanguage stage, std::vec
 std::vector<Diagnostic> validateSpirv(std::span<const std::uint32_t> words, SpirvEnv env, const std::string& file,
                                       const std::string& what);
 
+// What validateSpirv has run in this process: the modules SPIRV-Tools validated (a module
+// it accepted before is not validated again) and their CPU time, summed over threads.
+// --stats prints it, so the validator's share of a check is measured, not guessed.
+struct SpirvValidatorUse {
+    std::size_t modules = 0;
+    double cpuMs = 0;
+};
+SpirvValidatorUse spirvValidatorUse();
+
 }  // namespace prism::shaderc

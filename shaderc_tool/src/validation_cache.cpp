@@ -6,9 +6,14 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
+#include <stdexcept>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
+
+#include "prism/hash/content_hash.hpp"
 
 namespace prism::shaderc {
 namespace {
@@ -16,7 +21,71 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-constexpr int kFormat = 2;  // bump when the pack layout changes
+constexpr int kFormat = 3;  // bump when the pack layout changes
+
+// A pack's SPIR-V modules, each distinct one once, as raw words in a file beside the JSON
+// (`<pack>.words`); entries name a module by its [offset, count] there. As JSON text (an
+// array of numbers per stage) the words were a quarter of a re-check after an edit. The
+// pack records the words file's size and hash: a words file of another writer, or torn,
+// makes the pack a miss, never wrong words.
+class ModuleTable {
+  public:
+    json add(const std::vector<std::uint32_t>& words) {
+        const std::string_view bytes(reinterpret_cast<const char*>(words.data()), words.size() * sizeof(words[0]));
+        auto [it, added] = offsets_.try_emplace(std::string(bytes), blob_.size());
+        if (added) blob_.insert(blob_.end(), words.begin(), words.end());
+        return json::array({it->second, words.size()});
+    }
+    const std::vector<std::uint32_t>& words() const { return blob_; }
+
+  private:
+    std::map<std::string, std::size_t> offsets_;  // a module's bytes -> its offset in blob_
+    std::vector<std::uint32_t> blob_;
+};
+
+std::string wordsHash(const std::vector<std::uint32_t>& words) {
+    return hash::ContentHash()
+        .addBytes(std::string_view(reinterpret_cast<const char*>(words.data()), words.size() * sizeof(words[0])))
+        .hex();
+}
+
+// The words file a pack names, checked against its recorded size and hash.
+std::vector<std::uint32_t> readWords(const fs::path& path, const json& record) {
+    std::vector<std::uint32_t> words(record.at("count").get<std::size_t>());
+    std::ifstream in(path, std::ios::binary);
+    in.read(reinterpret_cast<char*>(words.data()), static_cast<std::streamsize>(words.size() * sizeof(words[0])));
+    if (!in || in.peek() != std::char_traits<char>::eof() || wordsHash(words) != record.at("hash").get<std::string>())
+        throw std::runtime_error("the words file is not the one the pack was written with");
+    return words;
+}
+
+std::vector<std::uint32_t> moduleAt(const json& ref, const std::vector<std::uint32_t>& words) {
+    const auto offset = ref.at(0).get<std::size_t>(), count = ref.at(1).get<std::size_t>();
+    if (offset > words.size() || count > words.size() - offset) throw std::out_of_range("a module past the words");
+    return {words.begin() + static_cast<std::ptrdiff_t>(offset),
+            words.begin() + static_cast<std::ptrdiff_t>(offset + count)};
+}
+
+// Writes `text` to `target` through a temporary file renamed into place (atomic for readers).
+bool writeAtomically(const fs::path& target, std::string_view text) {
+    std::error_code ec;
+    const fs::path temp = target.string() + ".tmp-" + std::to_string(::getpid());
+    {
+        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+        out.write(text.data(), static_cast<std::streamsize>(text.size()));
+        if (!out) {
+            fs::remove(temp, ec);
+            return false;
+        }
+    }
+    fs::rename(temp, target, ec);
+    if (ec) fs::remove(temp, ec);
+    return !ec;
+}
+
+fs::path wordsPath(const std::string& packPath) {
+    return fs::path(packPath).replace_extension(".words");
+}
 
 json toJson(const Diagnostic& d) {
     json sites = json::array();
@@ -46,8 +115,8 @@ Diagnostic diagnosticFrom(const json& j) {
 }
 
 // The Vulkan client's part of a result: descriptors, push constants, specialisation
-// constants and each stage's SPIR-V words.
-json vulkanJson(const ProgramReflection& r) {
+// constants and each stage's SPIR-V module, by its key in the pack's module table.
+json vulkanJson(const ProgramReflection& r, ModuleTable& modules) {
     json resources = json::array(), push = json::array(), spec = json::array(), spirv = json::array();
     for (const auto& x : r.resources) {
         json members = json::array();
@@ -56,11 +125,11 @@ json vulkanJson(const ProgramReflection& r) {
     }
     for (const auto& p : r.pushConstants) push.push_back({p.name, p.glType, p.offset, p.size});
     for (const auto& c : r.specConstants) spec.push_back({c.name, c.id, c.glType, c.defaultBits});
-    for (const auto& s : r.spirv) spirv.push_back({static_cast<int>(s.stage), s.words});
+    for (const auto& s : r.spirv) spirv.push_back({static_cast<int>(s.stage), modules.add(s.words)});
     return {{"resources", resources}, {"pushConstants", push}, {"specConstants", spec}, {"spirv", spirv}};
 }
 
-void readVulkan(const json& j, ProgramReflection& r) {
+void readVulkan(const json& j, const std::vector<std::uint32_t>& words, ProgramReflection& r) {
     for (const auto& x : j.at("resources")) {
         r.resources.push_back({x.at(0).get<std::string>(), x.at(1).get<std::uint32_t>(), x.at(2).get<std::uint32_t>(),
                                static_cast<catalog::ResourceKind>(x.at(3).get<int>()), x.at(4).get<std::uint32_t>(),
@@ -76,21 +145,21 @@ void readVulkan(const json& j, ProgramReflection& r) {
         r.specConstants.push_back({c.at(0).get<std::string>(), c.at(1).get<std::uint32_t>(),
                                    c.at(2).get<std::uint32_t>(), c.at(3).get<std::uint32_t>()});
     for (const auto& s : j.at("spirv"))
-        r.spirv.push_back({static_cast<catalog::Stage>(s.at(0).get<int>()), s.at(1).get<std::vector<std::uint32_t>>()});
+        r.spirv.push_back({static_cast<catalog::Stage>(s.at(0).get<int>()), moduleAt(s.at(1), words)});
 }
 
-json toJson(const std::string& text, const ValidatedVariant& v) {
+json toJson(const std::string& text, const ValidatedVariant& v, ModuleTable& modules) {
     json attributes = json::array(), uniforms = json::array(), diagnostics = json::array();
     for (const auto& a : v.reflection.attributes) attributes.push_back({a.name, a.glType, a.location});
     for (const auto& u : v.reflection.uniforms) uniforms.push_back({u.name, u.glType, u.arraySize});
     for (const auto& d : v.diagnostics) diagnostics.push_back(toJson(d));
     json result = {
         {"text", text}, {"ok", v.ok}, {"attributes", attributes}, {"uniforms", uniforms}, {"diagnostics", diagnostics}};
-    if (!v.reflection.spirv.empty()) result["vulkan"] = vulkanJson(v.reflection);
+    if (!v.reflection.spirv.empty()) result["vulkan"] = vulkanJson(v.reflection, modules);
     return result;
 }
 
-ValidatedVariant resultFrom(const json& j) {
+ValidatedVariant resultFrom(const json& j, const std::vector<std::uint32_t>& words) {
     ValidatedVariant v;
     v.ok = j.at("ok").get<bool>();
     for (const auto& d : j.at("diagnostics")) v.diagnostics.push_back(diagnosticFrom(d));
@@ -99,7 +168,7 @@ ValidatedVariant resultFrom(const json& j) {
             {a.at(0).get<std::string>(), a.at(1).get<std::uint32_t>(), a.at(2).get<int>()});
     for (const auto& u : j.at("uniforms"))
         v.reflection.uniforms.push_back({u.at(0).get<std::string>(), u.at(1).get<std::uint32_t>(), u.at(2).get<int>()});
-    if (j.contains("vulkan")) readVulkan(j.at("vulkan"), v.reflection);
+    if (j.contains("vulkan")) readVulkan(j.at("vulkan"), words, v.reflection);
     return v;
 }
 
@@ -115,10 +184,12 @@ ValidationCache::ValidationCache(std::string dir, const std::string& catalogueKe
     try {
         const json j = json::parse(text.str());
         if (j.at("format").get<int>() != kFormat) return;
+        const auto words =
+            j.contains("words") ? readWords(wordsPath(path_), j.at("words")) : std::vector<std::uint32_t>{};
         for (const auto& [key, entry] : j.at("entries").items())
-            entries_[key] = {entry.at("text").get<std::string>(), resultFrom(entry)};
-    } catch (const json::exception&) {
-        entries_.clear();  // torn by hand, or another format: validate again
+            entries_[key] = {entry.at("text").get<std::string>(), resultFrom(entry, words)};
+    } catch (const std::exception&) {  // json's, or a words file that is not the pack's
+        entries_.clear();              // torn by hand, or another format: validate again
     }
 }
 
@@ -144,28 +215,24 @@ void ValidationCache::flush() {
     std::lock_guard lock(mutex_);
     if (!enabled() || !dirty_) return;
     json entries = json::object();
-    for (const auto& key : used_) entries[key] = toJson(entries_[key].text, entries_[key].result);
+    ModuleTable modules;
+    for (const auto& key : used_) entries[key] = toJson(entries_[key].text, entries_[key].result, modules);
     // Older entries stay too (an undone edit, another build of the tool), up to a bound,
     // so the pack cannot grow without limit.
     const std::size_t bound = 4 * used_.size() + 64;
     for (const auto& [key, entry] : entries_)
-        if (entries.size() < bound && !used_.contains(key)) entries[key] = toJson(entry.text, entry.result);
-    const json pack = {{"format", kFormat}, {"entries", entries}};
-    const fs::path target = path_;
+        if (entries.size() < bound && !used_.contains(key)) entries[key] = toJson(entry.text, entry.result, modules);
+    json pack = {{"format", kFormat}, {"entries", entries}};
     std::error_code ec;
-    fs::create_directories(target.parent_path(), ec);
-    if (ec) return;  // a cache that cannot be written only costs time
-    const fs::path temp = target.string() + ".tmp-" + std::to_string(::getpid());
-    {
-        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        out << pack.dump();
-        if (!out) {
-            fs::remove(temp, ec);
-            return;
-        }
+    fs::create_directories(fs::path(path_).parent_path(), ec);
+    if (ec) return;                  // a cache that cannot be written only costs time
+    if (!modules.words().empty()) {  // first the words, then the pack that names them
+        const auto& words = modules.words();
+        pack["words"] = {{"count", words.size()}, {"hash", wordsHash(words)}};
+        const std::string_view bytes(reinterpret_cast<const char*>(words.data()), words.size() * sizeof(words[0]));
+        if (!writeAtomically(wordsPath(path_), bytes)) return;
     }
-    fs::rename(temp, target, ec);  // atomic: readers see the old pack or the new one
-    if (ec) fs::remove(temp, ec);
+    if (!writeAtomically(path_, pack.dump())) return;  // atomic: readers see the old pack or the new one
     dirty_ = false;
 }
 

@@ -13,6 +13,9 @@
 //   still hits and the pack stays bounded. Written to a temporary file
 //   and renamed into place, so concurrent writers (parallel builds sharing the
 //   directory) never expose a torn pack; an unreadable or foreign pack is empty.
+//   The es300 and spirv targets keep their own packs beside it, `<catalogue key>-es300.json`
+//   and `-spirv.json` (target_scheduler.hpp). SPIR-V words are stored once per distinct
+//   module, in the pack's module table, by content hash.
 //
 //   ValidationCache cache("build/shaders/prism-shaderc-cache", catalogueKey);
 //   if (auto hit = cache.find(key)) ... else cache.store(key, validateProgram(...));

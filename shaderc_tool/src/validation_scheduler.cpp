@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <functional>
 #include <iostream>
 #include <map>
 #include <optional>
@@ -201,40 +200,6 @@ ValidationStats validateCatalogScheduled(ResolvedCatalog& rc, const Contract& co
     stats.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     reportResults(rc, programs, results, sink);
     return stats;
-}
-
-std::vector<std::size_t> tokenRepresentatives(const ResolvedCatalog& rc, const Contract& contract,
-                                              const std::vector<std::pair<std::size_t, std::size_t>>& programs) {
-    std::vector<std::size_t> representative(programs.size());
-    std::map<std::string, std::size_t> firstOfKey;
-    for (std::size_t i = 0; i < programs.size(); ++i)
-        representative[i] =
-            firstOfKey.try_emplace(programKey(rc, contract, programs[i].first, programs[i].second).tokens, i)
-                .first->second;
-    return representative;
-}
-
-std::vector<Diagnostic> runOncePerTokenKey(const std::vector<std::size_t>& representative, int jobs,
-                                           const ProgramRun& run, const ProgramShare& share) {
-    if (representative.empty()) return {};
-    const std::size_t count = representative.size();
-    std::vector<std::vector<Diagnostic>> found(count);
-    std::vector<std::size_t> own, others;
-    for (std::size_t i = 0; i < count; ++i) (representative[i] == i ? own : others).push_back(i);
-    initializeValidator();
-    runPool(own.size(), jobs, [&](std::size_t k) { found[own[k]] = run(own[k]); });
-    std::vector<std::size_t> rerun;
-    for (const auto i : others) {
-        if (found[representative[i]].empty())
-            share(representative[i], i);
-        else
-            rerun.push_back(i);
-    }
-    runPool(rerun.size(), jobs, [&](std::size_t k) { found[rerun[k]] = run(rerun[k]); });
-    finalizeValidator();
-    std::vector<Diagnostic> out;
-    for (auto& f : found) out.insert(out.end(), f.begin(), f.end());
-    return out;
 }
 
 Validation validateCatalog(const Options& o, ResolvedCatalog& catalog, const Contract& contract) {

@@ -16,8 +16,6 @@
 #pragma once
 
 #include <cstddef>
-#include <functional>
-#include <utility>
 
 #include "catalog_builder.hpp"
 #include "validation_cache.hpp"
@@ -46,20 +44,9 @@ Validation validateCatalog(const Options& options, ResolvedCatalog& catalog, con
 ValidationStats validateCatalogScheduled(ResolvedCatalog& catalog, const Contract& contract, int jobs,
                                          ValidationCache& cache, DiagnosticSink& sink);
 
-// The other targets' scheduling (es300_target.hpp, spirv_target.hpp). `programs` are
-// (shader, variant) pairs; tokenRepresentatives gives each the first of them with its token
-// key (programKey). runOncePerTokenKey runs `run(i)` for each representative on -j threads,
-// and the others take its clean result through `share(from, to)`. A program whose
-// representative reported anything runs itself, so every message speaks of its own lines.
-// Returns the diagnostics in `programs` order. Initialises and finalises glslang.
-using ProgramRun = std::function<std::vector<Diagnostic>(std::size_t program)>;
-using ProgramShare = std::function<void(std::size_t from, std::size_t to)>;
-std::vector<std::size_t> tokenRepresentatives(const ResolvedCatalog& catalog, const Contract& contract,
-                                              const std::vector<std::pair<std::size_t, std::size_t>>& programs);
-std::vector<Diagnostic> runOncePerTokenKey(const std::vector<std::size_t>& representatives, int jobs,
-                                           const ProgramRun& run, const ProgramShare& share);
+// The other targets schedule their programs in target_scheduler.hpp, on the same keys.
 
-// The content key of one variant's program (exposed for tests).
+// The content key of one variant's program (the targets' schedule and tests use it too).
 ProgramKey programKey(const ResolvedCatalog& catalog, const Contract& contract, std::size_t shader,
                       std::size_t variant);
 

@@ -11,6 +11,8 @@
 #include <filesystem>
 #include <regex>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "tool_runner.hpp"
 
@@ -27,6 +29,14 @@ std::array<int, 4> statsOf(const std::string& output) {
     std::smatch m;
     if (!std::regex_search(output, m, line)) return {-1, -1, -1, -1};
     return {std::stoi(m[1]), std::stoi(m[2]), std::stoi(m[3]), std::stoi(m[4])};
+}
+
+// "<target>: ... (S shared a token stream, C from the cache" -> C, or -1 without the line.
+int targetFromCache(const std::string& output, const std::string& target) {
+    const std::regex line(target +
+                          R"(: (?:validated|compiled) \d+ programs \(\d+ shared a token stream, (\d+) from the cache)");
+    std::smatch m;
+    return std::regex_search(output, m, line) ? std::stoi(m[1]) : -1;
 }
 
 // Shaders a and b, each including its own module.
@@ -197,8 +207,9 @@ TEST(ValidationSchedule, AnotherBuildOfTheToolDoesNotReuseResults) {
 }
 
 // Reflection served by shared stages and by the cache gives the same header and data bytes
-// as a cold run and as a run without a cache (the project catalogue, light counts pinned).
-// The data file holds the reflection, so it is the one that would differ.
+// as a cold run and as a run without a cache (the project catalogue, light counts pinned),
+// for all three targets. The data file holds the reflection, the es300 verdicts and the
+// SPIR-V words, so it is the one that would differ.
 TEST(ValidationSchedule, HeaderFromTheCacheIsByteIdenticalToACold) {
     ScratchDir dir("sched-header");
     const std::string source = PRISM_SOURCE_DIR;
@@ -206,19 +217,114 @@ TEST(ValidationSchedule, HeaderFromTheCacheIsByteIdenticalToACold) {
                                source + "/modules --contract " + source + "/modules/contract.json " + source +
                                "/shader_sources";
     const std::string args = "-o h.hpp --stats --cache-dir " + dir.str() + "/cache" + inputs;
+    const std::string targets = " --target gl,es300,spirv";
     for (const char* sub : {"cold", "warm", "uncached"}) fs::create_directories(dir.path() / sub);
-    auto cold = runShaderc(args, (dir.path() / "cold").string());
+    auto cold = runShaderc(args + targets, (dir.path() / "cold").string());
     ASSERT_EQ(cold.exitCode, 0) << cold.output;
     EXPECT_EQ(statsOf(cold.output)[3], 0) << cold.output;
-    auto warm = runShaderc(args, (dir.path() / "warm").string());
+    EXPECT_EQ(targetFromCache(cold.output, "es300"), 0) << cold.output;
+    EXPECT_EQ(targetFromCache(cold.output, "spirv"), 0) << cold.output;
+    auto warm = runShaderc(args + targets, (dir.path() / "warm").string());
     ASSERT_EQ(warm.exitCode, 0) << warm.output;
     EXPECT_EQ(statsOf(warm.output)[0], 0) << warm.output;  // nothing validated: all from the cache
-    auto uncached = runShaderc("-o h.hpp --cache-dir none" + inputs, (dir.path() / "uncached").string());
+    EXPECT_GT(targetFromCache(warm.output, "es300"), 0) << warm.output;
+    EXPECT_GT(targetFromCache(warm.output, "spirv"), 0) << warm.output;
+    EXPECT_NE(warm.output.find("SPIRV-Tools validated 0 modules"), std::string::npos) << warm.output;
+    auto uncached = runShaderc("-o h.hpp --cache-dir none" + inputs + targets, (dir.path() / "uncached").string());
     ASSERT_EQ(uncached.exitCode, 0) << uncached.output;
     for (const char* file : {"h.hpp", "h.cpp"}) {
         const std::string a = prism::test::readFile(dir.path() / "cold" / file);
         EXPECT_GT(a.size(), 1000u) << file;
         EXPECT_TRUE(a == prism::test::readFile(dir.path() / "warm" / file)) << file << ": cached vs cold";
         EXPECT_TRUE(a == prism::test::readFile(dir.path() / "uncached" / file)) << file << ": cold vs no cache";
+    }
+}
+
+// The es300 and spirv targets keep their clean results in their own packs beside the gl
+// one: a re-check validates nothing again, and an edit of one module re-validates, for
+// every target, only the programs that include it.
+TEST(ValidationSchedule, Es300AndSpirvResultsComeFromTheirOwnPacks) {
+    ScratchDir dir("sched-targets");
+    writeTwoShaders(dir);
+    const std::string args = "--check --revalidate --stats --target gl,es300,spirv --cache-dir build/cache -I m s";
+    auto first = runShaderc(args, dir.str());
+    ASSERT_EQ(first.exitCode, 0) << first.output;
+    EXPECT_EQ(targetFromCache(first.output, "es300"), 0) << first.output;
+    EXPECT_EQ(targetFromCache(first.output, "spirv"), 0) << first.output;
+    EXPECT_EQ(filesUnder(dir.path() / "build/cache", "-es300.json"), 1u);
+    EXPECT_EQ(filesUnder(dir.path() / "build/cache", "-spirv.json"), 1u);
+    EXPECT_EQ(filesUnder(dir.path() / "build/cache", "-spirv.words"), 1u);  // its modules' words
+
+    auto again = runShaderc(args, dir.str());
+    ASSERT_EQ(again.exitCode, 0) << again.output;
+    EXPECT_EQ(targetFromCache(again.output, "es300"), 2) << again.output;
+    EXPECT_EQ(targetFromCache(again.output, "spirv"), 2) << again.output;
+    EXPECT_NE(again.output.find("SPIRV-Tools validated 0 modules"), std::string::npos) << again.output;
+
+    dir.write("m/one.glsl", "// Provides: one().\nfloat one() { return 1.0 + 0.0; }\n");
+    auto edited = runShaderc(args, dir.str());
+    ASSERT_EQ(edited.exitCode, 0) << edited.output;
+    EXPECT_EQ(targetFromCache(edited.output, "es300"), 1) << edited.output;
+    EXPECT_EQ(targetFromCache(edited.output, "spirv"), 1) << edited.output;
+}
+
+// A target's result with a message is never cached: its program runs again on every check,
+// so an es300 error keeps its lines, and a warning (the ES 3.00 limits) is not dropped by a
+// re-check that would otherwise find the program's verdict in the cache.
+TEST(ValidationSchedule, TargetMessagesAreNeverServedFromTheCache) {
+    ScratchDir dir("sched-target-diag");
+    writeTwoShaders(dir);
+    dir.write("s/a.vert", "#version 330 core\nout int v_id;\nvoid main() { v_id = 1; gl_Position = vec4(0.0); }\n");
+    std::string samplers, taps;
+    for (int i = 0; i < 17; ++i) {
+        samplers += "uniform sampler2D u_t" + std::to_string(i) + ";\n";
+        taps += " + texture(u_t" + std::to_string(i) + ", vec2(0.5))";
+    }
+    dir.write("s/b.frag",
+              "#version 330 core\n" + samplers + "out vec4 o;\nvoid main() { o = vec4(0.0)" + taps + "; }\n");
+    const std::string args = "--check --revalidate --stats --target gl,es300 --cache-dir build/cache -I m s";
+    for (int run = 0; run < 2; ++run) {
+        auto result = runShaderc(args, dir.str());
+        EXPECT_EQ(result.exitCode, 1) << "run " << run << ": " << result.output;
+        EXPECT_NE(result.output.find("s/a.vert:2:5: error: 'int': must be qualified as flat"), std::string::npos)
+            << "run " << run << ": " << result.output;
+        EXPECT_NE(result.output.find("warning: es300: program 'b' uses 17 fragment texture units"), std::string::npos)
+            << "run " << run << ": " << result.output;
+        EXPECT_EQ(targetFromCache(result.output, "es300"), 0) << "run " << run << ": " << result.output;
+    }
+}
+
+// A spirv pack keeps its modules' words in a file beside it, with their size and hash in the
+// pack. A words file that is torn (a flipped byte, cut short) or gone is a miss, never wrong
+// words: the run compiles again and gives the same data file.
+TEST(ValidationSchedule, TornSpirvWordsFileIsAMiss) {
+    ScratchDir dir("sched-spirv-torn");
+    writeTwoShaders(dir);
+    const std::string args = "-o c.hpp --stats --target gl,spirv --cache-dir build/cache -I m s";
+    ASSERT_EQ(runShaderc(args, dir.str()).exitCode, 0);
+    const std::string cold = prism::test::readFile(dir.path() / "c.cpp");
+    fs::path words;
+    for (const auto& e : fs::directory_iterator(dir.path() / "build/cache"))
+        if (e.path().string().ends_with("-spirv.words")) words = e.path();
+    ASSERT_FALSE(words.empty());
+    const std::string intact = prism::test::readFile(words);
+    ASSERT_GT(intact.size(), 100u);
+    std::string flipped = intact;
+    flipped[40] = static_cast<char>(flipped[40] ^ 1);
+    for (const auto& [tear, text] : std::vector<std::pair<std::string, std::string>>{
+             {"flipped", flipped}, {"cut", intact.substr(0, intact.size() - 4)}, {"gone", ""}}) {
+        if (tear == "gone")
+            fs::remove(words);
+        else
+            prism::test::writeFile(words, text);
+        fs::remove(dir.path() / "c.cpp");
+        auto run = runShaderc(args, dir.str());
+        ASSERT_EQ(run.exitCode, 0) << run.output;
+        EXPECT_EQ(targetFromCache(run.output, "spirv"), 0) << tear << ": " << run.output;
+        EXPECT_TRUE(prism::test::readFile(dir.path() / "c.cpp") == cold) << tear;
+        fs::remove(dir.path() / "c.cpp");
+        auto again = runShaderc(args, dir.str());  // the run wrote a good pack again
+        EXPECT_EQ(targetFromCache(again.output, "spirv"), 2) << tear << ": " << again.output;
+        EXPECT_TRUE(prism::test::readFile(dir.path() / "c.cpp") == cold) << tear;
     }
 }

@@ -1,0 +1,85 @@
+// The es300 and spirv targets' scheduling: token groups, their cache pack, and the runs
+// (target_scheduler.hpp).
+#include "target_scheduler.hpp"
+
+#include <map>
+#include <string>
+
+#include "job_pool.hpp"
+#include "validation_scheduler.hpp"
+#include "validation_settings.hpp"
+
+namespace prism::shaderc {
+
+std::vector<std::size_t> TargetPrograms::firstRuns() const {
+    std::vector<std::size_t> runs;
+    for (std::size_t i = 0; i < programs.size(); ++i)
+        if (runsFirst(i)) runs.push_back(i);
+    return runs;
+}
+
+std::size_t TargetPrograms::fromCache() const {
+    std::size_t count = 0;
+    for (const auto& c : cached) count += c.has_value();
+    return count;
+}
+
+TargetPrograms scheduleTarget(const Options& o, const ResolvedCatalog& rc, const Contract& contract, Target target,
+                              std::vector<std::pair<std::size_t, std::size_t>> programs) {
+    TargetPrograms s;
+    s.target = target;
+    s.programs = std::move(programs);
+    if (s.programs.empty()) return s;
+    // The target's own pack beside the gl one: one catalogue, one pack per target.
+    s.cache = std::make_unique<ValidationCache>(validationCacheDir(o),
+                                                catalogueCacheKey(o) + "-" + std::string(targetName(target)));
+    std::map<std::string, std::size_t> firstOfKey;
+    for (std::size_t i = 0; i < s.programs.size(); ++i) {
+        s.keys.push_back(programKey(rc, contract, s.programs[i].first, s.programs[i].second));
+        s.representatives.push_back(firstOfKey.try_emplace(s.keys[i].tokens, i).first->second);
+        std::optional<ValidatedVariant> hit;
+        if (s.representatives[i] == i) hit = s.cache->find(s.keys[i]);
+        s.cached.push_back(hit && hit->ok && hit->diagnostics.empty() ? std::move(hit) : std::nullopt);
+    }
+    return s;
+}
+
+namespace {
+
+bool clean(const std::optional<ValidatedVariant>& result) {
+    return result && result->ok && result->diagnostics.empty();
+}
+
+}  // namespace
+
+std::vector<Diagnostic> runTarget(TargetPrograms& s, int jobs, const TargetValidate& validate, const TargetKeep& keep) {
+    const std::size_t count = s.programs.size();
+    if (count == 0) return {};
+    std::vector<std::optional<ValidatedVariant>> results(count);
+    const auto first = s.firstRuns();
+    initializeValidator();
+    runPool(first.size(), jobs, [&](std::size_t k) { results[first[k]] = validate(first[k], true); });
+    std::vector<std::size_t> ownRuns;
+    for (std::size_t i = 0; i < count; ++i) {
+        const std::size_t rep = s.representatives[i];
+        if (rep == i && s.cached[i]) results[i] = std::move(s.cached[i]);
+        if (rep == i) continue;
+        if (clean(results[rep]))
+            results[i] = results[rep];
+        else
+            ownRuns.push_back(i);
+    }
+    runPool(ownRuns.size(), jobs, [&](std::size_t k) { results[ownRuns[k]] = validate(ownRuns[k], false); });
+    finalizeValidator();
+    for (const auto i : first)
+        if (clean(results[i])) s.cache->store(s.keys[i], *results[i]);
+    s.cache->flush();
+    std::vector<Diagnostic> out;
+    for (std::size_t i = 0; i < count; ++i) {
+        keep(i, *results[i]);
+        out.insert(out.end(), results[i]->diagnostics.begin(), results[i]->diagnostics.end());
+    }
+    return out;
+}
+
+}  // namespace prism::shaderc
