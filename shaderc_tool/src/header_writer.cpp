@@ -15,20 +15,6 @@
 namespace prism::shaderc {
 namespace {
 
-const std::set<std::string>& cppKeywords() {
-    static const std::set<std::string> words = {
-        "alignas",  "alignof", "and",       "asm",       "auto",     "bool",      "break",     "case",     "catch",
-        "char",     "class",   "const",     "constexpr", "continue", "default",   "delete",    "do",       "double",
-        "else",     "enum",    "explicit",  "export",    "extern",   "false",     "float",     "for",      "friend",
-        "goto",     "if",      "inline",    "int",       "long",     "mutable",   "namespace", "new",      "noexcept",
-        "not",      "nullptr", "operator",  "or",        "private",  "protected", "public",    "register", "return",
-        "short",    "signed",  "sizeof",    "static",    "struct",   "switch",    "template",  "this",     "throw",
-        "true",     "try",     "typedef",   "typename",  "union",    "unsigned",  "using",     "virtual",  "void",
-        "volatile", "while",   "xor",       "concept",   "requires", "module",    "import",    "co_await", "co_return",
-        "co_yield", "char8_t", "consteval", "constinit"};
-    return words;
-}
-
 // What a uniform handle's type says (prism/catalog/uniform_handle.hpp) for a reflected GL type.
 std::string_view handleType(std::uint32_t glType) {
     switch (glType) {
@@ -124,7 +110,7 @@ std::string cppIdentifier(const std::string& name) {
     std::string id;
     for (char c : name) id += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
     if (id.empty() || std::isdigit(static_cast<unsigned char>(id[0]))) id = "_" + id;
-    if (cppKeywords().count(id)) id += '_';
+    if (isCppKeyword(id)) id += '_';
     return id;
 }
 

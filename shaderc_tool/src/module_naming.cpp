@@ -98,7 +98,7 @@ std::string mangleModulePath(std::string_view relativePath) {
     std::string id;
     for (std::size_t i = 0; i < components.size(); ++i)
         id += (i ? "__" : "") + pieceOf(components[i], i == 0, i + 1 == components.size());
-    if (cppKeywords().contains(id)) id += '_';
+    if (isCppKeyword(id)) id += '_';
     return id;
 }
 
@@ -107,7 +107,7 @@ std::optional<std::string> demangleModuleIdentifier(std::string_view id) {
     const bool keywordSuffix = id.back() == '_';  // nothing else ends in '_'
     if (keywordSuffix) {
         id.remove_suffix(1);
-        if (!cppKeywords().contains(id)) return std::nullopt;
+        if (!isCppKeyword(id)) return std::nullopt;
     }
     std::vector<std::pair<std::string_view, bool>> pieces;  // text, hex
     std::size_t i = 0;
@@ -144,14 +144,14 @@ std::optional<std::string> demangleModuleIdentifier(std::string_view id) {
 
 std::string mangleName(std::string_view name) {
     std::string id = pieceOf(name, true, false);
-    if (cppKeywords().contains(id)) id += '_';
+    if (isCppKeyword(id)) id += '_';
     return id;
 }
 
 std::optional<std::string> demangleName(std::string_view id) {
     if (id.empty()) return std::nullopt;
     std::string name(id);
-    if (id.back() == '_' && cppKeywords().contains(id.substr(0, id.size() - 1))) {
+    if (id.back() == '_' && isCppKeyword(id.substr(0, id.size() - 1))) {
         name.pop_back();
     } else if (id.front() == '_') {
         auto bytes = bytesOfHex(id.substr(1));
@@ -160,6 +160,10 @@ std::optional<std::string> demangleName(std::string_view id) {
     }
     if (name.empty() || mangleName(name) != id) return std::nullopt;
     return name;
+}
+
+bool isCppKeyword(std::string_view word) {
+    return cppKeywords().contains(word);
 }
 
 }  // namespace prism::shaderc

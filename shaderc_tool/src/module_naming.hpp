@@ -35,4 +35,8 @@ std::optional<std::string> demangleModuleIdentifier(std::string_view identifier)
 std::string mangleName(std::string_view name);
 std::optional<std::string> demangleName(std::string_view identifier);
 
+// A C++ keyword (C++20, alternative tokens included): an identifier the generated header
+// writes with a trailing "_" instead. The one list for every generated name.
+bool isCppKeyword(std::string_view word);
+
 }  // namespace prism::shaderc

@@ -34,7 +34,7 @@ std::string typeSpelling(const glslang::TType& t) {
 
 class LinkerObjectCollector : public glslang::TIntermTraverser {
   public:
-    explicit LinkerObjectCollector(StageInterface& out) : out_(out) {}
+    LinkerObjectCollector(StageInterface& out, EShLanguage language) : out_(out), language_(language) {}
 
     bool visitAggregate(glslang::TVisit, glslang::TIntermAggregate* node) override {
         if (node->getOp() != glslang::EOpLinkerObjects) return true;
@@ -68,6 +68,13 @@ class LinkerObjectCollector : public glslang::TIntermTraverser {
                                       : Interpolation::Smooth;
         v.patch = q.patch;
         if (q.hasLocation()) v.location = static_cast<int>(q.layoutLocation);
+        // As glslang counts them for its own overlap check (TIntermediate::addUsedLocation).
+        if (q.isArrayedIo(language_) && type.isArray()) {
+            const TType vertex(type, 0);
+            v.locationSlots = TIntermediate::computeTypeLocationSize(vertex, language_);
+        } else {
+            v.locationSlots = TIntermediate::computeTypeLocationSize(type, language_);
+        }
         const TSourceLoc& loc = sym.getLoc();
         v.sourceNumber = static_cast<std::uint32_t>(loc.string < 0 ? 0 : loc.string);
         v.line = loc.line;
@@ -76,6 +83,7 @@ class LinkerObjectCollector : public glslang::TIntermTraverser {
     }
 
     StageInterface& out_;
+    EShLanguage language_;
 };
 
 }  // namespace
@@ -85,7 +93,7 @@ StageInterface extractStageInterface(catalog::Stage stage, const glslang::TShade
     result.stage = stage;
     const glslang::TIntermediate* im = shader.getIntermediate();
     if (!im || !im->getTreeRoot()) return result;
-    LinkerObjectCollector collector(result);
+    LinkerObjectCollector collector(result, shader.getStage());
     im->getTreeRoot()->traverse(&collector);
     return result;
 }

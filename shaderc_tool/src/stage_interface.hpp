@@ -26,7 +26,8 @@ struct InterfaceVariable {
     Interpolation interpolation = Interpolation::Smooth;
     bool isBlock = false;
     bool patch = false;              // `patch in` / `patch out`: per patch, not an array over its vertices
-    int location = -1;               // explicit layout(location = N), -1 without
+    int location = -1;               // layout(location = N): explicit, or glslang's after mapIO; -1 without
+    int locationSlots = 1;           // locations it takes (one vertex's, for a per-vertex array)
     std::uint32_t sourceNumber = 0;  // from the #line directives
     int line = 0;
     int column = 0;

@@ -16,6 +16,7 @@
 #include "did_you_mean.hpp"
 #include "glslang_stage.hpp"
 #include "directive_lines.hpp"
+#include "assigned_locations.hpp"
 #include "interface_check.hpp"
 #include "stage_interface.hpp"
 #include "vulkan_reflection.hpp"
@@ -257,15 +258,34 @@ ValidatedVariant validateProgram(const std::vector<StageToValidate>& stages, con
 
 namespace {
 
-// The stage interfaces' and the contract's checks; messages find the declarations' lines.
-std::vector<Diagnostic> checkInterfaces(const std::vector<StageToValidate>& stages,
-                                        const std::vector<glslang::TShader*>& shaders, const Contract& contract) {
+SourceLocator locatorFor(const std::vector<StageToValidate>& stages) {
     SourceLocator locate;
-    locate.path = [&](std::size_t stage, std::uint32_t number) { return pathOf(stages[stage], number); };
-    locate.chain = [&](std::size_t stage, std::uint32_t number) { return chainOf(stages[stage], number); };
+    locate.path = [&stages](std::size_t stage, std::uint32_t number) { return pathOf(stages[stage], number); };
+    locate.chain = [&stages](std::size_t stage, std::uint32_t number) { return chainOf(stages[stage], number); };
+    return locate;
+}
+
+std::vector<StageInterface> interfacesOf(const std::vector<StageToValidate>& stages,
+                                         const std::vector<glslang::TShader*>& shaders) {
     std::vector<StageInterface> interfaces;
     for (std::size_t i = 0; i < stages.size(); ++i)
         interfaces.push_back(extractStageInterface(stages[i].stage, *shaders[i]));
+    return interfaces;
+}
+
+// glslang's locations of the linker objects are rough: a message finds its declaration's line.
+void locateDeclarations(const std::vector<StageToValidate>& stages, std::vector<StageInterface>& interfaces) {
+    for (std::size_t i = 0; i < stages.size(); ++i) {
+        const SourceLines lines(stages[i].resolved);
+        for (auto& v : interfaces[i].variables) lines.locateDeclaration(v);
+    }
+}
+
+// The stage interfaces' and the contract's checks; messages find the declarations' lines.
+std::vector<Diagnostic> checkInterfaces(const std::vector<StageToValidate>& stages,
+                                        const std::vector<glslang::TShader*>& shaders, const Contract& contract) {
+    const SourceLocator locate = locatorFor(stages);
+    auto interfaces = interfacesOf(stages, shaders);
     // The binding contract names what the OpenGL runtime feeds by name; Vulkan binds by location.
     const auto contractOf = [&] {
         return stages.front().spirvEnv ? std::vector<Diagnostic>{} : checkContract(contract, interfaces, locate);
@@ -273,15 +293,30 @@ std::vector<Diagnostic> checkInterfaces(const std::vector<StageToValidate>& stag
     auto io = checkStageInterfaces(interfaces, locate);
     auto bound = contractOf();
     if (!io.empty() || !bound.empty()) {  // messages: find the declarations' lines, then check again
-        for (std::size_t i = 0; i < stages.size(); ++i) {
-            const SourceLines lines(stages[i].resolved);
-            for (auto& v : interfaces[i].variables) lines.locateDeclaration(v);
-        }
+        locateDeclarations(stages, interfaces);
         io = checkStageInterfaces(interfaces, locate);
         bound = contractOf();
     }
     io.insert(io.end(), bound.begin(), bound.end());
     return io;
+}
+
+// The relaxed rules' mapIO, then its locations checked against the stages as written
+// (assigned_locations.hpp). False with the messages in `result` when it failed.
+bool assignLocations(const std::vector<StageToValidate>& stages, const std::vector<glslang::TShader*>& shaders,
+                     glslang::TProgram& program, ValidatedVariant& result) {
+    const auto written = interfacesOf(stages, shaders);
+    if (!program.mapIO()) {
+        result.diagnostics.push_back(
+            makeError(stages.front().path, 0, 0, "glslang could not assign locations and bindings"));
+        return false;
+    }
+    auto assigned = interfacesOf(stages, shaders);
+    if (checkAssignedLocations(written, assigned, locatorFor(stages)).empty()) return true;
+    locateDeclarations(stages, assigned);
+    const auto overlaps = checkAssignedLocations(written, assigned, locatorFor(stages));
+    result.diagnostics.insert(result.diagnostics.end(), overlaps.begin(), overlaps.end());
+    return false;
 }
 
 // The Vulkan client's SPIR-V of every stage of a linked program, each checked by
@@ -321,11 +356,7 @@ void linkAndReflect(const std::vector<StageToValidate>& stages, const std::vecto
         return;
     }
     // glslang assigns the spirv target's locations and bindings here, before anything reads them.
-    if (stages.front().relaxedRules && !program.mapIO()) {
-        result.diagnostics.push_back(
-            makeError(stages.front().path, 0, 0, "glslang could not assign locations and bindings"));
-        return;
-    }
+    if (stages.front().relaxedRules && !assignLocations(stages, shaders, program, result)) return;
     if (stages.front().spirvEnv)
         emitSpirv(stages, program, result);
     else

@@ -384,3 +384,37 @@ TEST(Targets, VariantsWithOneTokenStreamShareTheirTargets) {
         EXPECT_NE(row.find("plain_v0_resources"), std::string::npos) << row;
     }
 }
+
+// glslang 12's automatic locations (the spirv target's relaxed rules) do not avoid the
+// explicit ones of the same interface: a stage that mixes them can get two variables at one
+// location. Prism says so at the declaration glslang placed, with a note at the explicit one,
+// before SPIRV-Tools would reject the module without a line; gl, which links by name, takes
+// it; a mix whose locations do not meet compiles for spirv too.
+TEST(Targets, SpirvNamesTheDeclarationWhereAnAutomaticLocationCollides) {
+    ScratchDir dir("targets-spirv-locations");
+    const auto write = [&](int explicitLocation) {
+        const std::string at = "layout(location = " + std::to_string(explicitLocation) + ") ";
+        dir.write("sh/mix.vert", "// mix\n#version 420 core\nin vec3 a_position;\nout vec3 v_normal;\n" + at +
+                                     "out vec3 v_extra;\nvoid main() { v_normal = a_position; v_extra = a_position; "
+                                     "gl_Position = vec4(a_position, 1.0); }\n");
+        dir.write("sh/mix.frag", "// mix\n#version 420 core\nin vec3 v_normal;\n" + at +
+                                     "in vec3 v_extra;\nout vec4 o_color;\n"
+                                     "void main() { o_color = vec4(v_normal + v_extra, 1.0); }\n");
+    };
+    dir.write("mods/.keep.glsl", "// nothing\n");
+    write(0);
+    EXPECT_EQ(runShaderc(scratchArgs(dir, "gl"), dir.str()).exitCode, 0);
+    const auto run = runShaderc(scratchArgs(dir, "gl,spirv"), dir.str());
+    EXPECT_EQ(run.exitCode, 1) << run.output;
+    for (const std::string expected :
+         {"sh/mix.vert:4:10: error: for target spirv, glslang puts the vert output 'v_normal' at location 0, which "
+          "'v_extra' already takes",
+          "sh/mix.vert:5:31: note: 'v_extra' is at location 0 here",
+          "sh/mix.frag:3:9: error: for target spirv, glslang puts the frag input 'v_normal' at location 0",
+          "give every input of this stage a layout(location), or none"})
+        EXPECT_NE(run.output.find(expected), std::string::npos) << expected << "\n" << run.output;
+    EXPECT_EQ(run.output.find("SPIRV-Tools rejected"), std::string::npos) << run.output;
+    write(3);
+    const auto apart = runShaderc(scratchArgs(dir, "gl,spirv"), dir.str());
+    EXPECT_EQ(apart.exitCode, 0) << apart.output;
+}
