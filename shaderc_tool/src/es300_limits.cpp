@@ -94,25 +94,28 @@ Es300Usage measure(const std::vector<glslang::TShader*>& shaders) {
 
 }  // namespace
 
-std::vector<Diagnostic> limitWarnings(const std::string& program, const std::string& path, const Es300Usage& usage,
+std::vector<Diagnostic> limitWarnings(const std::string& program, const Es300StagePaths& paths, const Es300Usage& usage,
                                       const Es300Limits& limits) {
     struct Row {
         const char* what;
         int count, limit;
+        const std::string& path;
     };
     const Row rows[] = {
         {"vertex uniform vectors (GL_MAX_VERTEX_UNIFORM_VECTORS)", usage.vertexUniformVectors,
-         limits.vertexUniformVectors},
+         limits.vertexUniformVectors, paths.vertex},
         {"fragment uniform vectors (GL_MAX_FRAGMENT_UNIFORM_VECTORS)", usage.fragmentUniformVectors,
-         limits.fragmentUniformVectors},
-        {"varying vectors (GL_MAX_VARYING_VECTORS)", usage.varyingVectors, limits.varyingVectors},
-        {"vertex texture units (GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS)", usage.vertexTextureUnits, limits.textureUnits},
-        {"fragment texture units (GL_MAX_TEXTURE_IMAGE_UNITS)", usage.fragmentTextureUnits, limits.textureUnits},
+         limits.fragmentUniformVectors, paths.fragment},
+        {"varying vectors (GL_MAX_VARYING_VECTORS)", usage.varyingVectors, limits.varyingVectors, paths.vertex},
+        {"vertex texture units (GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS)", usage.vertexTextureUnits, limits.textureUnits,
+         paths.vertex},
+        {"fragment texture units (GL_MAX_TEXTURE_IMAGE_UNITS)", usage.fragmentTextureUnits, limits.textureUnits,
+         paths.fragment},
     };
     std::vector<Diagnostic> out;
     for (const auto& row : rows) {
         if (row.count <= row.limit) continue;
-        Diagnostic d = makeError(path, 0, 0,
+        Diagnostic d = makeError(row.path, 0, 0,
                                  "es300: program " + program + " uses " + std::to_string(row.count) + " " + row.what +
                                      ", over the ES 3.00 minimum of " + std::to_string(row.limit) +
                                      " that a device may give; it may fail to link on phones (docs/targets.md)");
@@ -122,9 +125,9 @@ std::vector<Diagnostic> limitWarnings(const std::string& program, const std::str
     return out;
 }
 
-LinkedProgramCheck es300LimitsCheck(const std::string& program, const std::string& path) {
-    return [program, path](glslang::TProgram&, const std::vector<glslang::TShader*>& shaders) {
-        return limitWarnings(program, path, measure(shaders));
+LinkedProgramCheck es300LimitsCheck(const std::string& program, const Es300StagePaths& paths) {
+    return [program, paths](glslang::TProgram&, const std::vector<glslang::TShader*>& shaders) {
+        return limitWarnings(program, paths, measure(shaders));
     };
 }
 

@@ -2,7 +2,8 @@
 // program against the minimum limits every ES 3.00 device must give (GLSL ES 3.00 §7.3
 // built-in constants). A phone may give no more; a desktop browser's SwiftShader reports
 // far more, so a browser test cannot find a program over them. Over a limit is a warning
-// naming the program, the limit and the count.
+// at the stage file that uses too much (the vertex stage's for its uniforms, texture units
+// and outputs; the fragment stage's for its own), naming the program, the limit and the count.
 //
 // Counting rule (stated in docs/targets.md): the packing algorithm of the GLSL ES spec
 // (GLSL ES 1.00 Appendix A §7, which ES 3.00's limits refer to), applied per stage to the
@@ -11,7 +12,8 @@
 // two 2-component rows share a row; scalars fill the free column of the 3-component rows,
 // then the free half of an odd 2-component row, then rows of 4. Samplers count texture units.
 //
-//   const auto check = es300LimitsCheck("phong (variant BLINN=1)", "shader_sources/phong.vert");
+//   const auto check =
+//       es300LimitsCheck("phong (variant BLINN=1)", {"shader_sources/phong.vert", "shader_sources/phong.frag"});
 //   validateProgram(esStages, contract, check);  // warnings over a limit, among the diagnostics
 #pragma once
 
@@ -48,11 +50,16 @@ struct Es300Usage {
     int vertexTextureUnits = 0, fragmentTextureUnits = 0;
 };
 
-// The warnings of a program using `usage`, each at `path` (the program's first stage file).
-std::vector<Diagnostic> limitWarnings(const std::string& program, const std::string& path, const Es300Usage& usage,
+// The files of a program's two stages, where its warnings point.
+struct Es300StagePaths {
+    std::string vertex, fragment;
+};
+
+// The warnings of a program using `usage`, each at the file of the stage that uses too much.
+std::vector<Diagnostic> limitWarnings(const std::string& program, const Es300StagePaths& paths, const Es300Usage& usage,
                                       const Es300Limits& limits = {});
 
 // The check validateProgram runs on the linked ES program: measures it and warns.
-LinkedProgramCheck es300LimitsCheck(const std::string& program, const std::string& path);
+LinkedProgramCheck es300LimitsCheck(const std::string& program, const Es300StagePaths& paths);
 
 }  // namespace prism::shaderc

@@ -81,7 +81,9 @@ std::vector<StageToValidate> es300Stages(const ResolvedCatalog& rc, const EsProg
 ValidatedVariant validateOne(const ResolvedCatalog& rc, const EsProgram& p, const Contract& contract,
                              const std::vector<StageToValidate>& stages, SharedStageParses* shared, std::size_t index) {
     const std::string program = targetProgramName(rc, p.first, p.second);
-    const auto limits = es300LimitsCheck(program, stages.front().path);
+    Es300StagePaths paths{stages.front().path, stages.back().path};
+    for (const auto& st : stages) (st.stage == catalog::Stage::Fragment ? paths.fragment : paths.vertex) = st.path;
+    const auto limits = es300LimitsCheck(program, paths);
     ValidatedVariant result;
     if (shared) {
         result = validateCompiledProgram(stages, shared->acquire(index), contract, limits);

@@ -214,11 +214,14 @@ TEST(Targets, LimitsWarningNamesProgramLimitAndCount) {
     const auto run = runShaderc(scratchArgs(dir, "gl,es300"), dir.str());
     EXPECT_EQ(run.exitCode, 0) << run.output;
     for (const std::string expected :
-         {"warning: es300: program 'big' uses 300 vertex uniform vectors (GL_MAX_VERTEX_UNIFORM_VECTORS), over the "
-          "ES 3.00 minimum of 256",
-          "uses 225 fragment uniform vectors (GL_MAX_FRAGMENT_UNIFORM_VECTORS), over the ES 3.00 minimum of 224",
-          "uses 16 varying vectors (GL_MAX_VARYING_VECTORS), over the ES 3.00 minimum of 15",
-          "uses 17 fragment texture units (GL_MAX_TEXTURE_IMAGE_UNITS), over the ES 3.00 minimum of 16"})
+         {"sh/big.vert: warning: es300: program 'big' uses 300 vertex uniform vectors "
+          "(GL_MAX_VERTEX_UNIFORM_VECTORS), over the ES 3.00 minimum of 256",
+          "sh/big.frag: warning: es300: program 'big' uses 225 fragment uniform vectors "
+          "(GL_MAX_FRAGMENT_UNIFORM_VECTORS), over the ES 3.00 minimum of 224",
+          "sh/big.vert: warning: es300: program 'big' uses 16 varying vectors (GL_MAX_VARYING_VECTORS), over the ES "
+          "3.00 minimum of 15",
+          "sh/big.frag: warning: es300: program 'big' uses 17 fragment texture units (GL_MAX_TEXTURE_IMAGE_UNITS), "
+          "over the ES 3.00 minimum of 16"})
         EXPECT_NE(run.output.find(expected), std::string::npos) << expected << "\n" << run.output;
 }
 
