@@ -16,11 +16,10 @@
 
 namespace prism::bluenoise {
 
-namespace {
+namespace detail {
 
-namespace soft_shadows = bluenoise_shaders::soft_shadows;  // the shader's typed uniforms
-
-// A 2D R32UI texture (nearest filtering), owned through a prism::gl handle.
+// A 2D R32UI texture (nearest filtering), owned through a prism::gl handle. Named, not in
+// the anonymous namespace: GlSoftShadows::Resources, which the header declares, holds three.
 class UintTexture {
   public:
     UintTexture() : texture_(gl::Texture::create()) {}
@@ -39,6 +38,12 @@ class UintTexture {
   private:
     gl::Texture texture_;
 };
+
+}  // namespace detail
+
+namespace {
+
+namespace soft_shadows = bluenoise_shaders::soft_shadows;  // the shader's typed uniforms
 
 // The full-screen triangle writes every pixel as the shader computes it, whatever state the
 // caller left: an enabled depth test against the never-cleared depth buffer, blending or
@@ -59,7 +64,7 @@ struct GlSoftShadows::Resources {
     Resources(int w, int h) : framebuffer(w, h, gl::ColorFormat::Rgba32F), programs(bluenoise_shaders::kCatalog) {}
     gl::Framebuffer framebuffer;
     render::ProgramCache programs;
-    UintTexture mask, seeds, stack;
+    detail::UintTexture mask, seeds, stack;
     gl::VertexArray vao = gl::VertexArray::create();
 };
 
