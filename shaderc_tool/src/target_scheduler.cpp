@@ -10,6 +10,14 @@
 #include "validation_settings.hpp"
 
 namespace prism::shaderc {
+namespace {
+
+// A result that may be shared, cached or taken from the cache: no message of any kind.
+bool clean(const std::optional<ValidatedVariant>& result) {
+    return result && result->ok && result->diagnostics.empty();
+}
+
+}  // namespace
 
 std::vector<std::size_t> TargetPrograms::firstRuns() const {
     std::vector<std::size_t> runs;
@@ -39,18 +47,10 @@ TargetPrograms scheduleTarget(const Options& o, const ResolvedCatalog& rc, const
         s.representatives.push_back(firstOfKey.try_emplace(s.keys[i].tokens, i).first->second);
         std::optional<ValidatedVariant> hit;
         if (s.representatives[i] == i) hit = s.cache->find(s.keys[i]);
-        s.cached.push_back(hit && hit->ok && hit->diagnostics.empty() ? std::move(hit) : std::nullopt);
+        s.cached.push_back(clean(hit) ? std::move(hit) : std::nullopt);
     }
     return s;
 }
-
-namespace {
-
-bool clean(const std::optional<ValidatedVariant>& result) {
-    return result && result->ok && result->diagnostics.empty();
-}
-
-}  // namespace
 
 std::vector<Diagnostic> runTarget(TargetPrograms& s, int jobs, const TargetValidate& validate, const TargetKeep& keep) {
     const std::size_t count = s.programs.size();

@@ -2,8 +2,6 @@
 // validation_cache.hpp).
 #include "validation_cache.hpp"
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -13,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "output_file.hpp"
 #include "prism/hash/content_hash.hpp"
 
 namespace prism::shaderc {
@@ -51,7 +50,11 @@ std::string wordsHash(const std::vector<std::uint32_t>& words) {
 
 // The words file a pack names, checked against its recorded size and hash.
 std::vector<std::uint32_t> readWords(const fs::path& path, const json& record) {
-    std::vector<std::uint32_t> words(record.at("count").get<std::size_t>());
+    const auto count = record.at("count").get<std::size_t>();
+    // The size first: a torn pack's count must not decide how much memory is asked for.
+    if (count > fs::file_size(path) / sizeof(std::uint32_t) || fs::file_size(path) % sizeof(std::uint32_t) != 0)
+        throw std::runtime_error("the words file is not the size the pack records");
+    std::vector<std::uint32_t> words(count);
     std::ifstream in(path, std::ios::binary);
     in.read(reinterpret_cast<char*>(words.data()), static_cast<std::streamsize>(words.size() * sizeof(words[0])));
     if (!in || in.peek() != std::char_traits<char>::eof() || wordsHash(words) != record.at("hash").get<std::string>())
@@ -64,23 +67,6 @@ std::vector<std::uint32_t> moduleAt(const json& ref, const std::vector<std::uint
     if (offset > words.size() || count > words.size() - offset) throw std::out_of_range("a module past the words");
     return {words.begin() + static_cast<std::ptrdiff_t>(offset),
             words.begin() + static_cast<std::ptrdiff_t>(offset + count)};
-}
-
-// Writes `text` to `target` through a temporary file renamed into place (atomic for readers).
-bool writeAtomically(const fs::path& target, std::string_view text) {
-    std::error_code ec;
-    const fs::path temp = target.string() + ".tmp-" + std::to_string(::getpid());
-    {
-        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        out.write(text.data(), static_cast<std::streamsize>(text.size()));
-        if (!out) {
-            fs::remove(temp, ec);
-            return false;
-        }
-    }
-    fs::rename(temp, target, ec);
-    if (ec) fs::remove(temp, ec);
-    return !ec;
 }
 
 fs::path wordsPath(const std::string& packPath) {
@@ -223,16 +209,16 @@ void ValidationCache::flush() {
     for (const auto& [key, entry] : entries_)
         if (entries.size() < bound && !used_.contains(key)) entries[key] = toJson(entry.text, entry.result, modules);
     json pack = {{"format", kFormat}, {"entries", entries}};
-    std::error_code ec;
-    fs::create_directories(fs::path(path_).parent_path(), ec);
-    if (ec) return;                  // a cache that cannot be written only costs time
-    if (!modules.words().empty()) {  // first the words, then the pack that names them
+    // Atomic writes (output_file.hpp): readers see the old file or the new one. First the
+    // words, then the pack that names them; a cache that cannot be written only costs time.
+    std::string error;
+    if (!modules.words().empty()) {
         const auto& words = modules.words();
         pack["words"] = {{"count", words.size()}, {"hash", wordsHash(words)}};
-        const std::string_view bytes(reinterpret_cast<const char*>(words.data()), words.size() * sizeof(words[0]));
-        if (!writeAtomically(wordsPath(path_), bytes)) return;
+        const std::string bytes(reinterpret_cast<const char*>(words.data()), words.size() * sizeof(words[0]));
+        if (writeIfChanged(wordsPath(path_).string(), bytes, error) == WriteOutcome::Failed) return;
     }
-    if (!writeAtomically(path_, pack.dump())) return;  // atomic: readers see the old pack or the new one
+    if (writeIfChanged(path_, pack.dump(), error) == WriteOutcome::Failed) return;
     dirty_ = false;
 }
 

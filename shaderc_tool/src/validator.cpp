@@ -311,6 +311,13 @@ bool assignLocations(const std::vector<StageToValidate>& stages, const std::vect
             makeError(stages.front().path, 0, 0, "glslang could not assign locations and bindings"));
         return false;
     }
+    // Without an explicit location on an input or output there is nothing to collide with.
+    const auto explicitLocation = [](const StageInterface& stage) {
+        return std::any_of(stage.variables.begin(), stage.variables.end(), [](const InterfaceVariable& v) {
+            return v.location >= 0 && (v.storage == StorageKind::In || v.storage == StorageKind::Out);
+        });
+    };
+    if (std::none_of(written.begin(), written.end(), explicitLocation)) return true;
     auto assigned = interfacesOf(stages, shaders);
     if (checkAssignedLocations(written, assigned, locatorFor(stages)).empty()) return true;
     locateDeclarations(stages, assigned);

@@ -174,7 +174,7 @@ TEST(ValidationSchedule, ConcurrentWritersAndTornEntriesLeaveAValidCache) {
         EXPECT_EQ(statsOf(log)[1], 8) << "run " << i << ": " << log;  // it ran, on this catalogue
         EXPECT_EQ(log.find("error"), std::string::npos) << "run " << i << ": " << log;
     }
-    EXPECT_EQ(filesUnder(dir.path() / "build/cache", ".tmp-"), 0u);
+    EXPECT_EQ(filesUnder(dir.path() / "build/cache", ".tmp"), 0u);
     auto after = runShaderc("--check --revalidate --stats --cache-dir build/cache -I m s", dir.str());
     EXPECT_EQ(statsOf(after.output), (std::array<int, 4>{0, 8, 0, 8})) << after.output;
 
@@ -296,8 +296,8 @@ TEST(ValidationSchedule, TargetMessagesAreNeverServedFromTheCache) {
 }
 
 // A spirv pack keeps its modules' words in a file beside it, with their size and hash in the
-// pack. A words file that is torn (a flipped byte, cut short) or gone is a miss, never wrong
-// words: the run compiles again and gives the same data file.
+// pack. A words file that is torn (a flipped byte, cut short) or gone, or a pack whose count
+// is absurd, is a miss, never wrong words: the run compiles again and gives the same data file.
 TEST(ValidationSchedule, TornSpirvWordsFileIsAMiss) {
     ScratchDir dir("sched-spirv-torn");
     writeTwoShaders(dir);
@@ -327,5 +327,20 @@ TEST(ValidationSchedule, TornSpirvWordsFileIsAMiss) {
         auto again = runShaderc(args, dir.str());  // the run wrote a good pack again
         EXPECT_EQ(targetFromCache(again.output, "spirv"), 2) << tear << ": " << again.output;
         EXPECT_TRUE(prism::test::readFile(dir.path() / "c.cpp") == cold) << tear;
+    }
+    // A pack whose recorded count is absurd (2^62 words, -1) is a miss too, not a crash.
+    fs::path pack = words;
+    pack.replace_extension(".json");
+    const std::string good = prism::test::readFile(pack);
+    const auto at = good.find("\"count\":");
+    ASSERT_NE(at, std::string::npos) << good.substr(0, 200);
+    const auto end = good.find_first_of(",}", at);
+    for (const std::string count : {"4611686018427387904", "-1"}) {
+        prism::test::writeFile(pack, good.substr(0, at) + "\"count\":" + count + good.substr(end));
+        fs::remove(dir.path() / "c.cpp");
+        auto run = runShaderc(args, dir.str());
+        ASSERT_EQ(run.exitCode, 0) << count << ": " << run.output;
+        EXPECT_EQ(targetFromCache(run.output, "spirv"), 0) << count << ": " << run.output;
+        EXPECT_TRUE(prism::test::readFile(dir.path() / "c.cpp") == cold) << count;
     }
 }
