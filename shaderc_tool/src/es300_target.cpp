@@ -17,11 +17,14 @@
 namespace prism::shaderc {
 namespace {
 
-// ES gives float no default precision in a fragment shader, and these samplers none in
-// any stage (GLSL ES 3.00 §4.5.4). highp keeps the modules' small thresholds (a 1e-20
-// in safeNormalize underflows at mediump); a module's own `precision` line still wins.
+// Every sampler type of GLSL ES 3.00 at highp, with float and int. ES gives float no default
+// precision in a fragment shader, sampler2D and samplerCube a default of lowp in every stage,
+// and the other samplers none (GLSL ES 3.00 §4.5.4), so a G-buffer read through a sampler2D
+// would be lowp on a phone. highp keeps the modules' small thresholds (a 1e-20 in
+// safeNormalize underflows at mediump); a module's own `precision` line still wins.
 constexpr const char* kHighpDefaults =
-    "precision highp float;\nprecision highp int;\nprecision highp sampler3D;\nprecision highp samplerCubeShadow;\n"
+    "precision highp float;\nprecision highp int;\nprecision highp sampler2D;\nprecision highp samplerCube;\n"
+    "precision highp sampler3D;\nprecision highp samplerCubeShadow;\n"
     "precision highp sampler2DShadow;\nprecision highp sampler2DArray;\nprecision highp sampler2DArrayShadow;\n"
     "precision highp isampler2D;\nprecision highp isampler3D;\nprecision highp isamplerCube;\n"
     "precision highp isampler2DArray;\nprecision highp usampler2D;\nprecision highp usampler3D;\n"

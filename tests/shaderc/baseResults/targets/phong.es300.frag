@@ -1,6 +1,8 @@
 #version 300 es
 precision highp float;
 precision highp int;
+precision highp sampler2D;
+precision highp samplerCube;
 precision highp sampler3D;
 precision highp samplerCubeShadow;
 precision highp sampler2DShadow;
