@@ -243,8 +243,9 @@ TEST(Targets, LimitsWarningNamesProgramLimitAndCount) {
 TEST(Targets, Es300PrecisionCheckSeesADefaultLowpSampler) {  // the check below can fail
     ScratchDir dir("targets-lowp");
     const auto frag = dir.path() / "lowp.frag";
-    dir.write("lowp.frag", "#version 300 es\nprecision highp float;\nuniform sampler2D s;\nin vec2 uv;\nout vec4 o;\n"
-                    "void main() { o = texture(s, uv); }\n");
+    dir.write("lowp.frag",
+              "#version 300 es\nprecision highp float;\nuniform sampler2D s;\nin vec2 uv;\nout vec4 o;\n"
+              "void main() { o = texture(s, uv); }\n");
     const auto tree = runShell("glslangValidator -i '" + frag.string() + "'");
     ASSERT_EQ(tree.exitCode, 0) << tree.output;
     EXPECT_NE(lowpLines(tree.output).find("uniform lowp sampler2D"), std::string::npos) << tree.output;
