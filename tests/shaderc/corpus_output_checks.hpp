@@ -41,19 +41,21 @@ inline std::vector<std::string> spirvValLayoutOptions(const std::set<std::string
     return options;
 }
 
-// Sampler uniforms of a GLSL ES 3.00 text that stay at lowp: sampler2D and samplerCube are the types GLSL ES 3.00 predeclares `precision lowp` in both the vertex and the fragment
-// language (section 4.5.3), so each needs `precision highp <type>;` or a precision qualifier on its
-// declaration (a module that writes a precision asks for it). Returns "name (type)" for each one left at lowp.
+// Samplers of a GLSL ES 3.00 text that stay at lowp: sampler2D and samplerCube are the types GLSL ES 3.00
+// predeclares `precision lowp` in both the vertex and the fragment language (section 4.5.3), so each
+// declaration (a uniform, or a member of a uniform struct) needs a precision statement for its type before
+// it or a precision qualifier of its own (a module that writes a precision asks for it). Returns
+// "name (type)" for each one left at lowp.
 inline std::vector<std::string> samplersLeftAtLowp(const std::string& esText) {
-    static const std::regex declaration(R"(\buniform\s+(?:(lowp|mediump|highp)\s+)?(sampler2D|samplerCube)\s+(\w+))");
+    static const std::regex declaration(
+        R"((\b(?:lowp|mediump|highp)\s+)?\b(sampler2D|samplerCube)\s+(\w+)\s*(\[[^\]]*\])?\s*;)");
     std::vector<std::string> left;
     for (std::sregex_iterator it(esText.begin(), esText.end(), declaration), end; it != end; ++it) {
         const auto& m = *it;
         if (m[1].matched) continue;
         const std::regex statement("\\bprecision\\s+(lowp|mediump|highp)\\s+" + m[2].str() + "\\s*;");
-        std::smatch before;
         const std::string head = esText.substr(0, static_cast<std::size_t>(m.position(0)));
-        if (!std::regex_search(head, before, statement)) left.push_back(m[3].str() + " (" + m[2].str() + ")");
+        if (!std::regex_search(head, statement)) left.push_back(m[3].str() + " (" + m[2].str() + ")");
     }
     return left;
 }

@@ -315,4 +315,39 @@ TEST(ReferenceCorpusFolder, HoldsTheRealCodebases) {
         EXPECT_NE(manifest.find("`" + codebase + "`"), std::string::npos) << codebase << " is not in SOURCES.md";
 }
 
+// The precision rule of the es300 cases: the precision lines es300 wrote before issue 36 leave sampler2D and
+// samplerCube at lowp, and `precision highp sampler2D; precision highp samplerCube;` (or a qualifier) cover them.
+TEST(ReferenceCorpusChecks, SamplersLeftAtLowpNeedAPrecisionForTheirType) {
+    const std::string body =
+        "uniform sampler2D gPosition;\nstruct M { sampler2D diffuse; };\nuniform samplerCube sky;\n";
+    const std::string before = "#version 300 es\nprecision highp float;\nprecision highp sampler3D;\n";
+    EXPECT_EQ(prism::test::samplersLeftAtLowp(before + body),
+              (std::vector<std::string>{"gPosition (sampler2D)", "diffuse (sampler2D)", "sky (samplerCube)"}));
+    EXPECT_TRUE(
+        prism::test::samplersLeftAtLowp(before + "precision highp sampler2D;\nprecision highp samplerCube;\n" + body)
+            .empty());
+    EXPECT_TRUE(
+        prism::test::samplersLeftAtLowp("uniform highp sampler2D a;\nuniform mediump samplerCube b;\n").empty());
+}
+
+// spirv-val's layout options come from the module: glslc's SPIR-V of a scalar-layout stage of the corpus names
+// GL_EXT_scalar_block_layout, fails spirv-val without --scalar-block-layout and passes with it.
+TEST(ReferenceCorpusChecks, ScalarLayoutStageGetsSpirvValsScalarOption) {
+    const fs::path dir = kRealCorpus / "nvpro_vk_mini_path_tracer/source/vk_mini_path_tracer";
+    const prism::test::ScratchDir out("corpus-scalar");
+    const fs::path spv = out.path() / "raytrace.spv";
+    ASSERT_EQ(runCommand({"glslc", "--target-env=vulkan1.2", "-I", dir.string(), "-c", "-o", spv.string(),
+                          (dir / "shaders/raytrace.comp").string()},
+                         {.mergeStderr = true})
+                  .exitCode,
+              0);
+    const auto options = prism::test::spirvValLayoutOptions(prism::test::spirvSourceExtensions(spv));
+    EXPECT_EQ(options, std::vector<std::string>{"--scalar-block-layout"});
+    const auto plain = runCommand({"spirv-val", "--target-env", "vulkan1.2", spv.string()}, {.mergeStderr = true});
+    EXPECT_NE(plain.exitCode, 0) << "without the option spirv-val should reject the scalar layout";
+    const auto scalar = runCommand({"spirv-val", "--target-env", "vulkan1.2", "--scalar-block-layout", spv.string()},
+                                   {.mergeStderr = true});
+    EXPECT_EQ(scalar.exitCode, 0) << scalar.out;
+}
+
 }  // namespace
