@@ -1,9 +1,13 @@
-// The differential corpus: every folder of fixtures/reference_corpus/ with a case.json is
-// one test, run by `prism-shaderc --check` and by the reference tool the case names, over
+// The differential corpus: every folder of fixtures/reference_corpus/ (seed cases) and every
+// fixtures/real_corpus/<codebase>/<case>/ (programs of public codebases, real_corpus/SOURCES.md)
+// is one test, run by `prism-shaderc --check` and by the reference tool the case names, over
 // the same stage files with the same -I folders and -D macros. They must agree on accept or
 // reject and, when both reject, Prism's first error must name the reference's first error's
 // file and line. A case may instead expect a known difference ("expect"), which is then
 // what it checks: the claims of docs/shaderc.md's "Coming from glslc" are such cases.
+// Where both accept, Prism's outputs are checked too: each SPIR-V module of a Vulkan case by
+// spirv-val (with the layout options its source's extensions ask for), and each es300 text by
+// `glslangValidator -l` and for samplers left at ES's lowp default.
 //
 // case.json (a folder is a case; tests/README.md says how to add one):
 //   "checks":       one line, what the case shows (required)
@@ -11,7 +15,10 @@
 //   "stages":       stage files, relative to the case folder (required)
 //   "include_dirs": -I folders for both tools; "defines": NAME[=VALUE] for both tools
 //   "prism_args":   more prism-shaderc arguments
-//   "reference":    "glslangValidator -l" | "glslangValidator -V" | "glslc --target-env=vulkan1.2"
+//   "program":      a name: the stages go to Prism as `--program NAME=STAGE,...` (stages of other base names)
+//   "prism_target": "es300": Prism runs with --target es300 (desktop GL source; the reference checks it as is)
+//   "reference":    "glslangValidator -l" | "glslangValidator -V" | "glslc --target-env=vulkan1.N" (N 0..3;
+//                   a Vulkan case hands Prism the same --target-env)
 //   "expect":       {"prism": "accept"|"reject", "reference": "accept"|"reject"} (default: agree)
 //   "prism_says":   text Prism's output must contain (a warning the case is about)
 #include <gtest/gtest.h>
@@ -26,6 +33,7 @@
 #include <string>
 #include <vector>
 
+#include "corpus_output_checks.hpp"
 #include "tool_runner.hpp"
 
 namespace {
@@ -34,20 +42,34 @@ using json = nlohmann::json;
 using prism::test::runCommand;
 
 const fs::path kCorpus = fs::path(PRISM_SOURCE_DIR) / "tests/shaderc/fixtures/reference_corpus";
+const fs::path kRealCorpus = fs::path(PRISM_SOURCE_DIR) / "tests/shaderc/fixtures/real_corpus";
 
-// Every folder of the corpus, sorted; one without case.json fails its test rather than
-// being skipped.
-std::vector<std::string> caseNames() {
+// The sorted subfolders of `dir`, less `except`.
+std::vector<std::string> subfolders(const fs::path& dir, const std::string& except = "") {
     std::vector<std::string> names;
     std::error_code ec;
-    for (const auto& entry : fs::directory_iterator(kCorpus, ec))
-        if (entry.is_directory()) names.push_back(entry.path().filename().string());
+    for (const auto& entry : fs::directory_iterator(dir, ec))
+        if (entry.is_directory() && entry.path().filename() != except)
+            names.push_back(entry.path().filename().string());
     std::sort(names.begin(), names.end());
     return names;
 }
 
+// Every folder of the seed corpus; one without case.json fails its test rather than being skipped.
+std::vector<std::string> caseNames() {
+    return subfolders(kCorpus);
+}
+
+// Every <codebase>/<case> of the real corpus: each folder of a codebase but its copied `source/`.
+std::vector<std::string> realCaseNames() {
+    std::vector<std::string> names;
+    for (const auto& codebase : subfolders(kRealCorpus))
+        for (const auto& name : subfolders(kRealCorpus / codebase, "source")) names.push_back(codebase + "/" + name);
+    return names;
+}
+
 struct Case {
-    std::string checks, client, reference;
+    std::string checks, client, reference, program, prismTarget, targetEnv;
     std::vector<std::string> stages, includeDirs, defines, prismArgs;
     std::optional<bool> prismAccepts, referenceAccepts;  // "expect"; unset: the two agree
     std::string prismSays;
@@ -76,8 +98,9 @@ std::string text(const json& j, const std::string& key, const std::vector<std::s
     return value;
 }
 
-const std::vector<std::string> kReferences = {"glslangValidator -l", "glslangValidator -V",
-                                              "glslc --target-env=vulkan1.2"};
+const std::vector<std::string> kReferences = {"glslangValidator -l",          "glslangValidator -V",
+                                              "glslc --target-env=vulkan1.0", "glslc --target-env=vulkan1.1",
+                                              "glslc --target-env=vulkan1.2", "glslc --target-env=vulkan1.3"};
 
 std::optional<bool> expected(const json& j, const std::string& tool) {
     if (!j.contains("expect")) return std::nullopt;
@@ -93,6 +116,7 @@ Case loadCase(const fs::path& file) {
     c.checks = text(j, "checks");
     c.client = text(j, "client", {"opengl", "vulkan"});
     c.reference = text(j, "reference", kReferences);
+    if (c.reference.starts_with("glslc")) c.targetEnv = c.reference.substr(c.reference.find('=') + 1);
     c.stages = strings(j, "stages");
     if (c.stages.empty()) throw std::runtime_error("/stages: name at least one stage file");
     c.includeDirs = strings(j, "include_dirs");
@@ -101,6 +125,8 @@ Case loadCase(const fs::path& file) {
     c.prismAccepts = expected(j, "prism");
     c.referenceAccepts = expected(j, "reference");
     if (j.contains("prism_says")) c.prismSays = text(j, "prism_says");
+    if (j.contains("program")) c.program = text(j, "program");
+    if (j.contains("prism_target")) c.prismTarget = text(j, "prism_target", {"es300"});
     return c;
 }
 
@@ -117,13 +143,22 @@ std::optional<std::pair<std::string, int>> firstError(const std::string& output,
     return std::pair{fs::path(m[1].str()).lexically_normal().generic_string(), std::stoi(m[2].str())};
 }
 
-Outcome runPrism(const Case& c, const fs::path& dir) {
+// Prism over the case; its SPIR-V (Vulkan) or es300 text goes to `emitted`.
+Outcome runPrism(const Case& c, const fs::path& dir, const fs::path& emitted) {
     std::vector<std::string> args = {PRISM_SHADERC_EXE, "--check"};
-    if (c.client == "vulkan") args.insert(args.end(), {"--client", "vulkan"});
+    if (c.client == "vulkan") args.insert(args.end(), {"--client", "vulkan", "--emit-spirv", emitted.string()});
+    if (c.client == "vulkan" && !c.targetEnv.empty()) args.insert(args.end(), {"--target-env", c.targetEnv});
+    if (c.prismTarget == "es300") args.insert(args.end(), {"--target", "es300", "--emit-glsl", emitted.string()});
     for (const auto& d : c.includeDirs) args.insert(args.end(), {"-I", d});
     for (const auto& d : c.defines) args.insert(args.end(), {"-D", d});
     args.insert(args.end(), c.prismArgs.begin(), c.prismArgs.end());
-    args.insert(args.end(), c.stages.begin(), c.stages.end());
+    if (c.program.empty()) {
+        args.insert(args.end(), c.stages.begin(), c.stages.end());
+    } else {
+        std::string list;
+        for (const auto& stage : c.stages) list += (list.empty() ? "" : ",") + stage;
+        args.insert(args.end(), {"--program", c.program + "=" + list});
+    }
     const auto r = runCommand(args, {.workDir = dir.string(), .mergeStderr = true});
     static const std::regex error(R"((?:^|\n)([^\n:]+):(\d+):\d+: error: )");
     return {r.exitCode == 0, r.out, firstError(r.out, error)};
@@ -150,7 +185,7 @@ Outcome runReference(const Case& c, const fs::path& dir) {
         return outcome;
     }
     for (const auto& stage : c.stages) {
-        std::vector<std::string> args = {"glslc", "--target-env=vulkan1.2", "-c", "-o", "/dev/null"};
+        std::vector<std::string> args = {"glslc", "--target-env=" + c.targetEnv, "-c", "-o", "/dev/null"};
         for (const auto& d : c.includeDirs) args.insert(args.end(), {"-I", d});
         for (const auto& d : c.defines) args.push_back("-D" + d);
         args.push_back(stage);
@@ -166,21 +201,65 @@ std::string verdict(bool accepted) {
     return accepted ? "accepts" : "rejects";
 }
 
-class ReferenceCorpus : public ::testing::TestWithParam<std::string> {};
+// Each SPIR-V module Prism wrote, through spirv-val in the case's Vulkan environment with the layout options
+// its source's extensions imply. Returns one report line per rejected module.
+std::vector<std::string> spirvValRejections(const Case& c, const fs::path& emitted) {
+    std::vector<std::string> rejected;
+    for (const auto& entry : fs::directory_iterator(emitted)) {
+        if (entry.path().extension() != ".spv") continue;
+        std::vector<std::string> args = {"spirv-val", "--target-env", c.targetEnv.empty() ? "vulkan1.2" : c.targetEnv};
+        for (const auto& option : prism::test::spirvValLayoutOptions(prism::test::spirvSourceExtensions(entry.path())))
+            args.push_back(option);
+        args.push_back(entry.path().string());
+        const auto r = runCommand(args, {.mergeStderr = true});
+        if (r.exitCode != 0) rejected.push_back(entry.path().filename().string() + ": " + r.out);
+    }
+    return rejected;
+}
 
-TEST_P(ReferenceCorpus, PrismAgreesWithTheReference) {
-    const fs::path dir = kCorpus / GetParam();
+// The es300 texts Prism wrote, linked by `glslangValidator -l` as GLSL ES 3.00, and each sampler left at
+// lowp. Returns one report line per problem.
+std::vector<std::string> es300Problems(const fs::path& emitted) {
+    std::vector<std::string> problems, stages;
+    for (const auto& entry : fs::directory_iterator(emitted)) {
+        const std::string name = entry.path().filename().string();
+        if (name.find(".es300.") == std::string::npos) continue;
+        stages.push_back(entry.path().string());
+        for (const auto& sampler : prism::test::samplersLeftAtLowp(prism::test::readFile(entry.path())))
+            problems.push_back(name + ": sampler " + sampler + " is left at GLSL ES 3.00's default lowp");
+    }
+    if (stages.empty()) return {"no es300 stage was written to " + emitted.string()};
+    std::sort(stages.begin(), stages.end());
+    std::vector<std::string> args = {"glslangValidator", "-l"};
+    args.insert(args.end(), stages.begin(), stages.end());
+    const auto r = runCommand(args, {.mergeStderr = true});
+    if (r.exitCode != 0) problems.push_back("glslangValidator -l rejects the es300 text:\n" + r.out);
+    return problems;
+}
+
+// The outputs of a program both tools accept: SPIR-V through spirv-val, es300 text through glslang and
+// the precision rule.
+void checkPrismOutputs(const Case& c, const fs::path& emitted, const std::string& report) {
+    std::vector<std::string> problems;
+    if (c.client == "vulkan") problems = spirvValRejections(c, emitted);
+    if (c.prismTarget == "es300") problems = es300Problems(emitted);
+    for (const auto& problem : problems) ADD_FAILURE() << problem << "\n" << report;
+}
+
+// One case: the folder `dir`, named `name` in the reports.
+void checkCase(const fs::path& dir, const std::string& name) {
     Case c;
     try {
         c = loadCase(dir / "case.json");
     } catch (const std::exception& e) {
         FAIL() << (dir / "case.json").string() << ": " << e.what();
     }
-    const Outcome prism = runPrism(c, dir);
+    const prism::test::ScratchDir emitted("corpus-" + std::to_string(std::hash<std::string>{}(name)));
+    const Outcome prism = runPrism(c, dir, emitted.path());
     const Outcome reference = runReference(c, dir);
-    const std::string report = "case " + GetParam() + " (" + c.checks + ")\n--- prism-shaderc " +
-                               verdict(prism.accepted) + ":\n" + prism.output + "--- " + c.reference + " " +
-                               verdict(reference.accepted) + ":\n" + reference.output;
+    const std::string report = "case " + name + " (" + c.checks + ")\n--- prism-shaderc " + verdict(prism.accepted) +
+                               ":\n" + prism.output + "--- " + c.reference + " " + verdict(reference.accepted) + ":\n" +
+                               reference.output;
     if (c.prismAccepts || c.referenceAccepts) {
         EXPECT_EQ(prism.accepted, c.prismAccepts.value_or(reference.accepted)) << "expected difference\n" << report;
         EXPECT_EQ(reference.accepted, c.referenceAccepts.value_or(prism.accepted)) << "expected difference\n" << report;
@@ -190,10 +269,23 @@ TEST_P(ReferenceCorpus, PrismAgreesWithTheReference) {
     if (!c.prismSays.empty()) {
         EXPECT_NE(prism.output.find(c.prismSays), std::string::npos) << report;
     }
+    if (prism.accepted && reference.accepted) checkPrismOutputs(c, emitted.path(), report);
     if (prism.accepted || reference.accepted || !reference.firstError) return;
     ASSERT_TRUE(prism.firstError) << "Prism's rejection names no file:line:col\n" << report;
     EXPECT_EQ(prism.firstError->first, reference.firstError->first) << "first error's file\n" << report;
     EXPECT_EQ(prism.firstError->second, reference.firstError->second) << "first error's line\n" << report;
+}
+
+class ReferenceCorpus : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ReferenceCorpus, PrismAgreesWithTheReference) {
+    checkCase(kCorpus / GetParam(), GetParam());
+}
+
+class ReferenceCorpusRealCode : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ReferenceCorpusRealCode, PrismAgreesWithTheReference) {
+    checkCase(kRealCorpus / GetParam(), GetParam());
 }
 
 // gtest names allow letters, digits and '_': other characters of a folder name become '_'.
@@ -205,10 +297,57 @@ std::string testName(const ::testing::TestParamInfo<std::string>& info) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, ReferenceCorpus, ::testing::ValuesIn(caseNames()), testName);
+INSTANTIATE_TEST_SUITE_P(Programs, ReferenceCorpusRealCode, ::testing::ValuesIn(realCaseNames()), testName);
 
 // The corpus is found at run time: an empty or missing folder would pass nothing at all.
 TEST(ReferenceCorpusFolder, HoldsTheSeedCases) {
     EXPECT_GE(caseNames().size(), 12u) << kCorpus;
+}
+
+// The real corpus keeps what issue 36 asked of it: six Vulkan codebases or more and one desktop-GL one, each
+// with its licence beside the copied files, listed in SOURCES.md.
+TEST(ReferenceCorpusFolder, HoldsTheRealCodebases) {
+    const auto codebases = subfolders(kRealCorpus);
+    EXPECT_GE(codebases.size(), 7u) << kRealCorpus;
+    EXPECT_GE(realCaseNames().size(), 60u) << kRealCorpus;
+    const std::string manifest = prism::test::readFile(kRealCorpus / "SOURCES.md");
+    for (const auto& codebase : codebases)
+        EXPECT_NE(manifest.find("`" + codebase + "`"), std::string::npos) << codebase << " is not in SOURCES.md";
+}
+
+// The precision rule of the es300 cases: the precision lines es300 wrote before issue 36 leave sampler2D and
+// samplerCube at lowp, and `precision highp sampler2D; precision highp samplerCube;` (or a qualifier) cover them.
+TEST(ReferenceCorpusChecks, SamplersLeftAtLowpNeedAPrecisionForTheirType) {
+    const std::string body =
+        "uniform sampler2D gPosition;\nstruct M { sampler2D diffuse; };\nuniform samplerCube sky;\n";
+    const std::string before = "#version 300 es\nprecision highp float;\nprecision highp sampler3D;\n";
+    EXPECT_EQ(prism::test::samplersLeftAtLowp(before + body),
+              (std::vector<std::string>{"gPosition (sampler2D)", "diffuse (sampler2D)", "sky (samplerCube)"}));
+    EXPECT_TRUE(
+        prism::test::samplersLeftAtLowp(before + "precision highp sampler2D;\nprecision highp samplerCube;\n" + body)
+            .empty());
+    EXPECT_TRUE(
+        prism::test::samplersLeftAtLowp("uniform highp sampler2D a;\nuniform mediump samplerCube b;\n").empty());
+}
+
+// spirv-val's layout options come from the module: glslc's SPIR-V of a scalar-layout stage of the corpus names
+// GL_EXT_scalar_block_layout, fails spirv-val without --scalar-block-layout and passes with it.
+TEST(ReferenceCorpusChecks, ScalarLayoutStageGetsSpirvValsScalarOption) {
+    const fs::path dir = kRealCorpus / "nvpro_vk_mini_path_tracer/source/vk_mini_path_tracer";
+    const prism::test::ScratchDir out("corpus-scalar");
+    const fs::path spv = out.path() / "raytrace.spv";
+    ASSERT_EQ(runCommand({"glslc", "--target-env=vulkan1.2", "-I", dir.string(), "-c", "-o", spv.string(),
+                          (dir / "shaders/raytrace.comp").string()},
+                         {.mergeStderr = true})
+                  .exitCode,
+              0);
+    const auto options = prism::test::spirvValLayoutOptions(prism::test::spirvSourceExtensions(spv));
+    EXPECT_EQ(options, std::vector<std::string>{"--scalar-block-layout"});
+    const auto plain = runCommand({"spirv-val", "--target-env", "vulkan1.2", spv.string()}, {.mergeStderr = true});
+    EXPECT_NE(plain.exitCode, 0) << "without the option spirv-val should reject the scalar layout";
+    const auto scalar = runCommand({"spirv-val", "--target-env", "vulkan1.2", "--scalar-block-layout", spv.string()},
+                                   {.mergeStderr = true});
+    EXPECT_EQ(scalar.exitCode, 0) << scalar.out;
 }
 
 }  // namespace
