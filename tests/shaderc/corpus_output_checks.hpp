@@ -1,5 +1,5 @@
 // What the differential corpus checks on Prism's outputs: spirv-val's layout options read from a SPIR-V
-// module's OpSourceExtension lines, and the GLSL ES 3.00 rule that no sampler is left at its lowp default.
+// module's OpSourceExtension lines, and the GLSL ES 3.00 rule that nothing is left at lowp.
 #pragma once
 
 #include <cstdint>
@@ -7,6 +7,7 @@
 #include <fstream>
 #include <regex>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -41,23 +42,16 @@ inline std::vector<std::string> spirvValLayoutOptions(const std::set<std::string
     return options;
 }
 
-// Samplers of a GLSL ES 3.00 text that stay at lowp: sampler2D and samplerCube are the types GLSL ES 3.00
-// predeclares `precision lowp` in both the vertex and the fragment language (section 4.5.3), so each
-// declaration (a uniform, or a member of a uniform struct) needs a precision statement for its type before
-// it or a precision qualifier of its own (a module that writes a precision asks for it). Returns
-// "name (type)" for each one left at lowp.
-inline std::vector<std::string> samplersLeftAtLowp(const std::string& esText) {
-    static const std::regex declaration(
-        R"((\b(?:lowp|mediump|highp)\s+)?\b(sampler2D|samplerCube)\s+(\w+)\s*(\[[^\]]*\])?\s*;)");
-    std::vector<std::string> left;
-    for (std::sregex_iterator it(esText.begin(), esText.end(), declaration), end; it != end; ++it) {
-        const auto& m = *it;
-        if (m[1].matched) continue;
-        const std::regex statement("\\bprecision\\s+(lowp|mediump|highp)\\s+" + m[2].str() + "\\s*;");
-        const std::string head = esText.substr(0, static_cast<std::size_t>(m.position(0)));
-        if (!std::regex_search(head, statement)) left.push_back(m[3].str() + " (" + m[2].str() + ")");
-    }
-    return left;
+// The lines of glslang's intermediate tree (`glslangValidator -i`) of GLSL ES stages that
+// compute or declare something at lowp. GLSL ES 3.00 gives sampler2D and samplerCube a default
+// of lowp in every stage (§4.5.4), which SwiftShader runs at 32 bits, so only the text shows
+// it; glslang's tree applies every precision rule (statements, qualifiers, struct members).
+inline std::string lowpLines(const std::string& tree) {
+    std::istringstream in(tree);
+    std::string line, found;
+    while (std::getline(in, line))
+        if (line.find(" lowp ") != std::string::npos) found += line + "\n";
+    return found;
 }
 
 }  // namespace prism::test

@@ -217,24 +217,22 @@ std::vector<std::string> spirvValRejections(const Case& c, const fs::path& emitt
     return rejected;
 }
 
-// The es300 texts Prism wrote, linked by `glslangValidator -l` as GLSL ES 3.00, and each sampler left at
-// lowp. Returns one report line per problem.
+// The es300 texts Prism wrote, linked by `glslangValidator -l` as GLSL ES 3.00, and anything its tree computes
+// or declares at lowp. Returns one report line per problem.
 std::vector<std::string> es300Problems(const fs::path& emitted) {
-    std::vector<std::string> problems, stages;
-    for (const auto& entry : fs::directory_iterator(emitted)) {
-        const std::string name = entry.path().filename().string();
-        if (name.find(".es300.") == std::string::npos) continue;
-        stages.push_back(entry.path().string());
-        for (const auto& sampler : prism::test::samplersLeftAtLowp(prism::test::readFile(entry.path())))
-            problems.push_back(name + ": sampler " + sampler + " is left at GLSL ES 3.00's default lowp");
-    }
+    std::vector<std::string> stages;
+    for (const auto& entry : fs::directory_iterator(emitted))
+        if (entry.path().filename().string().find(".es300.") != std::string::npos)
+            stages.push_back(entry.path().string());
     if (stages.empty()) return {"no es300 stage was written to " + emitted.string()};
     std::sort(stages.begin(), stages.end());
-    std::vector<std::string> args = {"glslangValidator", "-l"};
+    std::vector<std::string> args = {"glslangValidator", "-l", "-i"};
     args.insert(args.end(), stages.begin(), stages.end());
     const auto r = runCommand(args, {.mergeStderr = true});
-    if (r.exitCode != 0) problems.push_back("glslangValidator -l rejects the es300 text:\n" + r.out);
-    return problems;
+    if (r.exitCode != 0) return {"glslangValidator -l rejects the es300 text:\n" + r.out};
+    if (const auto lowp = prism::test::lowpLines(r.out); !lowp.empty())
+        return {"the es300 text computes or declares at GLSL ES 3.00's default lowp:\n" + lowp};
+    return {};
 }
 
 // The outputs of a program both tools accept: SPIR-V through spirv-val, es300 text through glslang and
@@ -316,18 +314,25 @@ TEST(ReferenceCorpusFolder, HoldsTheRealCodebases) {
 }
 
 // The precision rule of the es300 cases: the precision lines es300 wrote before issue 36 leave sampler2D and
-// samplerCube at lowp, and `precision highp sampler2D; precision highp samplerCube;` (or a qualifier) cover them.
+// samplerCube at lowp in glslang's tree, and `precision highp sampler2D; precision highp samplerCube;` cover them.
 TEST(ReferenceCorpusChecks, SamplersLeftAtLowpNeedAPrecisionForTheirType) {
+    const prism::test::ScratchDir dir("corpus-lowp");
     const std::string body =
-        "uniform sampler2D gPosition;\nstruct M { sampler2D diffuse; };\nuniform samplerCube sky;\n";
+        "uniform sampler2D gPosition;\nstruct M { sampler2D diffuse; };\nuniform M m;\n"
+        "uniform samplerCube sky;\nin vec2 uv;\nout vec4 o;\n"
+        "void main() { o = texture(gPosition, uv) + texture(m.diffuse, uv) + "
+        "texture(sky, vec3(uv, 1.0)); }\n";
     const std::string before = "#version 300 es\nprecision highp float;\nprecision highp sampler3D;\n";
-    EXPECT_EQ(prism::test::samplersLeftAtLowp(before + body),
-              (std::vector<std::string>{"gPosition (sampler2D)", "diffuse (sampler2D)", "sky (samplerCube)"}));
-    EXPECT_TRUE(
-        prism::test::samplersLeftAtLowp(before + "precision highp sampler2D;\nprecision highp samplerCube;\n" + body)
-            .empty());
-    EXPECT_TRUE(
-        prism::test::samplersLeftAtLowp("uniform highp sampler2D a;\nuniform mediump samplerCube b;\n").empty());
+    const auto lowpOf = [&](const std::string& text) {
+        dir.write("s.frag", text);
+        const auto r = runCommand({"glslangValidator", "-i", (dir.path() / "s.frag").string()}, {.mergeStderr = true});
+        EXPECT_EQ(r.exitCode, 0) << r.out;
+        return prism::test::lowpLines(r.out);
+    };
+    const auto left = lowpOf(before + body);
+    for (const std::string name : {"'gPosition' ( uniform lowp sampler2D)", "'sky' ( uniform lowp samplerCube)"})
+        EXPECT_NE(left.find(name), std::string::npos) << name << " in\n" << left;
+    EXPECT_EQ(lowpOf(before + "precision highp sampler2D;\nprecision highp samplerCube;\n" + body), "");
 }
 
 // spirv-val's layout options come from the module: glslc's SPIR-V of a scalar-layout stage of the corpus names

@@ -8,10 +8,10 @@
 
 #include <filesystem>
 #include <regex>
-#include <sstream>
 #include <string>
 
 #include "baseline.hpp"
+#include "corpus_output_checks.hpp"
 #include "es300_limits.hpp"
 #include "targets.hpp"
 #include "tool_runner.hpp"
@@ -45,17 +45,6 @@ void writeGeometryShader(const ScratchDir& dir, const std::string& pragma) {
                                      "void main() { gl_Position = gl_in[0].gl_Position; EmitVertex(); }\n");
     dir.write("sh/sprites.frag", kPlainFrag);
     dir.write("mods/.keep.glsl", "// nothing\n");
-}
-
-// The lines of glslang's intermediate tree (`glslangValidator -i`) that compute or declare
-// something at lowp. GLSL ES 3.00 gives sampler2D and samplerCube a default of lowp
-// (§4.5.4), which SwiftShader runs at 32 bits, so only the text shows it.
-std::string lowpLines(const std::string& tree) {
-    std::istringstream in(tree);
-    std::string line, found;
-    while (std::getline(in, line))
-        if (line.find(" lowp ") != std::string::npos) found += line + "\n";
-    return found;
 }
 
 }  // namespace
@@ -240,17 +229,6 @@ TEST(Targets, LimitsWarningNamesProgramLimitAndCount) {
 // Every program of the project's catalogues, every variant, validated and linked as ES 3.00
 // by prism-shaderc; then each emitted es300 vert+frag pair again by the reference tool,
 // glslangValidator -l (linking both stages as ES 3.00).
-TEST(Targets, Es300PrecisionCheckSeesADefaultLowpSampler) {  // the check below can fail
-    ScratchDir dir("targets-lowp");
-    const auto frag = dir.path() / "lowp.frag";
-    dir.write("lowp.frag",
-              "#version 300 es\nprecision highp float;\nuniform sampler2D s;\nin vec2 uv;\nout vec4 o;\n"
-              "void main() { o = texture(s, uv); }\n");
-    const auto tree = runShell("glslangValidator -i '" + frag.string() + "'");
-    ASSERT_EQ(tree.exitCode, 0) << tree.output;
-    EXPECT_NE(lowpLines(tree.output).find("uniform lowp sampler2D"), std::string::npos) << tree.output;
-}
-
 TEST(Targets, EveryEs300ProgramOfTheProjectValidatesAndLinks) {
     ScratchDir dir("targets-catalogue");
     const std::string m = kSource + "/modules", sh = kSource + "/shader_sources";
@@ -277,7 +255,8 @@ TEST(Targets, EveryEs300ProgramOfTheProjectValidatesAndLinks) {
             EXPECT_EQ(prism::test::readFile(vert).rfind("#version 300 es\n", 0), 0u) << vert;
             const auto ref = runShell("glslangValidator -l -i '" + vert + "' '" + frag + "'");
             EXPECT_EQ(ref.exitCode, 0) << vert << "\n" << ref.output;
-            EXPECT_EQ(lowpLines(ref.output), "") << vert << " and its fragment stage compute at lowp";
+            // the check's own test: ReferenceCorpusChecks.SamplersLeftAtLowpNeedAPrecisionForTheirType
+            EXPECT_EQ(prism::test::lowpLines(ref.output), "") << vert << " and its fragment stage compute at lowp";
             ++programs;
         }
     }
