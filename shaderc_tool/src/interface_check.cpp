@@ -24,7 +24,8 @@ namespace {
 // element one vertex's value; patch variables are not.
 bool perVertexArray(catalog::Stage stage, const InterfaceVariable& v) {
     if (v.patch) return false;
-    if (v.storage == StorageKind::Out) return stage == catalog::Stage::TessControl;
+    // A mesh stage's outputs are arrays over its vertices, or (perprimitiveEXT) its primitives.
+    if (v.storage == StorageKind::Out) return stage == catalog::Stage::TessControl || stage == catalog::Stage::Mesh;
     return stage == catalog::Stage::Geometry || stage == catalog::Stage::TessControl ||
            stage == catalog::Stage::TessEvaluation;
 }
@@ -37,8 +38,8 @@ InterfaceVariable element(catalog::Stage stage, const InterfaceVariable& v) {
 }
 
 std::string describe(const InterfaceVariable& v) {
-    return std::string(v.patch ? "patch " : "") + std::string(interpolationName(v.interpolation)) + " " +
-           glslTypeWithArray(v);
+    const std::string qualifier = v.perPrimitive ? "perprimitiveEXT" : std::string(interpolationName(v.interpolation));
+    return std::string(v.patch ? "patch " : "") + qualifier + " " + glslTypeWithArray(v);
 }
 
 // The output `in` reads, as GL links them: the output at the same explicit location
@@ -81,11 +82,15 @@ void checkPair(const std::vector<StageInterface>& stages, std::size_t prevIndex,
         }
         const InterfaceVariable outElement = element(prev.stage, *match);
         const bool typeDiffers = inElement.type != outElement.type || inElement.arraySize != outElement.arraySize;
-        const bool interpDiffers = in.interpolation != match->interpolation || in.patch != match->patch;
+        // A per-primitive value is not interpolated: its interpolation qualifiers need not agree.
+        const bool interpolated = !in.perPrimitive && !match->perPrimitive;
+        const bool interpDiffers = (interpolated && in.interpolation != match->interpolation) ||
+                                   in.patch != match->patch || in.perPrimitive != match->perPrimitive;
         if (!typeDiffers && !interpDiffers) continue;
-        std::string problem = typeDiffers                ? "type"
-                              : in.patch != match->patch ? "patch qualifier"
-                                                         : "interpolation qualifier";
+        std::string problem = typeDiffers                              ? "type"
+                              : in.patch != match->patch               ? "patch qualifier"
+                              : in.perPrimitive != match->perPrimitive ? "perprimitiveEXT qualifier"
+                                                                       : "interpolation qualifier";
         auto d =
             diagnosticAt(locate, nextIndex, in, Severity::Error,
                          nextName + " " + what + " is `" + describe(inElement) + "` but the " + prevName + " output" +

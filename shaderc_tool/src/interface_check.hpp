@@ -1,8 +1,9 @@
 // The cross-stage interface check that glslang 12 lacks: every input of a stage after
 // the vertex stage must match an output of the previous stage, as GL links them (the same
 // explicit location whatever the names, else the same name), in type, array size,
-// interpolation qualifier (flat / smooth / noperspective) and `patch`. The per-vertex
-// arrays of tesc, tese and geom inputs and of tesc outputs are compared element-wise.
+// interpolation qualifier (flat / smooth / noperspective), `patch` and `perprimitiveEXT`.
+// The per-vertex arrays of tesc, tese and geom inputs and of tesc and mesh outputs (a mesh
+// stage's per-primitive outputs are arrays over its primitives) are compared element-wise.
 #pragma once
 
 #include <functional>

@@ -140,8 +140,21 @@ void checkRayTracing(const ShaderInput& s, const std::string& where, std::vector
         out.push_back(makeError(where, 0, 0, "shader '" + s.name + "' mixes ray-tracing stages with other stages"));
 }
 
-// A mesh pipeline: [task +] mesh + frag, without vertex, geometry or compute stages.
-void checkMeshPipeline(const ShaderInput& s, const std::string& where, std::vector<Diagnostic>& out) {
+// A program without a fragment stage: under Vulkan a pipeline may have none (a depth-only
+// pass rasterises without one); under OpenGL Prism requires one, as GLSL ES 3.00 and
+// WebGL 2, which a program of the OpenGL client may be emitted for, require it to link.
+void checkFragmentStage(const ShaderInput& s, const std::string& where, bool vulkanClient,
+                        std::vector<Diagnostic>& out) {
+    if (vulkanClient || hasStage(s, Stage::Fragment)) return;
+    out.push_back(makeError(where, 0, 0,
+                            "shader '" + s.name + "' has no fragment stage: expected " +
+                                siblingPath(s.stages.front().path, ".frag") +
+                                " (the OpenGL client needs one; a Vulkan pipeline, --client vulkan, does not)"));
+}
+
+// A mesh pipeline: [task +] mesh [+ frag], without vertex, geometry or compute stages.
+void checkMeshPipeline(const ShaderInput& s, const std::string& where, bool vulkanClient,
+                       std::vector<Diagnostic>& out) {
     const auto& any = s.stages.front().path;
     if (hasStage(s, Stage::Vertex) || hasStage(s, Stage::Geometry) || hasStage(s, Stage::Compute) ||
         hasStage(s, Stage::TessControl) || hasStage(s, Stage::TessEvaluation))
@@ -152,18 +165,17 @@ void checkMeshPipeline(const ShaderInput& s, const std::string& where, std::vect
         out.push_back(makeError(
             where, 0, 0,
             "shader '" + s.name + "' has a task stage but no mesh stage: expected " + siblingPath(any, ".mesh")));
-    if (!hasStage(s, Stage::Fragment))
-        out.push_back(makeError(
-            where, 0, 0, "shader '" + s.name + "' has no fragment stage: expected " + siblingPath(any, ".frag")));
+    checkFragmentStage(s, where, vulkanClient, out);
 }
 
 }  // namespace
 
-void checkCompleteness(const ShaderInput& s, const std::string& where, std::vector<Diagnostic>& out) {
+void checkCompleteness(const ShaderInput& s, const std::string& where, std::vector<Diagnostic>& out,
+                       bool vulkanClient) {
     const auto& any = s.stages.front().path;
     if (std::any_of(s.stages.begin(), s.stages.end(), [](const StageFile& f) { return isRayTracingStage(f.stage); }))
         return checkRayTracing(s, where, out);
-    if (hasStage(s, Stage::Mesh) || hasStage(s, Stage::Task)) return checkMeshPipeline(s, where, out);
+    if (hasStage(s, Stage::Mesh) || hasStage(s, Stage::Task)) return checkMeshPipeline(s, where, vulkanClient, out);
     if (hasStage(s, Stage::Compute)) {
         if (s.stages.size() > 1)
             out.push_back(makeError(where, 0, 0,
@@ -176,9 +188,7 @@ void checkCompleteness(const ShaderInput& s, const std::string& where, std::vect
         out.push_back(makeError(where, 0, 0,
                                 "shader '" + s.name + "' has no vertex stage (nor a compute stage): expected " +
                                     siblingPath(any, ".vert")));
-    if (!hasStage(s, Stage::Fragment))
-        out.push_back(makeError(
-            where, 0, 0, "shader '" + s.name + "' has no fragment stage: expected " + siblingPath(any, ".frag")));
+    checkFragmentStage(s, where, vulkanClient, out);
     if (hasStage(s, Stage::TessControl) && !hasStage(s, Stage::TessEvaluation))
         out.push_back(makeError(where, 0, 0,
                                 "shader '" + s.name +
@@ -216,10 +226,10 @@ ShaderInputsResult collectShaderInputs(const std::vector<std::string>& inputs,
     auto byName = pairByName(files, result.diagnostics);
     for (auto& [name, shader] : byName) {
         if (refusedVulkanOnly(shader, vulkanClient, result.diagnostics)) continue;
-        checkCompleteness(shader, shader.stages.front().path, result.diagnostics);
+        checkCompleteness(shader, shader.stages.front().path, result.diagnostics, vulkanClient);
         result.shaders.push_back(std::move(shader));
     }
-    auto declared = declaredPrograms(programDeclarations, result.shaders, disk);
+    auto declared = declaredPrograms(programDeclarations, result.shaders, disk, vulkanClient);
     result.diagnostics.insert(result.diagnostics.end(), declared.diagnostics.begin(), declared.diagnostics.end());
     result.ioError = result.ioError || declared.ioError;
     for (auto& p : declared.programs)

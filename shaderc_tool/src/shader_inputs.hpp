@@ -55,9 +55,11 @@ void sortByPipelineOrder(std::vector<StageFile>& stages);
 
 // Checks the stage kinds of one program: compute alone; ray-tracing stages alone; [task +]
 // mesh + fragment; else a vertex and a fragment stage, and a tessellation control stage
-// only with an evaluation stage. `where` is the
-// diagnostics' file: the first stage file, or the --program argument.
-void checkCompleteness(const ShaderInput& program, const std::string& where, std::vector<Diagnostic>& out);
+// only with an evaluation stage. `vulkanClient`: the fragment stage is optional (a Vulkan
+// pipeline may rasterise without one). `where` is the diagnostics' file: the first stage
+// file, or the --program argument.
+void checkCompleteness(const ShaderInput& program, const std::string& where, std::vector<Diagnostic>& out,
+                       bool vulkanClient = false);
 
 // `vulkanClient`: mesh, task and ray-tracing stages are taken; else each is an error that
 // names the file and --client vulkan.

@@ -21,8 +21,15 @@ bool producedFor(const Options& o, const ResolvedCatalog& rc, std::size_t shader
 
 namespace {
 
+// The stage kinds a target may refuse, in words ("a tessellation control stage").
 std::string stageKindName(catalog::Stage stage) {
-    return stage == catalog::Stage::Geometry ? "geometry" : stage == catalog::Stage::Compute ? "compute" : "this";
+    switch (stage) {
+        case catalog::Stage::Geometry: return "geometry";
+        case catalog::Stage::Compute: return "compute";
+        case catalog::Stage::TessControl: return "tessellation control";
+        case catalog::Stage::TessEvaluation: return "tessellation evaluation";
+        default: return std::string(catalog::stageName(stage));
+    }
 }
 
 // A stage kind the target cannot run, in a shader that is to serve it.

@@ -17,6 +17,7 @@
 #include <glslang/Public/ShaderLang.h>
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -42,14 +43,43 @@ void configureShader(glslang::TShader& shader, EShLanguage stage, SpirvEnv env);
 EShMessages spirvMessages(SpirvEnv env);
 
 // The SPIR-V words of `stage` of a linked `program` (glslang's generator, unoptimised,
-// no debug information). False with glslang's log when it produced nothing.
+// no debug information, as glslc -O0 -g0 writes them; `withLineInfo`: with OpLine
+// instructions, only to locate a validator message). False with glslang's log when it
+// produced nothing.
 bool generateSpirv(const glslang::TProgram& program, EShLanguage stage, std::vector<std::uint32_t>& words,
-                   std::string& log);
+                   std::string& log, bool withLineInfo = false);
 
-// SPIRV-Tools' validator on `words` for `env`: one error per message, at `file` (the
-// stage's source), saying `what` failed (e.g. "program blur, vert stage"). Empty when valid.
+// The block layout rules a module relies on, as its source asked for them: glslang writes
+// each `#extension` the source enables as an OpSourceExtension (also at -g0), and
+// GL_EXT_scalar_block_layout selects spirv-val's --scalar-block-layout (with
+// GL_EXT_shared_memory_block also --workgroup-scalar-block-layout). Relaxed block layout is
+// SPIRV-Tools' own default for Vulkan 1.1 and newer (VK_KHR_relaxed_block_layout is core).
+struct BlockLayoutRules {
+    bool scalar = false;
+    bool workgroupScalar = false;
+    auto operator<=>(const BlockLayoutRules&) const = default;
+};
+BlockLayoutRules blockLayoutRulesOf(std::span<const std::uint32_t> words);
+
+// Where a validator message points in the module: the OpName of the ids its instruction
+// names (a struct's is its block's type name), in the order the instruction names them;
+// whether it is in a function's body; and the OpLine before it (words with line info), its
+// file as glslang named it.
+struct SpirvSite {
+    std::vector<std::string> names;
+    bool inFunction = false;
+    std::string lineFile;
+    int line = 0;  // 0: no OpLine before it
+};
+// Maps a site to a file:line (with a column when known) in the stage's source; false when not found.
+using SpirvSiteLocator = std::function<bool(const SpirvSite&, Diagnostic&)>;
+
+// SPIRV-Tools' validator on `words` for `env`, with the module's own block layout rules:
+// one error per message, at `file` (the stage's source), saying `what` failed (e.g.
+// "program blur, vert stage"); `locate`, when given, moves it to the declaration the
+// message's instruction names. Empty when valid.
 std::vector<Diagnostic> validateSpirv(std::span<const std::uint32_t> words, SpirvEnv env, const std::string& file,
-                                      const std::string& what);
+                                      const std::string& what, const SpirvSiteLocator& locate = {});
 
 // What validateSpirv has run in this process: the modules SPIRV-Tools validated (a module
 // it accepted before is not validated again) and their CPU time, summed over threads.

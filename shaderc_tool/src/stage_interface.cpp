@@ -32,6 +32,36 @@ std::string typeSpelling(const glslang::TType& t) {
     }
 }
 
+// A struct type's members, each as "type name;" with nested structs spelled out, so two
+// struct types of one name but different members compare unequal.
+std::string structureOf(const glslang::TType& t) {
+    if (!t.isStruct()) return {};
+    std::string out;
+    for (const auto& member : *t.getStruct()) {
+        const glslang::TType& m = *member.type;
+        out += typeSpelling(m) + (m.isStruct() ? "{" + structureOf(m) + "}" : "");
+        if (m.isArray()) out += "[" + std::to_string(m.isUnsizedArray() ? -1 : m.getOuterArraySize()) + "]";
+        out += " " + std::string(m.getFieldName().c_str()) + "; ";
+    }
+    return out;
+}
+
+bool storageKindOf(glslang::TStorageQualifier storage, StorageKind& kind) {
+    using namespace glslang;
+    switch (storage) {
+        case EvqVaryingIn: kind = StorageKind::In; return true;
+        case EvqVaryingOut: kind = StorageKind::Out; return true;
+        case EvqUniform: kind = StorageKind::Uniform; return true;
+        case EvqBuffer: kind = StorageKind::Buffer; return true;
+        case EvqPayload: kind = StorageKind::RayPayload; return true;
+        case EvqPayloadIn: kind = StorageKind::RayPayloadIn; return true;
+        case EvqHitAttr: kind = StorageKind::HitAttribute; return true;
+        case EvqCallableData: kind = StorageKind::CallableData; return true;
+        case EvqCallableDataIn: kind = StorageKind::CallableDataIn; return true;
+        default: return false;
+    }
+}
+
 class LinkerObjectCollector : public glslang::TIntermTraverser {
   public:
     LinkerObjectCollector(StageInterface& out, EShLanguage language) : out_(out), language_(language) {}
@@ -52,22 +82,21 @@ class LinkerObjectCollector : public glslang::TIntermTraverser {
         std::string name = sym.getName().c_str();
         if (name.rfind("gl_", 0) == 0) return;
         InterfaceVariable v;
-        switch (q.storage) {
-            case EvqVaryingIn: v.storage = StorageKind::In; break;
-            case EvqVaryingOut: v.storage = StorageKind::Out; break;
-            case EvqUniform: v.storage = StorageKind::Uniform; break;
-            case EvqBuffer: v.storage = StorageKind::Buffer; break;
-            default: return;
-        }
+        if (!storageKindOf(q.storage, v.storage)) return;
         v.isBlock = type.getBasicType() == EbtBlock;
         v.name = v.isBlock ? std::string(type.getTypeName().c_str()) : name;
         v.type = typeSpelling(type);
+        v.structure = structureOf(type);
         if (type.isArray()) v.arraySize = type.isUnsizedArray() ? -1 : type.getOuterArraySize();
         v.interpolation = q.flat      ? Interpolation::Flat
                           : q.nopersp ? Interpolation::NoPerspective
                                       : Interpolation::Smooth;
         v.patch = q.patch;
+        v.perPrimitive = q.isPerPrimitive();
         if (q.hasLocation()) v.location = static_cast<int>(q.layoutLocation);
+        if (q.hasSet()) v.set = static_cast<int>(q.layoutSet);
+        if (q.hasBinding()) v.binding = static_cast<int>(q.layoutBinding);
+        v.pushConstant = q.isPushConstant();
         // As glslang counts them for its own overlap check (TIntermediate::addUsedLocation).
         if (q.isArrayedIo(language_) && type.isArray()) {
             const TType vertex(type, 0);

@@ -15,7 +15,19 @@ class TShader;
 
 namespace prism::shaderc {
 
-enum class StorageKind { In, Out, Uniform, Buffer };
+// Ray-tracing data (Vulkan GLSL): rayPayloadEXT / rayPayloadInEXT, hitAttributeEXT,
+// callableDataEXT / callableDataInEXT.
+enum class StorageKind {
+    In,
+    Out,
+    Uniform,
+    Buffer,
+    RayPayload,
+    RayPayloadIn,
+    HitAttribute,
+    CallableData,
+    CallableDataIn
+};
 enum class Interpolation { Smooth, Flat, NoPerspective };
 
 struct InterfaceVariable {
@@ -28,6 +40,11 @@ struct InterfaceVariable {
     bool patch = false;              // `patch in` / `patch out`: per patch, not an array over its vertices
     int location = -1;               // layout(location = N): explicit, or glslang's after mapIO; -1 without
     int locationSlots = 1;           // locations it takes (one vertex's, for a per-vertex array)
+    bool perPrimitive = false;       // perprimitiveEXT: a mesh stage's per-primitive output, its fragment input
+    int set = 0;                     // a uniform's or buffer's descriptor set (0 unless declared)
+    int binding = -1;                // layout(binding = N); -1 without
+    bool pushConstant = false;       // layout(push_constant): no descriptor
+    std::string structure;           // a struct's members, recursively ("float a; vec3 b[2];"); "" otherwise
     std::uint32_t sourceNumber = 0;  // from the #line directives
     int line = 0;
     int column = 0;

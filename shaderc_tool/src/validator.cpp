@@ -7,19 +7,24 @@
 #include <glslang/Public/ShaderLang.h>
 
 #include <algorithm>
+#include <charconv>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <regex>
 #include <sstream>
+#include <tuple>
 
 #include "did_you_mean.hpp"
 #include "glslang_stage.hpp"
 #include "directive_lines.hpp"
 #include "assigned_locations.hpp"
 #include "interface_check.hpp"
+#include "spirv_source_lines.hpp"
 #include "stage_interface.hpp"
 #include "vulkan_reflection.hpp"
+#include "vulkan_stage_rules.hpp"
 
 namespace prism::shaderc {
 namespace {
@@ -49,6 +54,20 @@ EProfile profileOf(const std::string& versionDirective) {
     if (versionDirective.find("compatibility") != std::string::npos) return ECompatibilityProfile;
     if (versionDirective.find("core") != std::string::npos) return ECoreProfile;
     return ENoProfile;
+}
+
+// A compute stage below its profile's first version with compute shaders (GLSL 4.30,
+// GLSL ES 3.10, as glslang and glslc require): the message, naming the profile; "" otherwise.
+std::string computeVersionError(const StageToValidate& s) {
+    if (s.stage != catalog::Stage::Compute) return {};
+    const int version = s.resolved.versionNumber;
+    if (profileOf(s.resolved.versionDirective) == EEsProfile)
+        return version >= 310 ? std::string()
+                              : "compute shaders need GLSL ES 310 or newer, this stage is " + std::to_string(version) +
+                                    " es; add `#version 310 es`";
+    return version >= 430 ? std::string()
+                          : "compute shaders need GLSL 430 or newer, this stage is " + std::to_string(version) +
+                                "; add `#version 430 core` or pass --glsl-version 430";
 }
 
 // The text of every (source number, line) in a flattened stage, recovered from its
@@ -84,19 +103,37 @@ class SourceLines {
     // found in the text: the first line declaring `name` with a storage qualifier.
     void locateDeclaration(InterfaceVariable& v) const {
         if (v.line > 0) return;
+        static const std::vector<std::string_view> storage = {"in",
+                                                              "out",
+                                                              "uniform",
+                                                              "buffer",
+                                                              "rayPayloadEXT",
+                                                              "rayPayloadInEXT",
+                                                              "hitAttributeEXT",
+                                                              "callableDataEXT",
+                                                              "callableDataInEXT",
+                                                              "rayPayloadNV",
+                                                              "rayPayloadInNV",
+                                                              "hitAttributeNV",
+                                                              "callableDataNV",
+                                                              "callableDataInNV"};
+        if (const auto found = declarationOf(v.name, storage)) std::tie(v.sourceNumber, v.line, v.column) = *found;
+    }
+
+    // The first line that declares `name` (a word of it) with one of `qualifiers`, as
+    // (source number, line, column); without `qualifiers`, the first line naming it.
+    std::optional<std::tuple<std::uint32_t, int, int>> declarationOf(
+        const std::string& name, const std::vector<std::string_view>& qualifiers) const {
         for (const auto& [key, text] : lines_) {
             const std::string_view code = std::string_view(text).substr(0, text.find("//"));
-            const auto column = findWord(code, v.name);
+            const auto column = findWord(code, name);
             if (column == std::string_view::npos) continue;
-            if (findWord(code, "in") == std::string_view::npos && findWord(code, "out") == std::string_view::npos &&
-                findWord(code, "uniform") == std::string_view::npos &&
-                findWord(code, "buffer") == std::string_view::npos)
-                continue;
-            v.sourceNumber = key.first;
-            v.line = key.second;
-            v.column = static_cast<int>(column) + 1;
-            return;
+            const bool qualified = qualifiers.empty() || std::any_of(qualifiers.begin(), qualifiers.end(), [&](auto q) {
+                                       return findWord(code, q) != std::string_view::npos;
+                                   });
+            if (qualified) return std::tuple{key.first, key.second, static_cast<int>(column) + 1};
         }
+        return std::nullopt;
     }
 
   private:
@@ -214,11 +251,8 @@ struct CompiledStage {
 
 std::shared_ptr<CompiledStage> compileStage(const StageToValidate& s) {
     auto compiled = std::make_shared<CompiledStage>();
-    if (s.stage == catalog::Stage::Compute && s.resolved.versionNumber < 430) {
-        compiled->diagnostics.push_back(makeError(s.path, 1, 1,
-                                                  "compute shaders need GLSL 430 or newer, this stage is " +
-                                                      std::to_string(s.resolved.versionNumber) +
-                                                      "; add `#version 430 core` or pass --glsl-version 430"));
+    if (auto tooOld = computeVersionError(s); !tooOld.empty()) {
+        compiled->diagnostics.push_back(makeError(s.path, 1, 1, tooOld));
         return compiled;
     }
     auto shader = std::make_unique<glslang::TShader>(glslangStage(s.stage));
@@ -281,24 +315,37 @@ void locateDeclarations(const std::vector<StageToValidate>& stages, std::vector<
     }
 }
 
-// The stage interfaces' and the contract's checks; messages find the declarations' lines.
+// True for the Vulkan client's programs: their stages are linked one by one.
+bool linksStageByStage(const StageToValidate& s) {
+    return s.spirvEnv && !s.relaxedRules && *s.spirvEnv != SpirvEnv::OpenGL4_5;
+}
+
+// Where the stages meet, as their client makes them meet: the stage interfaces (not in a
+// ray-tracing program, which has none); under Vulkan the descriptors by set and binding and
+// the ray-tracing data, under OpenGL the binding contract (what the runtime feeds by name).
+std::vector<Diagnostic> crossStageMessages(const std::vector<StageToValidate>& stages,
+                                           const std::vector<StageInterface>& interfaces, const Contract& contract) {
+    const SourceLocator locate = locatorFor(stages);
+    std::vector<Diagnostic> out;
+    const auto add = [&out](std::vector<Diagnostic> more) { out.insert(out.end(), more.begin(), more.end()); };
+    if (!isRayTracingStage(stages.front().stage)) add(checkStageInterfaces(interfaces, locate));
+    if (linksStageByStage(stages.front())) {
+        add(checkDescriptorBindings(interfaces, locate));
+        add(checkRayTracingData(interfaces, locate));
+    } else if (!stages.front().spirvEnv) {
+        add(checkContract(contract, interfaces, locate));
+    }
+    return out;
+}
+
+// The cross-stage checks; messages find the declarations' lines.
 std::vector<Diagnostic> checkInterfaces(const std::vector<StageToValidate>& stages,
                                         const std::vector<glslang::TShader*>& shaders, const Contract& contract) {
-    const SourceLocator locate = locatorFor(stages);
     auto interfaces = interfacesOf(stages, shaders);
-    // The binding contract names what the OpenGL runtime feeds by name; Vulkan binds by location.
-    const auto contractOf = [&] {
-        return stages.front().spirvEnv ? std::vector<Diagnostic>{} : checkContract(contract, interfaces, locate);
-    };
-    auto io = checkStageInterfaces(interfaces, locate);
-    auto bound = contractOf();
-    if (!io.empty() || !bound.empty()) {  // messages: find the declarations' lines, then check again
-        locateDeclarations(stages, interfaces);
-        io = checkStageInterfaces(interfaces, locate);
-        bound = contractOf();
-    }
-    io.insert(io.end(), bound.begin(), bound.end());
-    return io;
+    auto found = crossStageMessages(stages, interfaces, contract);
+    if (found.empty()) return found;
+    locateDeclarations(stages, interfaces);  // messages: find the declarations' lines, then check again
+    return crossStageMessages(stages, interfaces, contract);
 }
 
 // The relaxed rules' mapIO, then its locations checked against the stages as written
@@ -326,23 +373,122 @@ bool assignLocations(const std::vector<StageToValidate>& stages, const std::vect
     return false;
 }
 
-// The Vulkan client's SPIR-V of every stage of a linked program, each checked by
-// SPIRV-Tools, with the program's layout read from glslang and from the words.
-void emitSpirv(const std::vector<StageToValidate>& stages, glslang::TProgram& program, ValidatedVariant& result) {
-    result.reflection = reflectVulkanProgram(program);
-    for (const auto& s : stages) {
-        const std::string what =
-            "the " + std::string(catalog::stageName(s.stage)) + " stage of program '" + s.program + "'";
-        StageSpirv out{s.stage, {}};
-        std::string log;
-        if (!generateSpirv(program, glslangStage(s.stage), out.words, log)) {
-            result.diagnostics.push_back(makeError(s.path, 0, 0, "glslang made no SPIR-V of " + what + ": " + log));
-            continue;
-        }
-        auto invalid = validateSpirv(out.words, *s.spirvEnv, s.path, what);
-        result.diagnostics.insert(result.diagnostics.end(), invalid.begin(), invalid.end());
-        addSpecConstants(result.reflection, out.words);
-        result.reflection.spirv.push_back(std::move(out));
+// A validator message moved to the declaration its instruction names (a block's type, a
+// variable), found in the stage's text: first one declared with a storage or struct
+// keyword, else any line naming it.
+SpirvSiteLocator declarationLocator(const StageToValidate& s) {
+    return [&s](const SpirvSite& site, Diagnostic& d) {
+        if (site.inFunction) return false;  // a statement's: its line comes from the words' line info
+        static const std::vector<std::string_view> declaring = {"uniform", "buffer", "struct", "shared",
+                                                                "in",      "out",    "const"};
+        const SourceLines lines(s.resolved);
+        for (const auto& qualifiers : {declaring, std::vector<std::string_view>{}})
+            for (const auto& name : site.names)
+                if (const auto found = lines.declarationOf(name, qualifiers)) {
+                    const auto [source, line, column] = *found;
+                    d.file = pathOf(s, source);
+                    d.line = line;
+                    d.column = column;
+                    d.includedFrom = chainOf(s, source);
+                    return true;
+                }
+        return false;
+    };
+}
+
+// A validator message at the OpLine before its instruction (words with the stage's source
+// numbers as OpLine files, spirv_source_lines.hpp); else at the declaration it names.
+SpirvSiteLocator lineLocator(const StageToValidate& s) {
+    return [&s, byName = declarationLocator(s)](const SpirvSite& site, Diagnostic& d) {
+        std::uint32_t source = 0;
+        const auto* end = site.lineFile.data() + site.lineFile.size();
+        if (site.line <= 0 || std::from_chars(site.lineFile.data(), end, source).ptr != end) return byName(site, d);
+        d.file = pathOf(s, source);
+        d.line = site.line;
+        d.column = columnOf(SourceLines(s.resolved).find(source, site.line), "");
+        d.includedFrom = chainOf(s, source);
+        return true;
+    };
+}
+
+// The validator's messages that found no declaration (a statement's) are located again in
+// the same stage's SPIR-V made with line info, whose messages then replace them all.
+void locateByLineInfo(const StageToValidate& s, glslang::TProgram& program, const std::string& what,
+                      std::vector<Diagnostic>& invalid) {
+    if (std::all_of(invalid.begin(), invalid.end(), [](const Diagnostic& d) { return d.line > 0; })) return;
+    std::vector<std::uint32_t> words;
+    std::string log;
+    if (!generateSpirvWithSourceNumbers(program, glslangStage(s.stage), words, log)) return;
+    auto located = validateSpirv(words, *s.spirvEnv, s.path, what, lineLocator(s));
+    if (!located.empty()) invalid = std::move(located);
+}
+
+// One stage's SPIR-V out of a linked `program`, checked by SPIRV-Tools, into `result`.
+void emitStageSpirv(const StageToValidate& s, glslang::TProgram& program, ValidatedVariant& result) {
+    const std::string what =
+        "the " + std::string(catalog::stageName(s.stage)) + " stage of program '" + s.program + "'";
+    StageSpirv out{s.stage, {}};
+    std::string log;
+    if (!generateSpirv(program, glslangStage(s.stage), out.words, log)) {
+        result.diagnostics.push_back(makeError(s.path, 0, 0, "glslang made no SPIR-V of " + what + ": " + log));
+        return;
+    }
+    auto invalid = validateSpirv(out.words, *s.spirvEnv, s.path, what, declarationLocator(s));
+    if (!invalid.empty()) locateByLineInfo(s, program, what, invalid);
+    result.diagnostics.insert(result.diagnostics.end(), invalid.begin(), invalid.end());
+    addSpecConstants(result.reflection, out.words);
+    result.reflection.spirv.push_back(std::move(out));
+}
+
+// Links `program`; its link errors become diagnostics at `path`. False when it failed.
+bool linkOrReport(glslang::TProgram& program, EShMessages messages, const std::string& path, ValidatedVariant& result) {
+    if (program.link(messages)) return true;
+    const auto before = result.diagnostics.size();
+    std::istringstream log(program.getInfoLog());
+    std::string line;
+    while (std::getline(log, line))
+        if (line.rfind("ERROR: ", 0) == 0)
+            result.diagnostics.push_back(makeError(path, 0, 0, "link: " + line.substr(7)));
+    if (result.diagnostics.size() == before)
+        result.diagnostics.push_back(makeError(path, 0, 0, "glslang could not link the program"));
+    return false;
+}
+
+// Adds what one stage's program reflects to the whole program's: the vertex inputs of the
+// first stage; a descriptor, uniform or push-constant member that another stage declared
+// too, once.
+void addStageReflection(ProgramReflection& into, ProgramReflection&& stage, bool firstStage) {
+    if (firstStage) into.attributes = std::move(stage.attributes);
+    const auto addNew = [](auto& to, auto& from, auto same) {
+        for (auto& item : from)
+            if (std::none_of(to.begin(), to.end(), [&](const auto& known) { return same(known, item); }))
+                to.push_back(std::move(item));
+    };
+    addNew(into.resources, stage.resources, [](const auto& a, const auto& b) {
+        return std::tie(a.set, a.binding, a.name) == std::tie(b.set, b.binding, b.name);
+    });
+    addNew(into.uniforms, stage.uniforms, [](const auto& a, const auto& b) { return a.name == b.name; });
+    addNew(into.pushConstants, stage.pushConstants,
+           [](const auto& a, const auto& b) { return std::tie(a.offset, a.name) == std::tie(b.offset, b.name); });
+    std::sort(into.resources.begin(), into.resources.end(), [](const auto& a, const auto& b) {
+        return std::tie(a.set, a.binding, a.name) < std::tie(b.set, b.binding, b.name);
+    });
+    std::sort(into.uniforms.begin(), into.uniforms.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
+    std::sort(into.pushConstants.begin(), into.pushConstants.end(),
+              [](const auto& a, const auto& b) { return std::tie(a.offset, a.name) < std::tie(b.offset, b.name); });
+}
+
+// The Vulkan client: each stage linked in a program of its own, as glslc compiles it (the
+// API links no blocks by name; where stages meet, checkInterfaces checked them), then its
+// SPIR-V generated and validated, and its reflection added to the program's.
+void linkStageByStage(const std::vector<StageToValidate>& stages, const std::vector<glslang::TShader*>& shaders,
+                      ValidatedVariant& result) {
+    for (std::size_t i = 0; i < stages.size(); ++i) {
+        glslang::TProgram program;
+        program.addShader(shaders[i]);
+        if (!linkOrReport(program, messagesFor(stages[i]), stages[i].path, result)) continue;
+        addStageReflection(result.reflection, reflectVulkanProgram(program), i == 0);
+        emitStageSpirv(stages[i], program, result);
     }
 }
 
@@ -350,38 +496,26 @@ void emitSpirv(const std::vector<StageToValidate>& stages, glslang::TProgram& pr
 void linkAndReflect(const std::vector<StageToValidate>& stages, const std::vector<glslang::TShader*>& shaders,
                     const Contract& contract, const LinkedProgramCheck& check, ValidatedVariant& result) {
     glslang::TProgram program;
-    for (auto* sh : shaders) program.addShader(sh);
-    if (!program.link(messagesFor(stages.front()))) {
-        const auto before = result.diagnostics.size();
-        std::istringstream log(program.getInfoLog());
-        std::string line;
-        while (std::getline(log, line))
-            if (line.rfind("ERROR: ", 0) == 0)
-                result.diagnostics.push_back(makeError(stages.front().path, 0, 0, "link: " + line.substr(7)));
-        if (result.diagnostics.size() == before)
-            result.diagnostics.push_back(makeError(stages.front().path, 0, 0, "glslang could not link the program"));
-        return;
-    }
-    // glslang assigns the spirv target's locations and bindings here, before anything reads them.
-    if (stages.front().relaxedRules && !assignLocations(stages, shaders, program, result)) return;
-    if (stages.front().spirvEnv)
-        emitSpirv(stages, program, result);
-    else
-        result.reflection = reflectProgram(program, contract);
-    if (check) {
-        const auto found = check(program, shaders);
-        result.diagnostics.insert(result.diagnostics.end(), found.begin(), found.end());
+    if (linksStageByStage(stages.front())) {
+        linkStageByStage(stages, shaders, result);
+    } else {
+        for (auto* sh : shaders) program.addShader(sh);
+        if (!linkOrReport(program, messagesFor(stages.front()), stages.front().path, result)) return;
+        // glslang assigns the spirv target's locations and bindings here, before anything reads them.
+        if (stages.front().relaxedRules && !assignLocations(stages, shaders, program, result)) return;
+        if (stages.front().spirvEnv) {
+            result.reflection = reflectVulkanProgram(program);
+            for (const auto& s : stages) emitStageSpirv(s, program, result);
+        } else {
+            result.reflection = reflectProgram(program, contract);
+        }
+        if (check) {
+            const auto found = check(program, shaders);
+            result.diagnostics.insert(result.diagnostics.end(), found.begin(), found.end());
+        }
     }
     result.ok = true;
     for (const auto& d : result.diagnostics) result.ok = result.ok && d.severity != Severity::Error;
-}
-
-// Prism's own stage-interface and contract checks cover the classic pipeline (vertex to
-// fragment, compute). Mesh and ray-tracing programs get glslang's link checks only.
-bool hasClassicInterfaces(const std::vector<StageToValidate>& stages) {
-    return std::none_of(stages.begin(), stages.end(), [](const StageToValidate& s) {
-        return isRayTracingStage(s.stage) || s.stage == catalog::Stage::Mesh || s.stage == catalog::Stage::Task;
-    });
 }
 
 }  // namespace
@@ -413,8 +547,7 @@ ValidatedVariant validateCompiledProgram(const std::vector<StageToValidate>& sta
     glslang::TPoolAllocator pool;
     glslang::SetThreadPoolAllocator(&pool);
 
-    const auto interfaceMessages =
-        hasClassicInterfaces(stages) ? checkInterfaces(stages, shaders, contract) : std::vector<Diagnostic>{};
+    const auto interfaceMessages = checkInterfaces(stages, shaders, contract);
     result.diagnostics.insert(result.diagnostics.end(), interfaceMessages.begin(), interfaceMessages.end());
     // glslang's own link check would only repeat these errors, with less detail; a
     // warning (a near miss of Prism's built-in contract) still links and reflects.

@@ -4,11 +4,13 @@
 
 #include <glslang/Public/ResourceLimits.h>
 
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "spirv_codegen.hpp"
+#include "spirv_source_lines.hpp"
 #include "validation_fixture.hpp"
 
 namespace prism::shaderc {
@@ -125,6 +127,78 @@ TEST(SpirvCodegen, AnAcceptedModuleIsRememberedByItsWordsAndEnvironmentOnly) {
     ASSERT_FALSE(again.empty());
     EXPECT_EQ(again[0].file, "b.vert");
     EXPECT_NE(again[0].message.find("program b"), std::string::npos) << again[0].message;
+}
+
+const char* const kScalarVertex = R"(#version 450
+#extension GL_EXT_scalar_block_layout : require
+layout(scalar, set = 0, binding = 0) buffer Data { vec2 a; vec3 b; float c; } data;
+void main() { gl_Position = vec4(data.b, data.a.x + data.c); }
+)";
+
+// GL_EXT_scalar_block_layout in the source selects spirv-val's --scalar-block-layout: the
+// same words without it (its OpSourceExtension renamed) break relaxed block layout, and
+// the rejection names the block the validator's instruction declares, for the locator.
+TEST(SpirvCodegen, TheModulesOwnExtensionsSelectItsBlockLayoutRules) {
+    glslang::TShader shader(EShLangVertex);
+    auto program = linkedProgram(shader, kScalarVertex, SpirvEnv::Vulkan1_2);
+    ASSERT_TRUE(program) << shader.getInfoLog();
+    std::vector<std::uint32_t> words;
+    std::string log;
+    ASSERT_TRUE(generateSpirv(*program, EShLangVertex, words, log)) << log;
+    EXPECT_TRUE(blockLayoutRulesOf(words).scalar);
+    EXPECT_FALSE(blockLayoutRulesOf(words).workgroupScalar);
+    EXPECT_FALSE(blockLayoutRulesOf(vertexWords(SpirvEnv::Vulkan1_2)).scalar);
+    EXPECT_TRUE(validateSpirv(words, SpirvEnv::Vulkan1_2, "a.vert", "program a").empty());
+
+    for (std::size_t at = 5; at < words.size(); at += words[at] >> 16)
+        if ((words[at] & 0xFFFF) == 4) words[at + 1] ^= 'G' ^ 'X';  // OpSourceExtension "XL_EXT_..."
+    EXPECT_FALSE(blockLayoutRulesOf(words).scalar);
+    std::vector<std::string> named;
+    const SpirvSiteLocator locate = [&](const SpirvSite& site, Diagnostic& d) {
+        named = site.names;
+        d.line = 3;
+        return true;
+    };
+    const auto errors = validateSpirv(words, SpirvEnv::Vulkan1_2, "a.vert", "program a", locate);
+    ASSERT_FALSE(errors.empty());
+    EXPECT_NE(errors[0].message.find("layout"), std::string::npos) << errors[0].message;
+    EXPECT_EQ(errors[0].line, 3);
+    EXPECT_NE(std::find(named.begin(), named.end(), "Data"), named.end()) << ::testing::PrintToString(named);
+}
+
+// A flattened stage's `#line N S` leaves glslang's OpLines without S; the words made for
+// locating a message name each OpLine's file by its source number, and a message about a
+// statement (here an OpStore made invalid) is at that statement's source and line.
+TEST(SpirvCodegen, LineInfoNamesTheSourceNumberOfAStatement) {
+    const char* const text =
+        "#version 450\n#line 1 0\nlayout(location = 0) out vec4 o;\n#line 7 2\n"
+        "void main() {\n    o = vec4(1.0);\n}\n";
+    glslang::TShader shader(EShLangFragment);
+    shader.setStrings(&text, 1);
+    configureShader(shader, EShLangFragment, SpirvEnv::Vulkan1_2);
+    ASSERT_TRUE(shader.parse(GetDefaultResources(), 100, ENoProfile, false, false, spirvMessages(SpirvEnv::Vulkan1_2)))
+        << shader.getInfoLog();
+    glslang::TProgram program;
+    program.addShader(&shader);
+    ASSERT_TRUE(program.link(spirvMessages(SpirvEnv::Vulkan1_2))) << program.getInfoLog();
+    std::vector<std::uint32_t> plain, words;
+    std::string log;
+    ASSERT_TRUE(generateSpirv(program, EShLangFragment, plain, log)) << log;
+    ASSERT_TRUE(generateSpirvWithSourceNumbers(program, EShLangFragment, words, log)) << log;
+    std::vector<std::uint32_t> again;
+    ASSERT_TRUE(generateSpirv(program, EShLangFragment, again, log)) << log;
+    EXPECT_EQ(again, plain) << "the stage's tree is restored: its plain words do not change";
+    for (std::size_t at = 5; at < words.size(); at += words[at] >> 16)
+        if ((words[at] & 0xFFFF) == 62) words[at + 2] = words[at + 1];  // OpStore o, o: the types differ
+    SpirvSite seen;
+    const SpirvSiteLocator locate = [&](const SpirvSite& site, Diagnostic&) {
+        seen = site;
+        return true;
+    };
+    EXPECT_FALSE(validateSpirv(words, SpirvEnv::Vulkan1_2, "a.frag", "program a", locate).empty());
+    EXPECT_TRUE(seen.inFunction);
+    EXPECT_EQ(seen.lineFile, "2");
+    EXPECT_EQ(seen.line, 8);
 }
 
 }  // namespace

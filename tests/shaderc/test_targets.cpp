@@ -88,6 +88,19 @@ TEST(Targets, Es300RefusesAComputeStageNamingShaderFileAndTarget) {
     EXPECT_EQ(runShaderc(scratchArgs(dir, "gl,spirv"), dir.str()).exitCode, 0);
 }
 
+TEST(Targets, Es300RefusesTessellationStagesNamingTheirKind) {
+    ScratchDir dir("targets-tess");
+    const fs::path tess = fs::path(kSource) / "tests/shaderc/fixtures/programs/tess";
+    fs::create_directories(dir.path() / "sh");
+    for (const char* stage : {"terrain.vert", "terrain.tesc", "terrain.tese", "terrain.frag"})
+        fs::copy_file(tess / stage, dir.path() / "sh" / stage);
+    dir.write("mods/.keep.glsl", "// nothing\n");
+    const auto run = runShaderc(scratchArgs(dir, "gl,es300"), dir.str());
+    EXPECT_EQ(run.exitCode, 1) << run.output;
+    EXPECT_NE(run.output.find("has a tessellation control stage, which es300"), std::string::npos) << run.output;
+    EXPECT_EQ(run.output.find("has a this stage"), std::string::npos) << run.output;
+}
+
 TEST(Targets, PragmaLeavesTheShaderOutOfEs300AndKeepsItForGl) {
     ScratchDir dir("targets-pragma");
     writeGeometryShader(dir, "#pragma prism targets gl spirv");
