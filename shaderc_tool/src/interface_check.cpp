@@ -81,7 +81,11 @@ void checkPair(const std::vector<StageInterface>& stages, std::size_t prevIndex,
             continue;
         }
         const InterfaceVariable outElement = element(prev.stage, *match);
-        const bool typeDiffers = inElement.type != outElement.type || inElement.arraySize != outElement.arraySize;
+        // Blocks that meet by location match by their members' types, whatever their names.
+        const bool blockPair = in.isBlock && match->isBlock && in.name != match->name;
+        const bool typeDiffers =
+            (blockPair ? in.memberTypes != match->memberTypes : inElement.type != outElement.type) ||
+            inElement.arraySize != outElement.arraySize;
         // A per-primitive value is not interpolated: its interpolation qualifiers need not agree.
         const bool interpolated = !in.perPrimitive && !match->perPrimitive;
         const bool interpDiffers = (interpolated && in.interpolation != match->interpolation) ||

@@ -46,6 +46,20 @@ std::string structureOf(const glslang::TType& t) {
     return out;
 }
 
+// A struct type's member types alone, recursively: what makes two blocks that meet at one
+// location the same type (SPIR-V types carry no names, so Vulkan matches by members' types).
+std::string memberTypesOf(const glslang::TType& t) {
+    if (!t.isStruct()) return {};
+    std::string out;
+    for (const auto& member : *t.getStruct()) {
+        const glslang::TType& m = *member.type;
+        out += m.isStruct() ? "{" + memberTypesOf(m) + "}" : typeSpelling(m);
+        if (m.isArray()) out += "[" + std::to_string(m.isUnsizedArray() ? -1 : m.getOuterArraySize()) + "]";
+        out += "; ";
+    }
+    return out;
+}
+
 bool storageKindOf(glslang::TStorageQualifier storage, StorageKind& kind) {
     using namespace glslang;
     switch (storage) {
@@ -87,6 +101,7 @@ class LinkerObjectCollector : public glslang::TIntermTraverser {
         v.name = v.isBlock ? std::string(type.getTypeName().c_str()) : name;
         v.type = typeSpelling(type);
         v.structure = structureOf(type);
+        v.memberTypes = memberTypesOf(type);
         if (type.isArray()) v.arraySize = type.isUnsizedArray() ? -1 : type.getOuterArraySize();
         v.interpolation = q.flat      ? Interpolation::Flat
                           : q.nopersp ? Interpolation::NoPerspective

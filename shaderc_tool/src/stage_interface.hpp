@@ -37,14 +37,15 @@ struct InterfaceVariable {
     int arraySize = 0;  // 0 = not an array, -1 = unsized, else the (outer) size
     Interpolation interpolation = Interpolation::Smooth;
     bool isBlock = false;
-    bool patch = false;              // `patch in` / `patch out`: per patch, not an array over its vertices
-    int location = -1;               // layout(location = N): explicit, or glslang's after mapIO; -1 without
-    int locationSlots = 1;           // locations it takes (one vertex's, for a per-vertex array)
-    bool perPrimitive = false;       // perprimitiveEXT: a mesh stage's per-primitive output, its fragment input
-    int set = 0;                     // a uniform's or buffer's descriptor set (0 unless declared)
-    int binding = -1;                // layout(binding = N); -1 without
-    bool pushConstant = false;       // layout(push_constant): no descriptor
-    std::string structure;           // a struct's members, recursively ("float a; vec3 b[2];"); "" otherwise
+    bool patch = false;         // `patch in` / `patch out`: per patch, not an array over its vertices
+    int location = -1;          // layout(location = N): explicit, or glslang's after mapIO; -1 without
+    int locationSlots = 1;      // locations it takes (one vertex's, for a per-vertex array)
+    bool perPrimitive = false;  // perprimitiveEXT: a mesh stage's per-primitive output, its fragment input
+    int set = 0;                // a uniform's or buffer's descriptor set (0 unless declared)
+    int binding = -1;           // layout(binding = N); -1 without
+    bool pushConstant = false;  // layout(push_constant): no descriptor
+    std::string structure;      // a struct's members, recursively ("float a; vec3 b[2];"); "" otherwise
+    std::string memberTypes;    // the same without names ("float; vec3[2];"): a block's type where it meets another
     std::uint32_t sourceNumber = 0;  // from the #line directives
     int line = 0;
     int column = 0;

@@ -97,6 +97,19 @@ TEST(VulkanRules, MeshOutputsMeetFragmentInputsByLocationPerPrimitiveOnesInclude
     EXPECT_NE(flat.output.find("(perprimitiveEXT qualifier mismatch)"), std::string::npos) << flat.output;
 }
 
+TEST(VulkanRules, BlocksOfTwoNamesMeetByLocationAndMatchByTheirMembersTypes) {
+    EXPECT_EQ(checkVulkan("vk_blocks_meet_by_location", "lit.vert lit.frag").exitCode, 0);
+    ScratchDir dir("vulkan-rules-block-members");
+    dir.write("s/lit.vert", prism::test::readFile(kCorpus / "vk_blocks_meet_by_location/lit.vert"));
+    dir.write("s/lit.frag",
+              "#version 450\nlayout(location = 0) in VertexInput {\n    vec4 color;\n    vec3 uv;\n} vertexInput;\n"
+              "layout(location = 0) out vec4 o_color;\nvoid main() { o_color = vertexInput.color; }\n");
+    const auto run = runShaderc("--client vulkan --check --cache-dir none s", dir.str());
+    EXPECT_EQ(run.exitCode, 1) << run.output;
+    EXPECT_NE(run.output.find("s/lit.frag:2:"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("(type mismatch)"), std::string::npos) << run.output;
+}
+
 TEST(VulkanRules, ScalarBlockLayoutExtensionSelectsTheValidatorsScalarRules) {
     const auto run = checkVulkan("vk_scalar_block_layout", "scatter.comp");
     EXPECT_EQ(run.exitCode, 0) << run.output;
