@@ -327,9 +327,8 @@ bool assignLocations(const std::vector<StageToValidate>& stages, const std::vect
 }
 
 // The Vulkan client's SPIR-V of every stage of a linked program, each checked by
-// SPIRV-Tools, with the program's layout read from glslang and from the words.
+// SPIRV-Tools, with the program's layout read from the words.
 void emitSpirv(const std::vector<StageToValidate>& stages, glslang::TProgram& program, ValidatedVariant& result) {
-    result.reflection = reflectVulkanProgram(program);
     for (const auto& s : stages) {
         const std::string what =
             "the " + std::string(catalog::stageName(s.stage)) + " stage of program '" + s.program + "'";
@@ -341,9 +340,9 @@ void emitSpirv(const std::vector<StageToValidate>& stages, glslang::TProgram& pr
         }
         auto invalid = validateSpirv(out.words, *s.spirvEnv, s.path, what);
         result.diagnostics.insert(result.diagnostics.end(), invalid.begin(), invalid.end());
-        addSpecConstants(result.reflection, out.words);
         result.reflection.spirv.push_back(std::move(out));
     }
+    reflectSpirv(result.reflection);
 }
 
 // Links the program and reflects it into `result`; link errors become diagnostics.

@@ -16,22 +16,21 @@
 //   "prism_says":   text Prism's output must contain (a warning the case is about)
 #include <gtest/gtest.h>
 
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 #include <regex>
 #include <string>
 #include <vector>
 
+#include "corpus_case.hpp"
 #include "tool_runner.hpp"
 
 namespace {
 namespace fs = std::filesystem;
-using json = nlohmann::json;
 using prism::test::runCommand;
+using prism::test::corpus::Case;
+using prism::test::corpus::loadCase;
 
 const fs::path kCorpus = fs::path(PRISM_SOURCE_DIR) / "tests/shaderc/fixtures/reference_corpus";
 
@@ -44,64 +43,6 @@ std::vector<std::string> caseNames() {
         if (entry.is_directory()) names.push_back(entry.path().filename().string());
     std::sort(names.begin(), names.end());
     return names;
-}
-
-struct Case {
-    std::string checks, client, reference;
-    std::vector<std::string> stages, includeDirs, defines, prismArgs;
-    std::optional<bool> prismAccepts, referenceAccepts;  // "expect"; unset: the two agree
-    std::string prismSays;
-};
-
-std::vector<std::string> strings(const json& j, const std::string& key) {
-    if (!j.contains(key)) return {};
-    if (!j[key].is_array()) throw std::runtime_error("/" + key + ": expected an array of strings");
-    std::vector<std::string> out;
-    for (std::size_t i = 0; i < j[key].size(); ++i) {
-        if (!j[key][i].is_string())
-            throw std::runtime_error("/" + key + "/" + std::to_string(i) + ": expected a string");
-        out.push_back(j[key][i].get<std::string>());
-    }
-    return out;
-}
-
-std::string text(const json& j, const std::string& key, const std::vector<std::string>& allowed = {}) {
-    if (!j.contains(key) || !j[key].is_string()) throw std::runtime_error("/" + key + ": expected a string");
-    auto value = j[key].get<std::string>();
-    if (!allowed.empty() && std::find(allowed.begin(), allowed.end(), value) == allowed.end()) {
-        std::string list;
-        for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + ("'" + a + "'");
-        throw std::runtime_error("/" + key + ": '" + value + "' is not one of " + list);
-    }
-    return value;
-}
-
-const std::vector<std::string> kReferences = {"glslangValidator -l", "glslangValidator -V",
-                                              "glslc --target-env=vulkan1.2"};
-
-std::optional<bool> expected(const json& j, const std::string& tool) {
-    if (!j.contains("expect")) return std::nullopt;
-    return text(j["expect"], tool, {"accept", "reject"}) == "accept";
-}
-
-// case.json, or an exception naming the JSON path at fault.
-Case loadCase(const fs::path& file) {
-    std::ifstream in(file);
-    if (!in) throw std::runtime_error("cannot read it; every folder of the corpus needs a case.json");
-    const json j = json::parse(in);
-    Case c;
-    c.checks = text(j, "checks");
-    c.client = text(j, "client", {"opengl", "vulkan"});
-    c.reference = text(j, "reference", kReferences);
-    c.stages = strings(j, "stages");
-    if (c.stages.empty()) throw std::runtime_error("/stages: name at least one stage file");
-    c.includeDirs = strings(j, "include_dirs");
-    c.defines = strings(j, "defines");
-    c.prismArgs = strings(j, "prism_args");
-    c.prismAccepts = expected(j, "prism");
-    c.referenceAccepts = expected(j, "reference");
-    if (j.contains("prism_says")) c.prismSays = text(j, "prism_says");
-    return c;
 }
 
 struct Outcome {
