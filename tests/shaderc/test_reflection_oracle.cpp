@@ -27,12 +27,12 @@ using json = nlohmann::json;
 using prism::test::runCommand;
 using prism::test::ScratchDir;
 
-const fs::path kFixtures = fs::path(PRISM_SOURCE_DIR) / "tests/shaderc/fixtures";
+const fs::path kCorpusFixtures = fs::path(PRISM_SOURCE_DIR) / "tests/shaderc/fixtures";
 
-std::vector<fs::path> vulkanCases() {
+std::vector<fs::path> vulkanCorpusCases() {
     std::vector<fs::path> out;
     for (const char* corpus : {"reference_corpus", "real_corpus"})
-        for (const auto& dir : prism::test::corpus::caseFoldersUnder(kFixtures / corpus)) {
+        for (const auto& dir : prism::test::corpus::caseFoldersUnder(kCorpusFixtures / corpus)) {
             try {
                 if (prism::test::corpus::loadCase(dir / "case.json", true).client == "vulkan") out.push_back(dir);
             } catch (const std::exception&) {
@@ -43,8 +43,8 @@ std::vector<fs::path> vulkanCases() {
 }
 
 // One leaf member as both sides describe it.
-std::string memberRow(const std::string& name, const std::string& type, unsigned offset, unsigned array,
-                      unsigned stride, bool address) {
+std::string oracleMemberRow(const std::string& name, const std::string& type, unsigned offset, unsigned array,
+                            unsigned stride, bool address) {
     return name + " : " + type + " @" + std::to_string(offset) + " [" + std::to_string(array) + "] stride " +
            std::to_string(stride) + (address ? " device-address" : "");
 }
@@ -60,7 +60,7 @@ struct OracleView {
 // sized by one as the constant's id (array_size_is_literal false).
 using SpecDefaults = std::map<unsigned, unsigned>;
 
-unsigned elements(const json& x, const SpecDefaults& specs) {
+unsigned oracleElements(const json& x, const SpecDefaults& specs) {
     unsigned n = 1;
     if (!x.contains("array")) return n;
     for (std::size_t d = 0; d < x["array"].size(); ++d) {
@@ -72,27 +72,27 @@ unsigned elements(const json& x, const SpecDefaults& specs) {
 }
 
 // Leaves of struct type `typeId` of spirv-cross's "types", at `base`, named from `prefix`.
-void flatten(const json& types, const SpecDefaults& specs, const std::string& typeId, const std::string& prefix,
-             unsigned base, std::set<std::string>& out) {
+void flattenOracleType(const json& types, const SpecDefaults& specs, const std::string& typeId,
+                       const std::string& prefix, unsigned base, std::set<std::string>& out) {
     for (const auto& m : types.at(typeId).at("members")) {
         const std::string type = m.at("type").get<std::string>();
-        const unsigned offset = base + m.at("offset").get<unsigned>(), count = elements(m, specs);
+        const unsigned offset = base + m.at("offset").get<unsigned>(), count = oracleElements(m, specs);
         const unsigned stride = m.value("array_stride", 0u);
         const bool address = m.value("physical_pointer", false);
         const std::string name = prefix + m.at("name").get<std::string>();
         if (address || !types.contains(type) || type.rfind('_', 0) != 0) {
-            out.insert(memberRow(name, address ? "uint64_t" : type, offset, count, stride, address));
+            out.insert(oracleMemberRow(name, address ? "uint64_t" : type, offset, count, stride, address));
         } else if (!m.contains("array")) {
-            flatten(types, specs, type, name + ".", offset, out);
+            flattenOracleType(types, specs, type, name + ".", offset, out);
         } else {
             for (unsigned e = 0; e < std::max(count, 1u); ++e)
-                flatten(types, specs, type, name + "[" + std::to_string(e) + "].", offset + e * stride, out);
+                flattenOracleType(types, specs, type, name + "[" + std::to_string(e) + "].", offset + e * stride, out);
         }
     }
 }
 
 // The kind Prism gives a spirv-cross list entry (VkDescriptorType's names).
-std::string kindOf(const std::string& list, const std::string& type) {
+std::string oracleKind(const std::string& list, const std::string& type) {
     const bool texel = type.find("Buffer") != std::string::npos;
     if (list == "ubos") return "UniformBuffer";
     if (list == "ssbos") return "StorageBuffer";
@@ -104,14 +104,14 @@ std::string kindOf(const std::string& list, const std::string& type) {
     return "AccelerationStructure";
 }
 
-std::string descriptorRow(const std::string& name, const std::string& kind, unsigned array, unsigned size,
-                          unsigned runtimeStride) {
+std::string oracleDescriptorRow(const std::string& name, const std::string& kind, unsigned array, unsigned size,
+                                unsigned runtimeStride) {
     return name + " " + kind + " [" + std::to_string(array) + "] size " + std::to_string(size) + " runtime stride " +
            std::to_string(runtimeStride);
 }
 
 // The runtime array's stride: the last member's, when it is `T x[]`.
-unsigned runtimeStride(const json& types, const std::string& typeId) {
+unsigned oracleRuntimeStride(const json& types, const std::string& typeId) {
     const auto& members = types.at(typeId).at("members");
     if (members.empty()) return 0;
     const auto& last = members.back();
@@ -120,11 +120,11 @@ unsigned runtimeStride(const json& types, const std::string& typeId) {
 
 // Strips "<Block>." from Prism's member names: spirv-cross does not say whether a block has an
 // instance name, which is what puts the prefix there.
-std::string withoutBlock(const std::string& row, const std::string& block) {
+std::string withoutBlockPrefix(const std::string& row, const std::string& block) {
     return row.rfind(block + ".", 0) == 0 ? row.substr(block.size() + 1) : row;
 }
 
-void addModule(const json& r, bool vertex, OracleView& view) {
+void addOracleModule(const json& r, bool vertex, OracleView& view) {
     const json& types = r.contains("types") ? r["types"] : json::object();
     SpecDefaults specs;
     if (r.contains("specialization_constants"))
@@ -140,13 +140,15 @@ void addModule(const json& r, bool vertex, OracleView& view) {
             // Aliases of one binding: Prism names it by the first name in alphabetical order.
             if (view.descriptors.count(key) && view.descriptors[key] < x.at("name").get<std::string>() + " ") continue;
             view.members.erase(key);
-            view.descriptors[key] = descriptorRow(x.at("name"), kindOf(list, type), elements(x, specs),
-                                                  x.value("block_size", 0u), block ? runtimeStride(types, type) : 0);
-            if (block) flatten(types, specs, type, "", 0, view.members[key]);
+            view.descriptors[key] =
+                oracleDescriptorRow(x.at("name"), oracleKind(list, type), oracleElements(x, specs),
+                                    x.value("block_size", 0u), block ? oracleRuntimeStride(types, type) : 0);
+            if (block) flattenOracleType(types, specs, type, "", 0, view.members[key]);
         }
     }
     if (r.contains("push_constants"))
-        for (const auto& p : r["push_constants"]) flatten(types, specs, p.at("type"), "", 0, view.pushConstants);
+        for (const auto& p : r["push_constants"])
+            flattenOracleType(types, specs, p.at("type"), "", 0, view.pushConstants);
     if (vertex && r.contains("inputs"))
         for (const auto& in : r["inputs"])
             if (in.at("name").get<std::string>().rfind("gl_", 0) != 0)
@@ -159,19 +161,22 @@ void addModule(const json& r, bool vertex, OracleView& view) {
 }
 
 // Prism's JSON of one variant in the same rows.
-OracleView prismView(const json& v) {
+OracleView prismOracleView(const json& v) {
     OracleView view;
     for (const auto& x : v.at("resources")) {
         const std::pair key{x.at("set").get<unsigned>(), x.at("binding").get<unsigned>()};
         const std::string name = x.at("name");
-        view.descriptors[key] = descriptorRow(name, x.at("kind"), x.at("array"), x.at("size"), x.at("runtimeStride"));
+        view.descriptors[key] =
+            oracleDescriptorRow(name, x.at("kind"), x.at("array"), x.at("size"), x.at("runtimeStride"));
         for (const auto& m : x.at("members"))
-            view.members[key].insert(memberRow(withoutBlock(m.at("name"), name), m.at("type"), m.at("offset"),
-                                               m.at("array"), m.at("arrayStride"), m.at("deviceAddress")));
+            view.members[key].insert(oracleMemberRow(withoutBlockPrefix(m.at("name"), name), m.at("type"),
+                                                     m.at("offset"), m.at("array"), m.at("arrayStride"),
+                                                     m.at("deviceAddress")));
     }
     for (const auto& m : v.at("pushConstants"))
-        view.pushConstants.insert(memberRow(withoutBlock(m.at("name"), v.at("pushConstantBlock")), m.at("type"),
-                                            m.at("offset"), m.at("array"), m.at("arrayStride"), m.at("deviceAddress")));
+        view.pushConstants.insert(oracleMemberRow(withoutBlockPrefix(m.at("name"), v.at("pushConstantBlock")),
+                                                  m.at("type"), m.at("offset"), m.at("array"), m.at("arrayStride"),
+                                                  m.at("deviceAddress")));
     for (const auto& in : v.at("inputs"))
         view.inputs.insert(in.at("name").get<std::string>() + " : " + in.at("type").get<std::string>() + " @" +
                            std::to_string(in.at("location").get<int>()));
@@ -181,7 +186,8 @@ OracleView prismView(const json& v) {
 }
 
 // Runs Prism on the case into `out`; false (with its output in `log`) when Prism rejects it.
-bool runPrism(const prism::test::corpus::Case& c, const fs::path& dir, const fs::path& out, std::string& log) {
+bool runPrismWithReflection(const prism::test::corpus::Case& c, const fs::path& dir, const fs::path& out,
+                            std::string& log) {
     std::vector<std::string> args = {PRISM_SHADERC_EXE,   "--check",
                                      "--client",          "vulkan",
                                      "--cache-dir",       "none",
@@ -196,7 +202,7 @@ bool runPrism(const prism::test::corpus::Case& c, const fs::path& dir, const fs:
     return r.exitCode == 0;
 }
 
-json readJson(const fs::path& path) {
+json readReflectionJson(const fs::path& path) {
     return json::parse(prism::test::readFile(path));
 }
 
@@ -207,8 +213,9 @@ TEST_P(ReflectionOracle, PrismReflectsWhatSpirvCrossReads) {
     const auto c = prism::test::corpus::loadCase(dir / "case.json", true);
     ScratchDir out("reflection-oracle");
     std::string log;
-    if (!runPrism(c, dir, out.path(), log)) GTEST_SKIP() << "Prism rejects the case (its corpus test judges that)";
-    const json reflection = readJson(out.path() / "reflection.json");
+    if (!runPrismWithReflection(c, dir, out.path(), log))
+        GTEST_SKIP() << "Prism rejects the case (its corpus test judges that)";
+    const json reflection = readReflectionJson(out.path() / "reflection.json");
     int variants = 0;
     for (const auto& shader : reflection.at("shaders"))
         for (const auto& v : shader.at("variants")) {
@@ -217,9 +224,9 @@ TEST_P(ReflectionOracle, PrismReflectsWhatSpirvCrossReads) {
                 const auto r = runCommand({"spirv-cross", (out.path() / "spv" / file).string(), "--reflect"},
                                           {.mergeStderr = false});
                 ASSERT_EQ(r.exitCode, 0) << file << "\n" << r.out;
-                addModule(json::parse(r.out), stage == "vert", oracle);
+                addOracleModule(json::parse(r.out), stage == "vert", oracle);
             }
-            const OracleView prism = prismView(v);
+            const OracleView prism = prismOracleView(v);
             const std::string what =
                 shader.at("name").get<std::string>() + " (" + v.at("name").get<std::string>() + ")";
             EXPECT_EQ(prism.descriptors, oracle.descriptors) << what;
@@ -232,26 +239,26 @@ TEST_P(ReflectionOracle, PrismReflectsWhatSpirvCrossReads) {
     EXPECT_GT(variants, 0) << "an accepted Vulkan case with no reflected variant\n" << log;
 }
 
-std::string testName(const ::testing::TestParamInfo<fs::path>& info) {
-    std::string name = info.param.lexically_relative(kFixtures).generic_string();
+std::string oracleCaseName(const ::testing::TestParamInfo<fs::path>& info) {
+    std::string name = info.param.lexically_relative(kCorpusFixtures).generic_string();
     for (char& ch : name)
         if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
     return name;
 }
 
-INSTANTIATE_TEST_SUITE_P(Cases, ReflectionOracle, ::testing::ValuesIn(vulkanCases()), testName);
+INSTANTIATE_TEST_SUITE_P(Cases, ReflectionOracle, ::testing::ValuesIn(vulkanCorpusCases()), oracleCaseName);
 
 TEST(ReflectionOracleCases, CoverTheSeedCorpus) {
-    EXPECT_GE(vulkanCases().size(), 13u) << "the Vulkan cases of reference_corpus/ went missing";
+    EXPECT_GE(vulkanCorpusCases().size(), 13u) << "the Vulkan cases of reference_corpus/ went missing";
 }
 
 // What spirv-cross does not print, on the fixture made for it: `used`, and the named values.
 TEST(ReflectionOracleFixture, MarksUseAndUnboundedArrays) {
-    const fs::path dir = kFixtures / "reference_corpus/vk_reflection_layouts";
+    const fs::path dir = kCorpusFixtures / "reference_corpus/vk_reflection_layouts";
     ScratchDir out("reflection-fixture");
     std::string log;
-    ASSERT_TRUE(runPrism(prism::test::corpus::loadCase(dir / "case.json"), dir, out.path(), log)) << log;
-    const json v = readJson(out.path() / "reflection.json").at("shaders").at(0).at("variants").at(0);
+    ASSERT_TRUE(runPrismWithReflection(prism::test::corpus::loadCase(dir / "case.json"), dir, out.path(), log)) << log;
+    const json v = readReflectionJson(out.path() / "reflection.json").at("shaders").at(0).at("variants").at(0);
     std::map<std::string, json> resources, inputs;
     for (const auto& x : v.at("resources")) resources[x.at("name")] = x;
     for (const auto& x : v.at("inputs")) inputs[x.at("name")] = x;
