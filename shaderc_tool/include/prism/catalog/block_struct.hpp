@@ -2,8 +2,11 @@
 // (docs/vulkan.md, "Block structs"): an array element whose stride in the block is larger than
 // the element (a float array in a std140 block: 16 bytes apart) is a Padded<T, Stride>.
 //
+// Usage (snippet: examples/snippets/catalog_block_struct.cpp):
+//
+//     #include "prism/catalog/block_struct.hpp"
 //     prism::catalog::Padded<float, 16> weights[4];  // std140 `float weights[4]`
-//     weights[2] = 0.5f;                            // assigns the value, keeps the padding
+//     weights[2] = 0.5f;                             // assigns the value, keeps the padding
 //     static_assert(sizeof(weights) == 64);
 #pragma once
 
