@@ -279,4 +279,29 @@ TEST(ReflectionOracleFixture, MarksUseAndUnboundedArrays) {
     EXPECT_EQ(push[1].at("deviceAddress"), true);
 }
 
+// --emit-reflection writes the SPIR-V's layout: a usage error where the run makes none, and the
+// spirv target's (its loose uniforms in gl_DefaultUniformBlock) where it does.
+TEST(ReflectionJson, NeedsSpirvAndCoversTheSpirvTarget) {
+    ScratchDir dir("reflection-json");
+    dir.write("t.vert",
+              "#version 330 core\nin vec3 a_position;\nuniform mat4 u_mvp;\n"
+              "void main() { gl_Position = u_mvp * vec4(a_position, 1.0); }\n");
+    dir.write("t.frag", "#version 330 core\nuniform vec4 u_color;\nout vec4 o;\nvoid main() { o = u_color; }\n");
+    auto run = prism::test::runShaderc("--check --emit-reflection r.json t.vert t.frag", dir.str());
+    EXPECT_EQ(run.exitCode, 2) << run.output;
+    EXPECT_NE(run.output.find("--emit-reflection r.json writes the SPIR-V's layout, and this run makes none; add the "
+                              "spirv target"),
+              std::string::npos)
+        << run.output;
+    run = prism::test::runShaderc("--check --target gl,spirv --emit-reflection r.json t.vert t.frag", dir.str());
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    const json r = readReflectionJson(dir.path() / "r.json");
+    EXPECT_EQ(r.at("format"), "prism-reflection 1");
+    const json& block = r.at("shaders").at(0).at("variants").at(0).at("resources").at(0);
+    EXPECT_EQ(block.at("name"), "gl_DefaultUniformBlock");
+    std::map<std::string, unsigned> offsets;
+    for (const auto& m : block.at("members")) offsets[m.at("name")] = m.at("offset");
+    EXPECT_EQ(offsets, (std::map<std::string, unsigned>{{"u_color", 64}, {"u_mvp", 0}})) << block.dump();
+}
+
 }  // namespace
