@@ -6,10 +6,11 @@ include(GNUInstallDirs)
 # The static libraries' own dependencies: as their .pc files name them, and as the Debian
 # packages that have them; the context backends the build found (runtime/gl/CMakeLists.txt)
 # add theirs.
-# SPIRV-Tools: the tool's library validates SPIR-V; vulkan: Prism::render draws through prism::vk too.
-set(PRISM_PC_REQUIRES glm libpng tinyobjloader glslang SPIRV-Tools vulkan)
-set(PRISM_DEB_DEPENDS libglm-dev libpng-dev libtinyobjloader-dev glslang-dev spirv-tools nlohmann-json3-dev
-    libgl1-mesa-dri libvulkan-dev mesa-vulkan-drivers)
+# SPIRV-Tools: the tool's library validates SPIR-V; spirv-cross-c-shared: it reflects SPIR-V;
+# vulkan: Prism::render draws through prism::vk too.
+set(PRISM_PC_REQUIRES glm libpng tinyobjloader glslang SPIRV-Tools spirv-cross-c-shared vulkan)
+set(PRISM_DEB_DEPENDS libglm-dev libpng-dev libtinyobjloader-dev glslang-dev spirv-tools libspirv-cross-c-shared-dev
+    nlohmann-json3-dev libgl1-mesa-dri libvulkan-dev mesa-vulkan-drivers)
 if(PRISM_GL_HAVE_EGL)
   list(APPEND PRISM_PC_REQUIRES egl)
   list(APPEND PRISM_DEB_DEPENDS libegl-dev)

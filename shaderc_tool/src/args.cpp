@@ -79,9 +79,14 @@ std::string conflictOf(const Options& o, const CLI::App& app) {
         return "--emit-web " + o.emitWeb +
                " writes the es300 (GLSL ES 3.00) texts for WebGL2, and this run makes none; add es300 to --target "
                "(--target gl,es300) or drop --emit-web";
-    if (!o.checkOnly && o.output.empty() && o.emitGlslDir.empty() && o.emitSpirvDir.empty() && o.emitWeb.empty())
-        return "nothing to write: give -o <header>, --emit-glsl <dir>, --emit-spirv <dir>, --emit-web <file.js> "
-               "or --check";
+    if (o.client != "vulkan" && !o.emitReflection.empty() && !hasTarget(o.targets, Target::Spirv))
+        return "--emit-reflection " + o.emitReflection +
+               " writes the SPIR-V's layout, and this run makes none; add the spirv target (--target gl,spirv), or "
+               "--client vulkan for Vulkan GLSL, or drop --emit-reflection";
+    if (!o.checkOnly && o.output.empty() && o.emitGlslDir.empty() && o.emitSpirvDir.empty() && o.emitWeb.empty() &&
+        o.emitReflection.empty())
+        return "nothing to write: give -o <header>, --emit-glsl <dir>, --emit-spirv <dir>, --emit-web <file.js>, "
+               "--emit-reflection <file.json> or --check";
     if (!o.checkOnly && !o.output.empty() && o.emitGlslDir.empty() && dataPathFor(o.output) == o.output)
         return "-o " + o.output + ": the data file would overwrite the header; name the header .hpp or .h";
     return {};
@@ -119,6 +124,10 @@ void addOptions(CLI::App& app, Options& o, std::vector<std::string>& defines, st
     app.add_option("--emit-web", o.emitWeb,
                    "with es300 among --target: also write the web catalogue FILE.js, a plain script for WebGL2 "
                    "pages (docs/targets.md, \"Web catalogue\"; with --check too)");
+    app.add_option("--emit-reflection", o.emitReflection,
+                   "with --client vulkan or --target spirv: also write the SPIR-V's layout (descriptors, push "
+                   "constants, vertex inputs, specialisation constants) as FILE.json (docs/targets.md, "
+                   "\"Reflection\"; with --check too)");
     app.add_flag("--check", o.checkOnly, "validate only: no header (--emit-glsl, --depfile, --stamp still written)");
     app.add_option("-D", defines, "define a macro for every stage: NAME[=VALUE]")->allow_extra_args(false);
     app.add_option("--glsl-version", o.glslVersion, "default #version when a shader has none")->capture_default_str();

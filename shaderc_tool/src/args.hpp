@@ -31,6 +31,7 @@ struct Options {
     std::optional<SpirvEnv> spirvEnv;  // the vulkan client's environment; empty for opengl
     std::string emitSpirvDir;          // --emit-spirv: <program>[.<variant>].<stage>.spv
     std::string emitWeb;               // --emit-web: the web catalogue, a plain script (web_writer.hpp)
+    std::string emitReflection;        // --emit-reflection: the SPIR-V's layout as JSON (reflection_writer.hpp)
     // --target gl,es300,spirv (targets.hpp). A Vulkan-client catalogue's output is SPIR-V
     // already: there --target may only say spirv, and `targets` stays {Gl}, the client's own.
     std::vector<Target> targets = {Target::Gl};

@@ -15,7 +15,8 @@ namespace {
 
 std::string recordPath(const Options& o) {
     const std::string dir = validationCacheDir(o);
-    if (!o.checkOnly || !o.emitGlslDir.empty() || !o.emitSpirvDir.empty() || !o.emitWeb.empty() || dir.empty())
+    if (!o.checkOnly || !o.emitGlslDir.empty() || !o.emitSpirvDir.empty() || !o.emitWeb.empty() ||
+        !o.emitReflection.empty() || dir.empty())
         return {};
     return (std::filesystem::path(dir) / (catalogueCacheKey(o) + ".clean-check")).string();
 }

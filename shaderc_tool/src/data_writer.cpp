@@ -286,7 +286,10 @@ class DataWriter {
             resources.push_back(resourceRow(r.resources[i], prefix + "_resource" + std::to_string(i) + "_members"));
         for (const auto& p : r.pushConstants)
             push.push_back("{" + quotedLiteral(p.name) + ", " + hexLiteral(p.glType) + ", " + std::to_string(p.offset) +
-                           ", " + std::to_string(p.size) + "}");
+                           ", " + std::to_string(p.size) +
+                           layoutFields(p.arraySize != 1 || p.arrayStride != 0 || p.deviceAddress,
+                                        {std::to_string(p.arraySize), std::to_string(p.arrayStride)}, p.deviceAddress) +
+                           "}");
         for (const auto& c : r.specConstants)
             spec.push_back("{" + quotedLiteral(c.name) + ", " + std::to_string(c.id) + ", " + hexLiteral(c.glType) +
                            ", " + hexLiteral(c.defaultBits) + "}");
@@ -304,19 +307,37 @@ class DataWriter {
         std::vector<std::string> members;
         for (const auto& m : x.members)
             members.push_back("{" + quotedLiteral(m.name) + ", " + hexLiteral(m.glType) + ", " +
-                              std::to_string(m.offset) + ", " + std::to_string(m.arraySize) + "}");
+                              std::to_string(m.offset) + ", " + std::to_string(m.arraySize) +
+                              layoutFields(m.size != 0 || m.arrayStride != 0 || m.deviceAddress,
+                                           {std::to_string(m.size), std::to_string(m.arrayStride)}, m.deviceAddress) +
+                              "}");
+        const bool tail = x.runtimeStride != 0 || !x.used;
         const std::string memberArray =
-            members.empty() ? "" : ", " + arrays_.array("prism::catalog::BlockMember", memberArrayName, members, false);
+            !members.empty() ? ", " + arrays_.array("prism::catalog::BlockMember", memberArrayName, members, false)
+            : tail           ? ", {}"
+                             : "";
         return "{" + quotedLiteral(x.name) + ", " + std::to_string(x.set) + ", " + std::to_string(x.binding) +
                ", prism::catalog::ResourceKind::" + std::string(catalog::resourceKindName(x.kind)) + ", " +
-               std::to_string(x.size) + ", " + std::to_string(x.arraySize) + memberArray + "}";
+               std::to_string(x.size) + ", " + std::to_string(x.arraySize) + memberArray +
+               layoutFields(tail, {std::to_string(x.runtimeStride)}, !x.used, "false") + "}";
+    }
+
+    // The fields the SPIR-V's reflection added to a record, only where one differs from its
+    // default: `values`, then `flag` (printed as `flagText`) when set. A record without them
+    // is printed as before they existed.
+    static std::string layoutFields(bool any, std::initializer_list<std::string> values, bool flag,
+                                    const std::string& flagText = "true") {
+        if (!any) return "";
+        std::string out;
+        for (const auto& v : values) out += ", " + v;
+        return flag ? out + ", " + flagText : out;
     }
 
     std::string attributeRows(const std::vector<ReflectedAttribute>& list, const std::string& name) {
         std::vector<std::string> rows;
         for (const auto& a : list)
             rows.push_back("{" + quotedLiteral(a.name) + ", " + hexLiteral(a.glType) + ", " +
-                           std::to_string(a.location) + "}");
+                           std::to_string(a.location) + (a.used ? "" : ", false") + "}");
         return arrays_.array("prism::catalog::Attribute", name, rows);
     }
 

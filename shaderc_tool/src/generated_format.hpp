@@ -54,6 +54,9 @@ inline constexpr std::size_t kRecordTailBytes = 64 * 1024;
 inline constexpr std::string_view kWebGlobal = "PrismWebCatalogs";
 inline constexpr std::string_view kWebFormat = "prism-web-catalogue 1";
 
+// The reflection JSON (--emit-reflection, reflection_writer.hpp): its `format` names the layout.
+inline constexpr std::string_view kReflectionFormat = "prism-reflection 1";
+
 // The data file of header X.hpp is X.cpp.
 inline constexpr std::string_view kDataFileExtension = ".cpp";
 

@@ -24,6 +24,10 @@ std::string stagePath(const std::string& base, catalog::Stage stage) {
 
 }  // namespace
 
+std::string spirvFileName(const CatalogShader& s, const CatalogVariant& v, catalog::Stage stage) {
+    return stagePath(variantBase("", s, v), stage).substr(1) + ".spv";
+}
+
 bool emitGlsl(const std::string& dir, const CatalogData& catalog, const std::vector<Target>& runTargets,
               const std::vector<std::vector<Target>>& targets, std::string& error) {
     const bool nameTargets = runTargets != std::vector<Target>{Target::Gl};
@@ -53,8 +57,7 @@ bool emitSpirv(const std::string& dir, const CatalogData& catalog, std::string& 
                 for (std::size_t i = 0; i < st.words.size(); ++i)
                     for (std::size_t b = 0; b < 4; ++b)
                         bytes[4 * i + b] = static_cast<char>((st.words[i] >> (8 * b)) & 0xFF);
-                if (writeIfChanged(stagePath(variantBase(dir, s, v), st.stage) + ".spv", bytes, error) ==
-                    WriteOutcome::Failed)
+                if (writeIfChanged(dir + "/" + spirvFileName(s, v, st.stage), bytes, error) == WriteOutcome::Failed)
                     return false;
             }
         }

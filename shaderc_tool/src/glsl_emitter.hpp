@@ -25,4 +25,7 @@ bool emitGlsl(const std::string& dir, const CatalogData& catalog, const std::vec
               const std::vector<std::vector<Target>>& targets, std::string& error);
 bool emitSpirv(const std::string& dir, const CatalogData& catalog, std::string& error);
 
+// The name --emit-spirv gives a stage's SPIR-V inside its DIR: <shader>[.<variant>].<stage>.spv.
+std::string spirvFileName(const CatalogShader& s, const CatalogVariant& v, catalog::Stage stage);
+
 }  // namespace prism::shaderc

@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "block_structs.hpp"
 #include "generated_format.hpp"
 #include "module_naming.hpp"
 
@@ -162,7 +163,8 @@ std::string writeHeader(const CatalogData& c, const std::string& dataFileName) {
         << "// (docs/shaderc.md).\n"
         << "#pragma once\n\n"
         << "#include <array>\n#include <cstddef>\n#include <cstdint>\n#include <optional>\n#include <string_view>\n\n"
-        << "#include <prism/catalog/shader_catalog.hpp>\n#include <prism/catalog/uniform_handle.hpp>\n\n"
+        << "#include <prism/catalog/shader_catalog.hpp>\n#include <prism/catalog/uniform_handle.hpp>\n"
+        << (c.spirvEnv ? "#include <prism/catalog/block_struct.hpp>\n\n#include <glm/glm.hpp>\n\n" : "\n")
         << "namespace " << c.nameSpace << " {\n\n";
     out << "enum class ShaderId : std::uint32_t {\n";
     for (std::size_t i = 0; i < c.shaders.size(); ++i)
@@ -207,6 +209,7 @@ constexpr std::optional<ModuleId> moduleIdFromName(std::string_view n) {
 )cpp";
     writeUniformHandles(out, c);
     writeContractHandles(out, c.contract);
+    writeBlockStructs(out, c);
     out << "\n}  // namespace " << c.nameSpace << "\n";
     return out.str();
 }

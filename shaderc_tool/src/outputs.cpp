@@ -8,6 +8,7 @@
 #include "glsl_emitter.hpp"
 #include "header_writer.hpp"
 #include "output_file.hpp"
+#include "reflection_writer.hpp"
 #include "tool_identity.hpp"
 #include "shader_targets.hpp"
 #include "web_writer.hpp"
@@ -32,6 +33,9 @@ std::string writeOutputs(const Options& o, const ResolvedCatalog& rc) {
     if (!o.emitWeb.empty() &&
         writeIfChanged(o.emitWeb, writeWebCatalogue(rc.data, std::filesystem::path(o.emitWeb).stem().string()),
                        error) == WriteOutcome::Failed)
+        return error;
+    if (!o.emitReflection.empty() &&
+        writeIfChanged(o.emitReflection, writeReflectionJson(rc.data), error) == WriteOutcome::Failed)
         return error;
     if (o.emitGlslDir.empty()) return {};
     std::vector<std::vector<Target>> targets(rc.data.shaders.size());

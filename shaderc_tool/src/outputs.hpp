@@ -1,7 +1,8 @@
 // Stage 6 of prism-shaderc: the outputs. First what the catalogue generates: the header
 // and its data file (header_writer.hpp, data_writer.hpp), each written only when its text
-// changed (output_file.hpp), the flattened stages of --emit-glsl (glsl_emitter.hpp) and the web
-// catalogue of --emit-web (web_writer.hpp).
+// changed (output_file.hpp), the flattened stages of --emit-glsl (glsl_emitter.hpp), the web
+// catalogue of --emit-web (web_writer.hpp) and the reflection JSON of --emit-reflection
+// (reflection_writer.hpp).
 // Then the build system's files, written by every successful run, a no-op included: the
 // depfile (depfile.hpp) and the --stamp. Each returns "" or the error to report.
 //

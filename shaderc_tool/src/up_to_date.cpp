@@ -37,7 +37,8 @@ std::string readRecord(const std::string& path) {
 
 // Records 1 and 3 belong to runs that write a header and nothing else.
 bool writesHeaderOnly(const Options& o) {
-    return !o.checkOnly && !o.output.empty() && o.emitGlslDir.empty() && o.emitSpirvDir.empty() && o.emitWeb.empty();
+    return !o.checkOnly && !o.output.empty() && o.emitGlslDir.empty() && o.emitSpirvDir.empty() && o.emitWeb.empty() &&
+           o.emitReflection.empty();
 }
 
 // The outputs on disk were written by this build of the tool: a rebuilt prism-shaderc must

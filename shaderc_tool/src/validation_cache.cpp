@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "output_file.hpp"
+#include "vulkan_reflection.hpp"
 #include "prism/hash/content_hash.hpp"
 
 namespace prism::shaderc {
@@ -20,7 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-constexpr int kFormat = 3;  // bump when the pack layout changes
+constexpr int kFormat = 4;  // bump when the pack layout changes
 
 // A pack's SPIR-V modules, each distinct one once, as raw words in a file beside the JSON
 // (`<pack>.words`); entries name a module by its [offset, count] there. As JSON text (an
@@ -100,38 +101,19 @@ Diagnostic diagnosticFrom(const json& j) {
     return d;
 }
 
-// The Vulkan client's part of a result: descriptors, push constants, specialisation
-// constants and each stage's SPIR-V module, by its key in the pack's module table.
+// The Vulkan client's part of a result: each stage's SPIR-V module, by its key in the
+// pack's module table. Its layout is a function of the words (vulkan_reflection.hpp), so it
+// is read from them again rather than stored.
 json vulkanJson(const ProgramReflection& r, ModuleTable& modules) {
-    json resources = json::array(), push = json::array(), spec = json::array(), spirv = json::array();
-    for (const auto& x : r.resources) {
-        json members = json::array();
-        for (const auto& m : x.members) members.push_back({m.name, m.glType, m.offset, m.arraySize});
-        resources.push_back({x.name, x.set, x.binding, static_cast<int>(x.kind), x.size, x.arraySize, members});
-    }
-    for (const auto& p : r.pushConstants) push.push_back({p.name, p.glType, p.offset, p.size});
-    for (const auto& c : r.specConstants) spec.push_back({c.name, c.id, c.glType, c.defaultBits});
+    json spirv = json::array();
     for (const auto& s : r.spirv) spirv.push_back({static_cast<int>(s.stage), modules.add(s.words)});
-    return {{"resources", resources}, {"pushConstants", push}, {"specConstants", spec}, {"spirv", spirv}};
+    return {{"spirv", spirv}};
 }
 
 void readVulkan(const json& j, const std::vector<std::uint32_t>& words, ProgramReflection& r) {
-    for (const auto& x : j.at("resources")) {
-        r.resources.push_back({x.at(0).get<std::string>(), x.at(1).get<std::uint32_t>(), x.at(2).get<std::uint32_t>(),
-                               static_cast<catalog::ResourceKind>(x.at(3).get<int>()), x.at(4).get<std::uint32_t>(),
-                               x.at(5).get<std::uint32_t>()});
-        for (const auto& m : x.at(6))
-            r.resources.back().members.push_back({m.at(0).get<std::string>(), m.at(1).get<std::uint32_t>(),
-                                                  m.at(2).get<std::uint32_t>(), m.at(3).get<int>()});
-    }
-    for (const auto& p : j.at("pushConstants"))
-        r.pushConstants.push_back({p.at(0).get<std::string>(), p.at(1).get<std::uint32_t>(),
-                                   p.at(2).get<std::uint32_t>(), p.at(3).get<std::uint32_t>()});
-    for (const auto& c : j.at("specConstants"))
-        r.specConstants.push_back({c.at(0).get<std::string>(), c.at(1).get<std::uint32_t>(),
-                                   c.at(2).get<std::uint32_t>(), c.at(3).get<std::uint32_t>()});
     for (const auto& s : j.at("spirv"))
         r.spirv.push_back({static_cast<catalog::Stage>(s.at(0).get<int>()), moduleAt(s.at(1), words)});
+    reflectSpirv(r);
 }
 
 json toJson(const std::string& text, const ValidatedVariant& v, ModuleTable& modules) {

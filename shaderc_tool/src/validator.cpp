@@ -436,7 +436,6 @@ void emitStageSpirv(const StageToValidate& s, glslang::TProgram& program, Valida
     auto invalid = validateSpirv(out.words, *s.spirvEnv, s.path, what, declarationLocator(s));
     if (!invalid.empty()) locateByLineInfo(s, program, what, invalid);
     result.diagnostics.insert(result.diagnostics.end(), invalid.begin(), invalid.end());
-    addSpecConstants(result.reflection, out.words);
     result.reflection.spirv.push_back(std::move(out));
 }
 
@@ -454,42 +453,29 @@ bool linkOrReport(glslang::TProgram& program, EShMessages messages, const std::s
     return false;
 }
 
-// Adds what one stage's program reflects to the whole program's: the vertex inputs of the
-// first stage; a descriptor, uniform or push-constant member that another stage declared
-// too, once.
-void addStageReflection(ProgramReflection& into, ProgramReflection&& stage, bool firstStage) {
-    if (firstStage) into.attributes = std::move(stage.attributes);
-    const auto addNew = [](auto& to, auto& from, auto same) {
-        for (auto& item : from)
-            if (std::none_of(to.begin(), to.end(), [&](const auto& known) { return same(known, item); }))
-                to.push_back(std::move(item));
-    };
-    addNew(into.resources, stage.resources, [](const auto& a, const auto& b) {
-        return std::tie(a.set, a.binding, a.name) == std::tie(b.set, b.binding, b.name);
-    });
-    addNew(into.uniforms, stage.uniforms, [](const auto& a, const auto& b) { return a.name == b.name; });
-    addNew(into.pushConstants, stage.pushConstants,
-           [](const auto& a, const auto& b) { return std::tie(a.offset, a.name) == std::tie(b.offset, b.name); });
-    std::sort(into.resources.begin(), into.resources.end(), [](const auto& a, const auto& b) {
-        return std::tie(a.set, a.binding, a.name) < std::tie(b.set, b.binding, b.name);
-    });
-    std::sort(into.uniforms.begin(), into.uniforms.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
-    std::sort(into.pushConstants.begin(), into.pushConstants.end(),
-              [](const auto& a, const auto& b) { return std::tie(a.offset, a.name) < std::tie(b.offset, b.name); });
+// The program's layout from its stages' words (vulkan_reflection.hpp); words it cannot read,
+// or an array size it cannot evaluate, are an error at the program's first stage.
+void reflectStages(const StageToValidate& first, ValidatedVariant& result) {
+    try {
+        reflectSpirv(result.reflection);
+    } catch (const std::exception& e) {
+        result.diagnostics.push_back(
+            makeError(first.path, 0, 0, std::string("cannot reflect the SPIR-V: ") + e.what()));
+    }
 }
 
 // The Vulkan client: each stage linked in a program of its own, as glslc compiles it (the
 // API links no blocks by name; where stages meet, checkInterfaces checked them), then its
-// SPIR-V generated and validated, and its reflection added to the program's.
+// SPIR-V generated and validated; the program's layout is read from all stages' words.
 void linkStageByStage(const std::vector<StageToValidate>& stages, const std::vector<glslang::TShader*>& shaders,
                       ValidatedVariant& result) {
     for (std::size_t i = 0; i < stages.size(); ++i) {
         glslang::TProgram program;
         program.addShader(shaders[i]);
         if (!linkOrReport(program, messagesFor(stages[i]), stages[i].path, result)) continue;
-        addStageReflection(result.reflection, reflectVulkanProgram(program), i == 0);
         emitStageSpirv(stages[i], program, result);
     }
+    reflectStages(stages.front(), result);
 }
 
 // Links the program and reflects it into `result`; link errors become diagnostics.
@@ -504,8 +490,8 @@ void linkAndReflect(const std::vector<StageToValidate>& stages, const std::vecto
         // glslang assigns the spirv target's locations and bindings here, before anything reads them.
         if (stages.front().relaxedRules && !assignLocations(stages, shaders, program, result)) return;
         if (stages.front().spirvEnv) {
-            result.reflection = reflectVulkanProgram(program);
             for (const auto& s : stages) emitStageSpirv(s, program, result);
+            reflectStages(stages.front(), result);
         } else {
             result.reflection = reflectProgram(program, contract);
         }

@@ -1,12 +1,15 @@
 // Part of stage 5 (validation_scheduler.hpp), for programs compiled to SPIR-V (the Vulkan
-// client, the spirv target): what a Vulkan program's pipeline layout needs, from a linked
-// glslang program (descriptors with set, binding, kind and size, uniform blocks with their
-// members' offsets; push-constant members with offsets; vertex inputs with their own
-// locations) and from its stages' SPIR-V (specialisation constants: glslang's reflection
-// does not list them, so OpDecorate SpecId and OpSpecConstant* are read from the words).
+// client, the spirv target): what a program's pipeline layout needs, read from its stages'
+// SPIR-V through SPIRV-Cross's C API, so it is what the SPIR-V declares: every descriptor
+// (set, binding, kind, array size with kUnboundedArray for `[]`, used or not), buffer blocks
+// with their layout's size (the fixed part; a runtime array's stride apart) and members,
+// push-constant members (a buffer_reference member as an 8-byte device address), the vertex
+// stage's inputs at their own locations (used or not), the struct types of every block (for
+// the generated C++ structs) and the specialisation constants (OpDecorate SpecId and
+// OpSpecConstant*, read from the words). Stages are merged: one resource per set and binding.
 //
-//   ProgramReflection r = reflectVulkanProgram(program);   // program linked for Vulkan
-//   addSpecConstants(r, words);                            // for each stage's SPIR-V
+//   r.spirv = {...};   // each stage's words
+//   reflectSpirv(r);   // fills r's attributes, resources, push constants, spec constants
 #pragma once
 
 #include <cstdint>
@@ -14,14 +17,12 @@
 
 #include "reflection.hpp"
 
-namespace glslang {
-class TProgram;
-}
-
 namespace prism::shaderc {
 
-// `program` must be linked, with no reflection built yet.
-ProgramReflection reflectVulkanProgram(glslang::TProgram& program);
+// Fills `r.attributes`, `resources`, `pushConstants`, `pushConstantLayout` and
+// `specConstants` from `r.spirv`, replacing what they held. Throws std::runtime_error for
+// words SPIRV-Cross cannot parse.
+void reflectSpirv(ProgramReflection& r);
 
 // Adds the specialisation constants declared in `words` (one stage's SPIR-V) to `r`, once
 // per constant id, keeping `r.specConstants` sorted by id.

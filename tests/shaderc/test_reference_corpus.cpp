@@ -33,13 +33,16 @@
 #include <string>
 #include <vector>
 
+#include "corpus_case.hpp"
 #include "corpus_output_checks.hpp"
+#include "reflection_oracle.hpp"
 #include "tool_runner.hpp"
 
 namespace {
 namespace fs = std::filesystem;
-using json = nlohmann::json;
 using prism::test::runCommand;
+using prism::test::corpus::Case;
+using prism::test::corpus::loadCase;
 
 const fs::path kCorpus = fs::path(PRISM_SOURCE_DIR) / "tests/shaderc/fixtures/reference_corpus";
 const fs::path kRealCorpus = fs::path(PRISM_SOURCE_DIR) / "tests/shaderc/fixtures/real_corpus";
@@ -68,68 +71,6 @@ std::vector<std::string> realCaseNames() {
     return names;
 }
 
-struct Case {
-    std::string checks, client, reference, program, prismTarget, targetEnv;
-    std::vector<std::string> stages, includeDirs, defines, prismArgs;
-    std::optional<bool> prismAccepts, referenceAccepts;  // "expect"; unset: the two agree
-    std::string prismSays;
-};
-
-std::vector<std::string> strings(const json& j, const std::string& key) {
-    if (!j.contains(key)) return {};
-    if (!j[key].is_array()) throw std::runtime_error("/" + key + ": expected an array of strings");
-    std::vector<std::string> out;
-    for (std::size_t i = 0; i < j[key].size(); ++i) {
-        if (!j[key][i].is_string())
-            throw std::runtime_error("/" + key + "/" + std::to_string(i) + ": expected a string");
-        out.push_back(j[key][i].get<std::string>());
-    }
-    return out;
-}
-
-std::string text(const json& j, const std::string& key, const std::vector<std::string>& allowed = {}) {
-    if (!j.contains(key) || !j[key].is_string()) throw std::runtime_error("/" + key + ": expected a string");
-    auto value = j[key].get<std::string>();
-    if (!allowed.empty() && std::find(allowed.begin(), allowed.end(), value) == allowed.end()) {
-        std::string list;
-        for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + ("'" + a + "'");
-        throw std::runtime_error("/" + key + ": '" + value + "' is not one of " + list);
-    }
-    return value;
-}
-
-const std::vector<std::string> kReferences = {"glslangValidator -l",          "glslangValidator -V",
-                                              "glslc --target-env=vulkan1.0", "glslc --target-env=vulkan1.1",
-                                              "glslc --target-env=vulkan1.2", "glslc --target-env=vulkan1.3"};
-
-std::optional<bool> expected(const json& j, const std::string& tool) {
-    if (!j.contains("expect")) return std::nullopt;
-    return text(j["expect"], tool, {"accept", "reject"}) == "accept";
-}
-
-// case.json, or an exception naming the JSON path at fault.
-Case loadCase(const fs::path& file) {
-    std::ifstream in(file);
-    if (!in) throw std::runtime_error("cannot read it; every folder of the corpus needs a case.json");
-    const json j = json::parse(in);
-    Case c;
-    c.checks = text(j, "checks");
-    c.client = text(j, "client", {"opengl", "vulkan"});
-    c.reference = text(j, "reference", kReferences);
-    if (c.reference.starts_with("glslc")) c.targetEnv = c.reference.substr(c.reference.find('=') + 1);
-    c.stages = strings(j, "stages");
-    if (c.stages.empty()) throw std::runtime_error("/stages: name at least one stage file");
-    c.includeDirs = strings(j, "include_dirs");
-    c.defines = strings(j, "defines");
-    c.prismArgs = strings(j, "prism_args");
-    c.prismAccepts = expected(j, "prism");
-    c.referenceAccepts = expected(j, "reference");
-    if (j.contains("prism_says")) c.prismSays = text(j, "prism_says");
-    if (j.contains("program")) c.program = text(j, "program");
-    if (j.contains("prism_target")) c.prismTarget = text(j, "prism_target", {"es300"});
-    return c;
-}
-
 struct Outcome {
     bool accepted = false;
     std::string output;
@@ -143,22 +84,15 @@ std::optional<std::pair<std::string, int>> firstError(const std::string& output,
     return std::pair{fs::path(m[1].str()).lexically_normal().generic_string(), std::stoi(m[2].str())};
 }
 
-// Prism over the case; its SPIR-V (Vulkan) or es300 text goes to `emitted`.
+// Prism over the case; its SPIR-V and reflection (Vulkan) or es300 text go to `emitted`.
 Outcome runPrism(const Case& c, const fs::path& dir, const fs::path& emitted) {
-    std::vector<std::string> args = {PRISM_SHADERC_EXE, "--check"};
-    if (c.client == "vulkan") args.insert(args.end(), {"--client", "vulkan", "--emit-spirv", emitted.string()});
-    if (c.client == "vulkan" && !c.targetEnv.empty()) args.insert(args.end(), {"--target-env", c.targetEnv});
-    if (c.prismTarget == "es300") args.insert(args.end(), {"--target", "es300", "--emit-glsl", emitted.string()});
-    for (const auto& d : c.includeDirs) args.insert(args.end(), {"-I", d});
-    for (const auto& d : c.defines) args.insert(args.end(), {"-D", d});
-    args.insert(args.end(), c.prismArgs.begin(), c.prismArgs.end());
-    if (c.program.empty()) {
-        args.insert(args.end(), c.stages.begin(), c.stages.end());
-    } else {
-        std::string list;
-        for (const auto& stage : c.stages) list += (list.empty() ? "" : ",") + stage;
-        args.insert(args.end(), {"--program", c.program + "=" + list});
-    }
+    std::vector<std::string> args = {PRISM_SHADERC_EXE};
+    const auto caseArgs = prism::test::corpus::prismArguments(c);
+    args.insert(args.end(), caseArgs.begin(), caseArgs.end());
+    if (c.client == "vulkan")
+        args.insert(args.end(),
+                    {"--emit-spirv", emitted.string(), "--emit-reflection", (emitted / "reflection.json").string()});
+    if (c.prismTarget == "es300") args.insert(args.end(), {"--emit-glsl", emitted.string()});
     const auto r = runCommand(args, {.workDir = dir.string(), .mergeStderr = true});
     static const std::regex error(R"((?:^|\n)([^\n:]+):(\d+):\d+: error: )");
     return {r.exitCode == 0, r.out, firstError(r.out, error)};
@@ -211,7 +145,7 @@ std::vector<std::string> spirvValRejections(const Case& c, const fs::path& emitt
         for (const auto& option : prism::test::spirvValLayoutOptions(prism::test::spirvSourceExtensions(entry.path())))
             args.push_back(option);
         args.push_back(entry.path().string());
-        const auto r = runCommand(args, {.mergeStderr = true});
+        const auto r = runCommand(args, {.workDir = {}, .mergeStderr = true});
         if (r.exitCode != 0) rejected.push_back(entry.path().filename().string() + ": " + r.out);
     }
     return rejected;
@@ -228,7 +162,7 @@ std::vector<std::string> es300Problems(const fs::path& emitted) {
     std::sort(stages.begin(), stages.end());
     std::vector<std::string> args = {"glslangValidator", "-l", "-i"};
     args.insert(args.end(), stages.begin(), stages.end());
-    const auto r = runCommand(args, {.mergeStderr = true});
+    const auto r = runCommand(args, {.workDir = {}, .mergeStderr = true});
     if (r.exitCode != 0) return {"glslangValidator -l rejects the es300 text:\n" + r.out};
     if (const auto lowp = prism::test::lowpLines(r.out); !lowp.empty())
         return {"the es300 text computes or declares at GLSL ES 3.00's default lowp:\n" + lowp};
@@ -239,7 +173,11 @@ std::vector<std::string> es300Problems(const fs::path& emitted) {
 // the precision rule.
 void checkPrismOutputs(const Case& c, const fs::path& emitted, const std::string& report) {
     std::vector<std::string> problems;
-    if (c.client == "vulkan") problems = spirvValRejections(c, emitted);
+    if (c.client == "vulkan") {
+        problems = spirvValRejections(c, emitted);
+        for (auto& p : prism::test::reflectionDisagreements(emitted / "reflection.json", emitted))
+            problems.push_back(std::move(p));
+    }
     if (c.prismTarget == "es300") problems = es300Problems(emitted);
     for (const auto& problem : problems) ADD_FAILURE() << problem << "\n" << report;
 }
@@ -325,7 +263,8 @@ TEST(ReferenceCorpusChecks, SamplersLeftAtLowpNeedAPrecisionForTheirType) {
     const std::string before = "#version 300 es\nprecision highp float;\nprecision highp sampler3D;\n";
     const auto lowpOf = [&](const std::string& text) {
         dir.write("s.frag", text);
-        const auto r = runCommand({"glslangValidator", "-i", (dir.path() / "s.frag").string()}, {.mergeStderr = true});
+        const auto r = runCommand({"glslangValidator", "-i", (dir.path() / "s.frag").string()},
+                                  {.workDir = {}, .mergeStderr = true});
         EXPECT_EQ(r.exitCode, 0) << r.out;
         return prism::test::lowpLines(r.out);
     };
@@ -343,15 +282,16 @@ TEST(ReferenceCorpusChecks, ScalarLayoutStageGetsSpirvValsScalarOption) {
     const fs::path spv = out.path() / "raytrace.spv";
     ASSERT_EQ(runCommand({"glslc", "--target-env=vulkan1.2", "-I", dir.string(), "-c", "-o", spv.string(),
                           (dir / "shaders/raytrace.comp").string()},
-                         {.mergeStderr = true})
+                         {.workDir = {}, .mergeStderr = true})
                   .exitCode,
               0);
     const auto options = prism::test::spirvValLayoutOptions(prism::test::spirvSourceExtensions(spv));
     EXPECT_EQ(options, std::vector<std::string>{"--scalar-block-layout"});
-    const auto plain = runCommand({"spirv-val", "--target-env", "vulkan1.2", spv.string()}, {.mergeStderr = true});
+    const auto plain =
+        runCommand({"spirv-val", "--target-env", "vulkan1.2", spv.string()}, {.workDir = {}, .mergeStderr = true});
     EXPECT_NE(plain.exitCode, 0) << "without the option spirv-val should reject the scalar layout";
     const auto scalar = runCommand({"spirv-val", "--target-env", "vulkan1.2", "--scalar-block-layout", spv.string()},
-                                   {.mergeStderr = true});
+                                   {.workDir = {}, .mergeStderr = true});
     EXPECT_EQ(scalar.exitCode, 0) << scalar.out;
 }
 

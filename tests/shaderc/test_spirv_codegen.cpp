@@ -58,7 +58,9 @@ std::vector<std::uint32_t> vertexWords(SpirvEnv env) {
     EXPECT_TRUE(program) << shader.getInfoLog();
     std::vector<std::uint32_t> words;
     std::string log;
-    if (program) EXPECT_TRUE(generateSpirv(*program, EShLangVertex, words, log)) << log;
+    if (program) {
+        EXPECT_TRUE(generateSpirv(*program, EShLangVertex, words, log)) << log;
+    }
     return words;
 }
 

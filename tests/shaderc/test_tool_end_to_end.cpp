@@ -185,7 +185,7 @@ TEST(ToolOutputs, NoOpChecksTheRecordedSources) {
 // prism-shaderc generates and checks again what an older build left, though no source changed.
 TEST(ToolOutputs, ARebuiltToolDoesNotTrustAnOlderBuildsOutputs) {
     ScratchDir dir("rebuilt-tool");
-    fs::copy(kFixture, dir.path() / "fx", fs::copy_options::recursive);
+    fs::copy(kVariantsDir, dir.path() / "fx", fs::copy_options::recursive);
     const auto tool = dir.path() / "prism-shaderc";
     fs::copy_file(PRISM_SHADERC_EXE, tool);
     const std::string inputs =

@@ -71,6 +71,7 @@ VertexInput vertexInput(const catalog::Variant& variant, std::span<const VertexS
     for (std::uint32_t i = 0; i < streams.size(); ++i)
         in.bindings.push_back({i, streams[i].stride, VK_VERTEX_INPUT_RATE_VERTEX});
     for (const auto& input : variant.spirvInputs) {
+        if (!input.used) continue;  // declared, never read: no stream needs to feed it
         auto it =
             std::find_if(streams.begin(), streams.end(), [&](const auto& s) { return s.attribute == input.name; });
         if (it == streams.end()) {

@@ -126,13 +126,21 @@ struct StageSource {
     std::span<const std::uint32_t> spirv = {};
 };
 
-// An active vertex attribute. `location` comes from the binding contract, so the
-// runtime binds it with glBindAttribLocation before linking; in a Vulkan-client
-// catalogue it is the shader's own `layout(location = N)`.
+// The array size that means unbounded: a descriptor array declared `textures[]`, or a
+// storage block's last member `T x[]` (a runtime array). A non-array has size 1, so 0 is
+// never a real size.
+inline constexpr std::uint32_t kUnboundedArray = 0;
+
+// A vertex attribute. `location` comes from the binding contract, so the runtime binds it
+// with glBindAttribLocation before linking; in a Vulkan-client catalogue it is the
+// shader's own `layout(location = N)`. OpenGL catalogues list the active ones; the SPIR-V's
+// (`spirvInputs`, a Vulkan client's `attributes`) every declared one, `used` saying whether
+// the vertex stage statically reads it.
 struct Attribute {
     std::string_view name;
     std::uint32_t glType;  // GL_FLOAT_VEC3 etc.
     std::int32_t location;
+    bool used = true;
 };
 
 // An active uniform; arraySize is 1 for non-arrays.
@@ -173,18 +181,30 @@ constexpr std::string_view resourceKindName(ResourceKind k) {
     return "?";
 }
 
-// A member of a uniform block: `offset` in bytes from the block's start (std140).
+// A member of a buffer block: `offset` in bytes from the block's start, as the SPIR-V lays
+// it out (std140, std430 or scalar). Nested structs are flattened (`Block.light.color`,
+// `Block.lights[1].color`). `size` is the bytes of the whole member (every element; 0 for
+// a runtime array), `arrayStride` the bytes from one element to the next (0: no array).
+// A `buffer_reference` member is an 8-byte device address (`deviceAddress`, glType
+// GL_UNSIGNED_INT64_ARB), never the pointee's members.
 struct BlockMember {
     std::string_view name;
     std::uint32_t glType;
     std::uint32_t offset;
-    std::int32_t arraySize;
+    std::int32_t arraySize;  // 1 for non-arrays; kUnboundedArray for a runtime array
+    std::uint32_t size = 0;
+    std::uint32_t arrayStride = 0;
+    bool deviceAddress = false;
 };
 
-// One descriptor of the SPIR-V of a variant: `size` is a buffer block's size in bytes (0 for
-// images and samplers); `arraySize` is 1 for non-arrays. A uniform block lists its members,
-// so an application fills it without another reflection library; the spirv target's loose
-// uniforms are those of `gl_DefaultUniformBlock` (glslang's relaxed Vulkan rules).
+// One descriptor of the SPIR-V of a variant, every declared one (a descriptor-set layout
+// needs the unused ones too; `used` says whether some stage statically uses it). `size` is
+// a buffer block's size in bytes as its layout gives it (0 for images and samplers): for a
+// storage block ending in a runtime array `T x[]`, the fixed part before it, and
+// `runtimeStride` the bytes of one T (so n elements take size + n * runtimeStride).
+// `arraySize` is 1 for non-arrays, kUnboundedArray for `textures[]`. A buffer block lists
+// its members, so an application fills it without another reflection library; the spirv
+// target's loose uniforms are those of `gl_DefaultUniformBlock` (glslang's relaxed Vulkan rules).
 struct Resource {
     std::string_view name;
     std::uint32_t set;
@@ -192,15 +212,23 @@ struct Resource {
     ResourceKind kind;
     std::uint32_t size;
     std::uint32_t arraySize;
-    std::span<const BlockMember> members = {};  // uniform blocks: by offset
+    std::span<const BlockMember> members = {};  // buffer blocks: by offset
+    std::uint32_t runtimeStride = 0;
+    bool used = true;
 };
 
-// A member of a variant's push-constant block, at `offset` bytes, `size` bytes long.
+// A member of a variant's push-constant block (flattened as BlockMember), at `offset` bytes,
+// `size` bytes long (every element). A `buffer_reference` member is an 8-byte device address
+// (`deviceAddress`, glType GL_UNSIGNED_INT64_ARB). The push-constant range a pipeline layout
+// needs runs from the first member's offset to the largest offset + size.
 struct PushConstant {
     std::string_view name;
     std::uint32_t glType;
     std::uint32_t offset;
     std::uint32_t size;
+    std::int32_t arraySize = 1;
+    std::uint32_t arrayStride = 0;
+    bool deviceAddress = false;
 };
 
 // A specialisation constant (`layout(constant_id = N) const T name = default;`): its

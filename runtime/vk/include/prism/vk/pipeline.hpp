@@ -19,8 +19,9 @@
 //     // in a render pass: pipeline.bind(cmd, w, h); sets.bind(cmd, pipeline); vertex buffers; vkCmdDrawIndexed
 //
 // Stream i is vertex binding i; each SPIR-V input reads the stream of its name at its
-// location (the variant's `spirvInputs`). An input no stream feeds throws
-// std::invalid_argument naming it: it would otherwise read zeros and draw nothing.
+// location (the variant's `spirvInputs`). An input the shader reads that no stream feeds
+// throws std::invalid_argument naming it: it would otherwise read zeros and draw nothing;
+// a declared input the stage never reads (`used` false) needs no stream.
 // Depth test LESS with writes, no blending, as Prism's GL renders; the viewport follows
 // the ClipConvention (prism/vk/clip_convention.hpp). Move-only.
 #pragma once
