@@ -145,8 +145,9 @@ void RainSystem::setWind(const WindParams& wind) {
 void RainSystem::ensureStreakTexture() {
     if (streakTexture_) return;
     const StreakTextureArray t = generateStreakTextures();
-    streakTexture_ = uploadR8TextureArray(t.width, t.height, t.layers, t.texels.data(), false);
-    streakTextureBytes_ = t.bytes();
+    const std::vector<std::uint8_t> packed = packStreakBinCorners(t);
+    streakTexture_ = uploadTextureArray8(t.width, t.height, t.layers, 4, packed.data(), false);
+    streakTextureBytes_ = packed.size();
 }
 
 void RainSystem::bindAttributes(const gl::VertexArray& vao, const gl::Buffer& source, unsigned divisor) {
