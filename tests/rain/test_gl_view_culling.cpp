@@ -1,6 +1,7 @@
 // What the view needs and nothing else (issue 40): the culling pass (rain_cull.comp) leaves every pixel of
 // every technique as it was while it drops the particles outside the view; the update's narrower stores
-// still agree with the CPU reference when the fall speed changes.
+// still agree with the CPU reference when the fall speed changes; and the level-of-detail weight keeps
+// the time-averaged light of the rain layer.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -23,6 +24,25 @@ RainParams sceneRain(std::uint32_t seed) {
     p.seed = seed;
     p.wind.strength = 4.0f;
     return p;
+}
+
+// The rain layer alone: on black, into a float target, summed over `frames` steps of 0.1 s (mean of R, G, B).
+double summedLight(RainPrograms& programs, const RainParams& p, int frames, int size) {
+    const view::Camera camera = rainSceneView(0);
+    RainSystem rain(programs, p, camera.eye);
+    gl::Framebuffer fb(size, size, gl::ColorFormat::Rgba32F);
+    RainDrawInputs in;
+    in.camera = camera;
+    in.viewportHeight = size;
+    double light = 0.0;
+    for (int f = 0; f < frames; ++f) {
+        rain.update(0.1f, camera.eye);
+        fb.clear({0.0f, 0.0f, 0.0f, 0.0f});
+        rain.draw(in);
+        const image::ImageF img = fb.readImageF();
+        for (std::size_t i = 0; i < img.data.size(); i += 4) light += (img.data[i] + img.data[i + 1] + img.data[i + 2]);
+    }
+    return light / 3.0;
 }
 
 TEST_F(RainViewCulling, CulledDrawsArePixelIdenticalAndSkipTheParticlesOutsideTheView) {
@@ -77,6 +97,21 @@ TEST_F(RainViewCulling, UpdateAgreesWithTheCpuReferenceWhenTheFallSpeedChanges) 
     for (std::size_t i = 0; i < g.size(); ++i)
         if (std::abs(g[i].velocity.y - c[i].velocity.y) > 1e-4f) ++speedMismatch;
     EXPECT_EQ(speedMismatch, 0u);
+}
+
+TEST_F(RainViewCulling, LevelOfDetailKeepsTheTimeAveragedLight) {
+    RainParams none = sceneRain(31);
+    none.particlesPerDrop = 0.025f;
+    none.lodRings = 1;
+    RainParams rings = none;
+    rings.lodRings = 4;
+    rings.lodFalloff = 0.5f;
+    auto& programs = suiteResource<RainPrograms>();
+    const double reference = summedLight(programs, none, 12, 96);
+    const double thinned = summedLight(programs, rings, 12, 96);
+    const double bias = thinned / reference - 1.0;
+    std::cout << "[ info ] LOD 4 x 0.5 against no LOD: light " << bias * 100.0 << " %\n";
+    EXPECT_LT(std::abs(bias), 0.08);  // without the weight: about -42 %
 }
 
 }  // namespace

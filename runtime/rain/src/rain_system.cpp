@@ -186,6 +186,7 @@ void RainSystem::setStreakUniforms(gl::Program& p, const RainDrawInputs& in) con
     p.set(rain_shaders::contract::u_viewportHeight, static_cast<float>(std::max(in.viewportHeight, 1)));
     p.set(rain_shaders::contract::u_streakOpacity, s.opacity);
     p.set(rain_shaders::contract::u_streakFalloff, s.falloffDistance);
+    p.set(rain_shaders::contract::u_lod, glm::vec2(static_cast<float>(params_.lodRings), params_.lodFalloff));
 }
 
 void RainSystem::cullToView(const RainDrawInputs& in) {
