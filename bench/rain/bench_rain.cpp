@@ -17,7 +17,8 @@
 // (timed the same way: clear + draw + glFinish), in a rotating order. The first count
 // starts with a dropped round that builds the programs; then `frames` rounds (fewer for
 // large counts: 9 up to 2^16, 7 up to 2^18, 5 at 2^19, 3 up to 2^22, 1 above) and the
-// median of each. "frame" is update + draw. Also: bytes per particle (GPU buffer / count), and the median of 3 CPU
+// median of each. "frame" is update + draw. Also: bytes of GPU memory per particle (simulation buffer + culled copy +
+// draw commands, RainSystem::particleBytes, over the count), and the median of 3 CPU
 // reference steps (CpuRainSimulation, one thread) up to 2^22. After the timed rounds one more draw per technique
 // inside pipeline statistics queries (pipeline_statistics.hpp): vertex invocations, primitives entering
 // clipping and fragment-shader invocations per frame; the share of particles the view culling kept
@@ -167,9 +168,6 @@ Row measure(RainPrograms& programs, const Options& o, int exponent, bool warmUp)
     params.seed = 2013;
     const prism::view::Camera camera = rainSceneView(0);
     RainSystem rain(programs, params, camera.eye);
-    row.bytesPerParticle =
-        static_cast<double>(rain.particleBuffer() ? rain.capacity() * RainSystem::kBytesPerParticle : 0) /
-        row.particles;
     prism::gl::Framebuffer fb(o.size, o.size);
     RainDrawInputs in;
     in.camera = camera;
@@ -178,6 +176,7 @@ Row measure(RainPrograms& programs, const Options& o, int exponent, bool warmUp)
     in.cullToView = !o.noCull;
     timeRounds(rain, in, fb, warmUp, row);
     countWork(rain, in, fb, row);
+    row.bytesPerParticle = static_cast<double>(rain.particleBytes()) / row.particles;  // after the draws
     if (exponent <= 22) {
         CpuRainSimulation cpu(params, camera.eye);
         std::vector<double> steps;

@@ -54,7 +54,11 @@ RainSystem::RainSystem(RainPrograms& programs, const RainParams& params, const g
 }
 
 std::size_t RainSystem::gpuBytes() const {
-    return particles_.bytes() + visible_.bytes() + drawCommands_.bytes() + streakTextureBytes_;
+    return particleBytes() + streakTextureBytes_;
+}
+
+std::size_t RainSystem::particleBytes() const {
+    return particles_.bytes() + visible_.bytes() + drawCommands_.bytes();
 }
 
 void RainSystem::resize(std::uint32_t count) {

@@ -14,9 +14,9 @@
 //     std::vector<prism::rain::Particle> ps = rain.readParticles();  // tests
 //
 // Needs a current GL >= 4.3 context (compute shaders) for its whole life; throws
-// gl::ComputeUnavailableError otherwise. Memory: 48 bytes per particle (the simulation
-// buffer is also the vertex buffer of every technique) plus the 450-layer streak
-// texture array (460 KB).
+// gl::ComputeUnavailableError otherwise. Memory: 48 bytes per particle in the simulation buffer, as
+// many again for the culled copy the techniques draw from (made at the first culled draw), plus the
+// 450-layer streak texture array (1.8 MB, RGBA8).
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -86,8 +86,10 @@ class RainSystem {
     glm::vec3 center() const { return center_; }
     float fallSpeed() const { return rate_.fallSpeed; }
     std::uint64_t steps() const { return steps_; }
-    // Bytes of GPU memory: particle buffer + streak texture (0 before the first particle).
+    // Bytes of GPU memory: particle buffer + culled copy + draw commands + streak texture (0 before the
+    // first particle); particleBytes() without the texture.
     std::size_t gpuBytes() const;
+    std::size_t particleBytes() const;
     unsigned particleBuffer() const { return particles_.id(); }
     // Particles the last culled draw kept (read back from its draw commands; tests, benchmarks);
     // particleCount() before any culled draw.
