@@ -85,11 +85,11 @@ struct Row {
 
 // Bytes one frame reads and writes per particle (a model of the shaders' loads and stores, 48-byte
 // particles): rain_update reads position and velocity (32) and writes the position (16; velocity.y only
-// on a respawn); rain_cull reads position and velocity (32) and copies each kept particle (48 read +
-// 48 written); the vertex stage reads the kept particles (48). Without culling: update + 48 for every particle.
+// on a respawn); rain_cull reads the position (12) and copies each kept particle (48 read + 48 written);
+// the vertex stage reads the kept particles (48). Without culling: update + 48 for every particle.
 double bytesMovedPerParticle(bool culled, double visibleShare) {
     const double update = 32.0 + 16.0;
-    return culled ? update + 32.0 + visibleShare * (48.0 + 48.0 + 48.0) : update + 48.0;
+    return culled ? update + 12.0 + visibleShare * (48.0 + 48.0 + 48.0) : update + 48.0;
 }
 
 double median(std::vector<double> v) {
@@ -248,9 +248,11 @@ std::vector<Row> readCsv(const std::filesystem::path& path) {
     return rows;
 }
 
-// Runs an earlier build's bench for count 2^exponent alone (same size and rounds) and keeps its medians.
+// Runs an earlier build's bench for count 2^exponent alone (same size and rounds; its CSV and log go to
+// the temporary folder) and keeps its medians.
 void runBaseline(const Options& o, int exponent, Row& row) {
-    const auto dir = std::filesystem::path(o.out) / ("baseline-2^" + std::to_string(exponent));
+    const auto dir =
+        std::filesystem::temp_directory_path() / ("prism_bench_rain_baseline_2^" + std::to_string(exponent));
     std::filesystem::create_directories(dir);
     const std::string e = std::to_string(exponent);
     const std::string command = "'" + o.baseline + "' --min-exp " + e + " --max-exp " + e + " --frames " +
@@ -464,8 +466,9 @@ int main(int argc, char** argv) {
         const auto svg = std::filesystem::path(o.out) / "rain_bench.svg";
         writeCsv(csv, rows);
         writeSvg(svg, rows, subtitle);
-        std::cout << "\nstreak texture array: 450 layers x 16 x 64 R8 = " << 450 * 16 * 64 << " bytes (once)\nwrote "
-                  << csv.string() << " and " << svg.string() << " in " << fixed(msSince(start) / 1000.0, 0) << " s\n";
+        std::cout << "\nstreak texture array: 450 layers x 16 x 64 RGBA8 (each texel holds its 4 neighbouring bins) = "
+                  << 450 * 16 * 64 * 4 << " bytes (once)\nwrote " << csv.string() << " and " << svg.string() << " in "
+                  << fixed(msSince(start) / 1000.0, 0) << " s\n";
     } catch (const std::exception& e) {
         std::cerr << "prism_bench_rain: error: " << e.what() << "\n";
         return 1;
