@@ -35,13 +35,16 @@ shared uint s_runFirst[64];
 
 // Conservative: a sphere around the drop's head as large as the longest streak any drop can draw
 // (u_maxStreakLength: the fastest fall since the start plus jitter and wind, times the exposure) plus
-// half the widest width it can be drawn with (see rainStreak), against the six planes of viewProjection;
+// half the widest width it can be drawn with (see rainStreak, with the level-of-detail widening),
+// against the six planes of viewProjection;
 // only the position is read. Faint drops are left to the streak stages (they emit nothing): testing
 // them here would cost every particle the full streak set-up.
 bool rainStreakReachesView(vec3 head, mat4 viewProjection) {
     float farthest = length(u_cameraPosition - head) + u_maxStreakLength;
     float pixel = 2.0 * farthest / (max(u_projection[1][1], 1e-6) * max(u_viewportHeight, 1.0));
-    float radius = u_maxStreakLength + 0.5 * max(u_streakWidth.x + u_streakWidth.y * farthest, 1.5 * pixel) + 1e-3;
+    float widest = pow(u_lod.y, (1.0 - max(u_lod.x, 1.0)) * 2.0 / 3.0);  // the largest level-of-detail widening
+    float radius =
+        u_maxStreakLength + 0.5 * widest * max(u_streakWidth.x + u_streakWidth.y * farthest, 1.5 * pixel) + 1e-3;
     vec3 centre = head;
     vec4 w = vec4(viewProjection[0][3], viewProjection[1][3], viewProjection[2][3], viewProjection[3][3]);
     for (int axis = 0; axis < 3; ++axis) {
