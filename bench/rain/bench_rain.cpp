@@ -6,6 +6,8 @@
 //                      (redraws the SVG from an earlier run's CSV, measures nothing)
 //     LP_NUM_THREADS=2 prism_bench_rain --trade --out bench/rain/results
 //                      (the speed/accuracy trade instead, rain_trade.hpp)
+//     LP_NUM_THREADS=2 prism_bench_rain --baseline OLD/prism_bench_rain --max-exp 20 --out DIR
+//                      (also runs an earlier build's bench for each count, interleaved, and prints both)
 //
 // For every count 2^e (e = --min-exp .. --max-exp; 2^23 and 2^24 only when memory allows) one
 // RainSystem of exactly that many particles (fixedCount) in the default 25 m x 20 m
@@ -15,12 +17,18 @@
 // (timed the same way: clear + draw + glFinish), in a rotating order. The first count
 // starts with a dropped round that builds the programs; then `frames` rounds (fewer for
 // large counts: 9 up to 2^16, 7 up to 2^18, 5 at 2^19, 3 up to 2^22, 1 above) and the
-// median of each. "frame" is update + draw. Also: bytes per particle (GPU buffer / count), and the median of 3 CPU
-// reference steps (CpuRainSimulation, one thread) up to 2^22.
+// median of each. "frame" is update + draw. Also: bytes of GPU memory per particle (simulation buffer + culled copy +
+// draw commands, RainSystem::particleBytes, over the count), and the median of 3 CPU
+// reference steps (CpuRainSimulation, one thread) up to 2^22. After the timed rounds one more draw per technique
+// inside pipeline statistics queries (pipeline_statistics.hpp): vertex invocations, primitives entering
+// clipping and fragment-shader invocations per frame; the share of particles the view culling kept
+// (RainSystem::visibleCount), and the bytes per particle the frame moves (bytesMovedPerParticle).
+// --no-cull draws every particle (RainDrawInputs::cullToView = false), as the turn-3 build did.
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -36,6 +44,7 @@
 #include "prism/gl/gl_context.hpp"
 #include "prism/rain/rain_scene.hpp"
 #include "prism/rain/rain_system.hpp"
+#include "pipeline_statistics.hpp"
 #include "rain_trade.hpp"
 
 namespace {
@@ -52,6 +61,8 @@ struct Options {
     std::string backend;
     std::string replot;    // CSV of an earlier run: only redraw the SVG
     std::string subtitle;  // with --replot
+    std::string baseline;  // an earlier build's prism_bench_rain, run for each count as well
+    bool noCull = false;
 };
 
 constexpr StreakTechnique kTechniques[] = {StreakTechnique::GeometryShader, StreakTechnique::Instanced,
@@ -65,7 +76,21 @@ struct Row {
     double draw[3] = {0.0, 0.0, 0.0};
     double bytesPerParticle = 0.0;
     double cpuUpdate = -1.0;  // < 0: not measured
+    prism::rain::bench::PipelineStatistics stats[3];
+    double visibleShare = 1.0;     // particles the culling kept / particles
+    double bytesMoved = 0.0;       // per particle and frame (update + cull + draw), see bytesMovedPerParticle
+    double baselineUpdate = -1.0;  // < 0: no --baseline
+    double baselineDraw[3] = {0.0, 0.0, 0.0};
 };
+
+// Bytes one frame reads and writes per particle (a model of the shaders' loads and stores, 48-byte
+// particles): rain_update reads position and velocity (32) and writes the position (16; velocity.y only
+// on a respawn); rain_cull reads the position (12) and copies each kept particle (48 read + 48 written);
+// the vertex stage reads the kept particles (48). Without culling: update + 48 for every particle.
+double bytesMovedPerParticle(bool culled, double visibleShare) {
+    const double update = 32.0 + 16.0;
+    return culled ? update + 12.0 + visibleShare * (48.0 + 48.0 + 48.0) : update + 48.0;
+}
 
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
@@ -93,32 +118,15 @@ std::uint64_t availableMemory() {
     return 0;
 }
 
-Row measure(RainPrograms& programs, const Options& o, int exponent, bool warmUp) {
-    Row row;
-    row.exponent = exponent;
-    row.particles = 1u << exponent;
-    row.frames = framesFor(exponent, o.frames);
-    RainParams params;
-    params.fixedCount = row.particles;
-    params.wind.strength = 3.0f;
-    params.seed = 2013;
-    const prism::view::Camera camera = rainSceneView(0);
-    RainSystem rain(programs, params, camera.eye);
-    row.bytesPerParticle =
-        static_cast<double>(rain.particleBuffer() ? rain.capacity() * RainSystem::kBytesPerParticle : 0) /
-        row.particles;
-    prism::gl::Framebuffer fb(o.size, o.size);
-    RainDrawInputs in;
-    in.camera = camera;
-    in.aspect = 1.0f;
-    in.viewportHeight = o.size;
+// Timed rounds: one update, then one draw per technique in a rotating order; medians into `row`.
+void timeRounds(RainSystem& rain, RainDrawInputs in, prism::gl::Framebuffer& fb, bool warmUp, Row& row) {
     std::vector<double> updates;
     std::vector<double> draws[3];
     const int first = warmUp ? 0 : 1;  // round 0 (dropped) builds the programs
     for (int round = first; round <= row.frames; ++round) {
         glFinish();
         auto t0 = Clock::now();
-        rain.update(1.0f / 60.0f, camera.eye);
+        rain.update(1.0f / 60.0f, in.camera.eye);
         glFinish();
         const double u = msSince(t0);
         if (round > 0) updates.push_back(u);
@@ -136,6 +144,39 @@ Row measure(RainPrograms& programs, const Options& o, int exponent, bool warmUp)
     }
     row.update = median(updates);
     for (int t = 0; t < 3; ++t) row.draw[t] = median(draws[t]);
+}
+
+// One untimed draw per technique inside the pipeline statistics queries; the share the culling kept.
+void countWork(RainSystem& rain, RainDrawInputs in, prism::gl::Framebuffer& fb, Row& row) {
+    for (int t = 0; t < 3; ++t) {
+        in.technique = kTechniques[t];
+        fb.clear({0.33f, 0.36f, 0.42f, 1.0f});
+        row.stats[t] = prism::rain::bench::measurePipelineStatistics([&] { rain.draw(in); });
+    }
+    row.visibleShare = static_cast<double>(rain.visibleCount()) / std::max<std::uint32_t>(row.particles, 1);
+    row.bytesMoved = bytesMovedPerParticle(in.cullToView, row.visibleShare);
+}
+
+Row measure(RainPrograms& programs, const Options& o, int exponent, bool warmUp) {
+    Row row;
+    row.exponent = exponent;
+    row.particles = 1u << exponent;
+    row.frames = framesFor(exponent, o.frames);
+    RainParams params;
+    params.fixedCount = row.particles;
+    params.wind.strength = 3.0f;
+    params.seed = 2013;
+    const prism::view::Camera camera = rainSceneView(0);
+    RainSystem rain(programs, params, camera.eye);
+    prism::gl::Framebuffer fb(o.size, o.size);
+    RainDrawInputs in;
+    in.camera = camera;
+    in.aspect = 1.0f;
+    in.viewportHeight = o.size;
+    in.cullToView = !o.noCull;
+    timeRounds(rain, in, fb, warmUp, row);
+    countWork(rain, in, fb, row);
+    row.bytesPerParticle = static_cast<double>(rain.particleBytes()) / row.particles;  // after the draws
     if (exponent <= 22) {
         CpuRainSimulation cpu(params, camera.eye);
         std::vector<double> steps;
@@ -158,12 +199,26 @@ std::string fixed(double v, int digits = 1) {
 void writeCsv(const std::filesystem::path& path, const std::vector<Row>& rows) {
     std::ofstream out(path);
     out << "exponent,particles,frames,update_ms,gs_draw_ms,gs_frame_ms,instanced_draw_ms,instanced_frame_ms,"
-           "points_draw_ms,points_frame_ms,bytes_per_particle,cpu_reference_update_ms\n";
+           "points_draw_ms,points_frame_ms,bytes_per_particle,cpu_reference_update_ms,"
+           "gs_fragment_invocations,instanced_fragment_invocations,points_fragment_invocations,"
+           "gs_primitives,instanced_primitives,points_primitives,gs_vertex_invocations,instanced_vertex_invocations,"
+           "points_vertex_invocations,visible_share,bytes_moved_per_particle,baseline_update_ms,baseline_gs_frame_ms,"
+           "baseline_instanced_frame_ms,baseline_points_frame_ms\n";
     for (const auto& r : rows) {
         out << r.exponent << "," << r.particles << "," << r.frames << "," << fixed(r.update, 3);
         for (int t = 0; t < 3; ++t) out << "," << fixed(r.draw[t], 3) << "," << fixed(r.update + r.draw[t], 3);
-        out << "," << fixed(r.bytesPerParticle, 1) << "," << (r.cpuUpdate < 0 ? std::string() : fixed(r.cpuUpdate, 3))
-            << "\n";
+        out << "," << fixed(r.bytesPerParticle, 1) << "," << (r.cpuUpdate < 0 ? std::string() : fixed(r.cpuUpdate, 3));
+        for (int t = 0; t < 3; ++t) out << "," << r.stats[t].fragmentInvocations;
+        for (int t = 0; t < 3; ++t) out << "," << r.stats[t].clippingPrimitives;
+        for (int t = 0; t < 3; ++t) out << "," << r.stats[t].vertexInvocations;
+        out << "," << fixed(r.visibleShare, 4) << "," << fixed(r.bytesMoved, 1);
+        if (r.baselineUpdate >= 0) {
+            out << "," << fixed(r.baselineUpdate, 3);
+            for (int t = 0; t < 3; ++t) out << "," << fixed(r.baselineUpdate + r.baselineDraw[t], 3);
+        } else {
+            out << ",,,,";
+        }
+        out << "\n";
     }
 }
 
@@ -191,6 +246,23 @@ std::vector<Row> readCsv(const std::filesystem::path& path) {
     }
     if (rows.empty()) throw std::runtime_error(path.string() + " has no rows");
     return rows;
+}
+
+// Runs an earlier build's bench for count 2^exponent alone (same size and rounds; its CSV and log go to
+// the temporary folder) and keeps its medians.
+void runBaseline(const Options& o, int exponent, Row& row) {
+    const auto dir =
+        std::filesystem::temp_directory_path() / ("prism_bench_rain_baseline_2^" + std::to_string(exponent));
+    std::filesystem::create_directories(dir);
+    const std::string e = std::to_string(exponent);
+    const std::string command = "'" + o.baseline + "' --min-exp " + e + " --max-exp " + e + " --frames " +
+                                std::to_string(o.frames) + " --size " + std::to_string(o.size) + " --out '" +
+                                dir.string() + "' > '" + (dir / "log.txt").string() + "' 2>&1";
+    if (std::system(command.c_str()) != 0)
+        throw std::runtime_error("the baseline bench failed: " + command + " (see " + (dir / "log.txt").string() + ")");
+    const Row base = readCsv(dir / "rain_bench.csv").front();
+    row.baselineUpdate = base.update;
+    for (int t = 0; t < 3; ++t) row.baselineDraw[t] = base.draw[t];
 }
 
 // Log-log plot: frame time per technique (solid), compute update (dashed), 60 and 30 FPS.
@@ -252,6 +324,76 @@ void writeSvg(const std::filesystem::path& path, const std::vector<Row>& rows, c
       << "'>compute update only</text>\n</svg>\n";
 }
 
+// Every count from --min-exp to --max-exp; with --baseline the earlier build's bench runs for the same
+// count right before (even exponents) or after (odd) this one, so load changes hit both alike.
+std::vector<Row> measureCounts(const Options& o, Clock::time_point start) {
+    RainPrograms programs;
+    std::vector<Row> rows;
+    for (int e = o.minExp; e <= o.maxExp; ++e) {
+        const std::uint64_t need = (std::uint64_t{1} << e) * 48u * 3u;  // GPU copy + CPU reference + slack
+        if (e >= 23 && availableMemory() < need + (1ull << 30)) {
+            std::cout << "skipping 2^" << e << ": not enough free memory\n";
+            continue;
+        }
+        Row before;
+        if (!o.baseline.empty() && e % 2 == 0) runBaseline(o, e, before);
+        rows.push_back(measure(programs, o, e, rows.empty()));
+        Row& r = rows.back();
+        if (!o.baseline.empty() && e % 2 != 0) runBaseline(o, e, before);
+        r.baselineUpdate = before.baselineUpdate;
+        for (int t = 0; t < 3; ++t) r.baselineDraw[t] = before.baselineDraw[t];
+        std::cout << "  2^" << e << ": update " << fixed(r.update, 2) << " ms, draw gs " << fixed(r.draw[0], 2)
+                  << " / instanced " << fixed(r.draw[1], 2) << " / points " << fixed(r.draw[2], 2) << " ms ("
+                  << r.frames << " frames, " << fixed(msSince(start) / 1000.0, 0) << " s so far)\n"
+                  << std::flush;
+    }
+    return rows;
+}
+
+// Cheapest technique's frame (update + draw) of a row; `baseline` picks the earlier build's.
+std::pair<double, int> cheapestFrame(const Row& r, bool baseline) {
+    const double update = baseline ? r.baselineUpdate : r.update;
+    const double* draw = baseline ? r.baselineDraw : r.draw;
+    int best = 0;
+    for (int t = 1; t < 3; ++t)
+        if (draw[t] < draw[best]) best = t;
+    return {update + draw[best], best};
+}
+
+void printTables(const std::vector<Row>& rows) {
+    std::cout << "\n| particles | update ms | GS draw | GS frame | instanced draw | instanced frame | points draw | "
+                 "points frame | bytes/particle | CPU ref. update ms |\n|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const auto& r : rows) {
+        std::cout << "| 2^" << r.exponent << " (" << r.particles << ") | " << fixed(r.update, 2);
+        for (int t = 0; t < 3; ++t)
+            std::cout << " | " << fixed(r.draw[t], 1) << " | " << fixed(r.update + r.draw[t], 1);
+        std::cout << " | " << fixed(r.bytesPerParticle, 0) << " | "
+                  << (r.cpuUpdate < 0 ? std::string("-") : fixed(r.cpuUpdate, 1)) << " |\n";
+    }
+    std::cout
+        << "\nWork per frame (pipeline statistics of one draw; primitives = entering clipping):\n\n"
+           "| particles | in view | bytes moved/particle | GS VS inv. | GS prims | GS FS inv. | instanced VS inv. "
+           "| instanced FS inv. | points VS inv. | points FS inv. |\n|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const auto& r : rows)
+        std::cout << "| 2^" << r.exponent << " | " << fixed(100.0 * r.visibleShare, 1) << " % | "
+                  << fixed(r.bytesMoved, 0) << " | " << r.stats[0].vertexInvocations << " | "
+                  << r.stats[0].clippingPrimitives << " | " << r.stats[0].fragmentInvocations << " | "
+                  << r.stats[1].vertexInvocations << " | " << r.stats[1].fragmentInvocations << " | "
+                  << r.stats[2].vertexInvocations << " | " << r.stats[2].fragmentInvocations << " |\n";
+    if (rows.front().baselineUpdate < 0) return;
+    const char* names[] = {"GS", "instanced", "points"};
+    std::cout << "\nAgainst the baseline build (cheapest technique's frame = update + draw; target: >= 4x at 2^20):\n\n"
+                 "| particles | baseline update | baseline frame | update | frame | frame ratio | target |\n"
+                 "|---|---|---|---|---|---|---|\n";
+    for (const auto& r : rows) {
+        const auto [base, bt] = cheapestFrame(r, true);
+        const auto [now, nt] = cheapestFrame(r, false);
+        std::cout << "| 2^" << r.exponent << " | " << fixed(r.baselineUpdate, 1) << " | " << fixed(base, 1) << " ("
+                  << names[bt] << ") | " << fixed(r.update, 1) << " | " << fixed(now, 1) << " (" << names[nt] << ") | "
+                  << fixed(base / now, 2) << "x | >= 4x |\n";
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -269,12 +411,17 @@ int main(int argc, char** argv) {
     app.add_option("--backend", o.backend, "egl or osmesa (default: PRISM_GL_BACKEND, else egl)");
     app.add_option("--replot", o.replot, "redraw OUT/rain_bench.svg from this CSV, measure nothing");
     app.add_option("--subtitle", o.subtitle, "with --replot: the plot's subtitle (renderer, threads, size)");
+    app.add_option("--baseline", o.baseline, "an earlier build's prism_bench_rain: run it for every count too");
+    app.add_flag("--no-cull", o.noCull, "draw every particle (no rain_cull pass), as before the culling");
     bool trade = false;
     prism::rain::bench::RainTradeOptions tradeOptions;
     app.add_flag("--trade", trade, "measure the speed/accuracy trade against a dense reference instead");
     app.add_option("--trade-size", tradeOptions.size, "--trade: framebuffer edge")->check(CLI::Range(16, 2048));
     app.add_option("--trade-frames", tradeOptions.frames, "--trade: averaged frames per setting")
         ->check(CLI::Range(1, 1000));
+    app.add_option("--trade-budget-ms", tradeOptions.budgetMs,
+                   "--trade: also print the most accurate setting within this frame time (ms)")
+        ->check(CLI::Range(0.0, 1e6));
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -310,40 +457,18 @@ int main(int argc, char** argv) {
             tradeOptions.out = o.out;
             return prism::rain::bench::runRainTrade(tradeOptions);
         }
-        RainPrograms programs;
-        std::vector<Row> rows;
         const auto start = Clock::now();
-        for (int e = o.minExp; e <= o.maxExp; ++e) {
-            const std::uint64_t need = (std::uint64_t{1} << e) * 48u * 3u;  // GPU copy + CPU reference + slack
-            if (e >= 23 && availableMemory() < need + (1ull << 30)) {
-                std::cout << "skipping 2^" << e << ": not enough free memory\n";
-                continue;
-            }
-            rows.push_back(measure(programs, o, e, rows.empty()));
-            const Row& r = rows.back();
-            std::cout << "  2^" << e << ": update " << fixed(r.update, 2) << " ms, draw gs " << fixed(r.draw[0], 2)
-                      << " / instanced " << fixed(r.draw[1], 2) << " / points " << fixed(r.draw[2], 2) << " ms ("
-                      << r.frames << " frames, " << fixed(msSince(start) / 1000.0, 0) << " s so far)\n"
-                      << std::flush;
-        }
+        const std::vector<Row> rows = measureCounts(o, start);
         if (rows.empty()) return 0;
-        std::cout
-            << "\n| particles | update ms | GS draw | GS frame | instanced draw | instanced frame | points draw | "
-               "points frame | bytes/particle | CPU ref. update ms |\n|---|---|---|---|---|---|---|---|---|---|\n";
-        for (const auto& r : rows) {
-            std::cout << "| 2^" << r.exponent << " (" << r.particles << ") | " << fixed(r.update, 2);
-            for (int t = 0; t < 3; ++t)
-                std::cout << " | " << fixed(r.draw[t], 1) << " | " << fixed(r.update + r.draw[t], 1);
-            std::cout << " | " << fixed(r.bytesPerParticle, 0) << " | "
-                      << (r.cpuUpdate < 0 ? std::string("-") : fixed(r.cpuUpdate, 1)) << " |\n";
-        }
+        printTables(rows);
         std::filesystem::create_directories(o.out);
         const auto csv = std::filesystem::path(o.out) / "rain_bench.csv";
         const auto svg = std::filesystem::path(o.out) / "rain_bench.svg";
         writeCsv(csv, rows);
         writeSvg(svg, rows, subtitle);
-        std::cout << "\nstreak texture array: 450 layers x 16 x 64 R8 = " << 450 * 16 * 64 << " bytes (once)\nwrote "
-                  << csv.string() << " and " << svg.string() << " in " << fixed(msSince(start) / 1000.0, 0) << " s\n";
+        std::cout << "\nstreak texture array: 450 layers x 16 x 64 RGBA8 (each texel holds its 4 neighbouring bins) = "
+                  << 450 * 16 * 64 * 4 << " bytes (once)\nwrote " << csv.string() << " and " << svg.string() << " in "
+                  << fixed(msSince(start) / 1000.0, 0) << " s\n";
     } catch (const std::exception& e) {
         std::cerr << "prism_bench_rain: error: " << e.what() << "\n";
         return 1;

@@ -216,6 +216,18 @@ void recommend(const std::vector<Outcome>& rows) {
               << (fair ? name(rows[*fair].s) + ", " + fmt(rows[*fair].frameMs, 1) + " ms" : "none") << "\n";
 }
 
+// The most accurate setting whose frame costs at most `budgetMs` (e.g. an earlier build's default's frame).
+void bestWithinBudget(const std::vector<Outcome>& rows, double budgetMs) {
+    const Outcome* best = nullptr;
+    for (const Outcome& r : rows)
+        if (r.frameMs <= budgetMs && (!best || r.meanErr < best->meanErr)) best = &r;
+    std::cout << "most accurate within " << fmt(budgetMs, 1) << " ms a frame: "
+              << (best ? name(best->s) + ", " + fmt(best->frameMs, 1) + " ms, light error " + fmt(best->meanErr, 3) +
+                             ", bias " + fmt(best->lightBias * 100.0, 1) + " %"
+                       : std::string("none"))
+              << "\n";
+}
+
 void writeSvg(const std::filesystem::path& path, const std::vector<Outcome>& rows, const RainTradeOptions& o) {
     std::vector<prism::bench::TradePoint> points;
     for (const Outcome& r : rows) {
@@ -261,6 +273,7 @@ int runRainTrade(const RainTradeOptions& o) {
     std::cout << "\n";
     checkLod(rows);
     recommend(rows);
+    if (o.budgetMs > 0.0) bestWithinBudget(rows, o.budgetMs);
     std::filesystem::create_directories(o.out);
     writeCsv(std::filesystem::path(o.out) / "rain_trade.csv", rows);
     writeSvg(std::filesystem::path(o.out) / "rain_trade.svg", rows, o);

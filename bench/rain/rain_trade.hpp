@@ -20,6 +20,7 @@ struct RainTradeOptions {
     int frames = 16;            // averaged frames per setting, 0.1 s of rain apart
     int referenceFrames = 40;   // averaged frames of the reference
     double referencePpd = 0.2;  // particles per drop of the reference (4x the default)
+    double budgetMs = 0.0;      // > 0: also print the best light error among settings at most this many ms
 };
 
 // Runs every setting and the reference (needs a current GL 4.3 context); returns 0.

@@ -3,7 +3,9 @@
 // angle theta (5 bins, 10..170 deg from the streak's upward axis) x horizontal angle phi
 // between the light's and the eye's planes through the axis (9 bins, 10..170 deg) x
 // drop oscillation type (10). rainStreakBins() gives fractional bin coordinates (per
-// drop); rainStreakTexel() blends the 4 nearest (theta, phi) layers bilinearly.
+// drop); rainStreakTexel() blends the 4 nearest (theta, phi) layers bilinearly from one fetch:
+// the array is packed (prism::rain::packStreakBinCorners) so that layer (osc, b, c) holds the
+// layers (b, c), (b, c + 1), (b + 1, c), (b + 1, c + 1) in R, G, B, A.
 // Layer index = (oscillation * 5 + theta bin) * 9 + phi bin.
 uniform sampler2DArray u_streakTexture;
 
@@ -31,17 +33,14 @@ float rainStreakLayer(float oscillation, float thetaBin, float phiBin) {
 float rainStreakTexel(vec2 uv, vec2 bins, float oscillation) {
     vec2 b0 = floor(bins);
     vec2 f = bins - b0;
-    vec2 b1 = min(b0 + 1.0, vec2(RAIN_THETA_BINS - 1.0, RAIN_PHI_BINS - 1.0));
-    float t00 = texture(u_streakTexture, vec3(uv, rainStreakLayer(oscillation, b0.x, b0.y))).r;
-    float t01 = texture(u_streakTexture, vec3(uv, rainStreakLayer(oscillation, b0.x, b1.y))).r;
-    float t10 = texture(u_streakTexture, vec3(uv, rainStreakLayer(oscillation, b1.x, b0.y))).r;
-    float t11 = texture(u_streakTexture, vec3(uv, rainStreakLayer(oscillation, b1.x, b1.y))).r;
-    return mix(mix(t00, t01, f.y), mix(t10, t11, f.y), f.x);
+    vec4 t = texture(u_streakTexture, vec3(uv, rainStreakLayer(oscillation, b0.x, b0.y)));
+    return mix(mix(t.r, t.g, f.y), mix(t.b, t.a, f.y), f.x);
 }
 
 // The soft streak silhouette without any light: the sky's reflection in the drop.
 float rainStreakShape(vec2 uv) {
-    float across = exp(-0.5 * pow((uv.x - 0.5) / 0.18, 2.0));
+    float x = (uv.x - 0.5) / 0.18;
+    float across = exp(-0.5 * x * x);
     float ends = smoothstep(0.0, 0.1, uv.y) * (1.0 - smoothstep(0.9, 1.0, uv.y));
     return across * ends;
 }

@@ -101,8 +101,8 @@ TEST_F(RainSceneResources, RainWithoutFogHasNoFogVariant) {
     desc.fog.reset();
     const Cost scene = sceneCost(desc, 1, [](RainScene& s) {
         ASSERT_NE(s.rain(), nullptr);
-        const std::vector<std::string> expected = {"ground (FOG=0)", "rain_init (default)", "rain_streaks (FOG=0)",
-                                                   "rain_update (default)"};
+        const std::vector<std::string> expected = {"ground (FOG=0)", "rain_cull (default)", "rain_init (default)",
+                                                   "rain_streaks (FOG=0)", "rain_update (default)"};
         EXPECT_EQ(s.programsInUse(), expected);
         EXPECT_FALSE(anyContains(s.programsInUse(), "FOG=1"));
         EXPECT_FALSE(anyContains(s.programsInUse(), "fog_billboards"));
@@ -113,9 +113,9 @@ TEST_F(RainSceneResources, RainWithoutFogHasNoFogVariant) {
         EXPECT_EQ(static_cast<std::uint64_t>(size),
                   std::uint64_t{s.rain()->capacity()} * RainSystem::kBytesPerParticle);
     });
-    // One particle buffer, one streak texture array, the particles' vertex array, one
-    // seeding and one update.
-    EXPECT_EQ(minus(scene, groundCost(desc)), (Cost{1, 1, 1, 2}));
+    // The particle buffer, the culled copy and its draw commands, one streak texture array, the
+    // vertex array of the culled particles; one seeding, one update and one culling pass.
+    EXPECT_EQ(minus(scene, groundCost(desc)), (Cost{3, 1, 1, 3}));
 }
 
 TEST_F(RainSceneResources, FogWithoutRainUsesOnlyFogVariants) {
@@ -138,11 +138,11 @@ TEST_F(RainSceneResources, DistanceFogWithoutBillboardsBuildsNoBillboards) {
     desc.fog->billboards.strength = 0.0f;
     const Cost scene = sceneCost(desc, 1, [](RainScene& s) {
         EXPECT_EQ(s.fogBillboards(), nullptr);
-        const std::vector<std::string> expected = {"ground (FOG=1)", "rain_init (default)", "rain_streaks (FOG=1)",
-                                                   "rain_update (default)"};
+        const std::vector<std::string> expected = {"ground (FOG=1)", "rain_cull (default)", "rain_init (default)",
+                                                   "rain_streaks (FOG=1)", "rain_update (default)"};
         EXPECT_EQ(s.programsInUse(), expected);
     });
-    EXPECT_EQ(minus(scene, groundCost(desc)), (Cost{1, 1, 1, 2})) << "the rain's objects only";
+    EXPECT_EQ(minus(scene, groundCost(desc)), (Cost{3, 1, 1, 3})) << "the rain's objects only";
 }
 
 TEST_F(RainSceneResources, BadSceneParametersAreClearErrors) {

@@ -3,7 +3,10 @@
 // model says, distinct oscillation types, soft ends.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 #include <set>
 
 #include "prism/rain/streak_texture.hpp"
@@ -85,6 +88,30 @@ TEST(StreakTexture, BadSizeIsAnError) {
     EXPECT_THROW(generateStreakTextures(1, 64), std::invalid_argument);
     EXPECT_THROW(generateStreakTextures(16, 5000), std::invalid_argument);
     EXPECT_THROW(oscillationType(10), std::invalid_argument);
+}
+
+// One RGBA fetch per light holds the four layers of the bilinear blend between bins (R, G, B, A =
+// (b, c), (b, c + 1), (b + 1, c), (b + 1, c + 1)), the neighbours clamped at the last bin.
+TEST(StreakTexture, PackedCornersAreTheFourNeighbouringLayers) {
+    const StreakTextureArray& t = texture();
+    const std::vector<std::uint8_t> packed = packStreakBinCorners(t);
+    ASSERT_EQ(packed.size(), 4 * t.texels.size());
+    const std::size_t layerTexels = static_cast<std::size_t>(t.width) * static_cast<std::size_t>(t.height);
+    auto texel = [&](int layer, int channel, int x, int y) {
+        const std::size_t i = static_cast<std::size_t>(layer) * layerTexels + static_cast<std::size_t>(y * t.width + x);
+        return packed[4 * i + static_cast<std::size_t>(channel)];
+    };
+    for (int osc : {0, 7})
+        for (int theta : {0, 2, kThetaBins - 1})
+            for (int phi : {0, 5, kPhiBins - 1}) {
+                const int theta1 = std::min(theta + 1, kThetaBins - 1), phi1 = std::min(phi + 1, kPhiBins - 1);
+                const int corners[4] = {streakLayer(osc, theta, phi), streakLayer(osc, theta, phi1),
+                                        streakLayer(osc, theta1, phi), streakLayer(osc, theta1, phi1)};
+                for (int c = 0; c < 4; ++c)
+                    for (auto [x, y] : {std::pair{0, 0}, std::pair{7, 31}, std::pair{t.width - 1, t.height - 1}})
+                        ASSERT_EQ(texel(streakLayer(osc, theta, phi), c, x, y), t.at(corners[c], x, y))
+                            << "osc " << osc << " theta " << theta << " phi " << phi << " channel " << c;
+            }
 }
 
 }  // namespace

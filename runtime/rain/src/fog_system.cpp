@@ -24,7 +24,7 @@ FogSystem::FogSystem(RainPrograms& programs, const SceneFog& fog, const glm::vec
       buffer_(gl::Buffer::create(static_cast<std::size_t>(fog.billboards.count) * sizeof(glm::vec4), GL_DYNAMIC_DRAW,
                                  simulation_.billboards().data())),
       vao_(gl::VertexArray::create()),
-      noiseTexture_(uploadR8TextureArray(noise_.size, noise_.size, noise_.layers, noise_.texels.data(), true)) {
+      noiseTexture_(uploadTextureArray8(noise_.size, noise_.size, noise_.layers, 1, noise_.texels.data(), true)) {
     glBindVertexArray(vao_.id());
     glBindBuffer(GL_ARRAY_BUFFER, buffer_.id());
     const auto location = static_cast<GLuint>(catalog::attributeLocation(programs_.catalog(), "a_fogBillboard"));

@@ -4,6 +4,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "prism/gl/draw_state.hpp"
@@ -17,6 +18,9 @@ namespace {
 
 constexpr int kStreakTextureUnit = 0;
 constexpr std::uint32_t kComputeGroupSize = 256;  // local_size_x of rain_init.comp and rain_update.comp
+constexpr std::uint32_t kCullBlock = 64 * 16;     // rain_cull.comp: local_size_x x RAIN_CULL_RUN particles
+// One DrawArraysIndirectCommand (count, instanceCount, first, baseInstance) per block and technique kind.
+constexpr std::size_t kDrawCommandBytes = 4 * sizeof(std::uint32_t);
 // The particles are written by compute and read as vertices, copied or read back.
 constexpr GLbitfield kParticleBarriers =
     GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT;
@@ -42,6 +46,7 @@ RainSystem::RainSystem(RainPrograms& programs, const RainParams& params, const g
     validate(params_);
     validateEye(eye);
     rate_ = rainRateFor(params_.intensity);
+    fastestFall_ = rate_.fallSpeed;
     wind_ = windVector(params_);
     center_ = cylinderCenter(params_, eye);
     shearHeight_ = shearHeight(params_, eye);
@@ -49,7 +54,11 @@ RainSystem::RainSystem(RainPrograms& programs, const RainParams& params, const g
 }
 
 std::size_t RainSystem::gpuBytes() const {
-    return particles_.bytes() + streakTextureBytes_;
+    return particleBytes() + streakTextureBytes_;
+}
+
+std::size_t RainSystem::particleBytes() const {
+    return particles_.bytes() + visible_.bytes() + drawCommands_.bytes();
 }
 
 void RainSystem::resize(std::uint32_t count) {
@@ -72,6 +81,8 @@ void RainSystem::resize(std::uint32_t count) {
         capacity_ = static_cast<std::uint32_t>(wanted);
         pointsVao_.reset();
         instancedVao_.reset();
+        visible_.reset();
+        drawCommands_.reset();
     }
     if (count > count_) seedRange(count_, count);
     count_ = count;
@@ -125,6 +136,7 @@ void RainSystem::setIntensity(float intensity) {
     validateIntensity(intensity);
     params_.intensity = intensity;
     rate_ = rainRateFor(intensity);
+    fastestFall_ = std::max(fastestFall_, rate_.fallSpeed);  // drops keep their speed until they respawn
     resize(particleCountFor(params_));
 }
 
@@ -137,14 +149,15 @@ void RainSystem::setWind(const WindParams& wind) {
 void RainSystem::ensureStreakTexture() {
     if (streakTexture_) return;
     const StreakTextureArray t = generateStreakTextures();
-    streakTexture_ = uploadR8TextureArray(t.width, t.height, t.layers, t.texels.data(), false);
-    streakTextureBytes_ = t.bytes();
+    const std::vector<std::uint8_t> packed = packStreakBinCorners(t);
+    streakTexture_ = uploadTextureArray8(t.width, t.height, t.layers, 4, packed.data(), false);
+    streakTextureBytes_ = packed.size();
 }
 
-void RainSystem::bindAttributes(const gl::VertexArray& vao, unsigned divisor) {
+void RainSystem::bindAttributes(const gl::VertexArray& vao, const gl::Buffer& source, unsigned divisor) {
     const auto& c = programs_.catalog();
     glBindVertexArray(vao.id());
-    glBindBuffer(GL_ARRAY_BUFFER, particles_.id());
+    glBindBuffer(GL_ARRAY_BUFFER, source.id());
     const std::pair<const char*, std::size_t> attributes[] = {
         {"a_rainSeed", offsetof(Particle, seed)},
         {"a_rainPosition", offsetof(Particle, position)},
@@ -160,18 +173,11 @@ void RainSystem::bindAttributes(const gl::VertexArray& vao, unsigned divisor) {
     glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
-void RainSystem::draw(const RainDrawInputs& in) {
-    if (count_ == 0) return;
-    const gl::ScopedDrawState keep;  // the caller's blend, depth, bindings and unit, put back on return
-    ensureStreakTexture();
-    const bool instanced = in.technique == StreakTechnique::Instanced;
-    gl::VertexArray& vao = instanced ? instancedVao_ : pointsVao_;
-    if (!vao) {
-        vao = gl::VertexArray::create();
-        bindAttributes(vao, instanced ? 1u : 0u);
-    }
-    gl::Program& p = programs_.get(techniqueShader(in.technique), fogVariant(in.fog));
-    p.use();
+std::uint32_t RainSystem::cullBlocks() const {
+    return (count_ + kCullBlock - 1) / kCullBlock;
+}
+
+void RainSystem::setStreakUniforms(gl::Program& p, const RainDrawInputs& in) const {
     const StreakStyle& s = params_.streaks;
     p.set(rain_shaders::contract::u_view, in.camera.view());
     p.set(rain_shaders::contract::u_projection, in.camera.projection(in.aspect));
@@ -184,6 +190,50 @@ void RainSystem::draw(const RainDrawInputs& in) {
     p.set(rain_shaders::contract::u_viewportHeight, static_cast<float>(std::max(in.viewportHeight, 1)));
     p.set(rain_shaders::contract::u_streakOpacity, s.opacity);
     p.set(rain_shaders::contract::u_streakFalloff, s.falloffDistance);
+    p.set(rain_shaders::contract::u_lod, glm::vec2(static_cast<float>(params_.lodRings), params_.lodFalloff));
+}
+
+void RainSystem::cullToView(const RainDrawInputs& in) {
+    if (!visible_) {
+        const std::uint64_t blocks = (std::uint64_t{capacity_} + kCullBlock - 1) / kCullBlock;
+        visible_ =
+            gl::Buffer::create(static_cast<std::size_t>(blocks * kCullBlock) * sizeof(Particle), GL_DYNAMIC_DRAW);
+        drawCommands_ = gl::Buffer::create(static_cast<std::size_t>(2 * blocks) * kDrawCommandBytes, GL_DYNAMIC_DRAW);
+        pointsVao_.reset();
+        instancedVao_.reset();
+    }
+    gl::Program& cull = programs_.get("rain_cull");
+    cull.use();
+    setStreakUniforms(cull, in);
+    cull.set(rain_shaders::rain_cull::u_particleCount, count_);
+    // The longest streak: a drop's speed is at most 1.1 x the fall speed it respawned with, plus its
+    // sideways jitter (up to `jitter` on each horizontal axis), plus the wind; 1 % margin for rounding.
+    const float fastest = 1.1f * fastestFall_ + std::sqrt(2.0f) * params_.jitter + glm::length(wind_);
+    cull.set(rain_shaders::rain_cull::u_maxStreakLength, 1.01f * fastest * params_.streaks.exposure);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, particles_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, visible_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, drawCommands_.id());
+    gl::dispatchGroups(cullBlocks());
+    glMemoryBarrier(GL_COMMAND_BARRIER_BIT | kParticleBarriers);
+    for (GLuint binding = 0; binding < 3; ++binding) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, 0);
+}
+
+void RainSystem::draw(const RainDrawInputs& in) {
+    if (count_ == 0) return;
+    const gl::ScopedDrawState keep;  // the caller's blend, depth, bindings and unit, put back on return
+    ensureStreakTexture();
+    if (in.cullToView) cullToView(in);
+    const bool culled = in.cullToView;
+    const bool instanced = in.technique == StreakTechnique::Instanced;
+    gl::VertexArray& vao = instanced ? instancedVao_ : pointsVao_;
+    if (!vao || vaoReadsVisible_[instanced] != culled) {
+        vao = gl::VertexArray::create();
+        bindAttributes(vao, culled ? visible_ : particles_, instanced ? 1u : 0u);
+        vaoReadsVisible_[instanced] = culled;
+    }
+    gl::Program& p = programs_.get(techniqueShader(in.technique), fogVariant(in.fog));
+    p.use();
+    setStreakUniforms(p, in);
     p.set(rain_shaders::contract::u_streakTexture, kStreakTextureUnit);
     p.set(rain_shaders::contract::u_ambient, in.lights.ambient);
     p.set(rain_shaders::contract::u_sunDirection, glm::normalize(in.lights.sun.direction));
@@ -204,19 +254,45 @@ void RainSystem::draw(const RainDrawInputs& in) {
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     glBlendEquation(GL_FUNC_ADD);  // premultiplied "over": nothing else may be left here
+    if (in.technique == StreakTechnique::PointSprites) glEnable(GL_PROGRAM_POINT_SIZE);
     p.reportUnsetUniforms();
     glBindVertexArray(vao.id());
-    switch (in.technique) {
-        case StreakTechnique::GeometryShader: glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count_)); break;
-        case StreakTechnique::Instanced:
-            glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(count_));
-            break;
-        case StreakTechnique::PointSprites:
-            glEnable(GL_PROGRAM_POINT_SIZE);
-            glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count_));
-            break;
-    }
+    if (culled)
+        drawVisible(in.technique);
+    else
+        drawAll(in.technique);
     gl::throwIfGlError("rain: drawing " + std::string(techniqueName(in.technique)));
+}
+
+void RainSystem::drawAll(StreakTechnique technique) const {
+    if (technique == StreakTechnique::Instanced)
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(count_));
+    else
+        glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count_));
+}
+
+void RainSystem::drawVisible(StreakTechnique technique) const {
+    const std::uint32_t blocks = cullBlocks();
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, drawCommands_.id());
+    if (technique == StreakTechnique::Instanced)
+        glMultiDrawArraysIndirect(GL_TRIANGLE_STRIP, reinterpret_cast<const void*>(blocks * kDrawCommandBytes),
+                                  static_cast<GLsizei>(blocks), 0);
+    else
+        glMultiDrawArraysIndirect(GL_POINTS, nullptr, static_cast<GLsizei>(blocks), 0);
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+}
+
+std::uint32_t RainSystem::visibleCount() const {
+    if (!drawCommands_ || count_ == 0) return count_;
+    std::vector<std::uint32_t> commands(4 * static_cast<std::size_t>(cullBlocks()));
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glBindBuffer(GL_COPY_READ_BUFFER, drawCommands_.id());
+    glGetBufferSubData(GL_COPY_READ_BUFFER, 0, static_cast<GLsizeiptr>(commands.size() * sizeof(std::uint32_t)),
+                       commands.data());
+    glBindBuffer(GL_COPY_READ_BUFFER, 0);
+    std::uint32_t visible = 0;
+    for (std::size_t b = 0; b < commands.size(); b += 4) visible += commands[b];
+    return visible;
 }
 
 std::vector<Particle> RainSystem::readParticles() const {

@@ -86,6 +86,25 @@ double StreakTextureArray::layerMean(int layer) const {
     return sum / (static_cast<double>(width) * height);
 }
 
+std::vector<std::uint8_t> packStreakBinCorners(const StreakTextureArray& t) {
+    const std::size_t layerTexels = static_cast<std::size_t>(t.width) * static_cast<std::size_t>(t.height);
+    std::vector<std::uint8_t> packed(4 * layerTexels * static_cast<std::size_t>(t.layers));
+    for (int osc = 0; osc < kOscillationTypes; ++osc)
+        for (int theta = 0; theta < kThetaBins; ++theta)
+            for (int phi = 0; phi < kPhiBins; ++phi) {
+                const int theta1 = std::min(theta + 1, kThetaBins - 1);
+                const int phi1 = std::min(phi + 1, kPhiBins - 1);
+                const int corners[4] = {streakLayer(osc, theta, phi), streakLayer(osc, theta, phi1),
+                                        streakLayer(osc, theta1, phi), streakLayer(osc, theta1, phi1)};
+                const std::size_t layer = static_cast<std::size_t>(streakLayer(osc, theta, phi));
+                for (std::size_t texel = 0; texel < layerTexels; ++texel)
+                    for (int c = 0; c < 4; ++c)
+                        packed[4 * (layer * layerTexels + texel) + static_cast<std::size_t>(c)] =
+                            t.texels[static_cast<std::size_t>(corners[c]) * layerTexels + texel];
+            }
+    return packed;
+}
+
 StreakTextureArray generateStreakTextures(int width, int height) {
     if (width < 2 || width > 1024 || height < 2 || height > 1024)
         throw std::invalid_argument("rain: streak texture size must be 2..1024 in each direction (got " +

@@ -1,17 +1,20 @@
-// Uploading the rain system's R8 texture arrays (see texture_arrays.hpp).
+// Uploading the rain system's 8-bit texture arrays (see texture_arrays.hpp).
 #include "texture_arrays.hpp"
 
 #include "prism/gl/gl.hpp"
 
 namespace prism::rain {
 
-gl::Texture uploadR8TextureArray(int width, int height, int layers, const std::uint8_t* texels, bool repeat) {
+gl::Texture uploadTextureArray8(int width, int height, int layers, int channels, const std::uint8_t* texels,
+                                bool repeat) {
+    const bool rgba = channels == 4;
     gl::Texture texture = gl::Texture::create();
     glBindTexture(GL_TEXTURE_2D_ARRAY, texture.id());
     GLint alignment = 4;
     glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_R8, width, height, layers, 0, GL_RED, GL_UNSIGNED_BYTE, texels);
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, rgba ? GL_RGBA8 : GL_R8, width, height, layers, 0, rgba ? GL_RGBA : GL_RED,
+                 GL_UNSIGNED_BYTE, texels);
     glPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);

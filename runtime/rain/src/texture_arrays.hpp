@@ -1,4 +1,4 @@
-// Uploading the rain system's procedural R8 texture arrays (streaks, fog noise). Internal
+// Uploading the rain system's procedural 8-bit texture arrays (streaks, fog noise). Internal
 // to prism_rain.
 #pragma once
 
@@ -8,8 +8,9 @@
 
 namespace prism::rain {
 
-// An R8 2D texture array of `layers` layers of width x height texels, linearly filtered,
-// clamped or repeated; throws gl::GlError when GL rejects it.
-gl::Texture uploadR8TextureArray(int width, int height, int layers, const std::uint8_t* texels, bool repeat);
+// An 8-bit unorm 2D texture array (R8 for channels 1, RGBA8 for 4) of `layers` layers of width x height
+// texels, linearly filtered, clamped or repeated; throws gl::GlError when GL rejects it.
+gl::Texture uploadTextureArray8(int width, int height, int layers, int channels, const std::uint8_t* texels,
+                                bool repeat);
 
 }  // namespace prism::rain

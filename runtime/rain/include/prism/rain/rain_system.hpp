@@ -14,9 +14,9 @@
 //     std::vector<prism::rain::Particle> ps = rain.readParticles();  // tests
 //
 // Needs a current GL >= 4.3 context (compute shaders) for its whole life; throws
-// gl::ComputeUnavailableError otherwise. Memory: 48 bytes per particle (the simulation
-// buffer is also the vertex buffer of every technique) plus the 450-layer streak
-// texture array (460 KB).
+// gl::ComputeUnavailableError otherwise. Memory: 48 bytes per particle in the simulation buffer, as
+// many again for the culled copy the techniques draw from (made at the first culled draw), plus the
+// 450-layer streak texture array (1.8 MB, RGBA8).
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -55,6 +55,10 @@ struct RainDrawInputs {
     RainLights lights;
     const view::Fog* fog = nullptr;  // non-null: the FOG=1 variant
     StreakTechnique technique = StreakTechnique::GeometryShader;
+    // true: a compute pass (rain_cull.comp) first keeps only the particles whose streak can reach a pixel
+    // of this view, in their order, and the technique draws those (indirect); false: every particle
+    // goes through the vertex stages. The image is the same either way.
+    bool cullToView = true;
 };
 
 class RainSystem {
@@ -82,9 +86,14 @@ class RainSystem {
     glm::vec3 center() const { return center_; }
     float fallSpeed() const { return rate_.fallSpeed; }
     std::uint64_t steps() const { return steps_; }
-    // Bytes of GPU memory: particle buffer + streak texture (0 before the first particle).
+    // Bytes of GPU memory: particle buffer + culled copy + draw commands + streak texture (0 before the
+    // first particle); particleBytes() without the texture.
     std::size_t gpuBytes() const;
+    std::size_t particleBytes() const;
     unsigned particleBuffer() const { return particles_.id(); }
+    // Particles the last culled draw kept (read back from its draw commands; tests, benchmarks);
+    // particleCount() before any culled draw.
+    std::uint32_t visibleCount() const;
 
     // The first particleCount() particles, read back from the GPU.
     std::vector<Particle> readParticles() const;
@@ -93,11 +102,17 @@ class RainSystem {
     void resize(std::uint32_t count);
     void seedRange(std::uint32_t first, std::uint32_t end);
     void ensureStreakTexture();
-    void bindAttributes(const gl::VertexArray& vao, unsigned divisor);
+    void bindAttributes(const gl::VertexArray& vao, const gl::Buffer& source, unsigned divisor);
+    std::uint32_t cullBlocks() const;
+    void setStreakUniforms(gl::Program& p, const RainDrawInputs& in) const;
+    void cullToView(const RainDrawInputs& in);
+    void drawAll(StreakTechnique technique) const;
+    void drawVisible(StreakTechnique technique) const;
 
     RainPrograms& programs_;
     RainParams params_;
     RainRate rate_;
+    float fastestFall_ = 0.0f;  // m/s: the fastest fall speed any drop may still have (culling bound)
     glm::vec3 wind_{0.0f};
     glm::vec3 center_{0.0f};
     float shearHeight_ = 0.0f;
@@ -105,8 +120,11 @@ class RainSystem {
     std::uint32_t capacity_ = 0;
     std::uint64_t steps_ = 0;
     gl::Buffer particles_;
-    gl::VertexArray pointsVao_;     // GS and point sprites: one vertex per particle
-    gl::VertexArray instancedVao_;  // instanced quads: divisor 1
+    gl::VertexArray pointsVao_;                 // GS and point sprites: one vertex per particle
+    gl::VertexArray instancedVao_;              // instanced quads: divisor 1
+    bool vaoReadsVisible_[2] = {false, false};  // [instanced]: the VAO reads visible_, not particles_
+    gl::Buffer visible_;       // rain_cull.comp's output: the particles this view needs, per block in order
+    gl::Buffer drawCommands_;  // its indirect commands: points (GS, sprites) per block, then instanced
     gl::Texture streakTexture_;
     std::size_t streakTextureBytes_ = 0;
 };

@@ -80,6 +80,13 @@ struct StreakTextureArray {
 };
 
 // Throws std::invalid_argument for sizes outside 2..1024.
+// The same array packed for one texture fetch per light (rainStreakTexel in
+// modules/rain/streak_lighting.glsl): RGBA8, layer (oscillation, theta bin b, phi bin c) holds
+// the R8 layers (b, c), (b, c + 1), (b + 1, c), (b + 1, c + 1) in R, G, B, A, the neighbours
+// clamped to the last bin, so a linearly filtered fetch gives the four corners of the bilinear
+// blend between bins exactly as four R8 fetches did. width x height x layers x 4 bytes.
+std::vector<std::uint8_t> packStreakBinCorners(const StreakTextureArray& t);
+
 StreakTextureArray generateStreakTextures(int width = 16, int height = 64);
 
 }  // namespace prism::rain
