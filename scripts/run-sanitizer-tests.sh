@@ -56,10 +56,12 @@ ENDURANCE='water\.MassLedger\..*|water\.WaterGlTest\.GpuMassLedgerHoldsOver10000
 ENDURANCE+='water\.FastCpuStep\.IsBitIdenticalToTheFirstStepForEveryThreadCount|SceneCli\.render_diffraction_cd|'
 ENDURANCE+='ExampleScenes/SceneGolden\.MatchesTheGoldenImage/"(diffraction_cd|puddles_closeup)"|'
 ENDURANCE+='draw_state\.DrawStateTest\.RainAfterEveryOtherSystemMatchesRainAlone|'
-# The real corpus (about 125 programs of public codebases, each also run through glslc, spirv-val and
-# glslangValidator: most of its time is theirs) is a differential test of verdicts and lines, which ASan does
-# not change; the seed corpus's vk_* cases run the same paths of Prism (ES compute, per-stage linking, layout
-# rules, vertex-only and mesh programs) in this tier, and the fuzz tier runs them under ASan too.
-ENDURANCE+='Programs/ReferenceCorpusRealCode\..*'
+# The real corpus (about 125 programs of public codebases, each also run through glslc, spirv-val,
+# spirv-cross and glslangValidator: most of its time is theirs) is a differential test of verdicts, lines and
+# reflection, which ASan does not change, and so is compiling the block structs of every corpus program; the
+# seed corpus's vk_* cases and the BlockStructs tests run the same paths of Prism (ES compute, per-stage
+# linking, layout rules, vertex-only and mesh programs, reflection, structs) in this tier, and the fuzz tier
+# runs them under ASan too.
+ENDURANCE+='Programs/ReferenceCorpusRealCode\..*|ReferenceCorpusChecks\.BlockStructsOfEveryAcceptedVulkanProgramCompile'
 ctest --test-dir "$BUILD_DIR" -L '^(unit|gl)$' -E "^($NOT_BUILT|$ENDURANCE)\$" --output-on-failure -j "$(nproc)" \
   --timeout 900 "$@"

@@ -131,7 +131,9 @@ class StructWriter {
         if (!emitted_.insert(name).second) return;  // a struct type that two members share
         out_ << "struct " << name << " {  // " << s.name << ", " << s.size << " bytes\n"
              << body.str() << "};\n"
-             << "static_assert(sizeof(" << name << ") == " << roundUp(s.size, align) << ");\n"
+             << (s.size == 0
+                     ? "static_assert(std::is_empty_v<" + name + ">);  // the fixed part is empty\n"
+                     : "static_assert(sizeof(" + name + ") == " + std::to_string(roundUp(s.size, align)) + ");\n")
              << asserts.str();
     }
 

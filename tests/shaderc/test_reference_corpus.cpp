@@ -276,6 +276,49 @@ TEST(ReferenceCorpusChecks, SamplersLeftAtLowpNeedAPrecisionForTheirType) {
 
 // spirv-val's layout options come from the module: glslc's SPIR-V of a scalar-layout stage of the corpus names
 // GL_EXT_scalar_block_layout, fails spirv-val without --scalar-block-layout and passes with it.
+// The C++ structs of every block of every Vulkan program of both corpora that Prism accepts
+// (the corpus tests judge which): each program's header written, then all of them compiled
+// together, so each struct's static_asserts on sizeof and offsetof hold against the compiler.
+TEST(ReferenceCorpusChecks, BlockStructsOfEveryAcceptedVulkanProgramCompile) {
+    const prism::test::ScratchDir out("corpus-structs");
+    std::string includes, refused;
+    int headers = 0;
+    const auto writeHeader = [&](const fs::path& dir, const std::string& name) {
+        const Case c = loadCase(dir / "case.json");
+        if (c.client != "vulkan") return;
+        std::vector<std::string> args = {PRISM_SHADERC_EXE};
+        for (const auto& a : prism::test::corpus::prismArguments(c))
+            if (a != "--check") args.push_back(a);
+        const std::string header = (out.path() / ("c" + std::to_string(headers) + ".hpp")).string();
+        args.insert(args.end(),
+                    {"--cache-dir", "none", "-o", header, "--namespace", "corpus::c" + std::to_string(headers)});
+        const auto r = runCommand(args, {.workDir = dir.string(), .mergeStderr = true});
+        if (r.exitCode != 0) {
+            refused += name + " ";
+            return;
+        }
+        includes += "#include \"" + header + "\"\n";
+        ++headers;
+    };
+    for (const auto& name : caseNames()) writeHeader(kCorpus / name, name);
+    for (const auto& name : realCaseNames()) writeHeader(kRealCorpus / name, name);
+    EXPECT_GE(headers, 90) << "Vulkan programs Prism refused: " << refused;
+    const auto all = out.path() / "all_blocks.cpp";
+    prism::test::writeFile(all, includes);
+    const auto cc =
+        runCommand({"c++", "-std=c++20", "-fsyntax-only", "-I", PRISM_SOURCE_DIR "/shaderc_tool/include", all.string()},
+                   {.workDir = {}, .mergeStderr = true});
+    ASSERT_EQ(cc.exitCode, 0) << cc.out;
+    int asserts = 0;
+    for (int i = 0; i < headers; ++i) {
+        const auto h = prism::test::readFile(out.path() / ("c" + std::to_string(i) + ".hpp"));
+        for (auto at = h.find("static_assert(offsetof"); at != std::string::npos;
+             at = h.find("static_assert(offsetof", at + 1))
+            ++asserts;
+    }
+    EXPECT_GE(asserts, 500) << "the corpus's blocks have fewer member checks than expected";
+}
+
 TEST(ReferenceCorpusChecks, ScalarLayoutStageGetsSpirvValsScalarOption) {
     const fs::path dir = kRealCorpus / "nvpro_vk_mini_path_tracer/source/vk_mini_path_tracer";
     const prism::test::ScratchDir out("corpus-scalar");

@@ -1,6 +1,8 @@
 // Helpers of the C++ structs that a Vulkan-client catalogue's header declares for its blocks
 // (docs/vulkan.md, "Block structs"): an array element whose stride in the block is larger than
-// the element (a float array in a std140 block: 16 bytes apart) is a Padded<T, Stride>.
+// the element (a float array in a std140 block: 16 bytes apart) is a Padded<T, Stride>. A
+// storage block that holds only a runtime array has an empty fixed part: its struct is empty,
+// checked with std::is_empty_v, since C++ gives every struct at least one byte.
 //
 // Usage (snippet: examples/snippets/catalog_block_struct.cpp):
 //
@@ -11,6 +13,7 @@
 #pragma once
 
 #include <cstddef>
+#include <type_traits>
 
 namespace prism::catalog {
 
