@@ -16,6 +16,7 @@
 #include <tuple>
 
 #include "prism/hash/content_hash.hpp"
+#include "spirv_words.hpp"
 
 namespace prism::shaderc {
 namespace {
@@ -112,31 +113,7 @@ spvtools::SpirvTools& toolsFor(SpirvEnv env) {
 namespace {
 
 constexpr std::uint32_t kOpSourceExtension = 4, kOpName = 5, kOpString = 7, kOpLine = 8, kOpTypeVoid = 19,
-                        kOpFunction = 54, kOpFunctionEnd = 56, kOpDecorate = 71, kOpNoLine = 317, kHeaderWords = 5;
-
-std::string literalString(std::span<const std::uint32_t> operands) {
-    std::string s;
-    for (auto word : operands)
-        for (int byte = 0; byte < 4; ++byte) {
-            const char c = static_cast<char>((word >> (8 * byte)) & 0xFF);
-            if (c == '\0') return s;
-            s += c;
-        }
-    return s;
-}
-
-// Calls `visit(opcode, operands, index)` for each instruction (index from 1, as
-// SPIRV-Tools counts them in its messages' position) until it returns false.
-template <class Visit>
-void forEachInstruction(std::span<const std::uint32_t> words, Visit visit) {
-    std::size_t index = 0;
-    for (std::size_t at = kHeaderWords; at < words.size();) {
-        const std::uint32_t count = words[at] >> 16;
-        if (count == 0 || at + count > words.size()) return;
-        if (!visit(words[at] & 0xFFFF, words.subspan(at + 1, count - 1), ++index)) return;
-        at += count;
-    }
-}
+                        kOpFunction = 54, kOpFunctionEnd = 56, kOpDecorate = 71, kOpNoLine = 317;
 
 // The OpName of each id the instruction at `index` names: its result id and its id operands
 // (any operand word that is a named id: literals that collide with an id name it too, rarely).

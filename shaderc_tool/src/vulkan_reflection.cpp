@@ -10,6 +10,7 @@
 #include <tuple>
 
 #include "contract.hpp"
+#include "spirv_words.hpp"
 
 namespace prism::shaderc {
 namespace {
@@ -55,10 +56,7 @@ std::string glslTypeName(spvc_type t) {
 using ConstantValues = std::map<SpvId, std::uint32_t>;
 ConstantValues constantValues(std::span<const std::uint32_t> words) {
     ConstantValues v;
-    for (std::size_t at = 5; at < words.size();) {
-        const std::uint32_t count = words[at] >> 16, op = words[at] & 0xFFFF;
-        if (count == 0 || at + count > words.size()) break;
-        const auto a = words.subspan(at + 1, count - 1);
+    forEachInstruction(words, [&](std::uint32_t op, std::span<const std::uint32_t> a, std::size_t) {
         if ((op == SpvOpConstant || op == SpvOpSpecConstant) && a.size() == 3) v[a[1]] = a[2];
         if (op == SpvOpSpecConstantOp && a.size() == 5 && v.count(a[3]) && v.count(a[4])) {
             const std::uint32_t x = v[a[3]], y = v[a[4]];
@@ -77,8 +75,8 @@ ConstantValues constantValues(std::span<const std::uint32_t> words) {
                 default: break;
             }
         }
-        at += count;
-    }
+        return true;
+    });
     return v;
 }
 
@@ -364,17 +362,6 @@ constexpr std::uint32_t kOpName = 5, kOpTypeBool = 20, kOpTypeInt = 21, kOpTypeF
 constexpr std::uint32_t kGlBool = 0x8B56, kGlInt = 0x1404, kGlUnsignedInt = 0x1405, kGlFloat = 0x1406,
                         kGlDouble = 0x140A;
 
-std::string literalString(std::span<const std::uint32_t> operands) {
-    std::string s;
-    for (auto word : operands)
-        for (int byte = 0; byte < 4; ++byte) {
-            const char c = static_cast<char>((word >> (8 * byte)) & 0xFF);
-            if (c == '\0') return s;
-            s += c;
-        }
-    return s;
-}
-
 struct SpirvModule {
     std::map<std::uint32_t, std::string> names;
     std::map<std::uint32_t, std::uint32_t> specIds, glTypes;
@@ -396,12 +383,10 @@ void readInstruction(std::uint32_t op, std::span<const std::uint32_t> a, SpirvMo
 
 void addSpecConstants(ProgramReflection& r, std::span<const std::uint32_t> words) {
     SpirvModule m;
-    for (std::size_t at = 5; at < words.size();) {  // past the 5-word header
-        const std::uint32_t count = words[at] >> 16;
-        if (count == 0 || at + count > words.size()) break;
-        readInstruction(words[at] & 0xFFFF, words.subspan(at + 1, count - 1), m);
-        at += count;
-    }
+    forEachInstruction(words, [&m](std::uint32_t op, std::span<const std::uint32_t> a, std::size_t) {
+        readInstruction(op, a, m);
+        return true;
+    });
     for (const auto& entry : m.specIds) {  // no structured binding: Clang 14 cannot capture one
         const std::uint32_t id = entry.first, specId = entry.second;
         const auto constant = m.constants.find(id);
