@@ -53,8 +53,12 @@ std::optional<std::pair<std::string, int>> rayTracingSlot(const InterfaceVariabl
     }
 }
 
+// A payload's type as the stages must agree on it: a struct by its members' types (the stages
+// may name their structs differently; SPIR-V types carry no names), with its array size.
 std::string dataShape(const InterfaceVariable& v) {
-    return glslTypeWithArray(v) + (v.structure.empty() ? "" : " { " + v.structure + "}");
+    if (v.memberTypes.empty()) return glslTypeWithArray(v);
+    const std::string array = v.arraySize == 0 ? "" : "[" + std::to_string(v.arraySize) + "]";
+    return "struct { " + v.memberTypes + "}" + array;
 }
 
 }  // namespace

@@ -77,6 +77,34 @@ TEST(VulkanRules, RayPayloadTypesThatDifferAreAnErrorAtBothLines) {
         << run.output;
 }
 
+TEST(VulkanRules, RayPayloadStructsMatchByMembersWhateverTheirNames) {
+    ScratchDir dir("vulkan-rules-payload-structs");
+    const std::string head = "#version 460\n#extension GL_EXT_ray_tracing : require\n";
+    dir.write("s/trace.rgen", head +
+                                  "layout(set = 0, binding = 0) uniform accelerationStructureEXT topLevel;\n"
+                                  "struct Payload { vec3 color; float distance; };\n"
+                                  "layout(location = 0) rayPayloadEXT Payload payload;\n"
+                                  "void main() { traceRayEXT(topLevel, 0u, 0xffu, 0u, 0u, 0u, vec3(0.0), 0.0, "
+                                  "vec3(0.0, 0.0, 1.0), 1.0, 0); }\n");
+    dir.write("s/trace.rmiss", head +
+                                   "struct MissData { vec3 sky; float t; };\n"
+                                   "layout(location = 0) rayPayloadInEXT MissData miss;\n"
+                                   "void main() { miss.sky = vec3(0.5); miss.t = -1.0; }\n");
+    const auto same = runShaderc("--client vulkan --check --cache-dir none s", dir.str());
+    EXPECT_EQ(same.exitCode, 0) << same.output;
+    dir.write("s/trace.rmiss", head +
+                                   "struct MissData { vec4 sky; float t; };\n"
+                                   "layout(location = 0) rayPayloadInEXT MissData miss;\n"
+                                   "void main() { miss.sky = vec4(0.5); miss.t = -1.0; }\n");
+    const auto differ = runShaderc("--client vulkan --check --cache-dir none s", dir.str());
+    EXPECT_EQ(differ.exitCode, 1) << differ.output;
+    EXPECT_NE(differ.output.find("s/trace.rmiss:4:"), std::string::npos) << differ.output;
+    EXPECT_NE(differ.output.find("as `struct { vec4; float; }` but the rgen stage declares it as `struct { vec3; "
+                                 "float; }`"),
+              std::string::npos)
+        << differ.output;
+}
+
 TEST(VulkanRules, MeshOutputsMeetFragmentInputsByLocationPerPrimitiveOnesIncluded) {
     const auto run = checkVulkan("vk_mesh_interface_mismatch", "tint.mesh tint.frag");
     EXPECT_EQ(run.exitCode, 1) << run.output;
