@@ -47,19 +47,26 @@ std::string glslTypeName(spvc_type t) {
     return rows > 1 ? prefix + "vec" + std::to_string(rows) : it->second.first;
 }
 
-// Array dimensions, outermost first (SPIRV-Cross keeps the outermost last); kUnboundedArray for
-// `[]`; a size given by a specialisation constant is its default.
 // The value of every 32-bit integer constant of a module at its specialisation constants'
 // defaults: OpConstant, OpSpecConstant and the integer arithmetic of OpSpecConstantOp (an array
 // sized `MAX_LOD + 1`), which SPIRV-Cross's C API gives no value for. SPIR-V defines each id
 // before its use, so one pass in order evaluates them all.
 using ConstantValues = std::map<SpvId, std::uint32_t>;
+// A division of the constants that traps (by zero, or INT_MIN / -1) is an error here, before
+// SPIRV-Cross, which evaluates it too, divides.
 ConstantValues constantValues(std::span<const std::uint32_t> words) {
     ConstantValues v;
     forEachInstruction(words, [&](std::uint32_t op, std::span<const std::uint32_t> a, std::size_t) {
         if ((op == SpvOpConstant || op == SpvOpSpecConstant) && a.size() == 3) v[a[1]] = a[2];
         if (op == SpvOpSpecConstantOp && a.size() == 5 && v.count(a[3]) && v.count(a[4])) {
             const std::uint32_t x = v[a[3]], y = v[a[4]];
+            const bool division =
+                a[2] == SpvOpUDiv || a[2] == SpvOpSDiv || a[2] == SpvOpUMod || a[2] == SpvOpSRem || a[2] == SpvOpSMod;
+            const bool signedDivision = a[2] == SpvOpSDiv || a[2] == SpvOpSRem || a[2] == SpvOpSMod;
+            if (division && (y == 0 || (signedDivision && x == 0x80000000u && y == 0xFFFFFFFFu)))
+                throw std::runtime_error(
+                    "a constant expression divides by zero or overflows (INT_MIN / -1) at the specialisation "
+                    "constants' defaults; give them defaults that keep it defined");
             switch (a[2]) {
                 case SpvOpIAdd: v[a[1]] = x + y; break;
                 case SpvOpISub: v[a[1]] = x - y; break;

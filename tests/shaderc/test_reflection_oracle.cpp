@@ -94,3 +94,28 @@ TEST(ReflectionJson, NeedsSpirvAndCoversTheSpirvTarget) {
 }
 
 }  // namespace
+
+namespace {
+
+// An array sized by a constant division that traps at the specialisation constants' defaults
+// (INT_MIN / -1, or by zero) is a clear error; SPIRV-Cross would divide and crash the tool.
+TEST(ReflectionJson, ATrappingConstantDivisionIsAnErrorNotACrash) {
+    ScratchDir dir("reflection-trap");
+    for (const std::string divisor : {"-1", "0"}) {
+        dir.write("h.comp",
+                  "#version 450\nlayout(local_size_x = 1) in;\n"
+                  "layout(constant_id = 0) const int A = -2147483647 - 1;\n"
+                  "layout(constant_id = 1) const int B = " +
+                      divisor +
+                      ";\nlayout(std430, binding = 0) buffer Out { uint v[A / B]; } o;\n"
+                      "void main() { o.v[0] = 1u; }\n");
+        const auto run = prism::test::runShaderc("--client vulkan --check --cache-dir none h.comp", dir.str());
+        EXPECT_EQ(run.exitCode, 1) << divisor << "\n" << run.output;
+        EXPECT_NE(run.output.find("h.comp: error: cannot reflect the SPIR-V: a constant expression divides by zero or "
+                                  "overflows (INT_MIN / -1)"),
+                  std::string::npos)
+            << run.output;
+    }
+}
+
+}  // namespace
