@@ -1,6 +1,7 @@
-# Installs prism-shaderc, the catalogue types, the modules with their binding contract
-# and the CMake helper, so that another project can `find_package(Prism)` and call
-# prism_add_shaders(). Prism_MODULE_DIR and Prism_CONTRACT point at the installed modules.
+# Installs prism-shaderc, the catalogue types, the modules with their binding contract,
+# the web runtime (prism_web.js) and the CMake helper, so that another project can
+# `find_package(Prism)` and call prism_add_shaders(). Prism_MODULE_DIR and Prism_CONTRACT point
+# at the installed modules, Prism_WEB_RUNTIME at the installed prism_web.js.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
@@ -10,6 +11,7 @@ install(TARGETS prism-shaderc prism_catalog prism_io prism_hash prism_shaderc_li
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/shaderc_tool/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/modules/ DESTINATION ${CMAKE_INSTALL_DATADIR}/prism/modules)
+install(FILES ${PROJECT_SOURCE_DIR}/scripts/web/prism_web.js DESTINATION ${CMAKE_INSTALL_DATADIR}/prism/web)
 
 set(PRISM_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/Prism)
 install(EXPORT PrismTargets NAMESPACE Prism:: DESTINATION ${PRISM_CMAKE_DIR})

@@ -8,7 +8,9 @@
 # build graph is read but not built, has at most MAX_LEAN_STEPS steps for a consumer that
 # links Prism::render, no Prism program, no object of a system it does not link (rain,
 # water, diffraction, blue noise, scene), no install rule of Prism's, and the tool's code
-# at -Og (PRISM_SHADERC_OPT_FLAGS) while the runtime keeps the build type's. Both builds check
+# at -Og (PRISM_SHADERC_OPT_FLAGS) while the runtime keeps the build type's; and that
+# `cmake --preset install` has at most MAX_INSTALL_STEPS steps, all of them for what installs,
+# prism_web.js included. Both builds copy Prism_WEB_RUNTIME. Both builds check
 # the dependency graph through file timestamps:
 #   - a rebuild with nothing changed does nothing;
 #   - touching tint.glsl (read only by lit_shaders) re-runs prism-shaderc for lit_shaders
@@ -68,6 +70,7 @@ PREFIX=$WORK/prefix
 # catalogues and three programs); without Prism's EXCLUDE_FROM_ALL it is 98 (every library
 # and catalogue of Prism's).
 MAX_LEAN_STEPS=50
+MAX_INSTALL_STEPS=100  # issue 37, item 8
 
 FAILURES=0
 pass() { echo "PASS: $*"; }
@@ -131,6 +134,27 @@ run_consumer() {
     fail "$label: prism_consumer output (expected lit $lit_s/$lit_m, plain $plain_s/$plain_m shaders/modules)"
     show_log "$log"; return 1
   fi
+  # Prism_WEB_RUNTIME (FetchContent: the source tree's; find_package: the installed copy).
+  check "$label: Prism_WEB_RUNTIME is prism_web.js (the consumer copied it to web/)" \
+    cmp -s "$bld/web/prism_web.js" "$SOURCE/scripts/web/prism_web.js"
+}
+
+# check_install_preset: the configure line docs/using-prism.md gives for an install
+# (`cmake --preset install`) builds only what installs: at most MAX_INSTALL_STEPS steps, no
+# program, example, bench or test. Read from the build graph, not built.
+check_install_preset() {
+  local bld=$WORK/install-preset logs=$WORK/install-preset-logs
+  rm -rf "$bld" "$logs"; mkdir -p "$logs"
+  if ! step "$logs/configure.log" "$CMAKE" -S "$SOURCE" --preset install -B "$bld"; then
+    fail "install preset: configure"; show_log "$logs/configure.log"; return
+  fi
+  ninja -C "$bld" -t commands all >"$logs/commands.txt" 2>"$logs/commands.err"
+  local steps; steps=$(grep -c . "$logs/commands.txt")
+  check "install preset: $steps build steps (at most $MAX_INSTALL_STEPS)" \
+    test "$steps" -gt 0 -a "$steps" -le "$MAX_INSTALL_STEPS"
+  local extra; extra=$(grep -o -E "(^| |$SOURCE/)(apps|examples|bench|tests)/[^ ]*" "$logs/commands.txt" | head -n 3)
+  check "install preset: no program, example, bench or test in the graph${extra:+ (has: $extra)}" test -z "$extra"
+  check "install preset: installs prism_web.js" grep -q "prism_web.js" "$bld/cmake_install.cmake"
 }
 
 # check_generator <tag> <generator> <Prism's module dir> <how> <cmake args for Prism...>:
@@ -437,6 +461,7 @@ elif [ $installed = 1 ]; then
 fi
 [ $have_ninja = 1 ] && [ $installed = 1 ] && check_installed
 [ $have_ninja = 1 ] && check_lean
+[ $have_ninja = 1 ] && check_install_preset
 
 echo "consumer_build: $FAILURES failed check(s) in $SECONDS s"
 [ "$FAILURES" -eq 0 ]
