@@ -11,7 +11,8 @@
 #     [NAMESPACE <ns>]                  # default: the target's name (as a C identifier)
 #     [CONTRACT <json files...>]        # binding contract(s)
 #     [DEFINES NAME[=VALUE]...]         # -D for every stage
-#     [VARIANTS SHADER:NAME=VALUE,...]  # emit only these variants of those shaders
+#     [VARIANTS SHADER:NAME=VALUE,...]  # emit only these variants of those shaders; a value the
+#                                       # axis's #pragma lacks is a configure error listing its values
 #     [GLSL_VERSION <n>]                # default 330
 #     [TARGETS gl es300 spirv]          # --target: also produce these (docs/targets.md); default gl
 #     [WEB <file.js>]                   # --emit-web: the web catalogue for WebGL2 (needs es300 in TARGETS;
@@ -118,6 +119,75 @@ function(_prism_write_source_tree file ns base_dir module_dirs contracts defines
   file(CONFIGURE OUTPUT ${file} CONTENT "${text}" @ONLY)
 endfunction()
 
+# The values of each variant axis that the stage files and the .glsl directly in the module
+# dirs declare (`#pragma prism variant NAME [VALUE...]`; no values: 0 and 1), as variables
+# <prefix>_<NAME> in the caller and the axis names in <prefix>_AXES.
+function(_prism_declared_variant_axes prefix files module_dirs)
+  foreach(dir IN LISTS module_dirs)
+    file(GLOB modules ${dir}/*.glsl)
+    list(APPEND files ${modules})
+  endforeach()
+  set(axes "")
+  foreach(file IN LISTS files)
+    if(NOT EXISTS ${file})
+      continue()  # prism-shaderc reports a missing stage file at build time
+    elseif(IS_DIRECTORY ${file})
+      file(GLOB_RECURSE in_dir ${file}/*.vert ${file}/*.frag ${file}/*.geom ${file}/*.comp ${file}/*.tesc
+                               ${file}/*.tese ${file}/*.glsl)
+      set(files_here ${in_dir})
+    else()
+      set(files_here ${file})
+    endif()
+    foreach(f IN LISTS files_here)
+      file(STRINGS ${f} pragmas REGEX "^[ \t]*#[ \t]*pragma[ \t]+prism[ \t]+variant[ \t]")
+      foreach(line IN LISTS pragmas)
+        string(REGEX REPLACE "//.*$" "" line "${line}")
+        string(REGEX REPLACE "^[ \t]*#[ \t]*pragma[ \t]+prism[ \t]+variant[ \t]+" "" line "${line}")
+        string(REGEX MATCHALL "[^ \t]+" words "${line}")
+        list(POP_FRONT words axis)
+        if(NOT words)
+          set(words 0 1)
+        endif()
+        if(NOT axis IN_LIST axes)
+          list(APPEND axes ${axis})
+          set(${prefix}_${axis} ${words} PARENT_SCOPE)
+        endif()
+      endforeach()
+    endforeach()
+  endforeach()
+  set(${prefix}_AXES ${axes} PARENT_SCOPE)
+endfunction()
+
+# A VARIANTS entry SHADER:NAME=VALUE,... whose axis a stage or module declares with other
+# values is a configure error (CMake's call stack names the caller's line) listing the
+# values. An axis declared nowhere that CMake reads (say in a module included by a
+# relative path) is left to prism-shaderc, which reports it with "did you mean".
+function(_prism_check_variant_filters target filters files module_dirs)
+  if(NOT filters)
+    return()
+  endif()
+  _prism_declared_variant_axes(declared "${files}" "${module_dirs}")
+  foreach(filter IN LISTS filters)
+    if(NOT filter MATCHES "^([^:]+):(.+)$")
+      message(FATAL_ERROR "prism_add_shaders(${target}): VARIANTS ${filter}: expected SHADER:NAME=VALUE[,NAME=VALUE...] "
+                          "(SHADER may be *)")
+    endif()
+    string(REPLACE "," ";" assignments "${CMAKE_MATCH_2}")
+    foreach(assignment IN LISTS assignments)
+      if(NOT assignment MATCHES "^([A-Za-z_][A-Za-z0-9_]*)=(.+)$")
+        message(FATAL_ERROR "prism_add_shaders(${target}): VARIANTS ${filter}: '${assignment}' is not NAME=VALUE")
+      endif()
+      set(axis ${CMAKE_MATCH_1})
+      set(value ${CMAKE_MATCH_2})
+      if(axis IN_LIST declared_AXES AND NOT value IN_LIST declared_${axis})
+        list(JOIN declared_${axis} ", " values)
+        message(FATAL_ERROR "prism_add_shaders(${target}): VARIANTS ${filter}: the variant axis ${axis} takes "
+                            "${values}, not ${value}")
+      endif()
+    endforeach()
+  endforeach()
+endfunction()
+
 function(prism_add_shaders target)
   cmake_parse_arguments(PARSE_ARGV 1 PAS "" "HEADER;NAMESPACE;GLSL_VERSION;CLIENT;TARGET_ENV;WEB"
                         "SOURCES;PROGRAMS;MODULE_DIRS;DEFINES;CONTRACT;VARIANTS;TARGETS")
@@ -155,6 +225,8 @@ function(prism_add_shaders target)
   set(args -o ${header} --depfile ${depfile} --stamp ${stamp} --namespace ${PAS_NAMESPACE}
            --base-dir ${PROJECT_SOURCE_DIR})
   set(depends Prism::shaderc)
+  set(sources "")              # a function sees its caller's variables: start these empty
+  set(program_stage_files "")
   foreach(src IN LISTS PAS_SOURCES)
     get_filename_component(abs ${src} ABSOLUTE)
     list(APPEND sources ${abs})
@@ -170,6 +242,7 @@ function(prism_add_shaders target)
     foreach(file IN LISTS program_files)
       get_filename_component(abs ${file} ABSOLUTE)
       list(APPEND depends ${abs})
+      list(APPEND program_stage_files ${abs})
       string(APPEND program_arg ",${abs}")
     endforeach()
     string(SUBSTRING "${program_arg}" 1 -1 program_arg)
@@ -197,6 +270,7 @@ function(prism_add_shaders target)
   foreach(def IN LISTS PAS_DEFINES)
     list(APPEND args -D ${def})
   endforeach()
+  _prism_check_variant_filters(${target} "${PAS_VARIANTS}" "${sources};${program_stage_files}" "${module_dirs}")
   foreach(variant IN LISTS PAS_VARIANTS)
     list(APPEND args --variant ${variant})
   endforeach()

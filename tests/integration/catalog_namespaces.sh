@@ -3,7 +3,8 @@
 # a catalogue with no NAMESPACE takes its target's name as a C identifier (toon-shaders ->
 # toon_shaders), so two catalogues never share <ns>::kCatalog; a second catalogue given a
 # namespace another already has is a configure error naming both. And the source records
-# for hot reload (<header>_sources.hpp) hold what each catalogue was given.
+# for hot reload (<header>_sources.hpp) hold what each catalogue was given. A VARIANTS value
+# that its axis lacks is a configure error at the caller's line naming the values (issue 37).
 #
 # Usage: catalog_namespaces.sh --source <prism source> --work <scratch dir> [--cmake <cmake>]
 set -uo pipefail
@@ -50,6 +51,18 @@ already the namespace of the catalogue toon-shaders"; then
   pass "a second catalogue with namespace toon_shaders is a configure error naming both"
 else
   fail "the error for a second catalogue with namespace toon_shaders"; show_log "$WORK/same.log"
+fi
+# A VARIANTS value its axis does not have: a configure error at the caller's line, with the values.
+line=$(grep -n "prism_add_shaders(bad_variant_shaders" "$PROJECT/CMakeLists.txt" | cut -d: -f1)
+if "$CMAKE" -S "$PROJECT" -B "$WORK/bad-variant" -DPRISM_SOURCE_DIR="$SOURCE" -DBAD_VARIANT_VALUE=ON \
+     >"$WORK/bad-variant.log" 2>&1; then
+  fail "VARIANTS toon:LIGHTS=3 (the axis takes 1 2 4) configured"; show_log "$WORK/bad-variant.log"
+elif tr -s ' \n' ' ' <"$WORK/bad-variant.log" | grep -q "prism_add_shaders(bad_variant_shaders): VARIANTS \
+toon:FOG=1,LIGHTS=3: the variant axis LIGHTS takes 1, 2, 4, not 3" &&
+     grep -q "CMakeLists.txt:$line (prism_add_shaders)" "$WORK/bad-variant.log"; then
+  pass "a VARIANTS value the axis lacks is a configure error at CMakeLists.txt:$line listing the axis's values"
+else
+  fail "the error for VARIANTS toon:LIGHTS=3"; show_log "$WORK/bad-variant.log"
 fi
 echo "catalog_namespaces: $FAILURES failed check(s)"
 [ "$FAILURES" -eq 0 ]
