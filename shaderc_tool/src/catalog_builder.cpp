@@ -62,12 +62,26 @@ std::string namingPath(const std::string& canonical, const std::vector<std::stri
     return canonical;
 }
 
+// A module that an earlier include dir's module of the same name hides: `#include "name"`
+// never finds it, so it is not in the catalogue unless a stage includes it by another path.
+Diagnostic shadowedModuleWarning(const fs::path& hidden, const std::string& winner) {
+    Diagnostic d = makeError(hidden.string(), 0, 0,
+                             "module '" + hidden.filename().string() + "' is shadowed by " + winner +
+                                 " (an earlier include dir): #include \"" + hidden.filename().string() +
+                                 "\" finds that one, and this file is left out of the catalogue; rename one of "
+                                 "them, or drop one folder from the include dirs");
+    d.severity = Severity::Warning;
+    return d;
+}
+
 // Every .glsl directly in the include dirs (the first directory wins for a shadowed
-// name), plus every included file elsewhere (in their subfolders too).
+// name, and the hidden one is a warning), plus every included file elsewhere (in their
+// subfolders too).
 std::vector<ModuleFile> moduleFiles(const Options& o, const std::vector<std::string>& includedFiles,
-                                    const SourceReader& reader) {
+                                    const SourceReader& reader, DiagnosticSink& sink) {
     std::vector<ModuleFile> files;
-    std::set<std::string> canonicals, shadowed;
+    std::set<std::string> canonicals;
+    std::map<std::string, std::string> firstByName;  // file name -> the path that wins
     auto add = [&](const std::string& path) {
         auto canonical = reader.canonical(path);
         if (canonical && canonicals.insert(*canonical).second) files.push_back({path, *canonical});
@@ -78,8 +92,13 @@ std::vector<ModuleFile> moduleFiles(const Options& o, const std::vector<std::str
         for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator(); it.increment(ec))
             if (it->is_regular_file(ec) && it->path().extension() == ".glsl") found.push_back(it->path());
         std::sort(found.begin(), found.end());
-        for (const auto& f : found)
-            if (shadowed.insert(f.filename().string()).second) add(f.string());
+        for (const auto& f : found) {
+            const auto [winner, first] = firstByName.emplace(f.filename().string(), f.string());
+            if (first)
+                add(f.string());
+            else if (reader.canonical(f.string()) != reader.canonical(winner->second))
+                sink.report(shadowedModuleWarning(f, winner->second));
+        }
     }
     for (const auto& f : includedFiles) add(f);
     return files;
@@ -137,7 +156,7 @@ void reportScan(ModuleScanResult& scan, const std::string& identifier, bool used
 ModuleIndex indexModules(const Options& o, const std::vector<ShaderInput>& shaders,
                          const std::vector<std::string>& includedFiles, const std::set<std::string>& used,
                          const SourceReader& reader, DiagnosticSink& sink) {
-    const auto files = moduleFiles(o, includedFiles, reader);
+    const auto files = moduleFiles(o, includedFiles, reader, sink);
     const auto named = moduleNames(o, shaders, files, reader, sink);
     const ResolveOptions ro{o.includeDirs, o.defines, {}, o.baseDir};
     std::vector<ModuleScanResult> scans(named.size());

@@ -246,6 +246,27 @@ TEST(GlslangCompat, SameRelativePathUnderTwoIncludeDirsIsAWarningNotAnError) {
     EXPECT_NE(header.find("    util = 1,  // a/util.glsl"), std::string::npos);
 }
 
+// Issue 37, item 7: a user's module that an earlier include dir's module of the same name
+// hides is a warning naming both paths, even when nothing includes either.
+TEST(GlslangCompat, AShadowedModuleThatNothingIncludesIsAWarningNamingBothPaths) {
+    prism::test::ScratchDir dir("compat-shadowed");
+    dir.write("prism/fog.glsl", "// Prism's fog.\nfloat fog_prism() { return 1.0; }\n");
+    dir.write("mine/fog.glsl", "// The user's fog.\nfloat fog_mine() { return 2.0; }\n");
+    dir.write("mine/rim.glsl", "// The user's rim.\nfloat rim() { return 3.0; }\n");
+    dir.write("s/main.vert",
+              "#version 330 core\nin vec3 a_position;\nvoid main() { gl_Position = vec4(a_position, 1.0); }\n");
+    dir.write("s/main.frag", "#version 330 core\nout vec4 o;\nvoid main() { o = vec4(1.0); }\n");
+    const auto run = prism::test::runShaderc("-o h.hpp --base-dir . -I prism -I mine s", dir.str());
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("mine/fog.glsl: warning: module 'fog.glsl' is shadowed by prism/fog.glsl (an earlier "
+                              "include dir)"),
+              std::string::npos)
+        << run.output;
+    EXPECT_EQ(run.output.find("rim.glsl: warning"), std::string::npos) << run.output;  // not shadowed: no word
+    const std::string header = prism::test::readFile(dir.path() / "h.hpp");
+    EXPECT_EQ(header.find("mine/fog.glsl"), std::string::npos) << header;  // what the warning says: left out
+}
+
 TEST(GlslangCompat, ProblemsInUnusedModulesAreWarnings) {
     const auto run = prism::test::runShaderc("--check -I " + (kCompat / "unused_broken/modules").string() + " " +
                                              (kCompat / "unused_broken/shaders").string());
