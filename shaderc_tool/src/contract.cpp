@@ -16,20 +16,6 @@ namespace {
 
 using nlohmann::json;
 
-// Line and column of a byte offset, for JSON syntax errors.
-std::pair<int, int> lineColumnOf(const std::string& text, std::size_t offset) {
-    int line = 1, col = 1;
-    for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
-        if (text[i] == '\n') {
-            ++line;
-            col = 1;
-        } else {
-            ++col;
-        }
-    }
-    return {line, col};
-}
-
 struct Field {
     const std::string& file;
     std::vector<Diagnostic>& out;
@@ -73,7 +59,7 @@ constexpr int kMaxJsonDepth = 64;
 // The parsed document, or nullopt with the error (nesting too deep, or malformed JSON).
 std::optional<json> parseContractJson(const std::string& path, const std::string& text, std::vector<Diagnostic>& out) {
     if (const auto deep = io::firstTooDeep(text, kMaxJsonDepth)) {
-        auto [line, col] = lineColumnOf(text, *deep);
+        auto [line, col] = io::lineColumnAt(text, *deep);
         out.push_back(makeError(path, line, col,
                                 "contract JSON nested more than " + std::to_string(kMaxJsonDepth) +
                                     " levels deep (the limit); a contract needs 3"));
@@ -82,7 +68,7 @@ std::optional<json> parseContractJson(const std::string& path, const std::string
     try {
         return json::parse(text);
     } catch (const json::parse_error& e) {
-        auto [line, col] = lineColumnOf(text, e.byte > 0 ? e.byte - 1 : 0);
+        auto [line, col] = io::lineColumnAt(text, e.byte > 0 ? e.byte - 1 : 0);
         std::string what = e.what();
         auto pos = what.find("syntax error");
         out.push_back(makeError(path, line, col,

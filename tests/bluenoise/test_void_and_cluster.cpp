@@ -67,7 +67,7 @@ TEST(VoidAndCluster, Acceptance128FilteredErrorBeatsWhiteNoise) {
     const double blue = bn::filteredErrorSigma1(gray8(mask128()));
     const double white = bn::filteredErrorSigma1(bn::whiteNoiseImage(128, 128, 8, 99));
     EXPECT_LE(blue, 0.046);
-    EXPECT_NEAR(white, 0.114, 0.006);  // ANCHORS: white noise ~0.114
+    EXPECT_NEAR(white, 0.114, 0.006);  // docs/references.md, "Blue-noise metrics": white noise ~0.114
 }
 
 TEST(VoidAndCluster, SameSeedSameMaskOtherSeedOtherMask) {

@@ -1,6 +1,6 @@
 // Peak angles of the reference BRDF against the grating equation sin(theta_m) = sin(theta_i) + m
 // lambda / d for a d = 2500 nm, A = 150 nm sinusoidal grating (expected angles from
-// shared ANCHORS.md, computed independently of this code), and the +-m symmetry.
+// docs/references.md, "Grating equation", computed independently of this code), and the +-m symmetry.
 #include <gtest/gtest.h>
 
 #include <cmath>

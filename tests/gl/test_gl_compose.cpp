@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "gl_test_support.hpp"
+#include "prism/test/gl_test.hpp"
 #include "prism/gl/compose.hpp"
 #include "prism/gl/module_library.hpp"
 #include "prism/shaders.hpp"
@@ -161,11 +162,7 @@ TEST(ComposeLayout, MissingUserIncludeIsTheBuildStepsError) {
     }
 }
 
-class ComposeGl : public ::testing::Test {
-  protected:
-    void SetUp() override { ctx_ = prism::gl::createContext(prism::gl::Backend::Egl); }
-    std::unique_ptr<prism::gl::Context> ctx_;
-};
+class ComposeGl : public prism::test::GlTest {};
 
 TEST_F(ComposeGl, ComposedDiamondRenders) {
     const ComposeStage stages[] = {{cat::Stage::Vertex, {}, kVertexSource, ""},

@@ -1,20 +1,33 @@
 // Off-screen framebuffers: exact clear colours, float targets, and readback with row 0
-// at the top.
+// at the top, on each backend that draws off screen (EGL and OSMesa).
 #include "gl_test_support.hpp"
+#include "prism/test/gl_test.hpp"
+
+#include <string>
+#include <type_traits>
+
+// The backends a framebuffer is tested on, named as CTest shows them (FramebufferTest.X<offscreen::Egl>).
+namespace offscreen {
+struct Egl : std::integral_constant<prism::gl::Backend, prism::gl::Backend::Egl> {};
+struct OsMesa : std::integral_constant<prism::gl::Backend, prism::gl::Backend::OsMesa> {};
+}  // namespace offscreen
 
 namespace {
 
-using prism::gl::Backend;
 using prism::gl::ColorFormat;
 using prism::gl::Framebuffer;
 
-class FramebufferTest : public ::testing::TestWithParam<Backend> {
-  protected:
-    void SetUp() override { ctx_ = prism::gl::createContext(GetParam()); }
-    std::unique_ptr<prism::gl::Context> ctx_;
-};
+template <class OnBackend>
+class FramebufferTest : public prism::test::GlTestOn<OnBackend::value> {};
 
-TEST_P(FramebufferTest, ClearReadsBackExactColour) {
+using OffScreenBackends = ::testing::Types<offscreen::Egl, offscreen::OsMesa>;
+TYPED_TEST_SUITE(FramebufferTest, OffScreenBackends);
+
+TYPED_TEST(FramebufferTest, RunsOnTheBackendItNames) {
+    EXPECT_EQ(TestFixture::context().backend(), TypeParam::value);
+}
+
+TYPED_TEST(FramebufferTest, ClearReadsBackExactColour) {
     Framebuffer fb(prism::test::kSize, 48);
     fb.clear({51.f / 255.f, 102.f / 255.f, 153.f / 255.f, 204.f / 255.f});
     const prism::image::Image8 img = fb.readImage8();
@@ -25,7 +38,7 @@ TEST_P(FramebufferTest, ClearReadsBackExactColour) {
             ASSERT_EQ(img.at(x, y), (prism::image::Rgba8{51, 102, 153, 204})) << "at " << x << "," << y;
 }
 
-TEST_P(FramebufferTest, FloatTargetKeepsValuesOutsideZeroToOne) {
+TYPED_TEST(FramebufferTest, FloatTargetKeepsValuesOutsideZeroToOne) {
     Framebuffer fb(8, 8, ColorFormat::Rgba32F);
     fb.clear({2.5f, -0.75f, 0.125f, 1.0f});
     const prism::image::ImageF img = fb.readImageF();
@@ -35,7 +48,7 @@ TEST_P(FramebufferTest, FloatTargetKeepsValuesOutsideZeroToOne) {
     EXPECT_EQ(fb.readImage8().at(0, 0), (prism::image::Rgba8{255, 0, 32, 255}));
 }
 
-TEST_P(FramebufferTest, RowZeroIsTheTop) {
+TYPED_TEST(FramebufferTest, RowZeroIsTheTop) {
     Framebuffer fb(16, 16);
     fb.clear({0.f, 0.f, 1.f, 1.f});
     // GL's y runs upwards: the scissor box y = 12..15 is the top four rows.
@@ -51,7 +64,7 @@ TEST_P(FramebufferTest, RowZeroIsTheTop) {
     EXPECT_EQ(img.at(5, 15), (prism::image::Rgba8{0, 0, 255, 255}));
 }
 
-TEST_P(FramebufferTest, MoveTransfersOwnership) {
+TYPED_TEST(FramebufferTest, MoveTransfersOwnership) {
     Framebuffer a(4, 4);
     const unsigned id = a.id();
     Framebuffer b = std::move(a);
@@ -61,7 +74,7 @@ TEST_P(FramebufferTest, MoveTransfersOwnership) {
     EXPECT_EQ(b.readImage8().at(1, 1), (prism::image::Rgba8{255, 255, 255, 255}));
 }
 
-TEST_P(FramebufferTest, BadSizeIsAClearError) {
+TYPED_TEST(FramebufferTest, BadSizeIsAClearError) {
     try {
         Framebuffer fb(0, 10);
         FAIL() << "a 0x10 framebuffer was accepted";
@@ -69,8 +82,5 @@ TEST_P(FramebufferTest, BadSizeIsAClearError) {
         EXPECT_NE(std::string(e.what()).find("0x10"), std::string::npos) << e.what();
     }
 }
-
-INSTANTIATE_TEST_SUITE_P(Backends, FramebufferTest, ::testing::Values(Backend::Egl, Backend::OsMesa),
-                         [](const auto& info) { return std::string(prism::gl::backendName(info.param)); });
 
 }  // namespace

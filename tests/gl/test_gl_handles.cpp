@@ -7,6 +7,7 @@
 #include <string>
 
 #include "gl_test_support.hpp"
+#include "prism/test/gl_test.hpp"
 #include "prism/gl/framebuffer.hpp"
 #include "prism/gl/handles.hpp"
 
@@ -18,11 +19,7 @@ std::uint64_t live(ObjectKind kind) {
     return prism::gl::objectCounts().live(kind);
 }
 
-class Handles : public ::testing::Test {
-  protected:
-    void SetUp() override { ctx_ = prism::gl::createContext(prism::gl::Backend::Egl); }
-    std::unique_ptr<prism::gl::Context> ctx_;
-};
+class Handles : public prism::test::GlTest {};
 
 // The solid shader of the test catalogue, as raw stage sources.
 prism::gl::ProgramSources solidSources() {

@@ -3,23 +3,20 @@
 #include <glm/glm.hpp>
 
 #include "gl_test_support.hpp"
+#include "prism/test/gl_test.hpp"
 
 namespace {
 
 using namespace prism::test;
 using prism::gl::Program;
 
-class ProgramTest : public ::testing::Test {
+class ProgramTest : public GlTest {
   protected:
-    void SetUp() override { ctx_ = prism::gl::createContext(prism::gl::Backend::Egl); }
-
     Program solidProgram() const {
         const auto* variant = prism::catalog::findVariant(kShaders[0], {});
         EXPECT_NE(variant, nullptr);
         return Program(*variant, kCatalog.contractAttributes, "solid");
     }
-
-    std::unique_ptr<prism::gl::Context> ctx_;
 };
 
 TEST_F(ProgramTest, VariantRendersTriangleInUniformColour) {

@@ -4,6 +4,7 @@
 #include <glm/glm.hpp>
 
 #include "gl_test_support.hpp"
+#include "prism/test/gl_test.hpp"
 #include "prism/shaders.hpp"
 
 namespace {
@@ -23,11 +24,7 @@ glm::vec4 colorOf(const Program& program) {
     return value;
 }
 
-class ProgramShader : public ::testing::Test {
-  protected:
-    void SetUp() override { ctx_ = prism::gl::createContext(prism::gl::Backend::Egl); }
-    std::unique_ptr<prism::gl::Context> ctx_;
-};
+class ProgramShader : public prism::test::GlTest {};
 
 TEST_F(ProgramShader, KnowsTheShaderOfItsVariant) {
     Program phong(defaultVariant(shaders::ShaderId::phong), shaders::kCatalog.contractAttributes, "phong");

@@ -3,6 +3,7 @@
 #include <glm/glm.hpp>
 
 #include "gl_test_support.hpp"
+#include "prism/test/gl_test.hpp"
 
 namespace {
 
@@ -38,11 +39,7 @@ Program toonProgram() {
     return program;
 }
 
-class ProgramUnset : public ::testing::Test {
-  protected:
-    void SetUp() override { ctx_ = prism::gl::createContext(prism::gl::Backend::Egl); }
-    std::unique_ptr<prism::gl::Context> ctx_;
-};
+class ProgramUnset : public prism::test::GlTest {};
 
 TEST_F(ProgramUnset, NeverSetFloatIsReportedOnceByName) {
     Program program = toonProgram();

@@ -268,6 +268,25 @@ TEST(CpuRain, CountFollowsTheIntensity) {
     EXPECT_THROW(sim.setWind(WindParams{0.0f, std::numeric_limits<float>::quiet_NaN()}), RainParameterError);
 }
 
+// The one pair of setters (RainWeather, shared with the GPU RainSystem): params, wind vector and
+// fall speed move together, and a refused value leaves all of them as they were.
+TEST(CpuRain, SettersKeepTheWeatherInStepAndARefusedValueChangesNothing) {
+    RainParams p;
+    p.seed = 5;
+    CpuRainSimulation sim(p, glm::vec3(0.0f));
+    sim.setWind(WindParams{90.0f, 3.0f});  // towards +z
+    EXPECT_EQ(sim.params().wind.strength, 3.0f);
+    EXPECT_NEAR(sim.wind().x, 0.0f, 1e-5f);
+    EXPECT_NEAR(sim.wind().z, 3.0f, 1e-5f);
+    EXPECT_THROW(sim.setWind(WindParams{0.0f, std::numeric_limits<float>::quiet_NaN()}), RainParameterError);
+    EXPECT_EQ(sim.params().wind.strength, 3.0f) << "a refused wind replaced the old one";
+    EXPECT_NEAR(sim.wind().z, 3.0f, 1e-5f);
+    sim.setIntensity(rainClassInfo(RainClass::Heavy).intensity);
+    EXPECT_THROW(sim.setIntensity(-2.0f), RainParameterError);
+    EXPECT_EQ(sim.params().intensity, rainClassInfo(RainClass::Heavy).intensity) << "a refused intensity was kept";
+    EXPECT_FLOAT_EQ(sim.fallSpeed(), rainClassInfo(RainClass::Heavy).fallSpeed);
+}
+
 TEST(CpuRainExtremes, ZeroParticles) {
     RainParams p;
     p.intensity = 0.0f;

@@ -96,6 +96,8 @@ TEST_F(GpuRainExtremes, TeleportAndZeroAndHugeSteps) {
     EXPECT_THROW(rain.update(0.1f, glm::vec3(std::numeric_limits<float>::quiet_NaN())), RainParameterError);
     EXPECT_THROW(rain.setIntensity(-1.0f), RainParameterError);
     EXPECT_THROW(rain.setWind(WindParams{std::nullopt, std::numeric_limits<float>::quiet_NaN()}), RainParameterError);
+    EXPECT_TRUE(std::isfinite(rain.params().wind.strength)) << "a refused wind replaced the old one";
+    EXPECT_TRUE(std::isfinite(rain.params().intensity)) << "a refused intensity was kept";
     EXPECT_THROW(RainSystem(
                      suiteResource<RainPrograms>(),
                      [] {

@@ -13,6 +13,7 @@
 #include "variants.hpp"
 #include "prism/geometry/obj_loader.hpp"
 #include "prism/image/png_io.hpp"
+#include "prism/io/json_nesting.hpp"
 #include "prism/scene/scene_loader.hpp"
 #include "prism/water/height_field.hpp"
 
@@ -67,6 +68,37 @@ TEST(JsonDepthLimit, ContractWith100000NestedArraysIsAnErrorNamingTheLimit) {
         << r.diagnostics[0].message;
     MemoryReader within{{"c.json", "{\"attributes\": [], \"uniforms\": [], \"x\": " + nested(62) + "}"}};
     EXPECT_TRUE(loadContracts({"c.json"}, within).diagnostics.empty());
+}
+
+// The one line:column of a JSON error (prism/io/json_nesting.hpp): 1-based line and column of
+// the byte at a 0-based offset, for scenes and contracts alike.
+TEST(JsonErrorPosition, LineAndColumnCountFromOneAtAZeroBasedOffset) {
+    const std::string text = "ab\ncd";
+    const auto at = [&](std::size_t offset) {
+        const auto [line, column] = prism::io::lineColumnAt(text, offset);
+        return std::to_string(line) + ":" + std::to_string(column);
+    };
+    EXPECT_EQ(at(0), "1:1");
+    EXPECT_EQ(at(1), "1:2");
+    EXPECT_EQ(at(2), "1:3");  // the newline ends line 1
+    EXPECT_EQ(at(3), "2:1");
+    EXPECT_EQ(at(4), "2:2");
+    EXPECT_EQ(at(99), "2:3");  // past the end: after the last byte
+}
+
+TEST(JsonErrorPosition, SceneAndContractNameTheSameLineAndColumn) {
+    using namespace prism::shaderc;
+    const std::string tooDeep = "{\n  \"x\": " + nested(100) + "}";  // level 65 opens at 2:71
+    const std::string malformed = "{\n  \"x\": ]\n}";                // the ']' at 2:8
+    for (const auto& [text, position] : {std::pair{tooDeep, std::string(":2:71:")}, {malformed, ":2:8:"}}) {
+        EXPECT_EQ(sceneError(text).rfind("limits.json" + position, 0), 0u) << sceneError(text);
+        MemoryReader files{{"c.json", text}};
+        const auto r = loadContracts({"c.json"}, files);
+        ASSERT_EQ(r.diagnostics.size(), 1u);
+        EXPECT_EQ(":" + std::to_string(r.diagnostics[0].line) + ":" + std::to_string(r.diagnostics[0].column) + ":",
+                  position)
+            << r.diagnostics[0].message;
+    }
 }
 
 // --- Variant combinations per shader: 4096 ---

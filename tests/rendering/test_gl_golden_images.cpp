@@ -15,8 +15,8 @@
 // by more than 3/255; a case passes with at most 0.1 % of pixels over and a mean
 // absolute error of at most 0.5/255. llvmpipe renders byte-identically run to run (the
 // test RepeatedRenderIsByteIdentical checks that), so any difference at all is a real
-// change; the few /255 only absorb driver or technique changes, which ANCHORS.md
-// measured at up to 2/255 on some pixels.
+// change; the few /255 only absorb driver or technique changes, which docs/references.md
+// ("Golden-image testing") records at up to 2/255 on some pixels.
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>

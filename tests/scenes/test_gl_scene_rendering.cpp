@@ -48,7 +48,7 @@ prism::scene::Scene smallGrating(int size, int tableSize, int terms) {
 using prism::test::envFlag;
 
 // Golden thresholds: llvmpipe renders byte-identically run to run, so these only absorb
-// driver or technique changes (ANCHORS.md): a pixel counts as different above 3/255 in
+// driver or technique changes (docs/references.md, "Golden-image testing"): a pixel counts as different above 3/255 in
 // a channel; at most 0.1 % of pixels may, and the mean error must stay <= 0.5/255.
 const prism::image::Thresholds kThresholds{3, 0.001, 0.5};
 

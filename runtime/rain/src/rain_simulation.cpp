@@ -116,23 +116,38 @@ int lodRingOf(const Particle& p, float radius, int rings) {
     return std::clamp(static_cast<int>(r / radius * static_cast<float>(rings)), 0, rings - 1);
 }
 
-CpuRainSimulation::CpuRainSimulation(const RainParams& params, const glm::vec3& eye) : params_(params) {
-    validate(params_);
+RainWeather::RainWeather(const RainParams& p) : params(p) {
+    validate(params);
+    rate = rainRateFor(params.intensity);
+    wind = windVector(params);
+}
+
+void RainWeather::setIntensity(float intensity) {
+    validateIntensity(intensity);
+    params.intensity = intensity;
+    rate = rainRateFor(intensity);
+}
+
+void RainWeather::setWind(const WindParams& w) {
+    validateWind(w);
+    params.wind = w;
+    wind = windVector(params);
+}
+
+CpuRainSimulation::CpuRainSimulation(const RainParams& params, const glm::vec3& eye) : weather_(params) {
     validateEye(eye);
-    rate_ = rainRateFor(params_.intensity);
-    wind_ = windVector(params_);
-    center_ = cylinderCenter(params_, eye);
-    shearHeight_ = shearHeight(params_, eye);
-    resize(particleCountFor(params_));
+    center_ = cylinderCenter(weather_.params, eye);
+    shearHeight_ = shearHeight(weather_.params, eye);
+    resize(particleCountFor(weather_.params));
 }
 
 void CpuRainSimulation::resize(std::uint32_t count) {
     if (count > particles_.size()) particles_.resize(count);
-    const glm::vec2 cylinder(params_.radius, params_.height);
-    const glm::vec2 lod(static_cast<float>(params_.lodRings), params_.lodFalloff);
+    const glm::vec2 cylinder(weather_.params.radius, weather_.params.height);
+    const glm::vec2 lod(static_cast<float>(weather_.params.lodRings), weather_.params.lodFalloff);
     for (std::uint32_t i = count_; i < count; ++i)
-        particles_[i] =
-            seedParticle(i, params_.seed, center_, cylinder, lod, rate_.fallSpeed, params_.jitter, wind_, shearHeight_);
+        particles_[i] = seedParticle(i, weather_.params.seed, center_, cylinder, lod, weather_.rate.fallSpeed,
+                                     weather_.params.jitter, weather_.wind, shearHeight_);
     count_ = count;
 }
 
@@ -140,27 +155,23 @@ void CpuRainSimulation::step(float dt, const glm::vec3& eye) {
     validateEye(eye);
     StepInputs in;
     in.dt = clampStep(dt);
-    center_ = cylinderCenter(params_, eye);
-    shearHeight_ = shearHeight(params_, eye);
+    center_ = cylinderCenter(weather_.params, eye);
+    shearHeight_ = shearHeight(weather_.params, eye);
     in.center = center_;
     in.shearHeight = shearHeight_;
-    in.cylinder = {params_.radius, params_.height};
-    in.wind = wind_;
-    in.fallSpeed = rate_.fallSpeed;
+    in.cylinder = {weather_.params.radius, weather_.params.height};
+    in.wind = weather_.wind;
+    in.fallSpeed = weather_.rate.fallSpeed;
     for (std::uint32_t i = 0; i < count_; ++i) particles_[i] = stepParticle(particles_[i], in);
 }
 
 void CpuRainSimulation::setIntensity(float intensity) {
-    validateIntensity(intensity);
-    params_.intensity = intensity;
-    rate_ = rainRateFor(intensity);
-    resize(particleCountFor(params_));
+    weather_.setIntensity(intensity);
+    resize(particleCountFor(weather_.params));
 }
 
 void CpuRainSimulation::setWind(const WindParams& wind) {
-    validateWind(wind);
-    params_.wind = wind;
-    wind_ = windVector(params_);
+    weather_.setWind(wind);
 }
 
 }  // namespace prism::rain

@@ -41,16 +41,13 @@ std::string_view techniqueShader(StreakTechnique t) {
 }
 
 RainSystem::RainSystem(RainPrograms& programs, const RainParams& params, const glm::vec3& eye)
-    : programs_(programs), params_(params) {
+    : programs_(programs), weather_(params) {
     gl::requireCompute("rain: the GPU particle update");
-    validate(params_);
     validateEye(eye);
-    rate_ = rainRateFor(params_.intensity);
-    fastestFall_ = rate_.fallSpeed;
-    wind_ = windVector(params_);
-    center_ = cylinderCenter(params_, eye);
-    shearHeight_ = shearHeight(params_, eye);
-    resize(particleCountFor(params_));
+    fastestFall_ = weather_.rate.fallSpeed;
+    center_ = cylinderCenter(weather_.params, eye);
+    shearHeight_ = shearHeight(weather_.params, eye);
+    resize(particleCountFor(weather_.params));
 }
 
 std::size_t RainSystem::gpuBytes() const {
@@ -94,12 +91,13 @@ void RainSystem::seedRange(std::uint32_t first, std::uint32_t end) {
     gl::Program& init = programs_.get("rain_init");
     init.use();
     init.set(rain_shaders::rain_init::u_cylinderCenter, center_);
-    init.set(rain_shaders::rain_init::u_cylinder, glm::vec2(params_.radius, params_.height));
-    init.set(rain_shaders::rain_init::u_lod, glm::vec2(static_cast<float>(params_.lodRings), params_.lodFalloff));
-    init.set(rain_shaders::rain_init::u_wind, wind_);
-    init.set(rain_shaders::rain_init::u_fallSpeed, rate_.fallSpeed);
-    init.set(rain_shaders::rain_init::u_jitter, params_.jitter);
-    init.set(rain_shaders::rain_init::u_rainSeed, params_.seed);
+    init.set(rain_shaders::rain_init::u_cylinder, glm::vec2(weather_.params.radius, weather_.params.height));
+    init.set(rain_shaders::rain_init::u_lod,
+             glm::vec2(static_cast<float>(weather_.params.lodRings), weather_.params.lodFalloff));
+    init.set(rain_shaders::rain_init::u_wind, weather_.wind);
+    init.set(rain_shaders::rain_init::u_fallSpeed, weather_.rate.fallSpeed);
+    init.set(rain_shaders::rain_init::u_jitter, weather_.params.jitter);
+    init.set(rain_shaders::rain_init::u_rainSeed, weather_.params.seed);
     init.set(rain_shaders::rain_init::u_firstParticle, first);
     init.set(rain_shaders::rain_init::u_particleCount, end);
     init.set(rain_shaders::rain_init::u_shearHeight, shearHeight_);
@@ -112,18 +110,18 @@ void RainSystem::seedRange(std::uint32_t first, std::uint32_t end) {
 void RainSystem::update(float dt, const glm::vec3& eye) {
     validateEye(eye);
     const float step = clampStep(dt);
-    center_ = cylinderCenter(params_, eye);
-    shearHeight_ = shearHeight(params_, eye);
+    center_ = cylinderCenter(weather_.params, eye);
+    shearHeight_ = shearHeight(weather_.params, eye);
     ++steps_;
     if (count_ == 0) return;
     const gl::ScopedDrawState keep;
     gl::Program& update = programs_.get("rain_update");
     update.use();
     update.set(rain_shaders::rain_update::u_cylinderCenter, center_);
-    update.set(rain_shaders::rain_update::u_cylinder, glm::vec2(params_.radius, params_.height));
+    update.set(rain_shaders::rain_update::u_cylinder, glm::vec2(weather_.params.radius, weather_.params.height));
     update.set(rain_shaders::rain_update::u_dt, step);
-    update.set(rain_shaders::rain_update::u_wind, wind_);
-    update.set(rain_shaders::rain_update::u_fallSpeed, rate_.fallSpeed);
+    update.set(rain_shaders::rain_update::u_wind, weather_.wind);
+    update.set(rain_shaders::rain_update::u_fallSpeed, weather_.rate.fallSpeed);
     update.set(rain_shaders::rain_update::u_particleCount, count_);
     update.set(rain_shaders::rain_update::u_shearHeight, shearHeight_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, particles_.id());
@@ -133,17 +131,13 @@ void RainSystem::update(float dt, const glm::vec3& eye) {
 }
 
 void RainSystem::setIntensity(float intensity) {
-    validateIntensity(intensity);
-    params_.intensity = intensity;
-    rate_ = rainRateFor(intensity);
-    fastestFall_ = std::max(fastestFall_, rate_.fallSpeed);  // drops keep their speed until they respawn
-    resize(particleCountFor(params_));
+    weather_.setIntensity(intensity);
+    fastestFall_ = std::max(fastestFall_, weather_.rate.fallSpeed);  // drops keep their speed until they respawn
+    resize(particleCountFor(weather_.params));
 }
 
 void RainSystem::setWind(const WindParams& wind) {
-    validateWind(wind);
-    params_.wind = wind;
-    wind_ = windVector(params_);
+    weather_.setWind(wind);
 }
 
 void RainSystem::ensureStreakTexture() {
@@ -178,19 +172,20 @@ std::uint32_t RainSystem::cullBlocks() const {
 }
 
 void RainSystem::setStreakUniforms(gl::Program& p, const RainDrawInputs& in) const {
-    const StreakStyle& s = params_.streaks;
+    const StreakStyle& s = weather_.params.streaks;
     p.set(rain_shaders::contract::u_view, in.camera.view());
     p.set(rain_shaders::contract::u_projection, in.camera.projection(in.aspect));
     p.set(rain_shaders::contract::u_cameraPosition, in.camera.eye);
     p.set(rain_shaders::contract::u_cylinderCenter, center_);
-    p.set(rain_shaders::contract::u_cylinder, glm::vec2(params_.radius, params_.height));
-    p.set(rain_shaders::contract::u_wind, wind_);
+    p.set(rain_shaders::contract::u_cylinder, glm::vec2(weather_.params.radius, weather_.params.height));
+    p.set(rain_shaders::contract::u_wind, weather_.wind);
     p.set(rain_shaders::contract::u_exposure, s.exposure);
     p.set(rain_shaders::contract::u_streakWidth, glm::vec2(s.width, s.widthPerMetre));
     p.set(rain_shaders::contract::u_viewportHeight, static_cast<float>(std::max(in.viewportHeight, 1)));
     p.set(rain_shaders::contract::u_streakOpacity, s.opacity);
     p.set(rain_shaders::contract::u_streakFalloff, s.falloffDistance);
-    p.set(rain_shaders::contract::u_lod, glm::vec2(static_cast<float>(params_.lodRings), params_.lodFalloff));
+    p.set(rain_shaders::contract::u_lod,
+          glm::vec2(static_cast<float>(weather_.params.lodRings), weather_.params.lodFalloff));
 }
 
 void RainSystem::cullToView(const RainDrawInputs& in) {
@@ -208,8 +203,8 @@ void RainSystem::cullToView(const RainDrawInputs& in) {
     cull.set(rain_shaders::rain_cull::u_particleCount, count_);
     // The longest streak: a drop's speed is at most 1.1 x the fall speed it respawned with, plus its
     // sideways jitter (up to `jitter` on each horizontal axis), plus the wind; 1 % margin for rounding.
-    const float fastest = 1.1f * fastestFall_ + std::sqrt(2.0f) * params_.jitter + glm::length(wind_);
-    cull.set(rain_shaders::rain_cull::u_maxStreakLength, 1.01f * fastest * params_.streaks.exposure);
+    const float fastest = 1.1f * fastestFall_ + std::sqrt(2.0f) * weather_.params.jitter + glm::length(weather_.wind);
+    cull.set(rain_shaders::rain_cull::u_maxStreakLength, 1.01f * fastest * weather_.params.streaks.exposure);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, particles_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, visible_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, drawCommands_.id());

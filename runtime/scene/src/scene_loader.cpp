@@ -305,19 +305,6 @@ StochasticSettings readStochastic(const Reader& r, const json& j) {
     return s;
 }
 
-std::pair<int, int> lineColumn(const std::string& text, std::size_t byte) {
-    int line = 1, col = 1;
-    for (std::size_t i = 0; i + 1 < byte && i < text.size(); ++i) {
-        if (text[i] == '\n') {
-            ++line;
-            col = 1;
-        } else {
-            ++col;
-        }
-    }
-    return {line, col};
-}
-
 // Scenes nest 4 levels; deeper JSON is refused before parsing (docs/reliability.md).
 constexpr int kMaxJsonDepth = 64;
 
@@ -325,7 +312,7 @@ constexpr int kMaxJsonDepth = 64;
 
 Scene parseScene(const std::string& text, const std::string& fileName) {
     if (const auto deep = io::firstTooDeep(text, kMaxJsonDepth)) {
-        auto [line, col] = lineColumn(text, *deep + 1);
+        auto [line, col] = io::lineColumnAt(text, *deep);
         throw SceneError(fileName + ":" + std::to_string(line) + ":" + std::to_string(col) +
                          ": JSON nested more than " + std::to_string(kMaxJsonDepth) +
                          " levels deep (the limit); a scene needs 4");
@@ -334,7 +321,7 @@ Scene parseScene(const std::string& text, const std::string& fileName) {
     try {
         j = json::parse(text);
     } catch (const json::parse_error& e) {
-        auto [line, col] = lineColumn(text, e.byte);
+        auto [line, col] = io::lineColumnAt(text, e.byte > 0 ? e.byte - 1 : 0);
         std::string what = e.what();
         auto pos = what.find("syntax error");
         throw SceneError(fileName + ":" + std::to_string(line) + ":" + std::to_string(col) + ": " +

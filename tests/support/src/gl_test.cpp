@@ -24,9 +24,14 @@ std::vector<std::pair<std::type_index, std::shared_ptr<void>>>& GlTest::resource
 }
 
 void GlTest::SetUpTestSuite() {
+    setUpSuiteOn(std::nullopt);
+}
+
+void GlTest::setUpSuiteOn(std::optional<gl::Backend> backend) {
     suite().error.clear();
+    const gl::ContextOptions options{.majorVersion = 4, .minorVersion = 3};
     try {
-        suite().context = gl::createContext(gl::ContextOptions{.majorVersion = 4, .minorVersion = 3});
+        suite().context = backend ? gl::createContext(*backend, options) : gl::createContext(options);
     } catch (const std::exception& e) {
         suite().error = e.what();
     }

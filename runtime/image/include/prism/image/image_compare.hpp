@@ -20,7 +20,7 @@
 // pixels) is at most t.maxMean. The stats keep a histogram of per-pixel maximum
 // differences, so passes() and describe() work for any threshold afterwards.
 // Mesa llvmpipe is byte-exact across runs; a few units on a tiny share of pixels
-// absorbs technique or driver changes (see ANCHORS.md, "Golden-image testing").
+// absorbs technique or driver changes (docs/references.md, "Golden-image testing").
 #pragma once
 
 #include <array>

@@ -77,6 +77,20 @@ Particle stepParticle(Particle p, const StepInputs& in);
 // Which level-of-detail ring a seed offset lies in (0 = innermost), for tests.
 int lodRingOf(const Particle& p, float radius, int rings);
 
+// The weather a simulation (CpuRainSimulation, RainSystem) runs under: its parameters, the
+// intensity's rate and the wind's vector, kept in step by the one pair of setters of both.
+struct RainWeather {
+    explicit RainWeather(const RainParams& params);  // validates them (RainParameterError)
+    // Validate, then set params.intensity and rate.
+    void setIntensity(float intensity);
+    // Validate, then set params.wind and wind.
+    void setWind(const WindParams& wind);
+
+    RainParams params;
+    RainRate rate;
+    glm::vec3 wind{0.0f};  // windVector(params)
+};
+
 class CpuRainSimulation {
   public:
     CpuRainSimulation(const RainParams& params, const glm::vec3& eye);
@@ -90,17 +104,15 @@ class CpuRainSimulation {
 
     std::span<const Particle> particles() const { return {particles_.data(), count_}; }
     std::uint32_t particleCount() const { return count_; }
-    const RainParams& params() const { return params_; }
-    glm::vec3 wind() const { return wind_; }
+    const RainParams& params() const { return weather_.params; }
+    glm::vec3 wind() const { return weather_.wind; }
     glm::vec3 center() const { return center_; }
-    float fallSpeed() const { return rate_.fallSpeed; }
+    float fallSpeed() const { return weather_.rate.fallSpeed; }
 
   private:
     void resize(std::uint32_t count);
 
-    RainParams params_;
-    RainRate rate_;
-    glm::vec3 wind_{0.0f};
+    RainWeather weather_;
     glm::vec3 center_{0.0f};
     float shearHeight_ = 0.0f;
     std::vector<Particle> particles_;

@@ -81,10 +81,10 @@ class RainSystem {
 
     std::uint32_t particleCount() const { return count_; }
     std::uint32_t capacity() const { return capacity_; }
-    const RainParams& params() const { return params_; }
-    glm::vec3 wind() const { return wind_; }
+    const RainParams& params() const { return weather_.params; }
+    glm::vec3 wind() const { return weather_.wind; }
     glm::vec3 center() const { return center_; }
-    float fallSpeed() const { return rate_.fallSpeed; }
+    float fallSpeed() const { return weather_.rate.fallSpeed; }
     std::uint64_t steps() const { return steps_; }
     // Bytes of GPU memory: particle buffer + culled copy + draw commands + streak texture (0 before the
     // first particle); particleBytes() without the texture.
@@ -110,10 +110,8 @@ class RainSystem {
     void drawVisible(StreakTechnique technique) const;
 
     RainPrograms& programs_;
-    RainParams params_;
-    RainRate rate_;
+    RainWeather weather_;
     float fastestFall_ = 0.0f;  // m/s: the fastest fall speed any drop may still have (culling bound)
-    glm::vec3 wind_{0.0f};
     glm::vec3 center_{0.0f};
     float shearHeight_ = 0.0f;
     std::uint32_t count_ = 0;

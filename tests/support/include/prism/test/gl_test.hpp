@@ -6,6 +6,8 @@
 //
 // Objects that need the context and are costly to rebuild per test (program caches) come
 // from suiteResource<T>(): made on first use, deleted before the context, newest first.
+// A suite that must run on one backend whatever PRISM_GL_BACKEND says derives from
+// GlTestOn<backend> instead (a typed suite over backends runs its tests on each).
 //
 //     #include "prism/test/gl_test.hpp"
 //
@@ -20,6 +22,7 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <typeindex>
 #include <typeinfo>
@@ -52,8 +55,18 @@ class GlTest : public ::testing::Test {
   protected:
     void SetUp() override;
 
+    // Makes the suite's context on `backend`, or the default one (PRISM_GL_BACKEND) if none.
+    static void setUpSuiteOn(std::optional<gl::Backend> backend);
+
   private:
     static std::vector<std::pair<std::type_index, std::shared_ptr<void>>>& resources();
+};
+
+// GlTest on a fixed backend.
+template <gl::Backend B>
+class GlTestOn : public GlTest {
+  public:
+    static void SetUpTestSuite() { setUpSuiteOn(B); }
 };
 
 }  // namespace prism::test

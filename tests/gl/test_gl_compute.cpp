@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "gl_test_support.hpp"
+#include "prism/test/gl_test.hpp"
 #include "prism/gl/compute.hpp"
 #include "prism/gl/handles.hpp"
 
@@ -29,10 +30,10 @@ prism::gl::ProgramSources countingShader() {
             .uniforms = std::nullopt};
 }
 
-class Compute : public ::testing::Test {
+class Compute : public prism::test::GlTest {
   protected:
     void SetUp() override {
-        ctx_ = prism::gl::createContext(prism::gl::Backend::Egl, {.majorVersion = 4, .minorVersion = 3});
+        GlTest::SetUp();
         prism::gl::requireCompute("the compute tests");
         program_.emplace(countingShader());
         program_->use();
@@ -55,7 +56,6 @@ class Compute : public ::testing::Test {
         return out;
     }
 
-    std::unique_ptr<prism::gl::Context> ctx_;
     std::optional<prism::gl::Program> program_;
     prism::gl::Buffer hits_;
 };
