@@ -1,5 +1,5 @@
 // Golden images of the soft-shadow demo with the three samplers (tests/golden/bluenoise/,
-// 64x64, 1 spp, frame 2; PRISM_UPDATE_GOLDENS=1 rewrites them). Threshold: every pixel
+// 64x64, 1 spp, frame 2; the check and its update mode: prism/test/golden.hpp). Threshold: every pixel
 // within 1 level of 255 and at most 0.5% of pixels off by that one level (float
 // rounding across compilers). The mutation tests show the comparison catches another
 // sampler and another frame.
@@ -12,6 +12,7 @@
 #include "prism/bluenoise/gray_png.hpp"
 #include "prism/bluenoise/soft_shadows.hpp"
 #include "prism/bluenoise/void_and_cluster.hpp"
+#include "prism/test/golden.hpp"
 
 namespace bn = prism::bluenoise;
 
@@ -35,21 +36,24 @@ bn::GrayImage render(bn::SamplerKind kind, int frame) {
     return out;
 }
 
-std::string goldenPath(const char* name) {
-    return std::string(PRISM_BLUENOISE_GOLDEN_DIR) + "/" + name + ".png";
+// The 8-bit image as the comparator reads it (grey in R, G and B, opaque), as readPng reads
+// the grey goldens.
+prism::image::Image8 asImage8(const bn::GrayImage& gray) {
+    prism::image::Image8 out(gray.width, gray.height, {0, 0, 0, 255});
+    for (std::size_t i = 0; i < gray.values.size(); ++i)
+        for (std::size_t c = 0; c < 3; ++c) out.data[i * 4 + c] = static_cast<std::uint8_t>(gray.values[i]);
+    return out;
 }
 
-// Empty when within the threshold, else what differs.
-std::string compare(const bn::GrayImage& image, const bn::GrayImage& golden) {
-    if (image.width != golden.width || image.height != golden.height) return "size differs";
-    int off = 0, worst = 0;
-    for (std::size_t i = 0; i < image.values.size(); ++i) {
-        const int d = std::abs(static_cast<int>(image.values[i]) - static_cast<int>(golden.values[i]));
-        worst = std::max(worst, d);
-        off += d > 0;
-    }
-    if (worst <= 1 && off * 200 <= static_cast<int>(image.values.size())) return "";
-    return std::to_string(off) + " pixels differ, by up to " + std::to_string(worst) + " levels";
+// Every pixel within 1 level, and at most 0.5 % of the pixels off at all.
+constexpr prism::image::Thresholds kThresholds{
+    .maxChannelDiff = 0, .maxShareOver = 0.005, .maxMean = 1.0, .maxPixelDiff = 1};
+
+prism::test::GoldenCheck golden(const char* name) {
+    return {.golden = std::string(PRISM_BLUENOISE_GOLDEN_DIR) + "/" + name + ".png",
+            .outName = std::string("bluenoise/") + name,
+            .thresholds = kThresholds,
+            .outDir = PRISM_BLUENOISE_GOLDEN_FAILURE_DIR};
 }
 
 const std::pair<bn::SamplerKind, const char*> kSamplers[] = {
@@ -58,22 +62,19 @@ const std::pair<bn::SamplerKind, const char*> kSamplers[] = {
 }  // namespace
 
 TEST(Goldens, ThreeSamplersMatchTheirGoldens) {
-    const bool update = std::getenv("PRISM_UPDATE_GOLDENS") != nullptr;
-    for (const auto& [kind, name] : kSamplers) {
-        const bn::GrayImage image = render(kind, 2);
-        if (update) bn::writeGrayPng(goldenPath(name), image);
-        EXPECT_EQ(compare(image, bn::readGrayPng(goldenPath(name))), "") << name;
-    }
+    for (const auto& [kind, name] : kSamplers)
+        prism::test::expectMatchesGolden(asImage8(render(kind, 2)), golden(name));
 }
 
 TEST(Goldens, MutationsAreCaught) {
-    const bn::GrayImage white = bn::readGrayPng(goldenPath("white"));
-    const bn::GrayImage blue = bn::readGrayPng(goldenPath("bluenoise"));
-    EXPECT_NE(compare(render(bn::SamplerKind::BlueNoise, 2), white), "");  // another sampler
-    EXPECT_NE(compare(render(bn::SamplerKind::BlueNoise, 3), blue), "");   // another frame
-    bn::GrayImage oneLevel = blue;                                         // within the threshold
+    prism::test::expectFailsGolden(asImage8(render(bn::SamplerKind::BlueNoise, 2)), golden("white"),
+                                   "blue noise against white's golden");
+    prism::test::expectFailsGolden(asImage8(render(bn::SamplerKind::BlueNoise, 3)), golden("bluenoise"), "frame 3");
+    const bn::GrayImage blue = bn::readGrayPng(golden("bluenoise").golden.string());
+    bn::GrayImage oneLevel = blue;  // within the threshold
     oneLevel.values[100] = static_cast<std::uint16_t>(oneLevel.values[100] == 255 ? 254 : oneLevel.values[100] + 1);
-    EXPECT_EQ(compare(oneLevel, blue), "");
+    EXPECT_EQ(prism::test::compareWithGolden(asImage8(oneLevel), golden("bluenoise")).outcome,
+              prism::test::GoldenOutcome::Matches);
     oneLevel.values[101] = static_cast<std::uint16_t>(oneLevel.values[101] > 128 ? 0 : 255);  // beyond it
-    EXPECT_NE(compare(oneLevel, blue), "");
+    prism::test::expectFailsGolden(asImage8(oneLevel), golden("bluenoise"), "one pixel off by more than a level");
 }

@@ -5,10 +5,8 @@
 // image::Thresholds as in tests/rendering (tests/golden/README.md): a pixel is "over" when a
 // channel differs by more than 3/255; a case passes with at most 0.1 % of pixels over
 // and a mean absolute error of at most 0.5/255.
-// Flags: PRISM_UPDATE_GOLDENS=1 rewrites the goldens (the tests then report SKIPPED);
-// PRISM_SAVE_ACTUAL=1 writes actual and diff images of every case; PRISM_GOLDEN_OUT=DIR
-// chooses where (default <build>/tests/rain/golden-failures). A failing case always
-// writes them.
+// The check, its update mode and where actual and diff images go (default
+// <build>/tests/rain/golden-failures): prism/test/golden.hpp.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -20,7 +18,7 @@
 #include "prism/image/image_compare.hpp"
 #include "prism/image/png_io.hpp"
 #include "prism/rain/rain_scene.hpp"
-#include "prism/test/env_flag.hpp"
+#include "prism/test/golden.hpp"
 #include "prism/test/gl_test.hpp"
 
 namespace prism::rain::test {
@@ -78,18 +76,6 @@ fs::path goldenPath(const std::string& name) {
     return fs::path(PRISM_RAIN_GOLDEN_DIR) / (name + ".png");
 }
 
-fs::path outputDir() {
-    const char* dir = std::getenv("PRISM_GOLDEN_OUT");
-    return (dir && *dir) ? fs::path(dir) : fs::path(PRISM_RAIN_GOLDEN_FAILURE_DIR);
-}
-
-std::string saveActualAndDiff(const std::string& name, const image::Image8& actual, const image::ImageComparison& cmp) {
-    const fs::path base = outputDir() / name;
-    image::writePng(base.string() + ".actual.png", actual);
-    if (cmp.sizeMatches) image::writePng(base.string() + ".diff.png", cmp.diff);
-    return base.string() + ".{actual,diff}.png";
-}
-
 // Pixels that differ from `reference` by more than `tolerance` in any channel.
 std::size_t changedPixels(const image::Image8& a, const image::Image8& reference, int tolerance = 2) {
     std::size_t n = 0;
@@ -120,19 +106,10 @@ TEST_P(RainGolden, MatchesStoredGoldenWithinThresholds) {
     ASSERT_GT(changedPixels(actual, renderScene(dry)), actual.pixelCount() / 50)
         << c.name << ": (almost) no rain drawn";
 
-    if (::prism::test::envFlag("PRISM_UPDATE_GOLDENS")) {
-        image::writePng(goldenPath(c.name), actual);
-        GTEST_SKIP() << "PRISM_UPDATE_GOLDENS: rewrote " << goldenPath(c.name).string();
-    }
-    ASSERT_TRUE(fs::exists(goldenPath(c.name)))
-        << "no golden image " << goldenPath(c.name).string() << "; create it with PRISM_UPDATE_GOLDENS=1";
-    const image::Image8 golden = image::readPng(goldenPath(c.name));
-    const image::ImageComparison cmp = image::compareImages(actual, golden, kThresholds.maxChannelDiff);
-    const bool ok = image::passes(cmp, kThresholds);
-    std::string saved;
-    if (!ok || ::prism::test::envFlag("PRISM_SAVE_ACTUAL")) saved = saveActualAndDiff(c.name, actual, cmp);
-    EXPECT_TRUE(ok) << goldenPath(c.name).string() << ": " << prism::image::describe(cmp, kThresholds)
-                    << "\nactual and diff images: " << saved;
+    ::prism::test::expectMatchesGolden(actual, {.golden = goldenPath(c.name),
+                                                .outName = c.name,
+                                                .thresholds = kThresholds,
+                                                .outDir = PRISM_RAIN_GOLDEN_FAILURE_DIR});
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, RainGolden, ::testing::ValuesIn(goldenCases()),

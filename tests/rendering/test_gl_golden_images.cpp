@@ -4,12 +4,9 @@
 // tests showing the comparison catches a changed shininess, a moved light and
 // Gouraud-instead-of-Phong.
 //
-// Flags (environment variables):
-//   PRISM_UPDATE_GOLDENS=1  rewrite every golden from the current rendering; the tests
-//                           then report SKIPPED (never "passed"), so a rewrite is visible.
-//   PRISM_SAVE_ACTUAL=1     write actual and diff images of every case, passing or not.
-//   PRISM_GOLDEN_OUT=DIR    where actual/diff images go (default: <build>/tests/rendering/
-//                           golden-failures); a failing case always writes them.
+// The check, its update mode (the tests then report SKIPPED, never "passed") and where
+// actual and diff images go (default: <build>/tests/rendering/golden-failures):
+// prism/test/golden.hpp, the one golden check of Prism's tests.
 //
 // Thresholds (also in tests/golden/README.md): a pixel is "over" when a channel differs
 // by more than 3/255; a case passes with at most 0.1 % of pixels over and a mean
@@ -36,13 +33,12 @@
 #include "prism/image/png_io.hpp"
 #include "prism/render/shader_meshes.hpp"
 #include "prism/shaders.hpp"
-#include "prism/test/env_flag.hpp"
+#include "prism/test/golden.hpp"
 #include "prism/test/gl_test.hpp"
 #include "rendering_test_support.hpp"
 
 namespace prism::rendering_test {
 
-using test::envFlag;
 namespace {
 
 namespace fs = std::filesystem;
@@ -132,19 +128,6 @@ image::Image8 renderGoldenCase(const GoldenCase& c) {
     return render::renderImage8(programCache(), job);
 }
 
-fs::path outputDir() {
-    const char* dir = std::getenv("PRISM_GOLDEN_OUT");
-    return (dir && *dir) ? fs::path(dir) : fs::path(PRISM_GOLDEN_FAILURE_DIR);
-}
-
-// Writes actual and diff images next to each other; returns where, for the message.
-std::string saveActualAndDiff(const GoldenCase& c, const image::Image8& actual, const image::ImageComparison& cmp) {
-    const fs::path base = outputDir() / c.shaderLabel / c.name();
-    image::writePng(base.string() + ".actual.png", actual);
-    if (cmp.sizeMatches) image::writePng(base.string() + ".diff.png", cmp.diff);
-    return base.string() + ".{actual,diff}.png";
-}
-
 std::string testNameOf(const ::testing::TestParamInfo<GoldenCase>& info) {
     std::string n = info.param.shaderLabel + "_" + info.param.name();
     for (char& ch : n)
@@ -162,20 +145,10 @@ TEST_P(GoldenImage, MatchesStoredGoldenWithinThresholds) {
     ASSERT_GT(coveredPixels(actual, render::RenderJob{}.background), actual.pixelCount() / 10)
         << c.name() << " drew (almost) nothing";
 
-    if (envFlag("PRISM_UPDATE_GOLDENS")) {
-        image::writePng(c.goldenPath(), actual);
-        GTEST_SKIP() << "PRISM_UPDATE_GOLDENS: rewrote " << c.goldenPath().string();
-    }
-    ASSERT_TRUE(fs::exists(c.goldenPath()))
-        << "no golden image " << c.goldenPath().string() << "; create it with PRISM_UPDATE_GOLDENS=1";
-
-    const image::Image8 golden = image::readPng(c.goldenPath());
-    const image::ImageComparison cmp = image::compareImages(actual, golden, kGoldenThresholds.maxChannelDiff);
-    const bool ok = image::passes(cmp, kGoldenThresholds);
-    std::string saved;
-    if (!ok || envFlag("PRISM_SAVE_ACTUAL")) saved = saveActualAndDiff(c, actual, cmp);
-    EXPECT_TRUE(ok) << c.goldenPath().string() << ": " << image::describe(cmp, kGoldenThresholds)
-                    << "\nactual and diff images: " << saved;
+    test::expectMatchesGolden(actual, {.golden = c.goldenPath(),
+                                       .outName = c.shaderLabel + "/" + c.name(),
+                                       .thresholds = kGoldenThresholds,
+                                       .outDir = PRISM_GOLDEN_FAILURE_DIR});
 }
 
 INSTANTIATE_TEST_SUITE_P(Catalogue, GoldenImage, ::testing::ValuesIn(goldenCases()), testNameOf);
@@ -206,7 +179,7 @@ class GoldenMutation : public test::GlTest {
     void SetUp() override {
         test::GlTest::SetUp();
         if (HasFatalFailure()) return;
-        if (envFlag("PRISM_UPDATE_GOLDENS")) GTEST_SKIP() << "goldens are being rewritten";
+        if (test::updatingGoldens()) GTEST_SKIP() << "goldens are being rewritten";
     }
 
     // The stored golden of `c`, after checking the unmutated rendering still passes

@@ -15,6 +15,7 @@
 #include "prism/image/image_compare.hpp"
 #include "prism/image/png_io.hpp"
 #include "prism/shaders.hpp"
+#include "prism/test/golden.hpp"
 #include "prism/test/run_command.hpp"
 #include "rendering_test_support.hpp"
 
@@ -198,12 +199,10 @@ TEST(PrismRenderCli, CheckFiniteWithOutWritesPng) {
 const std::string kSoftShadows = std::string(PRISM_SCENES_DIR) + "/soft_shadows.json";
 const image::Thresholds kStochasticThresholds{3, 0.001, 0.5};  // as the scene goldens
 
-fs::path sceneGolden(const std::string& sampler) {
-    return fs::path(PRISM_GOLDEN_DIR) / "scenes" / ("soft_shadows_" + sampler + ".png");
-}
-
-bool sameWithin(const image::Image8& a, const image::Image8& b) {
-    return image::passes(image::compareImages(a, b, kStochasticThresholds.maxChannelDiff), kStochasticThresholds);
+// The scene goldens of tests/scenes, through the tests' one golden check (compare only).
+test::GoldenOutcome againstSceneGolden(const image::Image8& image, const std::string& sampler) {
+    const fs::path golden = fs::path(PRISM_GOLDEN_DIR) / "scenes" / ("soft_shadows_" + sampler + ".png");
+    return test::compareWithGolden(image, {.golden = golden, .thresholds = kStochasticThresholds}).outcome;
 }
 
 TEST(PrismRenderCliStochastic, SamplerFlagOverridesTheSceneAndMatchesItsGolden) {
@@ -220,14 +219,14 @@ TEST(PrismRenderCliStochastic, SamplerFlagOverridesTheSceneAndMatchesItsGolden) 
         EXPECT_EQ(image.width, 128);
         EXPECT_EQ(image.height, 128);
         for (const char* other : {"white", "bluenoise", "sorted"})
-            EXPECT_EQ(sameWithin(image, image::readPng(sceneGolden(other))), std::string(sampler) == other)
+            EXPECT_EQ(againstSceneGolden(image, other),
+                      std::string(sampler) == other ? test::GoldenOutcome::Matches : test::GoldenOutcome::Differs)
                 << "--sampler " << sampler << " against the " << other << " golden";
     }
 }
 
 TEST(PrismRenderCliStochastic, FrameSppAndFramesChangeTheImage) {
     const fs::path dir = testDir();
-    const auto golden = image::readPng(sceneGolden("bluenoise"));
     for (const std::vector<std::string>& flags :
          {std::vector<std::string>{"--frame", "1"}, {"--frame", "1000000"}, {"--spp", "4"}, {"--frames", "4"}}) {
         const fs::path out = dir / "out.png";
@@ -236,7 +235,8 @@ TEST(PrismRenderCliStochastic, FrameSppAndFramesChangeTheImage) {
         args.insert(args.end(), flags.begin(), flags.end());
         const auto r = runPrismRender(args, dir);
         ASSERT_EQ(r.exitCode, 0) << flags[0] << ": " << r.err;
-        EXPECT_FALSE(sameWithin(image::readPng(out), golden)) << flags[0] << " " << flags[1] << " was ignored";
+        EXPECT_EQ(againstSceneGolden(image::readPng(out), "bluenoise"), test::GoldenOutcome::Differs)
+            << flags[0] << " " << flags[1] << " was ignored";
     }
 }
 
@@ -261,7 +261,7 @@ TEST(PrismRenderCliStochastic, FramesIsTheMeanAndFlagsOverrideTheScenesFrames) {
     EXPECT_EQ(image::readPng(dir / "a.png"), image::readPng(dir / "b.png"));
     const auto c = runPrismRender({"--scene", scene.string(), "--frame", "0", "--out", (dir / "c.png").string()}, dir);
     ASSERT_EQ(c.exitCode, 0) << c.err;
-    EXPECT_TRUE(sameWithin(image::readPng(dir / "c.png"), image::readPng(sceneGolden("sorted"))));
+    EXPECT_EQ(againstSceneGolden(image::readPng(dir / "c.png"), "sorted"), test::GoldenOutcome::Matches);
 }
 
 struct StochasticUsage {

@@ -1,7 +1,7 @@
 // Scenes rendered with minimal variants: a one-light, no-fog scene's programs have no
 // fog uniforms and a light loop bound of 1; draws with the same feature set share a
-// program; the example scenes match their golden images (tests/golden/scenes/,
-// PRISM_UPDATE_GOLDENS=1 rewrites them, failures write actual and diff images).
+// program; the example scenes match their golden images (tests/golden/scenes/; the check,
+// its update mode and the failure images: prism/test/golden.hpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -24,7 +24,7 @@
 #include "prism/scene/scene_renderer.hpp"
 #include "prism/scene/stochastic.hpp"
 #include "prism/shaders.hpp"
-#include "prism/test/env_flag.hpp"
+#include "prism/test/golden.hpp"
 #include "prism/test/gl_test.hpp"
 
 namespace fs = std::filesystem;
@@ -45,12 +45,18 @@ prism::scene::Scene smallGrating(int size, int tableSize, int terms) {
     return scene;
 }
 
-using prism::test::envFlag;
-
 // Golden thresholds: llvmpipe renders byte-identically run to run, so these only absorb
 // driver or technique changes (docs/references.md, "Golden-image testing"): a pixel counts as different above 3/255 in
 // a channel; at most 0.1 % of pixels may, and the mean error must stay <= 0.5/255.
 const prism::image::Thresholds kThresholds{3, 0.001, 0.5};
+
+// The golden of an example scene (tests/golden/scenes/<name>.png) with the thresholds above.
+prism::test::GoldenCheck sceneGolden(const std::string& name) {
+    return {.golden = fs::path(PRISM_GOLDEN_DIR) / "scenes" / (name + ".png"),
+            .outName = "scenes/" + name,
+            .thresholds = kThresholds,
+            .outDir = PRISM_GOLDEN_FAILURE_DIR};
+}
 
 class SceneGoldenMutation : public prism::test::GlTest {};
 class SceneRendering : public prism::test::GlTest {};
@@ -339,20 +345,7 @@ TEST_P(SceneGolden, MatchesTheGoldenImage) {
     scene.height /= 2;
     prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
     const auto actual = renderer.render(scene);
-    const fs::path golden = fs::path(PRISM_GOLDEN_DIR) / "scenes" / (GetParam() + ".png");
-    if (envFlag("PRISM_UPDATE_GOLDENS")) {
-        prism::image::writePng(golden, actual);
-        GTEST_SKIP() << "rewrote " << golden;
-    }
-    ASSERT_TRUE(fs::exists(golden)) << golden << " missing; run with PRISM_UPDATE_GOLDENS=1";
-    const auto stats = prism::image::compareImages(actual, prism::image::readPng(golden), kThresholds.maxChannelDiff);
-    const bool ok = prism::image::passes(stats, kThresholds);
-    if (!ok || envFlag("PRISM_SAVE_ACTUAL")) {
-        const fs::path out = fs::path(PRISM_GOLDEN_FAILURE_DIR) / "scenes";
-        prism::image::writePng(out / (GetParam() + ".actual.png"), actual);
-        prism::image::writePng(out / (GetParam() + ".diff.png"), stats.diff);
-    }
-    EXPECT_TRUE(ok) << prism::image::describe(stats, kThresholds);
+    prism::test::expectMatchesGolden(actual, sceneGolden(GetParam()));
 }
 
 INSTANTIATE_TEST_SUITE_P(ExampleScenes, SceneGolden,
@@ -371,12 +364,9 @@ TEST_F(SceneGoldenMutation, GratingPeriod2400FailsTheGolden) {
     grating.periodNm = 2400.0;
     prism::scene::SceneRenderer renderer(prism::shaders::kCatalog);
     const auto mutated = renderer.render(scene);
-    const fs::path golden = fs::path(PRISM_GOLDEN_DIR) / "scenes" / "diffraction_grating.png";
-    if (!fs::exists(golden)) GTEST_SKIP() << golden << " missing; run with PRISM_UPDATE_GOLDENS=1";
-    const auto stats = prism::image::compareImages(mutated, prism::image::readPng(golden), kThresholds.maxChannelDiff);
-    EXPECT_FALSE(prism::image::passes(stats, kThresholds))
-        << "a 2400 nm grating passes the 2500 nm golden: " << prism::image::describe(stats, kThresholds);
-    std::printf("2400 nm vs the 2500 nm golden: %s\n", prism::image::describe(stats, kThresholds).c_str());
+    prism::test::expectFailsGolden(mutated, sceneGolden("diffraction_grating"), "a 2400 nm grating");
+    std::printf("2400 nm vs the 2500 nm golden: %s\n",
+                prism::test::compareWithGolden(mutated, sceneGolden("diffraction_grating")).message.c_str());
 }
 
 // --- The stochastic effect: goldens of the three samplers, with mutation checks --------
@@ -402,8 +392,8 @@ prism::image::Image8 renderStochasticScene(const std::string& sampler, int frame
     return image;
 }
 
-fs::path stochasticGolden(const std::string& sampler) {
-    return fs::path(PRISM_GOLDEN_DIR) / "scenes" / ("soft_shadows_" + sampler + ".png");
+prism::test::GoldenCheck stochasticGolden(const std::string& sampler) {
+    return sceneGolden("soft_shadows_" + sampler);
 }
 
 }  // namespace
@@ -412,35 +402,15 @@ class StochasticGolden : public prism::test::GlTest, public ::testing::WithParam
 
 TEST_P(StochasticGolden, MatchesTheGoldenImage) {
     const auto actual = renderStochasticScene(GetParam(), 0);
-    const fs::path golden = stochasticGolden(GetParam());
-    if (envFlag("PRISM_UPDATE_GOLDENS")) {
-        prism::image::writePng(golden, actual);
-        GTEST_SKIP() << "rewrote " << golden;
-    }
-    ASSERT_TRUE(fs::exists(golden)) << golden << " missing; run with PRISM_UPDATE_GOLDENS=1";
-    const auto stats = prism::image::compareImages(actual, prism::image::readPng(golden), kThresholds.maxChannelDiff);
-    const bool ok = prism::image::passes(stats, kThresholds);
-    if (!ok || envFlag("PRISM_SAVE_ACTUAL")) {
-        const fs::path out = fs::path(PRISM_GOLDEN_FAILURE_DIR) / "scenes";
-        prism::image::writePng(out / ("soft_shadows_" + GetParam() + ".actual.png"), actual);
-        prism::image::writePng(out / ("soft_shadows_" + GetParam() + ".diff.png"), stats.diff);
-    }
-    EXPECT_TRUE(ok) << prism::image::describe(stats, kThresholds);
+    prism::test::expectMatchesGolden(actual, stochasticGolden(GetParam()));
 }
 
 TEST_P(StochasticGolden, AnotherSamplerOrFrameFailsTheGolden) {
-    const fs::path golden = stochasticGolden(GetParam());
-    if (!fs::exists(golden)) GTEST_SKIP() << golden << " missing";
-    const auto expected = prism::image::readPng(golden);
     std::vector<std::pair<std::string, prism::image::Image8>> mutants;
     for (const char* other : kSamplers)
         if (GetParam() != other) mutants.emplace_back(std::string("sampler ") + other, renderStochasticScene(other, 0));
     mutants.emplace_back("frame 1", renderStochasticScene(GetParam(), 1));
-    for (const auto& [what, image] : mutants) {
-        const auto stats = prism::image::compareImages(image, expected, kThresholds.maxChannelDiff);
-        EXPECT_FALSE(prism::image::passes(stats, kThresholds))
-            << what << " passes the " << GetParam() << " golden: " << prism::image::describe(stats, kThresholds);
-    }
+    for (const auto& [what, image] : mutants) prism::test::expectFailsGolden(image, stochasticGolden(GetParam()), what);
 }
 
 INSTANTIATE_TEST_SUITE_P(Samplers, StochasticGolden, ::testing::Values("white", "bluenoise", "sorted"));

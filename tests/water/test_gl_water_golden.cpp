@@ -3,10 +3,8 @@
 // capillary ripples on (rain) and off (the rain stopped), and a scene without water in
 // fog. Mutation tests show the comparison catches the ripples and a changed Fresnel F0.
 //
-// Conventions of tests/rendering (tests/golden/README.md): PRISM_UPDATE_GOLDENS=1
-// rewrites the goldens (tests report SKIPPED), PRISM_SAVE_ACTUAL=1 writes actual and
-// diff images of every case, PRISM_GOLDEN_OUT=DIR says where (default
-// <build>/tests/water/golden-failures); a failing case always writes them.
+// The check, its update mode and where actual and diff images go (default
+// <build>/tests/water/golden-failures/water): prism/test/golden.hpp.
 // image::Thresholds as there: a pixel is "over" above 3/255 in a channel; at most 0.1 % of
 // pixels over and a mean absolute error of at most 0.5/255.
 #include <gtest/gtest.h>
@@ -21,7 +19,7 @@
 #include "prism/image/png_io.hpp"
 #include "prism/water/rain_rates.hpp"
 #include "prism/water/water_scene.hpp"
-#include "prism/test/env_flag.hpp"
+#include "prism/test/golden.hpp"
 #include "prism/test/gl_test.hpp"
 
 namespace prism::water {
@@ -33,15 +31,8 @@ using WaterGlTest = ::prism::test::GlTest;
 constexpr int kSize = 160;
 constexpr image::Thresholds kGoldenThresholds{.maxChannelDiff = 3, .maxShareOver = 0.001, .maxMean = 0.5};
 
-using ::prism::test::envFlag;
-
 fs::path goldenPath(const std::string& name) {
     return fs::path(PRISM_GOLDEN_DIR) / "water" / (name + ".png");
-}
-
-fs::path outputDir() {
-    const char* dir = std::getenv("PRISM_GOLDEN_OUT");
-    return (dir && *dir) ? fs::path(dir) / "water" : fs::path(PRISM_GOLDEN_FAILURE_DIR) / "water";
 }
 
 // The puddle scene: 64x64 cells of 0.25 m, 120 steps of 2 s of cloudburst rain on the
@@ -68,24 +59,10 @@ view::Camera closeCamera(const HeightField& t) {
 
 void expectMatchesGolden(const std::string& name, const image::Image8& actual) {
     ASSERT_EQ(actual.width, kSize);
-    if (envFlag("PRISM_UPDATE_GOLDENS")) {
-        image::writePng(goldenPath(name), actual);
-        GTEST_SKIP() << "PRISM_UPDATE_GOLDENS: rewrote " << goldenPath(name).string();
-    }
-    ASSERT_TRUE(fs::exists(goldenPath(name)))
-        << "no golden image " << goldenPath(name).string() << "; create it with PRISM_UPDATE_GOLDENS=1";
-    const image::ImageComparison cmp =
-        image::compareImages(actual, image::readPng(goldenPath(name)), kGoldenThresholds.maxChannelDiff);
-    const bool ok = image::passes(cmp, kGoldenThresholds);
-    std::string saved;
-    if (!ok || envFlag("PRISM_SAVE_ACTUAL")) {
-        const fs::path base = outputDir() / name;
-        image::writePng(base.string() + ".actual.png", actual);
-        if (cmp.sizeMatches) image::writePng(base.string() + ".diff.png", cmp.diff);
-        saved = base.string() + ".{actual,diff}.png";
-    }
-    EXPECT_TRUE(ok) << goldenPath(name).string() << ": " << image::describe(cmp, kGoldenThresholds)
-                    << "\nactual and diff images: " << saved;
+    ::prism::test::expectMatchesGolden(actual, {.golden = goldenPath(name),
+                                                .outName = "water/" + name,
+                                                .thresholds = kGoldenThresholds,
+                                                .outDir = PRISM_GOLDEN_FAILURE_DIR});
 }
 
 // Pixels that the water changed: where the image differs from the same view without water.
@@ -137,7 +114,7 @@ TEST_F(WaterGlTest, GoldenDryTerrainInFog) {
 }
 
 TEST_F(WaterGlTest, GoldenCatchesAChangedFresnelF0) {
-    if (envFlag("PRISM_UPDATE_GOLDENS")) GTEST_SKIP() << "goldens are being rewritten";
+    if (::prism::test::updatingGoldens()) GTEST_SKIP() << "goldens are being rewritten";
     WaterSceneDescription d = puddleDescription();
     d.look.fresnelF0 = 0.2f;  // glass-like instead of water's 0.02
     WaterScene scene(std::move(d));

@@ -60,7 +60,7 @@ bool passes(const ImageComparison& stats, const Thresholds& t) {
     const std::size_t pixels = static_cast<std::size_t>(stats.width) * static_cast<std::size_t>(stats.height);
     const double share =
         pixels > 0 ? static_cast<double>(stats.pixelsAbove(t.maxChannelDiff)) / static_cast<double>(pixels) : 0.0;
-    return share <= t.maxShareOver && stats.meanAbsError <= t.maxMean;
+    return share <= t.maxShareOver && stats.meanAbsError <= t.maxMean && stats.maxChannelDiff <= t.maxPixelDiff;
 }
 
 std::string describe(const ImageComparison& stats, const Thresholds& t) {
@@ -74,7 +74,9 @@ std::string describe(const ImageComparison& stats, const Thresholds& t) {
                   "mean abs error %.4f (allowed %.4f)",
                   passes(stats, t) ? "pass" : "FAIL", stats.maxChannelDiff, over, pixels, share * 100.0,
                   t.maxShareOver * 100.0, t.maxChannelDiff, stats.meanAbsError, t.maxMean);
-    return buf;
+    std::string text = buf;
+    if (t.maxPixelDiff < 255) text += "; no pixel may differ by more than " + std::to_string(t.maxPixelDiff);
+    return text;
 }
 
 }  // namespace prism::image

@@ -16,9 +16,10 @@
 //
 // A pixel is "over" when its largest channel difference exceeds t.maxChannelDiff;
 // the comparison passes when the sizes match, the share of over pixels is at most
-// t.maxShareOver and the mean absolute error (8-bit units, all four channels of all
-// pixels) is at most t.maxMean. The stats keep a histogram of per-pixel maximum
-// differences, so passes() and describe() work for any threshold afterwards.
+// t.maxShareOver, the mean absolute error (8-bit units, all four channels of all
+// pixels) is at most t.maxMean and no pixel differs by more than t.maxPixelDiff. The
+// stats keep a histogram of per-pixel maximum differences, so passes() and describe()
+// work for any threshold afterwards.
 // Mesa llvmpipe is byte-exact across runs; a few units on a tiny share of pixels
 // absorbs technique or driver changes (docs/references.md, "Golden-image testing").
 #pragma once
@@ -35,6 +36,7 @@ struct Thresholds {
     int maxChannelDiff = 3;       // per channel, 8-bit units; a pixel above this is "over"
     double maxShareOver = 0.001;  // allowed share (0..1) of over pixels
     double maxMean = 0.5;         // allowed mean absolute error, 8-bit units
+    int maxPixelDiff = 255;       // no pixel's largest channel difference may exceed this
 };
 
 struct ImageComparison {

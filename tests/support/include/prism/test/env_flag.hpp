@@ -1,9 +1,9 @@
-// The switches a person sets when running the tests by hand (PRISM_UPDATE_GOLDENS=1,
-// PRISM_SAVE_ACTUAL=1): tests read them with envFlag, never in CI.
+// The switches a person sets when running the tests by hand (the golden switches of
+// prism/test/golden.hpp, PRISM_VULKAN_REPORT, ...): tests read them with envFlag, never in CI.
 //
 //     #include "prism/test/env_flag.hpp"
 //
-//     if (prism::test::envFlag("PRISM_UPDATE_GOLDENS")) GTEST_SKIP() << "goldens are being rewritten";
+//     if (prism::test::envFlag("PRISM_SAVE_ACTUAL")) std::puts("saving every case's images");
 #pragma once
 
 namespace prism::test {
