@@ -53,7 +53,9 @@ std::string sourcesFingerprint(const Options& o, const std::vector<std::string>&
     if (scope == RecordScope::Run) h.add("run record").add(toolIdentity());
     if (key == ContentKey::Code) h.add("code signatures");  // never equal to a text record
     const auto shown = [&](const std::string& dir) { return recordedName(dir, o); };
-    for (const auto& line : outputOptionLines(o, scope == RecordScope::DataFile)) h.add(line);
+    for (const auto& line :
+         scope == RecordScope::DataFile ? outputOptionLines(o, kDataFileRecord) : outputOptionLines(o))
+        h.add(line);
     for (const auto& file : embedded) {
         h.add(file);
         const auto text = reader.read(recordedToPath(file, o));

@@ -28,7 +28,7 @@ constexpr std::string_view kKeyTag = "key ", kReadTag = "read ", kWroteTag = "wr
 std::string recordPath(const Options& o) {
     hash::ContentHash h;
     h.add("run record").add(o.baseDir).add(o.output);
-    for (const auto& line : outputOptionLines(o, false)) h.add(line);
+    for (const auto& line : outputOptionLines(o)) h.add(line);
     if (const std::string dir = validationCacheDir(o); !dir.empty())
         return (fs::path(dir) / (h.hex64() + ".record")).string();
     return o.output.empty() ? std::string() : o.output + ".record";
