@@ -163,6 +163,17 @@ void addOptions(CLI::App& app, Options& o, std::vector<std::string>& defines, st
 
 }  // namespace
 
+std::vector<std::string> commandLineOptionNames() {
+    Options o;
+    std::vector<std::string> defines;
+    std::string errfmt, warnUndocumented, targets;
+    CLI::App app;
+    addOptions(app, o, defines, errfmt, warnUndocumented, targets);
+    std::vector<std::string> names;
+    for (const CLI::Option* option : app.get_options()) names.push_back(option->get_name());
+    return names;
+}
+
 ArgsResult parseArgs(int argc, char** argv) {
     Options o;
     std::vector<std::string> defines;

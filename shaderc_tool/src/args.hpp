@@ -41,7 +41,7 @@ struct Options {
     int jobs = 0;                   // 0 = hardware concurrency
     bool printStats = false;        // --stats: how many programs were validated, shared, or found in the cache
     bool checkOnly = false;         // --check: no header; --emit-glsl, --depfile, --stamp are still written
-    bool revalidate = false;        // --revalidate: no clean-check shortcut (clean_check.hpp)
+    bool revalidate = false;        // --revalidate: --check does not ask the run record (up_to_date.hpp)
     bool noVariantSharing = false;  // --no-variant-sharing: every variant runs the preprocessor (the reference)
     // --warn-undocumented-modules all: also warn about modules of -I libraries outside --base-dir
     bool warnUndocumentedLibraryModules = false;
@@ -53,5 +53,9 @@ struct ArgsResult {
 };
 
 ArgsResult parseArgs(int argc, char** argv);
+
+// The name of every option the parser knows ("-o", "--emit-web", "inputs", "--help"): each
+// has its row in output_options.hpp (test_option_classes.cpp).
+std::vector<std::string> commandLineOptionNames();
 
 }  // namespace prism::shaderc

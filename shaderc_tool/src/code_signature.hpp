@@ -1,5 +1,5 @@
 // What glslang's tokens can depend on in a GLSL file, for the clean-check shortcut
-// (clean_check.hpp): the text with comments removed, runs of blanks collapsed to one
+// (up_to_date.hpp, a --check without emitted files): the text with comments removed, runs of blanks collapsed to one
 // space, line ends trimmed and blank lines dropped. Two texts with the same signature
 // give the same token stream, except where __LINE__ is used (line numbers shift): such
 // a file's signature is its whole text. Conservative by construction: whatever might be

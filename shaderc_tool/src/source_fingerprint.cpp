@@ -7,9 +7,9 @@
 #include <sstream>
 
 #include "code_signature.hpp"
+#include "output_options.hpp"
 #include "generated_format.hpp"
 #include "prism/hash/content_hash.hpp"
-#include "program_declarations.hpp"
 #include "shader_inputs.hpp"
 #include "shown_path.hpp"
 #include "tool_identity.hpp"
@@ -39,28 +39,23 @@ bool isStage(const fs::path& p) {
     return stageOfPath(p).has_value();
 }
 
-std::string fingerprintOf(const Options& o, const std::vector<std::string>& embedded, const SourceReader& reader,
-                          ContentKey key) {
+}  // namespace
+
+// `lines`: the options that change the outputs (output_options.hpp), then each file read and
+// the listings of the searched folders.
+std::string sourcesFingerprint(const Options& o, const std::vector<std::string>& embedded, const SourceReader& reader,
+                               ContentKey key, RecordScope scope) {
     hash::ContentHash h;
     h.add(PRISM_VERSION);
     h.add(format::kLayoutVersion);
-    // A code record lives in the cache directory, not in an output, so it can name the build
-    // that checked (tool_identity.hpp); a text record is in the data file, which must not.
-    if (key == ContentKey::Code) h.add("code signatures").add(toolIdentity());  // never equal to a text record
-    // Only the options that change the generated files, with paths as embedded (never
-    // --depfile, --stamp, --emit-glsl, -j or the error format).
+    // The run record names the build that wrote it (tool_identity.hpp); the data file's
+    // record is in an output, which must not (reproducible, relocatable bytes).
+    if (scope == RecordScope::Run) h.add("run record").add(toolIdentity());
+    if (key == ContentKey::Code) h.add("code signatures");  // never equal to a text record
     const auto shown = [&](const std::string& dir) { return recordedName(dir, o); };
-    h.add("ns " + o.nameSpace);
-    h.add("glsl " + std::to_string(o.glslVersion) + " " + o.glslProfile);
-    if (o.spirvEnv) h.add("client vulkan " + std::string(spirvEnvName(*o.spirvEnv)));
-    h.add("out " + fs::path(o.output).filename().string());
-    for (const auto& [name, value] : o.defines) h.add("-D " + name + "=" + value);
-    for (const auto& filter : o.variantFilters) h.add("--variant " + filter);
-    if (o.targets != std::vector<Target>{Target::Gl}) h.add("--target " + targetListText(o.targets));
-    for (const auto& contract : o.contracts) h.add("--contract " + shown(contract));
-    for (const auto& dir : o.includeDirs) h.add("-I " + shown(dir));
-    for (const auto& input : o.inputs) h.add("in " + shown(input));
-    for (const auto& declaration : o.programs) h.add("--program " + declarationWithPaths(declaration, shown));
+    for (const auto& line :
+         scope == RecordScope::DataFile ? outputOptionLines(o, kDataFileRecord) : outputOptionLines(o))
+        h.add(line);
     for (const auto& file : embedded) {
         h.add(file);
         const auto text = reader.read(recordedToPath(file, o));
@@ -80,16 +75,17 @@ std::string fingerprintOf(const Options& o, const std::vector<std::string>& embe
     return h.hex64();
 }
 
-}  // namespace
-
-SourcesRecord recordSources(const Options& o, const std::vector<std::string>& filesRead, const SourceReader& reader,
-                            ContentKey key) {
+std::vector<std::string> embeddedNames(const Options& o, const std::vector<std::string>& filesRead) {
     const std::set<std::string> named(filesRead.begin(), filesRead.end());  // each stage lists its files
     std::set<std::string> unique;
     for (const auto& f : named) unique.insert(recordedName(f, o));
+    return {unique.begin(), unique.end()};
+}
+
+SourcesRecord recordSources(const Options& o, const std::vector<std::string>& filesRead, const SourceReader& reader) {
     SourcesRecord record;
-    record.files.assign(unique.begin(), unique.end());
-    record.fingerprint = fingerprintOf(o, record.files, reader, key);
+    record.files = embeddedNames(o, filesRead);
+    record.fingerprint = sourcesFingerprint(o, record.files, reader, ContentKey::Text, RecordScope::DataFile);
     return record;
 }
 
@@ -97,24 +93,6 @@ std::string sourcesBlock(const SourcesRecord& record) {
     std::string block = std::string(kSourcesRecordStart) + record.fingerprint + "\n";
     for (const auto& f : record.files) block += std::string(kSourcesRecordFile) + f + "\n";
     return block;
-}
-
-std::optional<std::vector<std::string>> unchangedSources(const Options& o, const std::string& header,
-                                                         const SourceReader& reader, ContentKey key) {
-    const auto start = header.rfind(kSourcesRecordStart);
-    if (start == std::string::npos) return std::nullopt;
-    std::istringstream in(header.substr(start + kSourcesRecordStart.size()));
-    SourcesRecord recorded;
-    std::getline(in, recorded.fingerprint);
-    for (std::string line; std::getline(in, line);) {
-        if (!line.starts_with(kSourcesRecordFile)) return std::nullopt;
-        recorded.files.push_back(line.substr(kSourcesRecordFile.size()));
-    }
-    if (recorded.files.empty() || fingerprintOf(o, recorded.files, reader, key) != recorded.fingerprint)
-        return std::nullopt;
-    std::vector<std::string> paths;
-    for (const auto& f : recorded.files) paths.push_back(recordedToPath(f, o));
-    return paths;
 }
 
 }  // namespace prism::shaderc

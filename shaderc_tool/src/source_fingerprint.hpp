@@ -1,14 +1,13 @@
-// The sources record of stage 2 (up_to_date.hpp), the cheap no-op check. The data file
-// records, at its end, every file the run that wrote it read (relative to --base-dir) and a
-// fingerprint of the tool version, the options that change the output (never --depfile,
-// --stamp or --emit-glsl), those files' contents and the listings of the -I directories and
-// input folders. When all of that is unchanged, nothing the outputs depend on changed, and
-// the run ends before any resolution or glslang call.
+// The fingerprint of what a run read: the options that change the outputs
+// (output_options.hpp), every file read (relative to --base-dir) and the listings of the -I
+// directories and input folders. Two users: the one record of "nothing changed"
+// (run_record.hpp), and the sources block that ends the data file, printed since layout 3
+// and kept byte for byte (the golden files), which nothing reads back any more.
 //
-//   if (auto files = unchangedSources(options, dataText, reader)) ... // no-op; *files for the depfile
+//   record.key = sourcesFingerprint(options, embeddedNames(options, filesRead), reader, ContentKey::Text,
+//                                   RecordScope::Run);
 #pragma once
 
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,25 +17,28 @@
 namespace prism::shaderc {
 
 // What the fingerprint takes of each recorded file: its whole text (the outputs embed
-// it), or its code signature (code_signature.hpp: what glslang's tokens depend on; the
-// clean-check shortcut, clean_check.hpp).
+// it), or its code signature (code_signature.hpp: what glslang's tokens depend on, all a
+// --check without emitted files depends on).
 enum class ContentKey { Text, Code };
+
+// Run: the run record, which also names the tool build and hashes every option that
+// changes outputs. DataFile: the data file's printed block, with the rows it always had.
+enum class RecordScope { Run, DataFile };
+
+// The files read as embedded: relative to --base-dir where possible, sorted, unique.
+std::vector<std::string> embeddedNames(const Options& options, const std::vector<std::string>& filesRead);
+
+std::string sourcesFingerprint(const Options& options, const std::vector<std::string>& embedded,
+                               const SourceReader& reader, ContentKey key, RecordScope scope);
 
 struct SourcesRecord {
     std::string fingerprint;
-    std::vector<std::string> files;  // as embedded: relative to --base-dir where possible
+    std::vector<std::string> files;  // as embedded
 };
 
-// The record of a run that read `filesRead` (paths as read).
+// The data file's sources block of a run that read `filesRead` (paths as read).
 SourcesRecord recordSources(const Options& options, const std::vector<std::string>& filesRead,
-                            const SourceReader& reader, ContentKey key = ContentKey::Text);
-
-// The data file's closing comment block holding `record`.
+                            const SourceReader& reader);
 std::string sourcesBlock(const SourcesRecord& record);
-
-// The files (paths to read them by) when `dataText` records sources whose fingerprint
-// is still the same; nullopt when anything differs or there is no record.
-std::optional<std::vector<std::string>> unchangedSources(const Options& options, const std::string& dataText,
-                                                         const SourceReader& reader, ContentKey key = ContentKey::Text);
 
 }  // namespace prism::shaderc

@@ -2,7 +2,7 @@
 // function of its own file that returns its result with its diagnostics, which runTool()
 // gathers and prints once, at the end:
 //   1 args.hpp                 the command line
-//   2 up_to_date.hpp           nothing changed? (asked again after stage 4)
+//   2 up_to_date.hpp           nothing changed? (the one record, before any input is read)
 //   3 shader_inputs.hpp        the stage files, and the binding contract (contract.hpp)
 //   4 catalog_builder.hpp      include resolution and variants
 //   5 validation_scheduler.hpp glslang, interface and contract checks, reflection; then
@@ -45,7 +45,7 @@ int runTool(int argc, char** argv) {
     if (!args.options) return args.exitCode;
     const Options& o = *args.options;
     DiskReader disk;
-    if (const auto unchanged = unchangedBeforeResolution(o, disk))
+    if (const auto unchanged = unchangedSinceLastRun(o, disk))
         return exitStatus(writeBuildSystemFiles(o, unchanged->filesRead));
 
     DiagnosticSink sink;
@@ -60,23 +60,23 @@ int runTool(int argc, char** argv) {
 
     auto catalog = resolveCatalog(o, inputs.shaders, contract.contract, disk);
     sink.reportAll(catalog.diagnostics);
-    fillRecords(o, catalog, disk);
-    if (sink.errorCount() == 0 && outputsAreCurrent(o, catalog)) {
-        sink.print(std::cerr, o.errorFormat);
-        return exitStatus(writeBuildSystemFiles(o, catalog.filesRead));
-    }
+    fillDataFileRecord(o, catalog, disk);
 
     if (sink.errorCount() == 0) sink.reportAll(checkShaderTargets(o, catalog));
     if (sink.errorCount() == 0) sink.reportAll(validateCatalog(o, catalog, contract.contract).diagnostics);
     if (sink.errorCount() == 0) sink.reportAll(validateEs300(o, catalog, contract.contract));
     if (sink.errorCount() == 0) sink.reportAll(buildSpirvTarget(o, catalog, contract.contract));
     sink.print(std::cerr, o.errorFormat);
-    rememberCheckOutcome(o, catalog, sink, disk);
     if (sink.errorCount() > 0) {
+        forgetRun(o);
         std::cerr << "prism-shaderc: " << sink.errorCount() << " error(s); nothing written\n";
         return kExitShaderErrors;
     }
-    if (const int status = exitStatus(writeOutputs(o, catalog)); status != kExitOk) return status;
+    if (const int status = exitStatus(writeOutputs(o, catalog)); status != kExitOk) {
+        forgetRun(o);
+        return status;
+    }
+    rememberRun(o, catalog.filesRead, sink, disk);
     return exitStatus(writeBuildSystemFiles(o, catalog.filesRead));
 }
 

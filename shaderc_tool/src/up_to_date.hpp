@@ -1,31 +1,21 @@
-// Stage 2 of prism-shaderc: is there anything to do? The one place that lets a run skip
-// work because nothing it depends on changed. Its records answer in this order:
-//   1. The sources record (source_fingerprint.hpp), at the end of the data file. Asked
-//      first, before any input is read, by a run that writes a header (-o without
-//      --emit-glsl): when the header is the one the data file records (its hash) and the
-//      files the last run read, the options that change the outputs and the listings of
-//      the -I and input folders are all as recorded, the run ends here.
-//   2. The clean-check record (clean_check.hpp), in the cache directory. Asked instead by
-//      --check (without --revalidate, --emit-glsl): when the last check found nothing and
-//      every file it read has the same code signature, the check passes here. Written by
-//      a full check that found nothing, removed by one that found something
-//      (rememberCheckOutcome).
-//   3. The inputs fingerprint (catalog_builder.hpp's fingerprint()), in the data file's
-//      banner. Asked after resolution, by the runs of 1: it covers everything the outputs
-//      print, the new sources record included, so it answers where record 1 could not be
-//      read back (a record that lists no file, or one damaged by hand) but the outputs
-//      would be the same.
-//   4. The validation cache (validation_cache.hpp), asked inside stage 5 for each program
-//      and not for the run: a program whose token stream passed before is not validated.
-// Records 1 and 2 answer only for the build of the tool that wrote them (tool_identity.hpp):
-// record 2 names it, and with --stamp the stamp names the build that wrote the outputs
-// (records 1 and 3), so a rebuilt prism-shaderc regenerates what an older one left.
-// When 1, 2 or 3 answers, only the depfile and stamp are written (stage 6).
+// Stage 2 of prism-shaderc: is there anything to do? The one record of "nothing changed",
+// asked before any input is read, for every kind of run (a header, --emit-web, --emit-glsl,
+// --emit-spirv, --emit-reflection, --check). A successful run writes it last, after its
+// outputs: the fingerprint of the tool build that ran (tool_identity.hpp), the options that
+// change outputs (output_options.hpp), every file it read and the listings of the searched
+// folders (source_fingerprint.hpp), then each file it wrote with its size and modification
+// time. The next run with the same record ends here, writing only the depfile and stamp,
+// when the fingerprint is the same and every file written is still as it left it: an edit
+// of any file read, a new module in an -I folder, another option or another tool build, or
+// an output deleted or edited by hand, each make a full run. A --check that writes no file
+// compares code signatures instead of texts (a comment edit passes without validating) and
+// is recorded only when it found nothing at all, so its warnings are printed again.
+// The record lives in the cache directory (validation_settings.hpp: --cache-dir, or next
+// to --stamp), else beside the header (X.hpp.record); a run with neither keeps none.
 //
-//   if (auto unchanged = unchangedBeforeResolution(options, reader)) return write(unchanged->filesRead);
-//   auto catalog = resolveCatalog(...);
-//   fillRecords(options, catalog, reader);
-//   if (!errors && outputsAreCurrent(options, catalog)) return write(catalog.filesRead);
+//   if (auto unchanged = unchangedSinceLastRun(options, reader)) return write(unchanged->filesRead);
+//   ... resolve, validate, writeOutputs ...
+//   rememberRun(options, catalog.filesRead, sink, reader);
 #pragma once
 
 #include <optional>
@@ -43,18 +33,19 @@ struct Unchanged {
     std::vector<std::string> filesRead;  // what the recorded run read, for the depfile
 };
 
-// Records 1 and 2, before anything is read. Under --stats, says when record 2 answered.
-std::optional<Unchanged> unchangedBeforeResolution(const Options& options, const SourceReader& reader);
+// The record's answer, before anything is read. Under --stats, says when a check ended here.
+std::optional<Unchanged> unchangedSinceLastRun(const Options& options, const SourceReader& reader);
 
-// Sets what the data file will record (the sources record and the inputs fingerprint)
-// when the run writes a header.
-void fillRecords(const Options& options, ResolvedCatalog& catalog, const SourceReader& reader);
+// The sources block and banner fingerprint the data file prints (byte for byte those of
+// the golden files; nothing reads them back).
+void fillDataFileRecord(const Options& options, ResolvedCatalog& catalog, const SourceReader& reader);
 
-// Record 3: true when the header and data file on disk are those this catalogue writes.
-bool outputsAreCurrent(const Options& options, const ResolvedCatalog& catalog);
+// After the outputs are written: records the run, or removes the record when the next run
+// must be a full one (a check with diagnostics).
+void rememberRun(const Options& options, const std::vector<std::string>& filesRead, const DiagnosticSink& sink,
+                 const SourceReader& reader);
 
-// Record 2 after a full check: written when it found nothing, else removed.
-void rememberCheckOutcome(const Options& options, const ResolvedCatalog& catalog, const DiagnosticSink& sink,
-                          const SourceReader& reader);
+// Removes the record (a failed run).
+void forgetRun(const Options& options);
 
 }  // namespace prism::shaderc

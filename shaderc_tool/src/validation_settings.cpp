@@ -5,6 +5,7 @@
 #include <iomanip>
 #include <ostream>
 
+#include "output_options.hpp"
 #include "prism/hash/content_hash.hpp"
 
 namespace prism::shaderc {
@@ -20,16 +21,7 @@ std::string validationCacheDir(const Options& o) {
 std::string catalogueCacheKey(const Options& o) {
     hash::ContentHash h;
     h.add("catalogue");
-    for (const auto& list : {o.inputs, o.includeDirs, o.contracts, o.variantFilters}) {
-        h.add(std::to_string(list.size()));
-        for (const auto& item : list) h.add(item);
-    }
-    for (const auto& [name, value] : o.defines) h.add(name).add(value);
-    for (const auto& declaration : o.programs) h.add("--program").add(declaration);
-    h.add(std::to_string(o.glslVersion)).add(o.glslProfile).add(o.baseDir);
-    if (o.warnUndocumentedLibraryModules) h.add("warn-undocumented-modules=all");  // more warnings, another record
-    if (o.spirvEnv) h.add(spirvEnvName(*o.spirvEnv));
-    if (o.targets != std::vector<Target>{Target::Gl}) h.add("--target " + targetListText(o.targets));
+    for (const auto& line : outputOptionLines(o, kValidationPack)) h.add(line);
     return h.hex();
 }
 

@@ -17,9 +17,10 @@ namespace prism::shaderc {
 std::string validationCacheDir(const Options& options);
 
 // Names the catalogue's pack in the cache directory: a hash of the options that choose
-// its programs (inputs, -I, -D, --contract, --variant, --glsl-version, --base-dir), so a
-// `--check` and the build's `-o` run of one catalogue share it, and catalogues sharing
-// a directory do not overwrite each other's.
+// its programs and how they are checked (output_options.hpp's kValidationPack rows: inputs,
+// -I, -D, --contract, --variant, --program, --glsl-version, --client, --target, --base-dir,
+// --warn-undocumented-modules), so a `--check` and the build's `-o` run of one catalogue
+// share it, and catalogues sharing a directory do not overwrite each other's.
 std::string catalogueCacheKey(const Options& options);
 
 // "prism-shaderc: resolved 304 stages with 20 runs of glslang's preprocessor (294 shared

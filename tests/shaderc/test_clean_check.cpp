@@ -1,5 +1,6 @@
-// The clean-check shortcut of `prism-shaderc --check` (clean_check.hpp): after a check
-// that found nothing, a re-check whose files differ only in comments and layout ends
+// The clean-check shortcut of `prism-shaderc --check`, the run record (up_to_date.hpp) of a
+// check that writes no file: after a check that found nothing, a re-check whose files
+// differ only in comments and layout ends
 // without validating; any code edit, a new file in a searched folder, or diagnostics from
 // the last run give a full check. And the code signature it compares
 // (code_signature.hpp): blind to comments and blanks, never to code.

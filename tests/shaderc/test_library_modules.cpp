@@ -2,7 +2,7 @@
 // layout, with each module's documentation comment after its includes): the "module has
 // no leading comment" warning is the project's, so it is off for them unless
 // --warn-undocumented-modules all asks, and without it a library keeps the clean-check
-// shortcut (clean_check.hpp). Modules under --base-dir keep the warning, -I or not.
+// shortcut (the run record, up_to_date.hpp). Modules under --base-dir keep the warning, -I or not.
 #include <gtest/gtest.h>
 
 #include <filesystem>

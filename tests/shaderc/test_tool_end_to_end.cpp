@@ -142,8 +142,8 @@ TEST(ToolOutputs, UnchangedHeaderKeepsItsTimestampAndErrorsWriteNothing) {
         EXPECT_EQ(e.path().string().find(".tmp."), std::string::npos) << "left a temporary file " << e.path();
 }
 
-// The no-op is decided on the sources the data file records (source_fingerprint.hpp):
-// any change to a file read, or a new module in an -I folder, rebuilds.
+// The no-op is decided by the run record (up_to_date.hpp); the data file still prints its
+// sources block: any change to a file read, or a new module in an -I folder, rebuilds.
 TEST(ToolOutputs, NoOpChecksTheRecordedSources) {
     ScratchDir dir("noop");
     fs::copy(kVariantsDir, dir.path() / "fx", fs::copy_options::recursive);
@@ -181,7 +181,7 @@ TEST(ToolOutputs, NoOpChecksTheRecordedSources) {
 }
 
 // The no-op trusts only outputs that this build of the tool wrote (tool_identity.hpp: its
-// identity is in the stamp and the clean-check record, not in the outputs): a rebuilt
+// identity is in the run record and the stamp, not in the outputs): a rebuilt
 // prism-shaderc generates and checks again what an older build left, though no source changed.
 TEST(ToolOutputs, ARebuiltToolDoesNotTrustAnOlderBuildsOutputs) {
     ScratchDir dir("rebuilt-tool");
