@@ -1,7 +1,7 @@
 // The layout of prism-shaderc's generated files, in one place (after Filament's
 // MaterialChunkType.h): every line tag and record marker that a writer prints and a reader
 // looks for. The writers (header_writer.cpp, data_writer.cpp, source_fingerprint.cpp) and
-// the readers (data_writer.cpp's headerMatchesData and recordedFingerprint,
+// the readers (data_file_records.cpp's headerMatchesData and recordedFingerprint,
 // source_fingerprint.cpp's unchangedSources, up_to_date.cpp's read of the data file's
 // tail) take them from here, so a format change is one edit. The files: docs/shaderc.md.
 //

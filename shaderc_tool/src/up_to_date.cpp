@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "clean_check.hpp"
-#include "data_writer.hpp"
+#include "data_file_records.hpp"
 #include "generated_format.hpp"
 #include "output_file.hpp"
 #include "source_fingerprint.hpp"
