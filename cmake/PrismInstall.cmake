@@ -9,7 +9,10 @@ set_target_properties(prism-shaderc PROPERTIES EXPORT_NAME shaderc)
 set_target_properties(prism_catalog PROPERTIES EXPORT_NAME catalog)
 install(TARGETS prism-shaderc prism_catalog prism_io prism_hash prism_shaderc_lib EXPORT PrismTargets
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/shaderc_tool/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+# The foundation's headers (prism/catalog, prism/io, prism/hash) and the tool's public API (prism/shaderc).
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/foundation/catalog/include/ ${PROJECT_SOURCE_DIR}/foundation/io/include/
+                  ${PROJECT_SOURCE_DIR}/foundation/hash/include/ ${PROJECT_SOURCE_DIR}/shaderc_tool/include/
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/modules/ DESTINATION ${CMAKE_INSTALL_DATADIR}/prism/modules)
 install(FILES ${PROJECT_SOURCE_DIR}/scripts/web/prism_web.js DESTINATION ${CMAKE_INSTALL_DATADIR}/prism/web)
 

@@ -3,8 +3,8 @@
 
 Every code example in docs/*.md and README.md that follows a marker, and the usage example
 at the top of every public header (runtime/*/include/prism/**/*.hpp,
-shaderc_tool/include/prism/{catalog,io,hash,shaderc}/*.hpp), is a copy of a file under examples/snippets/
-that tests/snippets builds and runs. This script checks that the copies are exact.
+foundation/*/include/prism/**/*.hpp, shaderc_tool/include/prism/shaderc/*.hpp), is a copy of a
+file under examples/snippets/ that tests/snippets builds and runs. This script checks that the copies are exact.
 
 Markers:
   Markdown:  <!-- snippet: examples/snippets/NAME.cpp -->   then a ```cpp fenced block
@@ -31,8 +31,7 @@ import sys
 import tempfile
 
 SNIPPET_DIR = "examples/snippets"
-HEADER_GLOBS = ["runtime/*/include/prism/**/*.hpp", "shaderc_tool/include/prism/catalog/*.hpp",
-                "shaderc_tool/include/prism/io/*.hpp", "shaderc_tool/include/prism/hash/*.hpp",
+HEADER_GLOBS = ["runtime/*/include/prism/**/*.hpp", "foundation/*/include/prism/**/*.hpp",
                 "shaderc_tool/include/prism/shaderc/*.hpp"]
 DOC_GLOBS = ["docs/*.md", "README.md"]
 FULLY_CHECKED_DOCS = ["docs/runtime.md"]  # here every ```cpp / ```cmake block needs a marker

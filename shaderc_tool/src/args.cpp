@@ -1,7 +1,7 @@
 // Command-line parsing for prism-shaderc (see docs/shaderc.md for the contract).
 #include "args.hpp"
-#include "data_writer.hpp"
-#include "header_writer.hpp"
+#include "data_file_records.hpp"
+#include "module_naming.hpp"
 #include "source_reader.hpp"
 
 #include <CLI/CLI.hpp>

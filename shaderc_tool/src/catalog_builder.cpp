@@ -13,7 +13,6 @@
 #include "module_naming.hpp"
 #include "prism/hash/content_hash.hpp"
 #include "shown_path.hpp"
-#include "validator.hpp"
 #include "variant_resolution.hpp"
 #include "variants.hpp"
 

@@ -19,7 +19,6 @@
 #include <vector>
 
 #include "diagnostics.hpp"
-#include "interface_check.hpp"
 #include "source_reader.hpp"
 
 namespace prism::shaderc {
@@ -56,18 +55,6 @@ ContractLoadResult loadContracts(const std::vector<std::string>& paths, const So
 // The text of Prism's modules/contract.json, compiled into the tool
 // (shaderc_tool/CMakeLists.txt writes it from builtin_contract.cpp.in).
 std::string_view builtInContractJson();
-
-// How far (edit distance) a shader's name may be from a contract name to count as a
-// misspelling of it; farther names are the shader's own.
-inline constexpr std::size_t kContractTypoDistance = 2;
-
-// Checks the vertex stage's inputs and every stage's plain uniforms (not blocks): a name
-// in the contract must have its type, and an explicit `layout(location = N)` on an
-// attribute the contract's location (GL would bind N, the runtime feeds the contract's);
-// a near miss is an error (a warning against the
-// built-in contract); other names pass.
-std::vector<Diagnostic> checkContract(const Contract& contract, const std::vector<StageInterface>& stages,
-                                      const SourceLocator& locate);
 
 // GL enum of a GLSL type name (GL_FLOAT_VEC3 ...), 0 when unknown.
 std::uint32_t glTypeOf(const std::string& glslType);

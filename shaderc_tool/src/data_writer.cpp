@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <filesystem>
 #include <map>
 #include <sstream>
 
@@ -13,7 +12,6 @@
 #include "generated_format.hpp"
 #include "module_naming.hpp"
 #include "header_writer.hpp"
-#include "prism/hash/content_hash.hpp"
 
 namespace prism::shaderc {
 namespace {
@@ -403,36 +401,13 @@ class DataWriter {
     ArrayEmitter arrays_;
 };
 
-std::string textHash(const std::string& text) {
-    return hash::ContentHash().add(text).hex64();
-}
-
 }  // namespace
-
-std::string dataPathFor(const std::string& headerPath) {
-    return std::filesystem::path(headerPath).replace_extension(format::kDataFileExtension).string();
-}
 
 std::string writeData(const CatalogData& catalog, const std::string& headerFileName, const std::string& headerText) {
     // The hash goes last but for the sources record, so the no-op's read of the tail sees it.
     auto text = DataWriter(catalog).write(headerFileName);
     const auto record = catalog.sourcesBlock.empty() ? text.size() : text.rfind(catalog.sourcesBlock);
-    return text.insert(record, std::string(format::kHeaderHashLine) + textHash(headerText) + "\n");
-}
-
-bool headerMatchesData(const std::string& headerText, const std::string& dataText) {
-    const auto pos = dataText.rfind(format::kHeaderHashLine);
-    if (pos == std::string::npos || headerText.empty()) return false;
-    const auto recorded = pos + format::kHeaderHashLine.size();
-    return dataText.compare(recorded, format::kHashDigits + 1, textHash(headerText) + "\n") == 0;
-}
-
-std::string recordedFingerprint(const std::string& text) {
-    const auto pos = text.find(format::kFingerprintLine);
-    if (pos == std::string::npos || pos > format::kFingerprintWithin) return {};  // the banner's second line only
-    const auto start = pos + format::kFingerprintLine.size();
-    const auto end = text.find('\n', pos);
-    return text.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    return text.insert(record, std::string(format::kHeaderHashLine) + headerHash(headerText) + "\n");
 }
 
 }  // namespace prism::shaderc

@@ -12,20 +12,12 @@
 #include <string>
 
 #include "catalog_model.hpp"
+#include "data_file_records.hpp"
 
 namespace prism::shaderc {
-
-// Where the data file of header `headerPath` goes: the same path with extension .cpp.
-std::string dataPathFor(const std::string& headerPath);
 
 // The data file's text; it includes the header by its file name (it sits beside it) and
 // records a hash of `headerText`, so that a run can tell a stale or edited header.
 std::string writeData(const CatalogData& catalog, const std::string& headerFileName, const std::string& headerText);
-
-// True when `dataText` (or its tail) records the hash of `headerText`.
-bool headerMatchesData(const std::string& headerText, const std::string& dataText);
-
-// The fingerprint recorded in an existing data file's banner, or "" when there is none.
-std::string recordedFingerprint(const std::string& dataText);
 
 }  // namespace prism::shaderc

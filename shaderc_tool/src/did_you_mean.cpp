@@ -1,13 +1,10 @@
-// "Did you mean" hints of the tool: function names of a stage, include candidates
+// "Did you mean" hints of the tool: the function names of a stage
 // (see did_you_mean.hpp; the edit-distance rule is prism/catalog/did_you_mean.hpp).
 #include "did_you_mean.hpp"
 
 #include <algorithm>
-#include <filesystem>
 #include <regex>
 #include <set>
-
-#include "include_search.hpp"
 
 namespace prism::shaderc {
 
@@ -53,23 +50,6 @@ std::vector<std::string> functionNamesIn(std::string_view glsl) {
         start = end + 1;
     }
     return {names.begin(), names.end()};
-}
-
-std::vector<std::string> includeCandidates(const IncludeTarget& target, const std::vector<SearchDir>& dirs) {
-    namespace fs = std::filesystem;
-    const std::string name = target.name;
-    const auto slash = name.rfind('/');
-    const std::string folder = slash == std::string::npos ? std::string() : name.substr(0, slash + 1);
-    std::set<std::string> found;
-    for (const auto& dir : dirs) {
-        std::string relative = folder;
-        while (!relative.empty() && relative.front() == '/') relative.erase(0, 1);  // "/lib/x": below the dir
-        const fs::path where = fs::path(dir.path.empty() ? "." : dir.path) / relative;
-        std::error_code ec;
-        for (auto it = fs::directory_iterator(where, ec); !ec && it != fs::directory_iterator(); it.increment(ec))
-            if (it->is_regular_file(ec)) found.insert(folder + it->path().filename().string());
-    }
-    return {found.begin(), found.end()};
 }
 
 }  // namespace prism::shaderc

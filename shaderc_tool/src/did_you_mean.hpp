@@ -1,8 +1,7 @@
 // "Did you mean" hints for prism-shaderc's diagnostics: the closest known name by edit
 // distance (the rule itself is public, prism/catalog/did_you_mean.hpp, shared with the
-// runtime), the functions a resolved stage defines (for glslang's "no matching
-// overloaded function found") and the files an #include could have meant (for
-// "cannot find include").
+// runtime) and the functions a resolved stage defines (for glslang's "no matching
+// overloaded function found"). The files an #include could have meant are include_search.cpp's.
 //
 //   didYouMean("lightng", {"lighting", "fog"})  // " (did you mean 'lighting'?)"
 #pragma once
@@ -16,9 +15,6 @@
 
 namespace prism::shaderc {
 
-struct SearchDir;
-struct IncludeTarget;
-
 using catalog::closestName;
 using catalog::didYouMean;
 using catalog::editDistance;
@@ -26,10 +22,5 @@ using catalog::editDistance;
 // Names of the functions defined or declared at global scope in GLSL text (a return
 // type, a name and a parameter list at the start of a line, outside comments).
 std::vector<std::string> functionNamesIn(std::string_view glsl);
-
-// The paths an #include of `target` could have meant: files next to where each
-// searched folder would have had it ("a/utl.glsl" -> the files of each dir/a/), as
-// the include would spell them.
-std::vector<std::string> includeCandidates(const IncludeTarget& target, const std::vector<SearchDir>& dirs);
 
 }  // namespace prism::shaderc

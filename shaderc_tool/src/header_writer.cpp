@@ -107,14 +107,6 @@ void writeContractHandles(std::ostream& out, const Contract& contract) {
 
 }  // namespace
 
-std::string cppIdentifier(const std::string& name) {
-    std::string id;
-    for (char c : name) id += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-    if (id.empty() || std::isdigit(static_cast<unsigned char>(id[0]))) id = "_" + id;
-    if (isCppKeyword(id)) id += '_';
-    return id;
-}
-
 std::vector<std::string> splitIntoChunks(const std::string& text, std::size_t maxBytes) {
     std::vector<std::string> chunks;
     std::size_t start = 0;

@@ -36,7 +36,4 @@ std::string quotedLiteral(const std::string& s);
 // `v` as a 0x%04X literal (GL type enums).
 std::string hexLiteral(std::uint32_t v);
 
-// `name` made a valid C++ identifier that is no keyword.
-std::string cppIdentifier(const std::string& name);
-
 }  // namespace prism::shaderc

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <filesystem>
+#include <set>
 
 namespace prism::shaderc {
 
@@ -37,6 +38,26 @@ std::vector<SearchDir> includeSearchDirs(const IncludeTarget& target, const std:
 }
 
 namespace {
+
+// The paths an #include of `target` could have meant (the "did you mean" of "cannot find include"):
+// files next to where each searched folder would have had it ("a/utl.glsl" -> the files of each
+// dir/a/), as the include would spell them.
+std::vector<std::string> includeCandidates(const IncludeTarget& target, const std::vector<SearchDir>& dirs) {
+    namespace fs = std::filesystem;
+    const std::string name = target.name;
+    const auto slash = name.rfind('/');
+    const std::string folder = slash == std::string::npos ? std::string() : name.substr(0, slash + 1);
+    std::set<std::string> found;
+    for (const auto& dir : dirs) {
+        std::string relative = folder;
+        while (!relative.empty() && relative.front() == '/') relative.erase(0, 1);  // "/lib/x": below the dir
+        const fs::path where = fs::path(dir.path.empty() ? "." : dir.path) / relative;
+        std::error_code ec;
+        for (auto it = fs::directory_iterator(where, ec); !ec && it != fs::directory_iterator(); it.increment(ec))
+            if (it->is_regular_file(ec)) found.insert(folder + it->path().filename().string());
+    }
+    return {found.begin(), found.end()};
+}
 
 // The first file `target` names in dirs[from, end) that glslc would also search when
 // `glslcOnly` (not an ancestor folder), other than `except` (a canonical path).

@@ -166,4 +166,12 @@ bool isCppKeyword(std::string_view word) {
     return cppKeywords().contains(word);
 }
 
+std::string cppIdentifier(const std::string& name) {
+    std::string id;
+    for (char c : name) id += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+    if (id.empty() || std::isdigit(static_cast<unsigned char>(id[0]))) id = "_" + id;
+    if (isCppKeyword(id)) id += '_';
+    return id;
+}
+
 }  // namespace prism::shaderc

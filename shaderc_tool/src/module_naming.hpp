@@ -39,4 +39,7 @@ std::optional<std::string> demangleName(std::string_view identifier);
 // writes with a trailing "_" instead. The one list for every generated name.
 bool isCppKeyword(std::string_view word);
 
+// `name` made a valid C++ identifier that is no keyword.
+std::string cppIdentifier(const std::string& name);
+
 }  // namespace prism::shaderc

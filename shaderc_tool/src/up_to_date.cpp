@@ -7,7 +7,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "data_writer.hpp"
+#include "data_file_records.hpp"
 #include "output_file.hpp"
 #include "output_options.hpp"
 #include "prism/hash/content_hash.hpp"

@@ -20,6 +20,7 @@
 #include "glslang_stage.hpp"
 #include "directive_lines.hpp"
 #include "assigned_locations.hpp"
+#include "contract_check.hpp"
 #include "interface_check.hpp"
 #include "spirv_source_lines.hpp"
 #include "stage_interface.hpp"

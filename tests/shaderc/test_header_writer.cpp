@@ -6,6 +6,7 @@
 #include "data_writer.hpp"
 #include "generated_format.hpp"
 #include "header_writer.hpp"
+#include "module_naming.hpp"
 #include "tool_runner.hpp"
 
 using namespace prism::shaderc;

@@ -305,9 +305,9 @@ TEST(ReferenceCorpusChecks, BlockStructsOfEveryAcceptedVulkanProgramCompile) {
     EXPECT_GE(headers, 90) << "Vulkan programs Prism refused: " << refused;
     const auto all = out.path() / "all_blocks.cpp";
     prism::test::writeFile(all, includes);
-    const auto cc =
-        runCommand({"c++", "-std=c++20", "-fsyntax-only", "-I", PRISM_SOURCE_DIR "/shaderc_tool/include", all.string()},
-                   {.workDir = {}, .mergeStderr = true});
+    const auto cc = runCommand(
+        {"c++", "-std=c++20", "-fsyntax-only", "-I", PRISM_SOURCE_DIR "/foundation/catalog/include", all.string()},
+        {.workDir = {}, .mergeStderr = true});
     ASSERT_EQ(cc.exitCode, 0) << cc.out;
     int asserts = 0;
     for (int i = 0; i < headers; ++i) {

@@ -365,7 +365,7 @@ TEST(Targets, CatalogueStoresEveryTargetAndTheBlockLayoutMatchesTheReference) {
                         size[1].str() + ", 1, phong_v0_resource0_members}"),
               std::string::npos);
     const auto compiled =
-        runShell("c++ -std=c++20 -fsyntax-only -I " + kSource + "/shaderc_tool/include -I . cat.cpp", dir.str());
+        runShell("c++ -std=c++20 -fsyntax-only -I " + kSource + "/foundation/catalog/include -I . cat.cpp", dir.str());
     EXPECT_EQ(compiled.exitCode, 0) << compiled.output;
 }
 
