@@ -63,8 +63,8 @@ TOOL_SRC = "shaderc_tool/src"
 TOOL_STAGES = {
     0: "diagnostics did_you_mean directive_lines data_file_records generated_format glslang_stage "
        "job_pool module_naming output_file source_reader spirv_words tool_identity",
-    1: "args path_embedding shown_path targets",  # the command line
-    2: "clean_check code_signature source_fingerprint up_to_date",  # nothing changed?
+    1: "args output_options path_embedding program_argument shown_path targets",  # the command line
+    2: "code_signature source_fingerprint up_to_date",  # nothing changed?
     3: "contract program_declarations shader_inputs",  # the inputs and the contract
     4: "catalog_builder catalog_model glslang_preprocessor include_resolver include_search preprocessor_limits "
        "structural_macros validation_key variant_resolution variants",  # includes and variants
@@ -82,10 +82,8 @@ PENDING_UPWARD_INCLUDES = {
     ("catalog_model.hpp", "reflection.hpp"): "generators: catalog_model.hpp, one route to a stage's SPIR-V",
     ("catalog_model.hpp", "spirv_codegen.hpp"): "generators: catalog_model.hpp, one route to a stage's SPIR-V",
     ("up_to_date.hpp", "catalog_builder.hpp"): "record: one record asked before any input is read (item 1)",
-    ("clean_check.cpp", "validation_settings.hpp"): "record: one record and one scheduler (items 1, 2)",
     ("code_signature.cpp", "shader_inputs.hpp"): "record: the sources record (item 1)",
     ("source_fingerprint.cpp", "shader_inputs.hpp"): "record: the sources record (item 1)",
-    ("source_fingerprint.cpp", "program_declarations.hpp"): "record: the sources record (item 1)",
 }
 
 

@@ -4,7 +4,7 @@
 #include <array>
 #include <filesystem>
 
-#include "program_declarations.hpp"
+#include "program_argument.hpp"
 #include "shown_path.hpp"
 
 namespace prism::shaderc {
@@ -128,6 +128,14 @@ std::vector<std::string> outputOptionLines(const Options& o, OptionKey key) {
     for (const auto& rule : kRules)
         if (rule.effect == OptionEffect::ChangesOutputs && (rule.keys & key) != 0) rule.lines(o, lines);
     return lines;
+}
+
+std::string validationCacheDir(const Options& o) {
+    if (o.cacheDir == "none") return {};
+    if (!o.cacheDir.empty()) return o.cacheDir;
+    if (o.stamp.empty()) return {};
+    const auto parent = std::filesystem::path(o.stamp).parent_path();
+    return (parent.empty() ? std::filesystem::path("prism-shaderc-cache") : parent / "prism-shaderc-cache").string();
 }
 
 }  // namespace prism::shaderc

@@ -52,4 +52,9 @@ const OptionRule* optionRule(std::string_view name);
 std::vector<std::string> outputOptionLines(const Options& options);
 std::vector<std::string> outputOptionLines(const Options& options, OptionKey key);
 
+// Where the validation cache and the run record live: --cache-dir DIR, "none" for none,
+// else by default `prism-shaderc-cache/` next to --stamp (a build-system output, so in the
+// build tree; never the source tree); without --stamp and --cache-dir, "".
+std::string validationCacheDir(const Options& options);
+
 }  // namespace prism::shaderc

@@ -5,19 +5,10 @@
 #include <optional>
 #include <set>
 
+#include "program_argument.hpp"
+
 namespace prism::shaderc {
 namespace {
-
-std::vector<std::string> splitFiles(const std::string& list) {
-    std::vector<std::string> files;
-    std::size_t start = 0;
-    while (true) {
-        const auto comma = list.find(',', start);
-        files.push_back(list.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
-        if (comma == std::string::npos) return files;
-        start = comma + 1;
-    }
-}
 
 // What is wrong with a program name, "" when nothing.
 std::string nameProblem(const std::string& name) {
@@ -66,7 +57,8 @@ std::optional<ShaderInput> parseDeclaration(const std::string& text, const Sourc
         return std::nullopt;
     }
     bool ok = true;
-    for (const auto& file : splitFiles(text.substr(eq + 1))) ok = addStageFile(file, where, reader, program, out) && ok;
+    for (const auto& file : splitProgramFiles(text.substr(eq + 1)))
+        ok = addStageFile(file, where, reader, program, out) && ok;
     if (!ok) return std::nullopt;
     sortByPipelineOrder(program.stages);
     const auto before = out.diagnostics.size();
@@ -102,20 +94,10 @@ std::set<std::string> filesNamedBy(const std::vector<std::string>& declarations,
     for (const auto& text : declarations) {
         const auto eq = text.find('=');
         if (eq == std::string::npos) continue;
-        for (const auto& file : splitFiles(text.substr(eq + 1)))
+        for (const auto& file : splitProgramFiles(text.substr(eq + 1)))
             if (auto canonical = reader.canonical(file)) named.insert(*canonical);
     }
     return named;
-}
-
-std::string declarationWithPaths(const std::string& declaration,
-                                 const std::function<std::string(const std::string&)>& pathOf) {
-    const auto eq = declaration.find('=');
-    if (eq == std::string::npos) return declaration;
-    std::string out = declaration.substr(0, eq + 1);
-    const auto files = splitFiles(declaration.substr(eq + 1));
-    for (std::size_t i = 0; i < files.size(); ++i) out += (i ? "," : "") + pathOf(files[i]);
-    return out;
 }
 
 }  // namespace prism::shaderc

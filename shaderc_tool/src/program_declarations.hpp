@@ -37,9 +37,4 @@ DeclaredPrograms declaredPrograms(const std::vector<std::string>& declarations, 
 // them belongs to its declared program and is not paired by name.
 std::set<std::string> filesNamedBy(const std::vector<std::string>& declarations, const SourceReader& reader);
 
-// The declaration with each file written as `pathOf` gives it (the records of an unchanged
-// run use paths relative to --base-dir, so they stay free of the checkout's place).
-std::string declarationWithPaths(const std::string& declaration,
-                                 const std::function<std::string(const std::string&)>& pathOf);
-
 }  // namespace prism::shaderc

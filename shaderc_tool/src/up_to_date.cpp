@@ -13,7 +13,6 @@
 #include "prism/hash/content_hash.hpp"
 #include "shown_path.hpp"
 #include "source_fingerprint.hpp"
-#include "validation_settings.hpp"
 
 namespace prism::shaderc {
 namespace {

@@ -10,14 +10,6 @@
 
 namespace prism::shaderc {
 
-std::string validationCacheDir(const Options& o) {
-    if (o.cacheDir == "none") return {};
-    if (!o.cacheDir.empty()) return o.cacheDir;
-    if (o.stamp.empty()) return {};
-    const auto parent = std::filesystem::path(o.stamp).parent_path();
-    return (parent.empty() ? std::filesystem::path("prism-shaderc-cache") : parent / "prism-shaderc-cache").string();
-}
-
 std::string catalogueCacheKey(const Options& o) {
     hash::ContentHash h;
     h.add("catalogue");

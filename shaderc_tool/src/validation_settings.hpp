@@ -1,7 +1,5 @@
-// Where the validation cache lives and how its counts are printed: --cache-dir DIR,
-// "none" for no cache, else by default `prism-shaderc-cache/` next to --stamp (a
-// build-system output, so in the build tree; never the source tree); without --stamp
-// and --cache-dir there is no cache.
+// The validation cache's pack name and how its counts are printed (where the cache lives,
+// validationCacheDir, is output_options.hpp's: the run record lies there too).
 //
 //   ValidationCache cache(validationCacheDir(options), catalogueCacheKey(options));
 #pragma once
@@ -10,11 +8,10 @@
 #include <string>
 
 #include "args.hpp"
+#include "output_options.hpp"
 #include "validation_scheduler.hpp"
 
 namespace prism::shaderc {
-
-std::string validationCacheDir(const Options& options);
 
 // Names the catalogue's pack in the cache directory: a hash of the options that choose
 // its programs and how they are checked (output_options.hpp's kValidationPack rows: inputs,
