@@ -8,9 +8,18 @@
 # (see docs/).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-# Each phase's wall time, printed as it ends (CI's budget: docs/ci.md).
-phase_start=$SECONDS
-phase() { echo "run-tests: phase '$1' took $((SECONDS - phase_start)) s (total $SECONDS s)"; phase_start=$SECONDS; }
+# Each phase's wall time and CPU time, printed as it ends, then all of them as the rows of
+# docs/ci.md's table (CI's budget). CPU time: user + system of the finished child processes
+# (fields cutime and cstime of /proc/self/stat, in clock ticks), so a phase's builds and tests count.
+ticks_per_s=$(getconf CLK_TCK)
+children_cpu_ticks() { local f; read -r -a f <"/proc/$$/stat"; echo $((f[15] + f[16])); }
+phase_start=$SECONDS phase_cpu_start=$(children_cpu_ticks) phase_rows=""
+phase() {
+  local wall=$((SECONDS - phase_start)) cpu=$((($(children_cpu_ticks) - phase_cpu_start) / ticks_per_s))
+  echo "run-tests: phase '$1' took $wall s, $cpu s CPU (total $SECONDS s)"
+  phase_rows+="| $1 | $wall | $cpu |"$'\n'
+  phase_start=$SECONDS phase_cpu_start=$(children_cpu_ticks)
+}
 bash scripts/setup.sh
 phase setup
 BUILD_DIR=${BUILD_DIR:-build}
@@ -31,3 +40,5 @@ cmake --build "$SAN_BUILD_DIR" --target prism_fuzzers -j "$(nproc)"
 phase "fuzz build"
 ctest --test-dir "$SAN_BUILD_DIR" -L '^fuzz$' --output-on-failure -j "$(nproc)"
 phase "fuzz tests"
+printf 'run-tests: every phase (docs/ci.md), %s s in all\n| phase | wall s | CPU s |\n|---|---:|---:|\n%s' \
+  "$SECONDS" "$phase_rows"
