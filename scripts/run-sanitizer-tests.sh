@@ -3,7 +3,7 @@
 # AddressSanitizer (with LeakSanitizer) and UndefinedBehaviorSanitizer
 # (-fno-sanitize-recover: the first error fails the test) and runs them with CTest.
 #
-#   scripts/run-sanitizer-tests.sh [--build-dir DIR] [--no-build] [extra ctest args]
+#   scripts/run-sanitizer-tests.sh [--build-dir DIR] [--no-build | --build-only] [extra ctest args]
 #
 # Only the unit tier's test executables are built: the code where sanitizers find bugs, the
 # readers of untrusted input (GLSL and its preprocessor, contract and scene JSON, OBJ, PNG maps),
@@ -18,10 +18,12 @@ cd "$(dirname "$0")/.."
 ROOT=$PWD
 BUILD_DIR=build-san
 BUILD=1
+TEST=1
 while [ $# -gt 0 ]; do
   case "$1" in
     --build-dir) BUILD_DIR=$2; shift 2 ;;
     --no-build) BUILD=0; shift ;;
+    --build-only) TEST=0; shift ;;
     *) break ;;
   esac
 done
@@ -34,6 +36,7 @@ if [ "$BUILD" = 1 ]; then
   cmake --build "$BUILD_DIR" --target "${TEST_TARGETS[@]}" -j "$(nproc)"
   echo "run-sanitizer-tests: configured and built in $SECONDS s"
 fi
+[ "$TEST" = 1 ] || exit 0
 
 # Mesa's EGL unloads its driver at eglTerminate; memory the driver's globals still
 # point to then looks leaked from "<unknown module>". Keeping libraries loaded removes
