@@ -63,9 +63,10 @@ ENDURANCE='water\.MassLedger\..*|water\.FastCpuStep\.IsBitIdenticalToTheFirstSte
 ENDURANCE+='Programs/ReferenceCorpusRealCode\..*|ReferenceCorpusChecks\.BlockStructsOfEveryAcceptedVulkanProgramCompile|'
 # Every program of the project's catalogues through the es300 and SPIR-V targets, then glslangValidator and
 # spirv-val over each output (56 s here under ASan, of 871 tests' 497 s): this tier's own build already runs
-# the ASan-built prism-shaderc over the same programs for the same targets (the project, diffraction and
-# blue-noise catalogues are built for gl, es300 and spirv, with no validation cache yet), and the
-# reference tools' half is the same work in both tiers.
+# the ASan-built prism-shaderc over most of those programs for those targets (the project, diffraction and
+# blue-noise catalogues are built for gl, es300 and spirv, with an empty validation cache in a fresh build;
+# rain's and water's are built for gl, their es300 and SPIR-V take the same code paths), and the reference
+# tools' half is the same work in both tiers.
 ENDURANCE+='Targets\.EveryEs300ProgramOfTheProjectValidatesAndLinks|Targets\.EverySpirvModuleOfTheProjectPassesTheValidator'
 # Checks that run no code of this build (clang-format over the tree, the report's Python generator) give
 # the same answer in both tiers: they run in the main tier only.
