@@ -52,7 +52,7 @@ std::string fingerprintOf(const Options& o, const std::vector<std::string>& embe
     const auto shown = [&](const std::string& dir) { return recordedName(dir, o); };
     h.add("ns " + o.nameSpace);
     h.add("glsl " + std::to_string(o.glslVersion) + " " + o.glslProfile);
-    if (o.spirvEnv) h.add("client vulkan " + std::string(spirvEnvName(*o.spirvEnv)));
+    if (o.rules.spirvEnv) h.add("client vulkan " + std::string(spirvEnvName(*o.rules.spirvEnv)));
     h.add("out " + fs::path(o.output).filename().string());
     for (const auto& [name, value] : o.defines) h.add("-D " + name + "=" + value);
     for (const auto& filter : o.variantFilters) h.add("--variant " + filter);

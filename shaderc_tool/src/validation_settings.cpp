@@ -28,7 +28,7 @@ std::string catalogueCacheKey(const Options& o) {
     for (const auto& declaration : o.programs) h.add("--program").add(declaration);
     h.add(std::to_string(o.glslVersion)).add(o.glslProfile).add(o.baseDir);
     if (o.warnUndocumentedLibraryModules) h.add("warn-undocumented-modules=all");  // more warnings, another record
-    if (o.spirvEnv) h.add(spirvEnvName(*o.spirvEnv));
+    if (o.rules.spirvEnv) h.add(spirvEnvName(*o.rules.spirvEnv));
     if (o.targets != std::vector<Target>{Target::Gl}) h.add("--target " + targetListText(o.targets));
     return h.hex();
 }
