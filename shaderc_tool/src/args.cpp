@@ -214,10 +214,11 @@ ArgsResult parseArgs(int argc, char** argv) {
     if (auto conflict = conflictOf(o, app); !conflict.empty()) return usageError(conflict);
     if (o.nameSpace.empty() && !o.output.empty()) o.nameSpace = defaultNamespace(o.output);
     if (o.client == "vulkan") {
-        o.spirvEnv = parseSpirvEnv(o.targetEnv.empty() ? "vulkan1.2" : o.targetEnv);
-        if (!o.spirvEnv || o.targetEnv.starts_with("opengl"))
+        const auto env = parseSpirvEnv(o.targetEnv.empty() ? "vulkan1.2" : o.targetEnv);
+        if (!env || o.targetEnv.starts_with("opengl"))
             return usageError("--target-env " + o.targetEnv +
                               ": not a Vulkan version; use vulkan1.0, vulkan1.1, vulkan1.2 or vulkan1.3");
+        o.rules = vulkanClientRules(*env);
     }
     if (o.baseDir.empty()) o.baseDir = std::filesystem::current_path().string();
     o.baseDir = std::filesystem::absolute(o.baseDir).lexically_normal().string();

@@ -7,7 +7,8 @@
 #include <vector>
 
 #include "diagnostics.hpp"
-#include "spirv_codegen.hpp"
+#include "spirv_env.hpp"
+#include "target_rules.hpp"
 #include "targets.hpp"
 
 namespace prism::shaderc {
@@ -24,14 +25,14 @@ struct Options {
     std::string stamp;                                         // --stamp: touched on every successful run
     std::string emitGlslDir;                                   // --emit-glsl
     std::string baseDir;                                       // --base-dir: embedded paths are relative to it
-    std::string cacheDir;              // --cache-dir: validation results cache ("" = default, "none" = off)
-    std::string nameSpace;             // --namespace; default: the header's file name (defaultNamespace)
-    std::string client = "opengl";     // --client opengl|vulkan
-    std::string targetEnv;             // --target-env (vulkan client only; "" = vulkan1.2)
-    std::optional<SpirvEnv> spirvEnv;  // the vulkan client's environment; empty for opengl
-    std::string emitSpirvDir;          // --emit-spirv: <program>[.<variant>].<stage>.spv
-    std::string emitWeb;               // --emit-web: the web catalogue, a plain script (web_writer.hpp)
-    std::string emitReflection;        // --emit-reflection: the SPIR-V's layout as JSON (reflection_writer.hpp)
+    std::string cacheDir;           // --cache-dir: validation results cache ("" = default, "none" = off)
+    std::string nameSpace;          // --namespace; default: the header's file name (defaultNamespace)
+    std::string client = "opengl";  // --client opengl|vulkan
+    std::string targetEnv;          // --target-env (vulkan client only; "" = vulkan1.2)
+    TargetRules rules;              // the client's, decided here once from --client and --target-env
+    std::string emitSpirvDir;       // --emit-spirv: <program>[.<variant>].<stage>.spv
+    std::string emitWeb;            // --emit-web: the web catalogue, a plain script (web_writer.hpp)
+    std::string emitReflection;     // --emit-reflection: the SPIR-V's layout as JSON (reflection_writer.hpp)
     // --target gl,es300,spirv (targets.hpp). A Vulkan-client catalogue's output is SPIR-V
     // already: there --target may only say spirv, and `targets` stays {Gl}, the client's own.
     std::vector<Target> targets = {Target::Gl};

@@ -160,7 +160,7 @@ std::map<std::string, std::string> variantBlocks(const ProgramReflection& r) {
 }  // namespace
 
 void writeBlockStructs(std::ostream& out, const CatalogData& c) {
-    if (!c.spirvEnv) return;
+    if (!c.rules.spirvEnv) return;
     out << "\n// The blocks' C++ structs at the SPIR-V's layout (prism-shaderc docs/vulkan.md, \"Block structs\"):\n"
         << "// blocks::<shader>::<Block>, or blocks::<shader>::<variant>::<Block> where variants differ.\n"
         << "namespace blocks {\n";
@@ -168,8 +168,8 @@ void writeBlockStructs(std::ostream& out, const CatalogData& c) {
         // Block name -> its declarations -> the variants that have them.
         std::map<std::string, std::map<std::string, std::vector<std::string>>> layouts;
         for (const auto& v : s.variants)
-            if (const ProgramReflection* r = spirvOf(v))
-                for (const auto& [name, text] : variantBlocks(*r)) layouts[name][text].push_back(v.name);
+            if (v.spirv)
+                for (const auto& [name, text] : variantBlocks(*v.spirv)) layouts[name][text].push_back(v.name);
         if (layouts.empty()) continue;
         const std::string ns = cppIdentifier(mangleName(s.name));
         out << "namespace " << ns << " {\n";

@@ -354,7 +354,7 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
     rc.data.contract = contract;
     for (const auto& file : contract.files) rc.data.contractFiles.push_back(embeddedLocation(file, o));
     rc.data.versionDirective = versionDirective(o.glslVersion, o.glslProfile);
-    rc.data.spirvEnv = o.spirvEnv;
+    rc.data.rules = o.rules;
     rc.filesRead = contract.files;
     auto filters = parseVariantFilters(o.variantFilters);
     sink.reportAll(filters.diagnostics);
@@ -367,7 +367,7 @@ ResolvedCatalog resolveCatalog(const Options& o, const std::vector<ShaderInput>&
                               .defines = o.defines,
                               .defaultVersion = rc.data.versionDirective,
                               .baseDir = o.baseDir,
-                              .spirvEnv = o.spirvEnv};
+                              .rules = o.rules};
     const auto baseRuns = resolveBaseRuns(o, shaders, base, reader);
     for (const auto& runs : baseRuns) rc.preprocessorRuns += runs.size();
     IncludedFiles included;
@@ -397,8 +397,8 @@ std::string fingerprint(const ResolvedCatalog& rc) {
     mix(d.nameSpace);
     mix(d.versionDirective);
     for (const auto& f : d.contractFiles) mix(f.path + '\0' + std::to_string(f.searchDir));
-    if (d.spirvEnv) mix(spirvEnvName(*d.spirvEnv));  // OpenGL catalogues: as before
-    mix(d.sourcesBlock);                             // so a header with a stale record is rewritten
+    if (d.rules.spirvEnv) mix(spirvEnvName(*d.rules.spirvEnv));  // OpenGL catalogues: as before
+    mix(d.sourcesBlock);                                         // so a header with a stale record is rewritten
     for (const auto& s : d.shaders) {
         mix(s.name);
         for (const auto& a : s.axes) {

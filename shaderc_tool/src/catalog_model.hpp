@@ -12,7 +12,8 @@
 
 #include "contract.hpp"
 #include "reflection.hpp"
-#include "spirv_codegen.hpp"
+#include "spirv_env.hpp"
+#include "target_rules.hpp"
 #include "shown_path.hpp"
 #include "variants.hpp"
 
@@ -30,17 +31,12 @@ struct CatalogVariant {
     std::vector<CatalogStage> stages;
     ProgramReflection reflection;
     bool es300 = false;  // the es300 target was produced for it (es300_target.hpp)
-    // The spirv target's SPIR-V and layout (spirv_target.hpp), when the run produces it for
-    // this shader; `attributes` are the vertex inputs at the locations glslang assigned.
+    // The variant's SPIR-V and its layout, the one place every output reads them: the spirv
+    // target's, or a Vulkan-client catalogue's own (its `reflection`), both filled by stage 5's
+    // buildSpirvTarget (spirv_target.hpp); empty when the run made none for it. The spirv
+    // target's `attributes` are the vertex inputs at the locations glslang assigned.
     std::optional<ProgramReflection> spirv = {};
 };
-
-// The variant's SPIR-V and its layout: the spirv target's, else the Vulkan client's; nullptr
-// when the run made none for it.
-inline const ProgramReflection* spirvOf(const CatalogVariant& v) {
-    if (v.spirv) return &*v.spirv;
-    return v.reflection.spirv.empty() ? nullptr : &v.reflection;
-}
 
 // The words of `stage` in `r`, or nullptr.
 inline const std::vector<std::uint32_t>* stageWords(const ProgramReflection& r, catalog::Stage stage) {
@@ -71,7 +67,7 @@ struct CatalogData {
     std::string fingerprint;   // of every input; lets an unchanged run skip validation
     std::string sourcesBlock;  // closing comment: the files read and their fingerprint (source_fingerprint.hpp)
     std::string versionDirective;
-    std::optional<SpirvEnv> spirvEnv;    // the Vulkan client's environment (SPIR-V stored); empty: OpenGL
+    TargetRules rules;                   // the client's (Options::rules); with a spirvEnv, SPIR-V is stored
     std::vector<CatalogShader> shaders;  // sorted by name
     std::vector<CatalogModule> modules;  // sorted by identifier
     Contract contract;

@@ -222,8 +222,8 @@ class DataWriter {
             << tablesOut_.str() << "\n}  // namespace\n\n"
             << "constinit const prism::catalog::Catalog kCatalog{" << shaders << ", " << modules << ", "
             << contractAttributes << ", " << contractUniforms << ", " << quotedLiteral(c_.versionDirective) << ", "
-            << contractFiles << (c_.spirvEnv ? ", " + quotedLiteral(std::string(spirvEnvName(*c_.spirvEnv))) : "")
-            << "};\n"
+            << contractFiles
+            << (c_.rules.spirvEnv ? ", " + quotedLiteral(std::string(spirvEnvName(*c_.rules.spirvEnv))) : "") << "};\n"
             << "\n}  // namespace " << c_.nameSpace << "\n";
         if (!c_.sourcesBlock.empty()) out << "\n" << c_.sourcesBlock;
         return out.str();
@@ -235,7 +235,7 @@ class DataWriter {
         const std::string prefix = mangleName(s.name) + "_v" + std::to_string(index);
         tablesOut_ << "// ---- shader " << s.name << ", variant " << v.name << "\n";
         std::vector<std::string> stages;
-        const ProgramReflection* spirv = spirvOf(v);
+        const ProgramReflection* spirv = v.spirv ? &*v.spirv : nullptr;
         for (const auto& st : v.stages)
             stages.push_back(stageSource(st, st.text, prefix + "_" + std::string(catalog::stageName(st.stage)),
                                          spirv ? stageWords(*spirv, st.stage) : nullptr));
@@ -251,7 +251,7 @@ class DataWriter {
         auto uniformArray = arrays_.array("prism::catalog::Uniform", prefix + "_uniforms", uniforms);
         // The SPIR-V's and the other targets' fields only where there are: a gl catalogue stays as it was.
         const std::string layout =
-            c_.spirvEnv || v.es300 || v.spirv ? spirvLayout(v, prefix, attributeArray) : std::string();
+            c_.rules.spirvEnv || v.es300 || v.spirv ? spirvLayout(v, prefix, attributeArray) : std::string();
         return "{" + quotedLiteral(v.name) + ", " + defineArray + ", " + stageArray + ", " + attributeArray + ", " +
                uniformArray + layout + "}";
     }
@@ -278,7 +278,7 @@ class DataWriter {
     // specialisation constants, then the es300 stages and the SPIR-V's vertex inputs.
     std::string spirvLayout(const CatalogVariant& v, const std::string& prefix, const std::string& attributeArray) {
         static const ProgramReflection none;
-        const ProgramReflection& r = spirvOf(v) ? *spirvOf(v) : none;
+        const ProgramReflection& r = v.spirv ? *v.spirv : none;
         std::vector<std::string> resources, push, spec;
         for (std::size_t i = 0; i < r.resources.size(); ++i)
             resources.push_back(resourceRow(r.resources[i], prefix + "_resource" + std::to_string(i) + "_members"));
@@ -292,9 +292,9 @@ class DataWriter {
             spec.push_back("{" + quotedLiteral(c.name) + ", " + std::to_string(c.id) + ", " + hexLiteral(c.glType) +
                            ", " + hexLiteral(c.defaultBits) + "}");
         // The Vulkan client's vertex inputs are `attributes` (its own locations); the spirv target's its own.
-        const std::string inputs = v.spirv       ? attributeRows(v.spirv->attributes, prefix + "_spirv_inputs")
-                                   : c_.spirvEnv ? attributeArray
-                                                 : "std::span<const prism::catalog::Attribute>{}";
+        const std::string inputs = c_.rules.spirvEnv ? attributeArray
+                                   : v.spirv         ? attributeRows(v.spirv->attributes, prefix + "_spirv_inputs")
+                                                     : "std::span<const prism::catalog::Attribute>{}";
         return ", " + arrays_.array("prism::catalog::Resource", prefix + "_resources", resources, false) + ", " +
                arrays_.array("prism::catalog::PushConstant", prefix + "_push_constants", push, false) + ", " +
                arrays_.array("prism::catalog::SpecConstant", prefix + "_spec_constants", spec, false) + ", " +

@@ -1,8 +1,7 @@
-// Writing the flattened stages for --emit-glsl and their SPIR-V for --emit-spirv (see glsl_emitter.hpp).
+// The flattened stages for --emit-glsl and their SPIR-V for --emit-spirv, as files (see glsl_emitter.hpp).
 #include "glsl_emitter.hpp"
 
 #include "es300_target.hpp"
-#include "output_file.hpp"
 
 namespace prism::shaderc {
 namespace {
@@ -28,8 +27,10 @@ std::string spirvFileName(const CatalogShader& s, const CatalogVariant& v, catal
     return stagePath(variantBase("", s, v), stage).substr(1) + ".spv";
 }
 
-bool emitGlsl(const std::string& dir, const CatalogData& catalog, const std::vector<Target>& runTargets,
-              const std::vector<std::vector<Target>>& targets, std::string& error) {
+std::vector<GeneratedFile> glslFiles(const std::string& dir, const CatalogData& catalog,
+                                     const std::vector<Target>& runTargets,
+                                     const std::vector<std::vector<Target>>& targets) {
+    std::vector<GeneratedFile> files;
     const bool nameTargets = runTargets != std::vector<Target>{Target::Gl};
     for (std::size_t i = 0; i < catalog.shaders.size(); ++i) {
         const auto& s = catalog.shaders[i];
@@ -38,30 +39,27 @@ bool emitGlsl(const std::string& dir, const CatalogData& catalog, const std::vec
                 if (t == Target::Spirv) continue;  // words, not text: --emit-spirv
                 const std::string base =
                     variantBase(dir, s, v) + (nameTargets ? "." + std::string(targetName(t)) : std::string());
-                for (const auto& st : v.stages) {
-                    const std::string text = t == Target::Es300 ? es300Text(st.text) : st.text;
-                    if (writeIfChanged(stagePath(base, st.stage), text, error) == WriteOutcome::Failed) return false;
-                }
+                for (const auto& st : v.stages)
+                    files.push_back({stagePath(base, st.stage), t == Target::Es300 ? es300Text(st.text) : st.text});
             }
     }
-    return true;
+    return files;
 }
 
-bool emitSpirv(const std::string& dir, const CatalogData& catalog, std::string& error) {
+std::vector<GeneratedFile> spirvFiles(const std::string& dir, const CatalogData& catalog) {
+    std::vector<GeneratedFile> files;
     for (const auto& s : catalog.shaders)
         for (const auto& v : s.variants) {
-            const ProgramReflection* r = spirvOf(v);
-            if (r == nullptr) continue;
-            for (const auto& st : r->spirv) {
+            if (!v.spirv) continue;
+            for (const auto& st : v.spirv->spirv) {
                 std::string bytes(st.words.size() * sizeof(std::uint32_t), '\0');
                 for (std::size_t i = 0; i < st.words.size(); ++i)
                     for (std::size_t b = 0; b < 4; ++b)
                         bytes[4 * i + b] = static_cast<char>((st.words[i] >> (8 * b)) & 0xFF);
-                if (writeIfChanged(dir + "/" + spirvFileName(s, v, st.stage), bytes, error) == WriteOutcome::Failed)
-                    return false;
+                files.push_back({dir + "/" + spirvFileName(s, v, st.stage), std::move(bytes)});
             }
         }
-    return true;
+    return files;
 }
 
 }  // namespace prism::shaderc

@@ -471,11 +471,10 @@ PreprocessRun preprocessWithGlslang(const std::string& path, const ResolveOption
     const char* names[] = {"0"};
     shader.setStringsWithLengthsAndNames(strings, nullptr, names, 1);
     shader.setPreamble(preamble.c_str());
-    if (options.spirvEnv) configureShader(shader, languageOf(path), *options.spirvEnv);
+    options.rules.configure(shader, languageOf(path));
     std::string output;
-    const bool ok =
-        shader.preprocess(GetDefaultResources(), version.number, profileOf(version), true, false,
-                          options.spirvEnv ? spirvMessages(*options.spirvEnv) : EShMsgDefault, &output, includer);
+    const bool ok = shader.preprocess(GetDefaultResources(), version.number, profileOf(version), true, false,
+                                      options.rules.messages(), &output, includer);
     if (!ok) addGlslangErrors(shader.getInfoLog(), includer, run);
     run.ok = std::none_of(run.diagnostics.begin(), run.diagnostics.end(),
                           [](const Diagnostic& d) { return d.severity == Severity::Error; });

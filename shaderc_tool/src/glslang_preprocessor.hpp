@@ -38,7 +38,8 @@
 #include "directive_lines.hpp"
 #include "include_search.hpp"
 #include "source_reader.hpp"
-#include "spirv_codegen.hpp"
+#include "spirv_env.hpp"
+#include "target_rules.hpp"
 
 namespace prism::shaderc {
 
@@ -55,7 +56,7 @@ struct ResolveOptions {
     // scanModule's "module has no leading comment" warning; the catalogue turns it off for
     // libraries found through -I outside --base-dir (--warn-undocumented-modules).
     bool warnUndocumentedModule = true;
-    std::optional<SpirvEnv> spirvEnv = {};  // the Vulkan client's: glslang then predefines VULKAN
+    TargetRules rules = {};  // the client's (Options::rules): the Vulkan client's predefine VULKAN
 };
 
 // One file as glslang entered it.

@@ -156,7 +156,7 @@ std::string writeHeader(const CatalogData& c, const std::string& dataFileName) {
         << "#pragma once\n\n"
         << "#include <array>\n#include <cstddef>\n#include <cstdint>\n#include <optional>\n#include <string_view>\n\n"
         << "#include <prism/catalog/shader_catalog.hpp>\n#include <prism/catalog/uniform_handle.hpp>\n"
-        << (c.spirvEnv ? "#include <prism/catalog/block_struct.hpp>\n\n#include <glm/glm.hpp>\n\n" : "\n")
+        << (c.rules.spirvEnv ? "#include <prism/catalog/block_struct.hpp>\n\n#include <glm/glm.hpp>\n\n" : "\n")
         << "namespace " << c.nameSpace << " {\n\n";
     out << "enum class ShaderId : std::uint32_t {\n";
     for (std::size_t i = 0; i < c.shaders.size(); ++i)

@@ -34,7 +34,7 @@ constexpr std::array kRules{
                }},
     OptionRule{"--client", kChanges, kDataFileRecord | kValidationPack,
                [](const Options& o, Lines& out) {
-                   if (o.spirvEnv) out.push_back("client vulkan " + std::string(spirvEnvName(*o.spirvEnv)));
+                   if (o.rules.spirvEnv) out.push_back("client vulkan " + std::string(spirvEnvName(*o.rules.spirvEnv)));
                }},
     OptionRule{"--target-env", kChanges, kDataFileRecord | kValidationPack,
                [](const Options&, Lines&) {}},  // in --client's line

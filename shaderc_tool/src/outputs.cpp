@@ -3,46 +3,37 @@
 
 #include <filesystem>
 
-#include "data_writer.hpp"
 #include "depfile.hpp"
-#include "glsl_emitter.hpp"
-#include "header_writer.hpp"
 #include "output_file.hpp"
-#include "reflection_writer.hpp"
+#include "output_generator.hpp"
 #include "tool_identity.hpp"
-#include "shader_targets.hpp"
-#include "web_writer.hpp"
 
 namespace prism::shaderc {
+namespace {
 
-std::string writeOutputs(const Options& o, const ResolvedCatalog& rc) {
+// Writes `files` in order; on failure removes those of them that did not exist before.
+std::string writeGeneratedFiles(const std::vector<GeneratedFile>& files) {
     std::string error;
-    const auto name = [](const std::string& path) { return std::filesystem::path(path).filename().string(); };
-    if (!o.output.empty()) {
-        const std::string data = dataPathFor(o.output);
-        const std::string header = writeHeader(rc.data, name(data));
-        const bool headerExisted = std::filesystem::exists(o.output);
-        if (writeIfChanged(o.output, header, error) == WriteOutcome::Failed ||
-            writeIfChanged(data, writeData(rc.data, name(o.output), header), error) == WriteOutcome::Failed) {
+    std::vector<std::string> created;
+    for (const GeneratedFile& f : files) {
+        const bool existed = std::filesystem::exists(f.path);
+        if (writeIfChanged(f.path, f.bytes, error) == WriteOutcome::Failed) {
             std::error_code ec;
-            if (!headerExisted) std::filesystem::remove(o.output, ec);  // nothing written on failure
+            for (const std::string& path : created) std::filesystem::remove(path, ec);  // nothing new on failure
             return error;
         }
+        if (!existed) created.push_back(f.path);
     }
-    if (!o.emitSpirvDir.empty() && !emitSpirv(o.emitSpirvDir, rc.data, error)) return error;
-    if (!o.emitWeb.empty() &&
-        writeIfChanged(o.emitWeb, writeWebCatalogue(rc.data, std::filesystem::path(o.emitWeb).stem().string()),
-                       error) == WriteOutcome::Failed)
-        return error;
-    if (!o.emitReflection.empty() &&
-        writeIfChanged(o.emitReflection, writeReflectionJson(rc.data), error) == WriteOutcome::Failed)
-        return error;
-    if (o.emitGlslDir.empty()) return {};
-    std::vector<std::vector<Target>> targets(rc.data.shaders.size());
-    for (std::size_t s = 0; s < targets.size(); ++s)
-        for (const Target t : o.targets)
-            if (producedFor(o, rc, s, t)) targets[s].push_back(t);
-    if (!emitGlsl(o.emitGlslDir, rc.data, o.targets, targets, error)) return error;
+    return {};
+}
+
+}  // namespace
+
+std::string writeOutputs(const Options& o, const ResolvedCatalog& rc) {
+    for (const auto& generator : outputGenerators()) {
+        if (generator->pathsNamed(o).empty()) continue;
+        if (std::string error = writeGeneratedFiles(generator->generate(o, rc)); !error.empty()) return error;
+    }
     return {};
 }
 

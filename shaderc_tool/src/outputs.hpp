@@ -1,10 +1,10 @@
-// Stage 6 of prism-shaderc: the outputs. First what the catalogue generates: the header
-// and its data file (header_writer.hpp, data_writer.hpp), each written only when its text
-// changed (output_file.hpp), the flattened stages of --emit-glsl (glsl_emitter.hpp), the web
-// catalogue of --emit-web (web_writer.hpp) and the reflection JSON of --emit-reflection
-// (reflection_writer.hpp).
-// Then the build system's files, written by every successful run, a no-op included: the
-// depfile (depfile.hpp) and the --stamp. Each returns "" or the error to report.
+// Stage 6 of prism-shaderc: the outputs. First what the catalogue generates: writeOutputs
+// loops over the registered output generators (output_generator.hpp: the header and its data
+// file, the --emit-spirv files, the web catalogue, the reflection JSON, the --emit-glsl
+// texts), and writes the files of each that the options ask for, each only when its bytes
+// changed (output_file.hpp). Then the build system's files, written by every successful run,
+// a no-op included: the depfile (depfile.hpp) and the --stamp. Each returns "" or the error
+// to report.
 //
 //   if (auto error = writeOutputs(options, catalog); !error.empty()) ... // exit 2
 //   if (auto error = writeBuildSystemFiles(options, catalog.filesRead); !error.empty()) ...
@@ -18,7 +18,8 @@
 
 namespace prism::shaderc {
 
-// The header, data file and --emit-glsl files. On failure a header this run created is removed.
+// Every generator's files, in the list's order. When a write fails, the files of that
+// generator that this run created are removed (a new header never stands without its data file).
 std::string writeOutputs(const Options& options, const ResolvedCatalog& catalog);
 
 // The depfile (listing `filesRead`) and the stamp, where the options ask for them.

@@ -43,8 +43,8 @@ bool addStageFile(const std::string& file, const std::string& where, const Sourc
 }
 
 // One declaration, or nullopt (with errors) when it is malformed.
-std::optional<ShaderInput> parseDeclaration(const std::string& text, const SourceReader& reader, bool vulkanClient,
-                                            DeclaredPrograms& out) {
+std::optional<ShaderInput> parseDeclaration(const std::string& text, const SourceReader& reader,
+                                            const TargetRules& rules, DeclaredPrograms& out) {
     const std::string where = "--program " + text;
     const auto eq = text.find('=');
     if (eq == std::string::npos) {
@@ -62,7 +62,7 @@ std::optional<ShaderInput> parseDeclaration(const std::string& text, const Sourc
     if (!ok) return std::nullopt;
     sortByPipelineOrder(program.stages);
     const auto before = out.diagnostics.size();
-    checkCompleteness(program, where, out.diagnostics, vulkanClient);
+    checkCompleteness(program, where, out.diagnostics, rules);
     if (out.diagnostics.size() != before) return std::nullopt;
     return program;
 }
@@ -70,12 +70,12 @@ std::optional<ShaderInput> parseDeclaration(const std::string& text, const Sourc
 }  // namespace
 
 DeclaredPrograms declaredPrograms(const std::vector<std::string>& declarations, const std::vector<ShaderInput>& taken,
-                                  const SourceReader& reader, bool vulkanClient) {
+                                  const SourceReader& reader, const TargetRules& rules) {
     DeclaredPrograms out;
     std::set<std::string> names;
     for (const auto& p : taken) names.insert(p.name);
     for (const auto& text : declarations) {
-        auto program = parseDeclaration(text, reader, vulkanClient, out);
+        auto program = parseDeclaration(text, reader, rules, out);
         if (!program) continue;
         if (!names.insert(program->name).second) {
             out.diagnostics.push_back(makeError("--program " + text, 0, 0,

@@ -28,10 +28,10 @@ struct DeclaredPrograms {
 };
 
 // `taken`: the programs paired by name in the input folders; a declaration may not reuse
-// their names, nor another declaration's. `reader` says which files exist. `vulkanClient`:
-// the stages are checked as a Vulkan pipeline (checkCompleteness).
+// their names, nor another declaration's. `reader` says which files exist. The stages are
+// checked as a pipeline under `rules` (checkCompleteness).
 DeclaredPrograms declaredPrograms(const std::vector<std::string>& declarations, const std::vector<ShaderInput>& taken,
-                                  const SourceReader& reader, bool vulkanClient = false);
+                                  const SourceReader& reader, const TargetRules& rules = {});
 
 // The canonical paths of the files the declarations name: an input folder's file among
 // them belongs to its declared program and is not paired by name.

@@ -81,7 +81,7 @@ std::string writeReflectionJson(const CatalogData& catalog) {
     for (const auto& s : catalog.shaders) {
         Json variants = Json::array();
         for (const auto& v : s.variants)
-            if (const ProgramReflection* r = spirvOf(v)) variants.push_back(variantJson(s, v, *r));
+            if (v.spirv) variants.push_back(variantJson(s, v, *v.spirv));
         if (!variants.empty()) shaders.push_back({{"name", s.name}, {"variants", std::move(variants)}});
     }
     const Json root = {{"format", format::kReflectionFormat}, {"shaders", std::move(shaders)}};

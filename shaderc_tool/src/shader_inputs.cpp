@@ -143,9 +143,9 @@ void checkRayTracing(const ShaderInput& s, const std::string& where, std::vector
 // A program without a fragment stage: under Vulkan a pipeline may have none (a depth-only
 // pass rasterises without one); under OpenGL Prism requires one, as GLSL ES 3.00 and
 // WebGL 2, which a program of the OpenGL client may be emitted for, require it to link.
-void checkFragmentStage(const ShaderInput& s, const std::string& where, bool vulkanClient,
+void checkFragmentStage(const ShaderInput& s, const std::string& where, const TargetRules& rules,
                         std::vector<Diagnostic>& out) {
-    if (vulkanClient || hasStage(s, Stage::Fragment)) return;
+    if (!rules.needsFragmentStage || hasStage(s, Stage::Fragment)) return;
     out.push_back(makeError(where, 0, 0,
                             "shader '" + s.name + "' has no fragment stage: expected " +
                                 siblingPath(s.stages.front().path, ".frag") +
@@ -153,7 +153,7 @@ void checkFragmentStage(const ShaderInput& s, const std::string& where, bool vul
 }
 
 // A mesh pipeline: [task +] mesh [+ frag], without vertex, geometry or compute stages.
-void checkMeshPipeline(const ShaderInput& s, const std::string& where, bool vulkanClient,
+void checkMeshPipeline(const ShaderInput& s, const std::string& where, const TargetRules& rules,
                        std::vector<Diagnostic>& out) {
     const auto& any = s.stages.front().path;
     if (hasStage(s, Stage::Vertex) || hasStage(s, Stage::Geometry) || hasStage(s, Stage::Compute) ||
@@ -165,17 +165,17 @@ void checkMeshPipeline(const ShaderInput& s, const std::string& where, bool vulk
         out.push_back(makeError(
             where, 0, 0,
             "shader '" + s.name + "' has a task stage but no mesh stage: expected " + siblingPath(any, ".mesh")));
-    checkFragmentStage(s, where, vulkanClient, out);
+    checkFragmentStage(s, where, rules, out);
 }
 
 }  // namespace
 
 void checkCompleteness(const ShaderInput& s, const std::string& where, std::vector<Diagnostic>& out,
-                       bool vulkanClient) {
+                       const TargetRules& rules) {
     const auto& any = s.stages.front().path;
     if (std::any_of(s.stages.begin(), s.stages.end(), [](const StageFile& f) { return isRayTracingStage(f.stage); }))
         return checkRayTracing(s, where, out);
-    if (hasStage(s, Stage::Mesh) || hasStage(s, Stage::Task)) return checkMeshPipeline(s, where, vulkanClient, out);
+    if (hasStage(s, Stage::Mesh) || hasStage(s, Stage::Task)) return checkMeshPipeline(s, where, rules, out);
     if (hasStage(s, Stage::Compute)) {
         if (s.stages.size() > 1)
             out.push_back(makeError(where, 0, 0,
@@ -188,7 +188,7 @@ void checkCompleteness(const ShaderInput& s, const std::string& where, std::vect
         out.push_back(makeError(where, 0, 0,
                                 "shader '" + s.name + "' has no vertex stage (nor a compute stage): expected " +
                                     siblingPath(any, ".vert")));
-    checkFragmentStage(s, where, vulkanClient, out);
+    checkFragmentStage(s, where, rules, out);
     if (hasStage(s, Stage::TessControl) && !hasStage(s, Stage::TessEvaluation))
         out.push_back(makeError(where, 0, 0,
                                 "shader '" + s.name +
@@ -200,8 +200,8 @@ namespace {
 
 // Under the OpenGL client a program with a mesh, task or ray-tracing stage is one error
 // naming the file and --client vulkan (and no completeness errors): true when refused.
-bool refusedVulkanOnly(const ShaderInput& s, bool vulkanClient, std::vector<Diagnostic>& out) {
-    if (vulkanClient) return false;
+bool refusedVulkanOnly(const ShaderInput& s, const TargetRules& rules, std::vector<Diagnostic>& out) {
+    if (rules.takesVulkanOnlyStages) return false;
     auto it = std::find_if(s.stages.begin(), s.stages.end(), [](const StageFile& f) { return isVulkanOnly(f.stage); });
     if (it == s.stages.end()) return false;
     out.push_back(makeError(it->path, 0, 0,
@@ -214,7 +214,7 @@ bool refusedVulkanOnly(const ShaderInput& s, bool vulkanClient, std::vector<Diag
 }  // namespace
 
 ShaderInputsResult collectShaderInputs(const std::vector<std::string>& inputs,
-                                       const std::vector<std::string>& programDeclarations, bool vulkanClient) {
+                                       const std::vector<std::string>& programDeclarations, const TargetRules& rules) {
     ShaderInputsResult result;
     const DiskReader disk;
     auto files = stageFilesOf(inputs, result);
@@ -225,15 +225,15 @@ ShaderInputsResult collectShaderInputs(const std::vector<std::string>& inputs,
     });
     auto byName = pairByName(files, result.diagnostics);
     for (auto& [name, shader] : byName) {
-        if (refusedVulkanOnly(shader, vulkanClient, result.diagnostics)) continue;
-        checkCompleteness(shader, shader.stages.front().path, result.diagnostics, vulkanClient);
+        if (refusedVulkanOnly(shader, rules, result.diagnostics)) continue;
+        checkCompleteness(shader, shader.stages.front().path, result.diagnostics, rules);
         result.shaders.push_back(std::move(shader));
     }
-    auto declared = declaredPrograms(programDeclarations, result.shaders, disk, vulkanClient);
+    auto declared = declaredPrograms(programDeclarations, result.shaders, disk, rules);
     result.diagnostics.insert(result.diagnostics.end(), declared.diagnostics.begin(), declared.diagnostics.end());
     result.ioError = result.ioError || declared.ioError;
     for (auto& p : declared.programs)
-        if (!refusedVulkanOnly(p, vulkanClient, result.diagnostics)) result.shaders.push_back(std::move(p));
+        if (!refusedVulkanOnly(p, rules, result.diagnostics)) result.shaders.push_back(std::move(p));
     std::sort(result.shaders.begin(), result.shaders.end(),
               [](const ShaderInput& a, const ShaderInput& b) { return a.name < b.name; });
     return result;

@@ -20,6 +20,7 @@
 #include <prism/catalog/shader_catalog.hpp>
 
 #include "diagnostics.hpp"
+#include "target_rules.hpp"
 
 namespace prism::shaderc {
 
@@ -55,16 +56,16 @@ void sortByPipelineOrder(std::vector<StageFile>& stages);
 
 // Checks the stage kinds of one program: compute alone; ray-tracing stages alone; [task +]
 // mesh + fragment; else a vertex and a fragment stage, and a tessellation control stage
-// only with an evaluation stage. `vulkanClient`: the fragment stage is optional (a Vulkan
-// pipeline may rasterise without one). `where` is the diagnostics' file: the first stage
-// file, or the --program argument.
+// only with an evaluation stage; the fragment stage as `rules` say (needsFragmentStage: a
+// Vulkan pipeline may rasterise without one). `where` is the diagnostics' file: the first
+// stage file, or the --program argument.
 void checkCompleteness(const ShaderInput& program, const std::string& where, std::vector<Diagnostic>& out,
-                       bool vulkanClient = false);
+                       const TargetRules& rules = {});
 
-// `vulkanClient`: mesh, task and ray-tracing stages are taken; else each is an error that
-// names the file and --client vulkan.
+// Mesh, task and ray-tracing stages are taken where `rules` take them (takesVulkanOnlyStages);
+// else each is an error that names the file and --client vulkan.
 ShaderInputsResult collectShaderInputs(const std::vector<std::string>& inputs,
                                        const std::vector<std::string>& programDeclarations = {},
-                                       bool vulkanClient = false);
+                                       const TargetRules& rules = {});
 
 }  // namespace prism::shaderc

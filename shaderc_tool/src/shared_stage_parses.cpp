@@ -20,7 +20,7 @@ SharedStageParses::SharedStageParses(const std::vector<std::vector<StageToValida
         for (const auto& st : lists[i]) {
             const std::string key = std::to_string(static_cast<int>(st.stage)) + " " + st.resolved.versionDirective +
                                     " " + st.resolved.validationKey +
-                                    (st.spirvEnv ? " " + std::string(spirvEnvName(*st.spirvEnv)) : "");
+                                    (st.rules.spirvEnv ? " " + std::string(spirvEnvName(*st.rules.spirvEnv)) : "");
             auto [it, fresh] = index.try_emplace(key, distinct_.size());
             if (fresh) distinct_.push_back(&st);
             refs_[i].push_back(it->second);

@@ -25,22 +25,11 @@
 #include <vector>
 
 #include "diagnostics.hpp"
+#include "spirv_env.hpp"
 
 namespace prism::shaderc {
 
-enum class SpirvEnv : std::uint8_t { Vulkan1_0, Vulkan1_1, Vulkan1_2, Vulkan1_3, OpenGL4_5 };
-
-// "vulkan1.0" ... "vulkan1.3", "opengl4.5" (glslc's --target-env spellings).
-std::optional<SpirvEnv> parseSpirvEnv(std::string_view name);
-std::string_view spirvEnvName(SpirvEnv env);
-// The names parseSpirvEnv takes, for an error message: "vulkan1.0, vulkan1.1, ...".
-std::string spirvEnvNames();
-
-// Sets `shader`'s input, client and SPIR-V target for `env` (as glslangValidator -V / -G
-// and glslc --target-env do), before parse().
-void configureShader(glslang::TShader& shader, EShLanguage stage, SpirvEnv env);
-// The messages that parse() and link() take for `env`: SPIR-V rules, plus Vulkan rules for Vulkan.
-EShMessages spirvMessages(SpirvEnv env);
+// configureShader() and spirvMessages(): spirv_env.hpp.
 
 // The SPIR-V words of `stage` of a linked `program` (glslang's generator, unoptimised,
 // no debug information, as glslc -O0 -g0 writes them; `withLineInfo`: with OpLine

@@ -18,7 +18,7 @@ ValidatedVariant compileProgram(const ResolvedCatalog& rc, const SpirvProgram& p
     std::vector<StageToValidate> stages;
     for (std::size_t st = 0; st < rc.resolved[s][v].size(); ++st)
         stages.push_back({shader.variants[v].stages[st].stage, rc.stagePaths[s][st], rc.resolved[s][v][st],
-                          kSpirvTargetEnv, shader.name, true});
+                          spirvTargetRules(), shader.name});
     auto result = validateProgram(stages, contract);
     noteTarget(result.diagnostics,
                "for target spirv (Vulkan 1.1, relaxed rules) in program " + targetProgramName(rc, s, v));
@@ -37,12 +37,24 @@ void printSpirvStats(const TargetPrograms& scheduled, const SpirvValidatorUse& b
               << " ms of CPU\n";
 }
 
+// A client that compiles to SPIR-V (the Vulkan client's rules) validated it in stage 5: each
+// variant's SPIR-V is its reflection.
+void keepClientSpirv(CatalogData& c) {
+    for (auto& s : c.shaders)
+        for (auto& v : s.variants)
+            if (!v.reflection.spirv.empty()) v.spirv = v.reflection;
+}
+
 }  // namespace
 
 std::vector<Diagnostic> buildSpirvTarget(const Options& o, ResolvedCatalog& rc, const Contract& contract) {
+    if (o.rules.spirvEnv) {
+        keepClientSpirv(rc.data);
+        return {};
+    }
     std::vector<SpirvProgram> programs;
     for (std::size_t s = 0; s < rc.data.shaders.size(); ++s) {
-        if (o.spirvEnv || !producedFor(o, rc, s, Target::Spirv)) continue;
+        if (!producedFor(o, rc, s, Target::Spirv)) continue;
         for (std::size_t v = 0; v < rc.data.shaders[s].variants.size(); ++v) programs.emplace_back(s, v);
     }
     const auto before = spirvValidatorUse();

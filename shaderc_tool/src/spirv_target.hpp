@@ -6,7 +6,9 @@
 // bindings, deterministically, in declaration order. Messages land at the module's own
 // file:line. The reflection (block set/binding/size with member offsets, samplers, vertex
 // input locations) is enough for a Vulkan application to fill the block without another
-// reflection library. A Vulkan-client catalogue has no spirv target: its output is SPIR-V.
+// reflection library. A Vulkan-client catalogue has no spirv target: its output is SPIR-V,
+// its validated `reflection`, which buildSpirvTarget puts where every output reads a
+// variant's SPIR-V (CatalogVariant::spirv): one route to it, whoever made it.
 //
 //   sink.reportAll(buildSpirvTarget(options, catalog, contract));
 //   if (const auto& r = catalog.data.shaders[s].variants[v].spirv) use(r->spirv[0].words, r->resources);
@@ -20,9 +22,7 @@
 
 namespace prism::shaderc {
 
-inline constexpr SpirvEnv kSpirvTargetEnv = SpirvEnv::Vulkan1_1;
-
-// Fills `spirv` of every variant the run produces spirv for; returns the diagnostics.
+// Fills `spirv` of every variant the run has SPIR-V for; returns the diagnostics.
 std::vector<Diagnostic> buildSpirvTarget(const Options& options, ResolvedCatalog& catalog, const Contract& contract);
 
 }  // namespace prism::shaderc

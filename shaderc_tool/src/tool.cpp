@@ -8,7 +8,7 @@
 //   5 validation_scheduler.hpp glslang, interface and contract checks, reflection; then
 //     shader_targets.hpp, es300_target.hpp, spirv_target.hpp: what each target refuses, the
 //     es300 checks, the SPIR-V
-//   6 outputs.hpp              header and data file, --emit-glsl, depfile and stamp
+//   6 outputs.hpp              every output generator (output_generator.hpp), depfile and stamp
 // Exit status: 0 success, 1 shader errors, 2 usage or I/O errors.
 #include "prism/shaderc/tool.hpp"
 
@@ -49,7 +49,7 @@ int runTool(int argc, char** argv) {
         return exitStatus(writeBuildSystemFiles(o, unchanged->filesRead));
 
     DiagnosticSink sink;
-    const auto inputs = collectShaderInputs(o.inputs, o.programs, o.spirvEnv.has_value());
+    const auto inputs = collectShaderInputs(o.inputs, o.programs, o.rules);
     sink.reportAll(inputs.diagnostics);
     const auto contract = loadContracts(o.contracts, disk);
     sink.reportAll(contract.diagnostics);

@@ -22,7 +22,7 @@ std::vector<StageToValidate> stagesOf(const ResolvedCatalog& rc, std::size_t s, 
     const auto& resolved = rc.resolved[s][v];
     for (std::size_t st = 0; st < resolved.size(); ++st)
         stages.push_back({rc.data.shaders[s].variants[v].stages[st].stage, rc.stagePaths[s][st], resolved[st],
-                          rc.data.spirvEnv, rc.data.shaders[s].name});
+                          rc.data.rules, rc.data.shaders[s].name});
     return stages;
 }
 
@@ -31,7 +31,7 @@ std::vector<StageToValidate> stagesOf(const ResolvedCatalog& rc, std::size_t s, 
 ProgramKey programKey(const ResolvedCatalog& rc, const Contract& contract, std::size_t s, std::size_t v) {
     hash::ContentHash tokens;
     tokens.add("prism-shaderc validation").add(toolIdentity());
-    if (rc.data.spirvEnv) tokens.add("client").add(spirvEnvName(*rc.data.spirvEnv));
+    if (rc.data.rules.spirvEnv) tokens.add("client").add(spirvEnvName(*rc.data.rules.spirvEnv));
     for (const auto& a : contract.attributes) tokens.add(a.name).add(a.type).add(std::to_string(a.location));
     tokens.add("uniforms");
     for (const auto& u : contract.uniforms) tokens.add(u.name).add(u.type).add(std::to_string(u.array));

@@ -31,7 +31,7 @@ namespace prism::shaderc {
 namespace {
 
 EShMessages messagesFor(const StageToValidate& s) {
-    return s.spirvEnv ? spirvMessages(*s.spirvEnv) : EShMsgDefault;
+    return s.rules.messages();
 }
 
 // glslang's refusal of Vulkan GLSL under the OpenGL client, as one error that names the
@@ -200,7 +200,7 @@ std::vector<Diagnostic> mapInfoLog(const std::string& log, const StageMaps& maps
             std::string rest = t[2];
             rest.erase(0, rest.find_first_not_of(' '));  // glslang writes "'' :  syntax error"
             message = tok.empty() ? rest : "'" + tok + "': " + rest;
-            if (!maps.stage->spirvEnv)
+            if (maps.stage->rules.explainsVulkanGlsl)
                 if (auto hint = vulkanOnlyHint(tok, rest); !hint.empty()) message = std::move(hint);
         }
         column = columnOf(maps.lines.find(source, lineNo), tok);
@@ -259,12 +259,7 @@ std::shared_ptr<CompiledStage> compileStage(const StageToValidate& s) {
     auto shader = std::make_unique<glslang::TShader>(glslangStage(s.stage));
     const char* text = s.resolved.text.c_str();
     shader->setStrings(&text, 1);
-    if (s.spirvEnv) configureShader(*shader, glslangStage(s.stage), *s.spirvEnv);
-    if (s.spirvEnv && s.relaxedRules) {
-        shader->setEnvInputVulkanRulesRelaxed();
-        shader->setAutoMapLocations(true);
-        shader->setAutoMapBindings(true);
-    }
+    s.rules.configure(*shader, glslangStage(s.stage));
     compiled->ok = shader->parse(GetDefaultResources(), s.resolved.versionNumber,
                                  profileOf(s.resolved.versionDirective), false, false, messagesFor(s));
     if (const char* log = shader->getInfoLog(); log && *log) {  // the line texts only when there is a message
@@ -316,11 +311,6 @@ void locateDeclarations(const std::vector<StageToValidate>& stages, std::vector<
     }
 }
 
-// True for the Vulkan client's programs: their stages are linked one by one.
-bool linksStageByStage(const StageToValidate& s) {
-    return s.spirvEnv && !s.relaxedRules && *s.spirvEnv != SpirvEnv::OpenGL4_5;
-}
-
 // Where the stages meet, as their client makes them meet: the stage interfaces (not in a
 // ray-tracing program, which has none); under Vulkan the descriptors by set and binding and
 // the ray-tracing data, under OpenGL the binding contract (what the runtime feeds by name).
@@ -330,10 +320,10 @@ std::vector<Diagnostic> crossStageMessages(const std::vector<StageToValidate>& s
     std::vector<Diagnostic> out;
     const auto add = [&out](std::vector<Diagnostic> more) { out.insert(out.end(), more.begin(), more.end()); };
     if (!isRayTracingStage(stages.front().stage)) add(checkStageInterfaces(interfaces, locate));
-    if (linksStageByStage(stages.front())) {
+    if (stages.front().rules.linksStageByStage) {
         add(checkDescriptorBindings(interfaces, locate));
         add(checkRayTracingData(interfaces, locate));
-    } else if (!stages.front().spirvEnv) {
+    } else if (stages.front().rules.checksContract) {
         add(checkContract(contract, interfaces, locate));
     }
     return out;
@@ -420,7 +410,7 @@ void locateByLineInfo(const StageToValidate& s, glslang::TProgram& program, cons
     std::vector<std::uint32_t> words;
     std::string log;
     if (!generateSpirvWithSourceNumbers(program, glslangStage(s.stage), words, log)) return;
-    auto located = validateSpirv(words, *s.spirvEnv, s.path, what, lineLocator(s));
+    auto located = validateSpirv(words, *s.rules.spirvEnv, s.path, what, lineLocator(s));
     if (!located.empty()) invalid = std::move(located);
 }
 
@@ -434,7 +424,7 @@ void emitStageSpirv(const StageToValidate& s, glslang::TProgram& program, Valida
         result.diagnostics.push_back(makeError(s.path, 0, 0, "glslang made no SPIR-V of " + what + ": " + log));
         return;
     }
-    auto invalid = validateSpirv(out.words, *s.spirvEnv, s.path, what, declarationLocator(s));
+    auto invalid = validateSpirv(out.words, *s.rules.spirvEnv, s.path, what, declarationLocator(s));
     if (!invalid.empty()) locateByLineInfo(s, program, what, invalid);
     result.diagnostics.insert(result.diagnostics.end(), invalid.begin(), invalid.end());
     result.reflection.spirv.push_back(std::move(out));
@@ -483,14 +473,14 @@ void linkStageByStage(const std::vector<StageToValidate>& stages, const std::vec
 void linkAndReflect(const std::vector<StageToValidate>& stages, const std::vector<glslang::TShader*>& shaders,
                     const Contract& contract, const LinkedProgramCheck& check, ValidatedVariant& result) {
     glslang::TProgram program;
-    if (linksStageByStage(stages.front())) {
+    if (stages.front().rules.linksStageByStage) {
         linkStageByStage(stages, shaders, result);
     } else {
         for (auto* sh : shaders) program.addShader(sh);
         if (!linkOrReport(program, messagesFor(stages.front()), stages.front().path, result)) return;
         // glslang assigns the spirv target's locations and bindings here, before anything reads them.
-        if (stages.front().relaxedRules && !assignLocations(stages, shaders, program, result)) return;
-        if (stages.front().spirvEnv) {
+        if (stages.front().rules.relaxedLayout && !assignLocations(stages, shaders, program, result)) return;
+        if (stages.front().rules.spirvEnv) {
             for (const auto& s : stages) emitStageSpirv(s, program, result);
             reflectStages(stages.front(), result);
         } else {

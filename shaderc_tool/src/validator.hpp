@@ -17,6 +17,7 @@
 #include "include_resolver.hpp"
 #include "reflection.hpp"
 #include "spirv_codegen.hpp"
+#include "target_rules.hpp"
 
 namespace glslang {
 class TProgram;
@@ -34,19 +35,15 @@ struct StageToValidate {
     catalog::Stage stage;
     std::string path;  // the stage file, for errors without a line
     ResolvedStage resolved;
-    // Set: compiled to SPIR-V for this environment, validated by SPIRV-Tools and reflected
-    // (vulkan_reflection.hpp); empty: OpenGL driver GLSL.
-    std::optional<SpirvEnv> spirvEnv = {};
+    // How it is compiled, checked and linked: the client's (Options::rules) or a target's
+    // (target_rules.hpp); the default is the OpenGL client's, driver GLSL.
+    TargetRules rules = {};
     std::string program = {};  // the program's name, for SPIR-V messages
-    // With spirvEnv, the spirv target's relaxed Vulkan rules (spirv_target.hpp): GL-style
-    // source, its loose uniforms in one std140 block per stage, locations and bindings
-    // assigned by glslang.
-    bool relaxedRules = false;
 };
 
 struct ValidatedVariant {
     bool ok = false;
-    ProgramReflection reflection;  // with a spirvEnv, also each stage's SPIR-V
+    ProgramReflection reflection;  // with rules.spirvEnv, also each stage's SPIR-V
     std::vector<Diagnostic> diagnostics;
 };
 

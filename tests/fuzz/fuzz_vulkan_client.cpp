@@ -77,7 +77,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         files.add(path, i < parts.size() && i < 2 ? parts[i] : std::string("#version 450\nvoid main() {}\n"));
         auto resolved = resolveStage(path, options, files);
         if (!resolved.ok) return 0;
-        stages.push_back({kinds[i], path, resolved.stage, SpirvEnv::Vulkan1_2, "p"});
+        stages.push_back({kinds[i], path, resolved.stage, vulkanClientRules(SpirvEnv::Vulkan1_2), "p"});
     }
     checkResult(validateProgram(stages, {}), stages);
     return 0;
