@@ -13,6 +13,7 @@
 #include "module_naming.hpp"
 #include "prism/hash/content_hash.hpp"
 #include "shown_path.hpp"
+#include "source_fingerprint.hpp"
 #include "variant_resolution.hpp"
 #include "variants.hpp"
 
@@ -434,6 +435,12 @@ std::string fingerprint(const ResolvedCatalog& rc) {
         mix(std::to_string(u.array));
     }
     return h.hex64();
+}
+
+void fillDataFileRecord(const Options& o, ResolvedCatalog& catalog, const SourceReader& reader) {
+    if (o.checkOnly || o.output.empty()) return;
+    catalog.data.sourcesBlock = sourcesBlock(recordSources(o, catalog.filesRead, reader));
+    catalog.data.fingerprint = fingerprint(catalog);
 }
 
 }  // namespace prism::shaderc

@@ -34,4 +34,8 @@ ResolvedCatalog resolveCatalog(const Options& options, const std::vector<ShaderI
 // A stable fingerprint of everything that determines the header's content.
 std::string fingerprint(const ResolvedCatalog& catalog);
 
+// The sources block and banner fingerprint the data file prints (byte for byte those of
+// the golden files; nothing reads them back: the run record, up_to_date.hpp, decides).
+void fillDataFileRecord(const Options& options, ResolvedCatalog& catalog, const SourceReader& reader);
+
 }  // namespace prism::shaderc

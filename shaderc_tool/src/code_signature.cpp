@@ -3,7 +3,7 @@
 
 #include <filesystem>
 
-#include "shader_inputs.hpp"
+#include "stage_files.hpp"
 
 namespace prism::shaderc {
 

@@ -18,6 +18,7 @@
 
 #include "glslang_stage.hpp"
 #include "preprocessor_limits.hpp"
+#include "stage_files.hpp"
 #include "shader_inputs.hpp"
 
 namespace prism::shaderc {

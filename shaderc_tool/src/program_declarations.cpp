@@ -6,6 +6,7 @@
 #include <set>
 
 #include "program_argument.hpp"
+#include "stage_files.hpp"
 
 namespace prism::shaderc {
 namespace {

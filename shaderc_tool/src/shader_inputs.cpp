@@ -7,29 +7,13 @@
 #include <map>
 
 #include "program_declarations.hpp"
+#include "stage_files.hpp"
 
 namespace prism::shaderc {
 namespace fs = std::filesystem;
 namespace {
 
 using catalog::Stage;
-constexpr std::array kGlStageKinds = {Stage::Vertex,   Stage::TessControl, Stage::TessEvaluation,
-                                      Stage::Geometry, Stage::Fragment,    Stage::Compute};
-constexpr std::array kVulkanOnlyStageKinds = {Stage::Mesh,   Stage::Task,       Stage::RayGen, Stage::Intersect,
-                                              Stage::AnyHit, Stage::ClosestHit, Stage::Miss,   Stage::Callable};
-
-bool isVulkanOnly(Stage s) {
-    return std::find(kVulkanOnlyStageKinds.begin(), kVulkanOnlyStageKinds.end(), s) != kVulkanOnlyStageKinds.end();
-}
-
-// ".a, .b or .c"
-template <std::size_t N>
-std::string extensionList(const std::array<Stage, N>& kinds) {
-    std::string list;
-    for (std::size_t i = 0; i < N; ++i)
-        list += (i == 0 ? "." : i + 1 == N ? " or ." : ", .") + std::string(catalog::stageName(kinds[i]));
-    return list;
-}
 
 std::string siblingPath(const std::string& stagePath, std::string_view ext) {
     return fs::path(stagePath).replace_extension(std::string(ext)).string();
@@ -111,20 +95,6 @@ std::map<std::string, ShaderInput> pairByName(const std::vector<std::string>& fi
 }
 
 }  // namespace
-
-std::optional<Stage> stageOfPath(const fs::path& p) {
-    const auto ext = p.extension().string();
-    if (ext.size() < 2) return std::nullopt;
-    for (auto stage : kGlStageKinds)
-        if (ext.substr(1) == catalog::stageName(stage)) return stage;
-    for (auto stage : kVulkanOnlyStageKinds)
-        if (ext.substr(1) == catalog::stageName(stage)) return stage;
-    return std::nullopt;
-}
-
-std::string stageExtensionList() {
-    return extensionList(kGlStageKinds) + " (with --client vulkan also " + extensionList(kVulkanOnlyStageKinds) + ")";
-}
 
 void sortByPipelineOrder(std::vector<StageFile>& stages) {
     std::stable_sort(stages.begin(), stages.end(), [](const StageFile& a, const StageFile& b) {

@@ -40,16 +40,7 @@ struct ShaderInputsResult {
     bool ioError = false;  // an input that does not exist (exit status 2, not 1)
 };
 
-// The stage kind a file's extension names (".vert" ... ".rcall", whatever the client),
-// nullopt for any other file.
-std::optional<catalog::Stage> stageOfPath(const std::filesystem::path& path);
-
-// The extensions stageOfPath() knows, for messages: ".vert, .tesc, ... or .comp (with
-// --client vulkan also .mesh, ...)".
-std::string stageExtensionList();
-
-// The extension of a module file: in an input folder it is no stage and no warning.
-inline constexpr std::string_view kModuleExtension = ".glsl";
+// stageOfPath(), stageExtensionList(), kModuleExtension: stage_files.hpp.
 
 // Sorts a program's stages into the order they run in (catalog::pipelineOrder).
 void sortByPipelineOrder(std::vector<StageFile>& stages);

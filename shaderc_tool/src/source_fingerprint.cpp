@@ -10,7 +10,7 @@
 #include "output_options.hpp"
 #include "generated_format.hpp"
 #include "prism/hash/content_hash.hpp"
-#include "shader_inputs.hpp"
+#include "stage_files.hpp"
 #include "shown_path.hpp"
 #include "tool_identity.hpp"
 

@@ -119,12 +119,6 @@ std::optional<Unchanged> unchangedSinceLastRun(const Options& o, const SourceRea
     return unchanged;
 }
 
-void fillDataFileRecord(const Options& o, ResolvedCatalog& catalog, const SourceReader& reader) {
-    if (o.checkOnly || o.output.empty()) return;
-    catalog.data.sourcesBlock = sourcesBlock(recordSources(o, catalog.filesRead, reader));
-    catalog.data.fingerprint = fingerprint(catalog);
-}
-
 void rememberRun(const Options& o, const std::vector<std::string>& filesRead, const DiagnosticSink& sink,
                  const SourceReader& reader) {
     const std::string path = recordPath(o);

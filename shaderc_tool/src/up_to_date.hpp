@@ -23,7 +23,6 @@
 #include <vector>
 
 #include "args.hpp"
-#include "catalog_builder.hpp"
 #include "diagnostics.hpp"
 #include "source_reader.hpp"
 
@@ -35,10 +34,6 @@ struct Unchanged {
 
 // The record's answer, before anything is read. Under --stats, says when a check ended here.
 std::optional<Unchanged> unchangedSinceLastRun(const Options& options, const SourceReader& reader);
-
-// The sources block and banner fingerprint the data file prints (byte for byte those of
-// the golden files; nothing reads them back).
-void fillDataFileRecord(const Options& options, ResolvedCatalog& catalog, const SourceReader& reader);
 
 // After the outputs are written: records the run, or removes the record when the next run
 // must be a full one (a check with diagnostics).
