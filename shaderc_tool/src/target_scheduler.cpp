@@ -1,4 +1,4 @@
-// The es300 and spirv targets' scheduling: token groups, their cache pack, and the runs
+// Every target's scheduling: token groups, their cache pack, and the runs
 // (target_scheduler.hpp).
 #include "target_scheduler.hpp"
 
@@ -32,23 +32,39 @@ std::size_t TargetPrograms::fromCache() const {
     return count;
 }
 
-TargetPrograms scheduleTarget(const Options& o, const ResolvedCatalog& rc, const Contract& contract, Target target,
-                              std::vector<std::pair<std::size_t, std::size_t>> programs) {
+TargetPrograms scheduleTarget(const ResolvedCatalog& rc, const Contract& contract, Target target,
+                              std::vector<std::pair<std::size_t, std::size_t>> programs, ValidationCache& cache,
+                              int jobs) {
     TargetPrograms s;
     s.target = target;
     s.programs = std::move(programs);
-    if (s.programs.empty()) return s;
-    // The target's own pack beside the gl one: one catalogue, one pack per target.
-    s.cache = std::make_unique<ValidationCache>(validationCacheDir(o),
-                                                catalogueCacheKey(o) + "-" + std::string(targetName(target)));
+    s.cache = &cache;
+    s.keys.resize(s.programs.size());
+    runPool(s.programs.size(), jobs,
+            [&](std::size_t i) { s.keys[i] = programKey(rc, contract, s.programs[i].first, s.programs[i].second); });
     std::map<std::string, std::size_t> firstOfKey;
     for (std::size_t i = 0; i < s.programs.size(); ++i) {
-        s.keys.push_back(programKey(rc, contract, s.programs[i].first, s.programs[i].second));
         s.representatives.push_back(firstOfKey.try_emplace(s.keys[i].tokens, i).first->second);
         std::optional<ValidatedVariant> hit;
         if (s.representatives[i] == i) hit = s.cache->find(s.keys[i]);
         s.cached.push_back(clean(hit) ? std::move(hit) : std::nullopt);
     }
+    return s;
+}
+
+TargetPrograms scheduleTarget(const Options& o, const ResolvedCatalog& rc, const Contract& contract, Target target,
+                              std::vector<std::pair<std::size_t, std::size_t>> programs) {
+    if (programs.empty()) {
+        TargetPrograms none;
+        none.target = target;
+        return none;
+    }
+    // The target's own pack beside the gl one: one catalogue, one pack per target.
+    const std::string pack =
+        catalogueCacheKey(o) + (target == Target::Gl ? std::string() : "-" + std::string(targetName(target)));
+    auto cache = std::make_unique<ValidationCache>(validationCacheDir(o), pack);
+    auto s = scheduleTarget(rc, contract, target, std::move(programs), *cache, o.jobs);
+    s.ownCache = std::move(cache);
     return s;
 }
 
@@ -71,6 +87,7 @@ std::vector<Diagnostic> runTarget(TargetPrograms& s, int jobs, const TargetValid
     }
     runPool(ownRuns.size(), jobs, [&](std::size_t k) { results[ownRuns[k]] = validate(ownRuns[k], false); });
     finalizeValidator();
+    s.validated = first.size() + ownRuns.size();
     for (const auto i : first)
         if (clean(results[i])) s.cache->store(s.keys[i], *results[i]);
     s.cache->flush();

@@ -6,7 +6,8 @@
 //   stage's kind, #version and validation key, validation_key.hpp) and its text key
 //   (also the exact texts, line tables and paths). A result without diagnostics is reused on the token
 //   key alone (comments or line layout cannot change it); one with diagnostics only on
-//   the text key too, since its lines and paths must still be right.
+//   the text key too, since its lines and paths must still be right. The schedulers store
+//   only clean results (target_scheduler.hpp), so that second rule is a safeguard.
 // - Storage: one pack per catalogue, `<dir>/<catalogue key>.json`, mapping token keys to
 //   results: one read per run and, when something new was validated, one write of the
 //   entries this run used plus older ones up to 4x that number (+64), so an undone edit

@@ -2,15 +2,13 @@
 // validation_scheduler.hpp).
 #include "validation_scheduler.hpp"
 
-#include <algorithm>
 #include <chrono>
 #include <iostream>
-#include <map>
-#include <optional>
+#include <utility>
 
 #include "prism/hash/content_hash.hpp"
-#include "job_pool.hpp"
 #include "shared_stage_parses.hpp"
+#include "target_scheduler.hpp"
 #include "tool_identity.hpp"
 #include "validation_settings.hpp"
 
@@ -57,116 +55,25 @@ ProgramKey programKey(const ResolvedCatalog& rc, const Contract& contract, std::
 
 namespace {
 
-struct Program {
-    std::size_t shader, variant;
-    ProgramKey key;
-};
-
-// Phase 1: every variant's program with its content key, on -j threads.
-std::vector<Program> keyPrograms(const ResolvedCatalog& rc, const Contract& contract, int jobs) {
-    std::vector<Program> programs;
+std::vector<std::pair<std::size_t, std::size_t>> everyVariant(const ResolvedCatalog& rc) {
+    std::vector<std::pair<std::size_t, std::size_t>> programs;
     for (std::size_t s = 0; s < rc.data.shaders.size(); ++s)
-        for (std::size_t v = 0; v < rc.data.shaders[s].variants.size(); ++v) programs.push_back({s, v, {}});
-    runPool(programs.size(), jobs, [&](std::size_t i) {
-        programs[i].key = programKey(rc, contract, programs[i].shader, programs[i].variant);
-    });
+        for (std::size_t v = 0; v < rc.data.shaders[s].variants.size(); ++v) programs.emplace_back(s, v);
     return programs;
 }
 
-// Phase 2: programs with one token key form a group; its first program represents it.
-struct Groups {
-    std::map<std::string, std::size_t> byTokens;  // token key -> group
-    std::vector<std::size_t> representatives;     // group -> program, in catalogue order
-    std::vector<std::optional<ValidatedVariant>> results;
-};
-
-Groups groupByTokens(const std::vector<Program>& programs) {
-    Groups groups;
-    for (std::size_t i = 0; i < programs.size(); ++i)
-        if (groups.byTokens.try_emplace(programs[i].key.tokens, groups.representatives.size()).second)
-            groups.representatives.push_back(i);
-    groups.results.resize(groups.representatives.size());
-    return groups;
-}
-
-// Phase 3: the groups the cache answers; returns the others.
-std::vector<std::size_t> lookUpGroups(const std::vector<Program>& programs, Groups& groups,
-                                      const ValidationCache& cache) {
-    std::vector<std::size_t> toValidate;
-    for (std::size_t g = 0; g < groups.representatives.size(); ++g) {
-        groups.results[g] = cache.find(programs[groups.representatives[g]].key);
-        if (!groups.results[g]) toValidate.push_back(g);
+// One program's diagnostics (errors of a shader with variants name the variant) and reflection.
+void reportResult(ResolvedCatalog& rc, std::pair<std::size_t, std::size_t> program, const ValidatedVariant& result,
+                  DiagnosticSink& sink) {
+    auto& shader = rc.data.shaders[program.first];
+    auto& variant = shader.variants[program.second];
+    for (auto d : result.diagnostics) {
+        if (shader.variants.size() > 1 && d.severity == Severity::Error)
+            d.notes.push_back(
+                {Severity::Note, "", 0, 0, "in variant " + variant.name + " of shader '" + shader.name + "'", {}, {}});
+        sink.report(std::move(d));
     }
-    return toValidate;
-}
-
-// Phase 4: the stages of each group to validate ([i]: group toValidate[i]'s).
-std::vector<std::vector<StageToValidate>> stageLists(const ResolvedCatalog& rc, const std::vector<Program>& programs,
-                                                     const Groups& groups, const std::vector<std::size_t>& toValidate) {
-    std::vector<std::vector<StageToValidate>> lists(toValidate.size());
-    for (std::size_t i = 0; i < toValidate.size(); ++i) {
-        const Program& p = programs[groups.representatives[toValidate[i]]];
-        lists[i] = stagesOf(rc, p.shader, p.variant);
-    }
-    return lists;
-}
-
-// Phase 5: validates the groups on -j threads, each distinct stage parsed once
-// (shared_stage_parses.hpp), and stores their results.
-void validateGroups(const std::vector<Program>& programs, Groups& groups, const std::vector<std::size_t>& toValidate,
-                    const std::vector<std::vector<StageToValidate>>& lists, SharedStageParses& parses,
-                    const Contract& contract, int jobs, ValidationCache& cache) {
-    runPool(toValidate.size(), jobs, [&](std::size_t i) {
-        auto& result = groups.results[toValidate[i]];
-        result = validateCompiledProgram(lists[i], parses.acquire(i), contract);
-        parses.release(i);
-        // Messages must speak of this program's own text, and a failed link leaves state
-        // in shared stages: any message means a private run.
-        if (!result->diagnostics.empty()) result = validateProgram(lists[i], contract);
-        cache.store(programs[groups.representatives[toValidate[i]]].key, *result);
-    });
-}
-
-// Phase 6: each program's result. A group result with diagnostics speaks of its
-// representative's lines: the other members (other texts) take the cache's result for
-// their own text, else are returned in `ownRuns` (rare: only when there are problems).
-std::vector<std::optional<ValidatedVariant>> programResults(const std::vector<Program>& programs, const Groups& groups,
-                                                            const ValidationCache& cache,
-                                                            std::vector<std::size_t>& ownRuns) {
-    std::vector<std::optional<ValidatedVariant>> results(programs.size());
-    for (std::size_t i = 0; i < programs.size(); ++i) {
-        const std::size_t g = groups.byTokens.at(programs[i].key.tokens);
-        const Program& rep = programs[groups.representatives[g]];
-        if (groups.results[g]->diagnostics.empty() || rep.key.text == programs[i].key.text) {
-            results[i] = groups.results[g];
-        } else if (auto hit = cache.find(programs[i].key)) {
-            results[i] = std::move(hit);
-        } else {
-            ownRuns.push_back(i);
-        }
-    }
-    return results;
-}
-
-// Phase 7: diagnostics (errors of a shader with variants name the variant) and reflection.
-void reportResults(ResolvedCatalog& rc, const std::vector<Program>& programs,
-                   std::vector<std::optional<ValidatedVariant>>& results, DiagnosticSink& sink) {
-    for (std::size_t i = 0; i < programs.size(); ++i) {
-        auto& shader = rc.data.shaders[programs[i].shader];
-        auto& variant = shader.variants[programs[i].variant];
-        for (auto d : results[i]->diagnostics) {
-            if (shader.variants.size() > 1 && d.severity == Severity::Error)
-                d.notes.push_back({Severity::Note,
-                                   "",
-                                   0,
-                                   0,
-                                   "in variant " + variant.name + " of shader '" + shader.name + "'",
-                                   {},
-                                   {}});
-            sink.report(std::move(d));
-        }
-        variant.reflection = std::move(results[i]->reflection);
-    }
+    variant.reflection = result.reflection;
 }
 
 }  // namespace
@@ -174,31 +81,33 @@ void reportResults(ResolvedCatalog& rc, const std::vector<Program>& programs,
 ValidationStats validateCatalogScheduled(ResolvedCatalog& rc, const Contract& contract, int jobs,
                                          ValidationCache& cache, DiagnosticSink& sink) {
     const auto start = std::chrono::steady_clock::now();
-    const auto programs = keyPrograms(rc, contract, jobs);
-    auto groups = groupByTokens(programs);
-    const auto toValidate = lookUpGroups(programs, groups, cache);
-    if (!toValidate.empty()) initializeValidator();
-    const auto lists = stageLists(rc, programs, groups, toValidate);
+    auto scheduled = scheduleTarget(rc, contract, Target::Gl, everyVariant(rc), cache, jobs);
+    const auto& programs = scheduled.programs;
+    std::vector<std::vector<StageToValidate>> lists(programs.size());  // the first runs' stages
+    for (const auto i : scheduled.firstRuns()) lists[i] = stagesOf(rc, programs[i].first, programs[i].second);
     SharedStageParses parses(lists);
-    validateGroups(programs, groups, toValidate, lists, parses, contract, jobs, cache);
-    std::vector<std::size_t> ownRuns;
-    auto results = programResults(programs, groups, cache, ownRuns);
-    if (!ownRuns.empty() && toValidate.empty()) initializeValidator();
-    runPool(ownRuns.size(), jobs, [&](std::size_t k) {
-        const Program& p = programs[ownRuns[k]];
-        results[ownRuns[k]] = validateProgram(stagesOf(rc, p.shader, p.variant), contract);
-    });
-    if (!toValidate.empty() || !ownRuns.empty()) finalizeValidator();
-    cache.flush();
+    runTarget(
+        scheduled, jobs,
+        [&](std::size_t i, bool groupRun) {
+            if (groupRun) {
+                auto result = validateCompiledProgram(lists[i], parses.acquire(i), contract);
+                parses.release(i);
+                // Messages must speak of this program's own text, and a failed link leaves
+                // state in shared stages: any message means a private run.
+                if (result.diagnostics.empty()) return result;
+                return validateProgram(lists[i], contract);
+            }
+            return validateProgram(stagesOf(rc, programs[i].first, programs[i].second), contract);  // own lines
+        },
+        [&](std::size_t i, const ValidatedVariant& result) { reportResult(rc, programs[i], result, sink); });
 
     ValidationStats stats;
     stats.programs = programs.size();
-    stats.distinct = groups.representatives.size();
-    stats.fromCache = groups.representatives.size() - toValidate.size();
-    stats.validated = toValidate.size() + ownRuns.size();
+    for (std::size_t i = 0; i < programs.size(); ++i) stats.distinct += scheduled.representatives[i] == i;
+    stats.fromCache = scheduled.fromCache();
+    stats.validated = scheduled.validated;
     stats.stagesCompiled = parses.distinct();
     stats.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    reportResults(rc, programs, results, sink);
     return stats;
 }
 
