@@ -24,15 +24,6 @@ constexpr std::string_view kKeyTag = "key ", kReadTag = "read ", kWroteTag = "wr
 
 // Names the record in a shared cache directory: the options that change outputs, with the
 // output paths as given, so catalogues sharing the directory keep records of their own.
-std::string recordPath(const Options& o) {
-    hash::ContentHash h;
-    h.add("run record").add(o.baseDir).add(o.output);
-    for (const auto& line : outputOptionLines(o)) h.add(line);
-    if (const std::string dir = validationCacheDir(o); !dir.empty())
-        return (fs::path(dir) / (h.hex64() + ".record")).string();
-    return o.output.empty() ? std::string() : o.output + ".record";
-}
-
 // A --check that writes no file depends only on the code signatures of what it read.
 ContentKey contentKey(const Options& o) {
     const bool writesFiles = !o.output.empty() || !o.emitGlslDir.empty() || !o.emitSpirvDir.empty() ||
@@ -100,8 +91,17 @@ void removeStaleOutputTemps(const Options& o) {  // nothing to write, but a kill
 
 }  // namespace
 
+std::string runRecordPath(const Options& o) {
+    hash::ContentHash h;
+    h.add("run record").add(o.baseDir).add(o.output);
+    for (const auto& line : outputOptionLines(o)) h.add(line);
+    if (const std::string dir = validationCacheDir(o); !dir.empty())
+        return (fs::path(dir) / (h.hex64() + ".record")).string();
+    return o.output.empty() ? std::string() : o.output + ".record";
+}
+
 std::optional<Unchanged> unchangedSinceLastRun(const Options& o, const SourceReader& reader) {
-    const std::string path = recordPath(o);
+    const std::string path = runRecordPath(o);
     if (path.empty() || o.revalidate) return std::nullopt;
     const auto recorded = readRecord(path);
     if (!recorded) return std::nullopt;
@@ -121,7 +121,7 @@ std::optional<Unchanged> unchangedSinceLastRun(const Options& o, const SourceRea
 
 void rememberRun(const Options& o, const std::vector<std::string>& filesRead, const DiagnosticSink& sink,
                  const SourceReader& reader) {
-    const std::string path = recordPath(o);
+    const std::string path = runRecordPath(o);
     if (path.empty()) return;
     if (o.checkOnly && !sink.diagnostics().empty()) return forgetRun(o);  // its diagnostics must print again
     const auto files = embeddedNames(o, filesRead);
@@ -139,7 +139,7 @@ void rememberRun(const Options& o, const std::vector<std::string>& filesRead, co
 
 void forgetRun(const Options& o) {
     std::error_code ec;
-    if (const std::string path = recordPath(o); !path.empty()) fs::remove(path, ec);
+    if (const std::string path = runRecordPath(o); !path.empty()) fs::remove(path, ec);
 }
 
 }  // namespace prism::shaderc

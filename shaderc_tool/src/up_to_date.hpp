@@ -40,6 +40,10 @@ std::optional<Unchanged> unchangedSinceLastRun(const Options& options, const Sou
 void rememberRun(const Options& options, const std::vector<std::string>& filesRead, const DiagnosticSink& sink,
                  const SourceReader& reader);
 
+// Where the record lies: in the cache directory, else beside the header (X.hpp.record),
+// else "" (no record).
+std::string runRecordPath(const Options& options);
+
 // Removes the record (a failed run).
 void forgetRun(const Options& options);
 

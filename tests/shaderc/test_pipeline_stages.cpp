@@ -15,6 +15,7 @@
 #include "output_generator.hpp"
 #include "target_rules.hpp"
 #include "tool_runner.hpp"
+#include "up_to_date.hpp"
 
 namespace fs = std::filesystem;
 using prism::test::readFile;
@@ -97,7 +98,7 @@ TEST(PipelineStages, EachOutputOptionNamesItsGeneratorsPaths) {
 }
 
 // What a record of "nothing changed" relies on: every file a run writes is a generator's
-// named path, inside one of them, or the build system's depfile and stamp.
+// named path, inside one of them, the build system's depfile and stamp, or the record itself.
 TEST(PipelineStages, EveryFileWrittenLiesUnderAGeneratorsNamedPaths) {
     ScratchDir dir("stages-generator-paths");
     writeValidShader(dir);
@@ -107,7 +108,7 @@ TEST(PipelineStages, EveryFileWrittenLiesUnderAGeneratorsNamedPaths) {
     auto run = runShaderc(args + " s", dir.str());
     ASSERT_EQ(run.exitCode, 0) << run.output;
     std::vector<std::string> named = prism::shaderc::outputPathsNamed(optionsOf(args + " s"));
-    named.insert(named.end(), {"out.d", "out.stamp", "s"});
+    named.insert(named.end(), {"out.d", "out.stamp", "s", prism::shaderc::runRecordPath(optionsOf(args + " s"))});
     std::size_t files = 0;
     for (const auto& entry : fs::recursive_directory_iterator(dir.path())) {
         if (!entry.is_regular_file()) continue;
