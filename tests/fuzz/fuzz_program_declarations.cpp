@@ -12,6 +12,7 @@
 
 #include "fuzz_input.hpp"
 #include "module_naming.hpp"
+#include "program_argument.hpp"
 #include "program_declarations.hpp"
 
 using namespace prism::shaderc;
